@@ -1,0 +1,136 @@
+#include "collision/collision_world.h"
+
+#include "collision/segment_triangle.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace mhd {
+namespace {
+
+// Lateral growth of every triangle in the sweep test, relative to the skin. It only has
+// to exceed double rounding at scene scale; a multiple of the skin keeps both in step.
+constexpr double kInflatePerSkin = 1.0;
+
+bool is_ignored(std::span<const TriangleRef> ignore, int object, std::uint32_t triangle) {
+  return std::any_of(ignore.begin(), ignore.end(),
+                     [&](const TriangleRef& t) { return t.object == object && t.triangle == triangle; });
+}
+
+}  // namespace
+
+int CollisionWorld::add_object(std::shared_ptr<const MeshBvh> shape, const Pose& X_WO) {
+  objects_.push_back(Object{std::move(shape), X_WO, X_WO.inverse(Eigen::Isometry)});
+  return static_cast<int>(objects_.size()) - 1;
+}
+
+void CollisionWorld::set_pose(int object, const Pose& X_WO) {
+  auto& o = objects_.at(static_cast<std::size_t>(object));
+  o.X_WO = X_WO;
+  o.X_OW = X_WO.inverse(Eigen::Isometry);
+}
+
+std::optional<SweepHit> CollisionWorld::sweep(const Eigen::Vector3d& a_W, const Eigen::Vector3d& b_W,
+                                              double skin_m, std::span<const TriangleRef> ignore) const {
+  const double inflate_m = kInflatePerSkin * skin_m;
+  const double margin_m = skin_m + inflate_m;
+  std::optional<SweepHit> best;
+  double best_t_stop = std::numeric_limits<double>::infinity();
+  double best_t_plane = std::numeric_limits<double>::infinity();
+
+  for (std::size_t oi = 0; oi < objects_.size(); ++oi) {
+    const Object& o = objects_[oi];
+    const Eigen::Vector3d a_O = o.X_OW * a_W;
+    const Eigen::Vector3d b_O = o.X_OW * b_W;
+    const Eigen::Vector3d margin = Eigen::Vector3d::Constant(margin_m);
+    const Eigen::AlignedBox3d box_O(a_O.cwiseMin(b_O) - margin, a_O.cwiseMax(b_O) + margin);
+    if (!box_O.intersects(o.shape->bounds())) continue;
+
+    const TriangleMesh& mesh = o.shape->mesh();
+    const int object = static_cast<int>(oi);
+    o.shape->for_each_triangle_overlapping(box_O, [&](std::uint32_t ti) {
+      if (!ignore.empty() && is_ignored(ignore, object, ti)) return;
+      const TriangleIndices& t = mesh.triangles[ti];
+      const auto hit = sweep_point_triangle(a_O, b_O, mesh.vertices_m[t[0]], mesh.vertices_m[t[1]],
+                                            mesh.vertices_m[t[2]], skin_m, inflate_m);
+      if (!hit) return;
+      // Earliest stop wins; ties (shared edges) go to the earlier plane crossing, then
+      // to the lower index so results never depend on traversal order.
+      const bool better = hit->t_stop < best_t_stop ||
+                          (hit->t_stop == best_t_stop &&
+                           (hit->t_plane < best_t_plane ||
+                            (hit->t_plane == best_t_plane && best &&
+                             (object < best->where.object ||
+                              (object == best->where.object && ti < best->where.triangle)))));
+      if (!better) return;
+      best_t_stop = hit->t_stop;
+      best_t_plane = hit->t_plane;
+      SweepHit h;
+      h.where = TriangleRef{object, ti};
+      h.t_stop = hit->t_stop;
+      h.normal_W = o.X_WO.linear() * hit->normal;
+      h.plane_offset_m = h.normal_W.dot(o.X_WO * mesh.vertices_m[t[0]]);
+      best = h;
+    });
+  }
+  return best;
+}
+
+std::array<Eigen::Vector3d, 3> CollisionWorld::triangle_W(const TriangleRef& ref) const {
+  const Object& o = objects_.at(static_cast<std::size_t>(ref.object));
+  const TriangleMesh& mesh = o.shape->mesh();
+  const TriangleIndices& t = mesh.triangles.at(ref.triangle);
+  return {o.X_WO * mesh.vertices_m[t[0]], o.X_WO * mesh.vertices_m[t[1]], o.X_WO * mesh.vertices_m[t[2]]};
+}
+
+bool CollisionWorld::projects_onto_triangle(const TriangleRef& ref, const Eigen::Vector3d& p_W,
+                                            double margin_m) const {
+  const auto v = triangle_W(ref);
+  const Eigen::Vector3d n = (v[1] - v[0]).cross(v[2] - v[0]);
+  if (!(n.squaredNorm() > 0.0)) return false;
+  for (int i = 0; i < 3; ++i) {
+    const Eigen::Vector3d& a = v[static_cast<std::size_t>(i)];
+    const Eigen::Vector3d outward = (v[static_cast<std::size_t>((i + 1) % 3)] - a).cross(n);
+    if (outward.dot(p_W - a) > margin_m * outward.norm()) return false;
+  }
+  return true;
+}
+
+Eigen::Vector3d CollisionWorld::face_normal_W(const TriangleRef& ref) const {
+  const auto v = triangle_W(ref);
+  const Eigen::Vector3d n = (v[1] - v[0]).cross(v[2] - v[0]);
+  const double len = n.norm();
+  return len > 0.0 ? Eigen::Vector3d(n / len) : Eigen::Vector3d::Zero();
+}
+
+Eigen::Vector3d CollisionWorld::shaded_normal_W(const TriangleRef& ref, const Eigen::Vector3d& p_W) const {
+  const Object& o = objects_.at(static_cast<std::size_t>(ref.object));
+  const TriangleMesh& mesh = o.shape->mesh();
+  const Eigen::Vector3d face = face_normal_W(ref);
+  if (mesh.vertex_normals.size() != mesh.vertices_m.size()) return face;
+  const TriangleIndices& t = mesh.triangles[ref.triangle];
+  const Eigen::Vector3d p = o.X_OW * p_W;
+  const Eigen::Vector3d& a = mesh.vertices_m[t[0]];
+  const Eigen::Vector3d& b = mesh.vertices_m[t[1]];
+  const Eigen::Vector3d& c = mesh.vertices_m[t[2]];
+  // Barycentric weights of p's projection, clamped into the triangle.
+  const Eigen::Vector3d n = (b - a).cross(c - a);
+  const double denom = n.squaredNorm();
+  if (!(denom > 0.0)) return face;
+  double wa = n.dot((b - p).cross(c - p)) / denom;
+  double wb = n.dot((c - p).cross(a - p)) / denom;
+  double wc = 1.0 - wa - wb;
+  wa = std::max(wa, 0.0);
+  wb = std::max(wb, 0.0);
+  wc = std::max(wc, 0.0);
+  const double sum = wa + wb + wc;
+  if (!(sum > 0.0)) return face;
+  const Eigen::Vector3d blended_O = (wa * mesh.vertex_normals[t[0]] + wb * mesh.vertex_normals[t[1]] +
+                                     wc * mesh.vertex_normals[t[2]]) / sum;
+  const double len = blended_O.norm();
+  if (!(len > 0.0)) return face;
+  return o.X_WO.linear() * (blended_O / len);
+}
+
+}  // namespace mhd

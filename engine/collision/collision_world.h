@@ -1,0 +1,77 @@
+#pragma once
+// The collision geometry of a scene: shapes (each a MeshBvh in its own frame) placed
+// in the world by poses. Moving an object changes its pose only.
+// All queries are conservative: they may report a contact a hair early, never miss one.
+
+#include "collision/mesh_bvh.h"
+#include "geometry/pose.h"
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace mhd {
+
+/// One triangle of one object.
+struct TriangleRef {
+  int object = -1;
+  std::uint32_t triangle = 0;
+  friend bool operator==(const TriangleRef&, const TriangleRef&) = default;
+};
+
+/// First contact of a swept point with the surface.
+struct SweepHit {
+  TriangleRef where;
+  /// Fraction of the segment the point may travel and still keep `skin_m` from the
+  /// hit triangle's plane and cross nothing (0 <= t_stop < 1).
+  double t_stop = 0.0;
+  /// Unit triangle normal in the world, oriented towards the side the segment came from.
+  Eigen::Vector3d normal_W = Eigen::Vector3d::Zero();
+  /// Plane offset: points x on the triangle satisfy normal_W . x == plane_offset_m.
+  double plane_offset_m = 0.0;
+};
+
+class CollisionWorld {
+ public:
+  /// Adds an object; returns its index (0, 1, ...).
+  int add_object(std::shared_ptr<const MeshBvh> shape, const Pose& X_WO);
+
+  /// Moves an object. Never rebuilds its BVH.
+  void set_pose(int object, const Pose& X_WO);
+
+  [[nodiscard]] int object_count() const { return static_cast<int>(objects_.size()); }
+  [[nodiscard]] const Pose& pose(int object) const { return objects_[static_cast<std::size_t>(object)].X_WO; }
+  [[nodiscard]] const MeshBvh& shape(int object) const { return *objects_[static_cast<std::size_t>(object)].shape; }
+
+  /// Sweeps a point from a_W to b_W. Reports the triangle that the point reaches
+  /// first, where "reaches" means coming within `skin_m` of the triangle's plane over
+  /// the triangle (inflated by a tolerance) while moving towards it. A segment that
+  /// crosses any triangle always yields a hit. Triangles in `ignore` are skipped.
+  /// Precondition: skin_m > 0, a_W and b_W finite.
+  [[nodiscard]] std::optional<SweepHit> sweep(const Eigen::Vector3d& a_W, const Eigen::Vector3d& b_W,
+                                              double skin_m, std::span<const TriangleRef> ignore = {}) const;
+
+  /// True if p_W's projection onto the triangle's plane lies inside the triangle grown
+  /// by margin_m on every edge (the proxy is "over" this triangle).
+  [[nodiscard]] bool projects_onto_triangle(const TriangleRef& t, const Eigen::Vector3d& p_W, double margin_m) const;
+
+  /// Triangle corners in the world frame.
+  [[nodiscard]] std::array<Eigen::Vector3d, 3> triangle_W(const TriangleRef& t) const;
+
+  /// Unit geometric normal (CCW winding) in the world frame, and the force-shading
+  /// normal interpolated from vertex normals at the point closest to p_W.
+  [[nodiscard]] Eigen::Vector3d face_normal_W(const TriangleRef& t) const;
+  [[nodiscard]] Eigen::Vector3d shaded_normal_W(const TriangleRef& t, const Eigen::Vector3d& p_W) const;
+
+ private:
+  struct Object {
+    std::shared_ptr<const MeshBvh> shape;
+    Pose X_WO;
+    Pose X_OW;
+  };
+  std::vector<Object> objects_;
+};
+
+}  // namespace mhd

@@ -1,0 +1,102 @@
+#include "collision/mesh_bvh.h"
+
+#include <cstdlib>
+#include <cstring>
+#include <stdexcept>
+
+namespace mhd {
+namespace {
+
+constexpr std::size_t kBulletAlignment = 16;
+// Bullet grows the quantization box by a fixed 1.0 units before quantizing to 16 bits
+// (btQuantizedBvh::setQuantizationValues), which in metres would make the tree's
+// boxes centimetres wide on a small mesh. Bullet therefore sees the mesh scaled so
+// its largest extent is this many units, which makes the margin negligible.
+constexpr double kBvhExtentUnits = 1e4;
+
+void free_aligned(std::byte* p) { std::free(p); }
+
+btVector3 to_bt(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+
+}  // namespace
+
+void MeshBvh::make_interface() {
+  if (mesh_->triangles.empty()) throw std::invalid_argument("MeshBvh: mesh has no triangles");
+  btIndexedMesh part;
+  part.m_numTriangles = static_cast<int>(mesh_->triangles.size());
+  part.m_triangleIndexBase = reinterpret_cast<const unsigned char*>(mesh_->triangles.data());
+  part.m_triangleIndexStride = static_cast<int>(sizeof(TriangleIndices));
+  part.m_indexType = PHY_INTEGER;
+  part.m_numVertices = static_cast<int>(mesh_->vertices_m.size());
+  part.m_vertexBase = reinterpret_cast<const unsigned char*>(mesh_->vertices_m.data());
+  part.m_vertexStride = static_cast<int>(sizeof(Eigen::Vector3d));
+  part.m_vertexType = PHY_DOUBLE;
+  interface_ = std::make_unique<btTriangleIndexVertexArray>();
+  interface_->addIndexedMesh(part, PHY_INTEGER);
+  bounds_ = mesh_bounds(*mesh_);
+  const double extent = bounds_.sizes().maxCoeff();
+  bvh_scale_ = extent > 0.0 ? kBvhExtentUnits / extent : 1.0;
+  interface_->setScaling(btVector3(bvh_scale_, bvh_scale_, bvh_scale_));
+}
+
+MeshBvh::MeshBvh(std::shared_ptr<const TriangleMesh> mesh) : mesh_(std::move(mesh)) {
+  make_interface();
+  shape_ = std::make_unique<btBvhTriangleMeshShape>(interface_.get(), /*quantized=*/true,
+                                                     /*buildBvh=*/true);
+}
+
+std::unique_ptr<MeshBvh> MeshBvh::from_serialized(std::shared_ptr<const TriangleMesh> mesh,
+                                                  std::span<const std::byte> serialized) {
+  if (!mesh || mesh->triangles.empty() || serialized.empty()) return nullptr;
+  std::unique_ptr<MeshBvh> out(new MeshBvh());
+  out->mesh_ = std::move(mesh);
+  out->make_interface();
+  const std::size_t size = (serialized.size() + kBulletAlignment - 1) / kBulletAlignment * kBulletAlignment;
+  auto* raw = static_cast<std::byte*>(std::aligned_alloc(kBulletAlignment, size));
+  if (raw == nullptr) return nullptr;
+  out->serialized_storage_ = {raw, &free_aligned};
+  std::memcpy(raw, serialized.data(), serialized.size());
+  btOptimizedBvh* bvh = btOptimizedBvh::deSerializeInPlace(raw, static_cast<unsigned>(serialized.size()),
+                                                           /*swapEndian=*/false);
+  if (bvh == nullptr || !bvh->isQuantized()) return nullptr;
+  // The tree must cover exactly this mesh: every leaf names a triangle that exists.
+  const auto& leaves = bvh->getQuantizedNodeArray();
+  for (int i = 0; i < leaves.size(); ++i) {
+    const auto& node = leaves[i];
+    if (node.isLeafNode() &&
+        (node.getPartId() != 0 ||
+         static_cast<std::size_t>(node.getTriangleIndex()) >= out->mesh_->triangles.size())) {
+      bvh->~btOptimizedBvh();
+      return nullptr;
+    }
+  }
+  out->adopted_bvh_ = bvh;
+  out->shape_ = std::make_unique<btBvhTriangleMeshShape>(out->interface_.get(), true, /*buildBvh=*/false);
+  out->shape_->setOptimizedBvh(bvh);
+  return out;
+}
+
+MeshBvh::~MeshBvh() {
+  shape_.reset();
+  // An in-place BVH lives in serialized_storage_; run its destructor, the buffer is freed after.
+  if (adopted_bvh_ != nullptr) adopted_bvh_->~btOptimizedBvh();
+}
+
+std::vector<std::byte> MeshBvh::serialize_bvh() const {
+  const btOptimizedBvh* bvh = const_cast<btBvhTriangleMeshShape&>(*shape_).getOptimizedBvh();
+  const unsigned size = bvh->calculateSerializeBufferSize();
+  const std::size_t padded = (size + kBulletAlignment - 1) / kBulletAlignment * kBulletAlignment;
+  std::unique_ptr<std::byte[], void (*)(std::byte*)> buffer(
+      static_cast<std::byte*>(std::aligned_alloc(kBulletAlignment, padded)), &free_aligned);
+  if (!buffer || !bvh->serializeInPlace(buffer.get(), size, /*swapEndian=*/false)) {
+    throw std::runtime_error("MeshBvh: Bullet failed to serialize the BVH");
+  }
+  return {buffer.get(), buffer.get() + size};
+}
+
+void MeshBvh::query(const Eigen::AlignedBox3d& box_O, btNodeOverlapCallback& callback) const {
+  const btOptimizedBvh* bvh = const_cast<btBvhTriangleMeshShape&>(*shape_).getOptimizedBvh();
+  bvh->reportAabbOverlappingNodex(&callback, to_bt(box_O.min() * bvh_scale_), to_bt(box_O.max() * bvh_scale_));
+}
+
+}  // namespace mhd

@@ -1,0 +1,76 @@
+#pragma once
+// What a scene file says, in SI units, with no file format attached. The XML reader
+// fills it; the scene compiler turns it into collision geometry. Nothing here loads
+// meshes or knows about XML.
+
+#include "geometry/pose.h"
+#include "material/haptic_material.h"
+#include "scene/diagnostic.h"
+
+#include <Eigen/Core>
+
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace mhd {
+
+struct MeshSource {
+  std::filesystem::path file;  ///< absolute (resolved against the XML file that named it)
+  /// Multiplies mesh-file coordinates into metres: the scene's unit (0.001 for mm)
+  /// times the object's scale, per axis.
+  Eigen::Vector3d scale_to_m = Eigen::Vector3d::Ones();
+};
+
+struct PlaneSource { double size_x_m = 0, size_y_m = 0; };
+struct SphereSource { double radius_m = 0; int subdivisions = 4; };
+struct BoxSource { Eigen::Vector3d size_m = Eigen::Vector3d::Zero(); };
+struct CylinderSource { double radius_m = 0, height_m = 0; int segments = 64; };
+
+using ShapeSource = std::variant<MeshSource, PlaneSource, SphereSource, BoxSource, CylinderSource>;
+
+struct ObjectDescription {
+  std::string name;
+  ShapeSource shape;
+  Pose X_WO = Pose::Identity();  ///< pose of the object in the world
+  std::string material_name;      ///< empty for an inline material
+  HapticMaterial material;        ///< resolved (named or inline)
+  SourceLocation where;
+};
+
+/// A rig frame: the pose of `name` in its `parent` frame (issue: plugins and rig).
+struct FrameDescription {
+  std::string name;
+  std::string parent;
+  Pose X_PF = Pose::Identity();
+  SourceLocation where;
+};
+
+enum class PluginKind { Device, Tracker, Base, Display };
+
+struct PluginDescription {
+  PluginKind kind = PluginKind::Device;
+  std::string name;                           ///< plugin name, e.g. "sim_phantom"
+  std::map<std::string, std::string> params;  ///< passed to the plugin's open()
+  SourceLocation where;
+};
+
+struct HapticsSettings {
+  double max_force_N = 8.5;   ///< force clamp (PHANToM Premium 1.5 peak)
+  double update_rate_Hz = 1000.0;
+};
+
+struct SceneDescription {
+  std::filesystem::path file;  ///< the root XML file
+  std::string name;
+  HapticsSettings haptics;
+  std::map<std::string, HapticMaterial> materials;
+  std::vector<ObjectDescription> objects;
+  std::vector<FrameDescription> rig_frames;
+  std::vector<PluginDescription> plugins;
+};
+
+}  // namespace mhd

@@ -1,0 +1,29 @@
+#pragma once
+// Reads scene XML (format v1, docs/scene-format.md) into a SceneDescription.
+// Every problem is reported with file:line; a scene with any error is not returned,
+// so nothing is ever half-loaded.
+
+#include "scene/diagnostic.h"
+#include "scene/scene_description.h"
+
+#include <filesystem>
+#include <optional>
+#include <string_view>
+
+namespace mhd {
+
+struct SceneReadResult {
+  std::optional<SceneDescription> scene;  ///< set only when diagnostics is empty
+  Diagnostics diagnostics;                ///< every problem found, in file order
+  [[nodiscard]] bool ok() const { return scene.has_value(); }
+};
+
+/// Reads a scene file and its includes. Mesh files are checked to exist and be
+/// readable, not loaded.
+[[nodiscard]] SceneReadResult read_scene_file(const std::filesystem::path& file);
+
+/// Reads scene XML from memory; relative paths resolve against `file`'s folder and
+/// diagnostics name `file`.
+[[nodiscard]] SceneReadResult read_scene_string(std::string_view xml, const std::filesystem::path& file);
+
+}  // namespace mhd

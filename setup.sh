@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# One-step set-up for a fresh Debian 12 machine (run as root, or with sudo available):
+# installs the missing Debian packages, configures and builds with CMake, then
+#   ./setup.sh demo   runs the main job on simulated hardware (the default dolphin scene)
+#   ./setup.sh test   runs every test with ctest
+set -euo pipefail
+cd "$(dirname "$0")"
+
+mode="${1:-}"
+case "$mode" in
+  demo|test) ;;
+  *) echo "usage: $0 demo|test" >&2; exit 2 ;;
+esac
+
+mapfile -t wanted < <(grep -v '^\s*#' tools/debian-packages.txt | grep -v '^\s*$')
+missing=()
+for p in "${wanted[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}"
+  sudo_cmd=()
+  [ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo_cmd[@]}" apt-get update -qq
+  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+cmake --preset release >/dev/null
+cmake --build --preset release
+
+if [ "$mode" = demo ]; then
+  exec build/release/tools/mhd/mhd run scenes/dolphin.xml
+else
+  exec ctest --preset release
+fi

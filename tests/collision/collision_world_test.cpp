@@ -1,0 +1,72 @@
+#include "collision/collision_world.h"
+
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+namespace mhd {
+namespace {
+
+std::shared_ptr<const MeshBvh> unit_square() {
+  auto mesh = std::make_shared<TriangleMesh>();
+  mesh->vertices_m = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  mesh->triangles = {{0, 1, 2}, {0, 2, 3}};
+  compute_vertex_normals(*mesh);
+  return std::make_shared<MeshBvh>(mesh);
+}
+
+TEST(CollisionWorld, SweepFindsTheSurfaceInTheObjectsPose) {
+  CollisionWorld world;
+  // Square turned to face +x, moved to x = 2.
+  Pose X_WO = pose_from_xyz_rpy(Eigen::Vector3d(2, 0, 0), Eigen::Vector3d(0, std::numbers::pi / 2, 0));
+  const int id = world.add_object(unit_square(), X_WO);
+  const Eigen::Vector3d a(3, 0.5, -0.5), b(1, 0.5, -0.5);
+  const auto hit = world.sweep(a, b, 1e-6);
+  ASSERT_TRUE(hit);
+  EXPECT_EQ(hit->where.object, id);
+  EXPECT_NEAR(hit->normal_W.x(), 1.0, 1e-12);
+  EXPECT_NEAR(hit->plane_offset_m, 2.0, 1e-12);
+  const Eigen::Vector3d stop = a + hit->t_stop * (b - a);
+  EXPECT_NEAR(stop.x(), 2.0 + 1e-6, 1e-12);
+}
+
+TEST(CollisionWorld, MovingAnObjectMovesItsSurfaceNotItsTree) {
+  CollisionWorld world;
+  const auto shape = unit_square();
+  const int id = world.add_object(shape, Pose::Identity());
+  const btOptimizedBvh* tree_before = const_cast<btBvhTriangleMeshShape&>(world.shape(id).shape()).getOptimizedBvh();
+  ASSERT_TRUE(world.sweep(Eigen::Vector3d(0.5, 0.5, 1), Eigen::Vector3d(0.5, 0.5, -1), 1e-6));
+  Pose moved = Pose::Identity();
+  moved.translation() = Eigen::Vector3d(5, 0, 0);
+  world.set_pose(id, moved);
+  EXPECT_FALSE(world.sweep(Eigen::Vector3d(0.5, 0.5, 1), Eigen::Vector3d(0.5, 0.5, -1), 1e-6));
+  EXPECT_TRUE(world.sweep(Eigen::Vector3d(5.5, 0.5, 1), Eigen::Vector3d(5.5, 0.5, -1), 1e-6));
+  EXPECT_EQ(const_cast<btBvhTriangleMeshShape&>(world.shape(id).shape()).getOptimizedBvh(), tree_before);
+}
+
+TEST(CollisionWorld, IgnoredTrianglesAreSkipped) {
+  CollisionWorld world;
+  world.add_object(unit_square(), Pose::Identity());
+  const Eigen::Vector3d a(0.7, 0.2, 1), b(0.7, 0.2, -1);  // over triangle 0 only
+  const auto hit = world.sweep(a, b, 1e-6);
+  ASSERT_TRUE(hit);
+  const TriangleRef ignore[] = {hit->where};
+  EXPECT_FALSE(world.sweep(a, b, 1e-6, ignore));
+}
+
+TEST(CollisionWorld, ShadedNormalBlendsVertexNormals) {
+  auto mesh = std::make_shared<TriangleMesh>();
+  mesh->vertices_m = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  mesh->triangles = {{0, 1, 2}};
+  mesh->vertex_normals = {Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(1, 0, 1).normalized(), Eigen::Vector3d(0, 0, 1)};
+  CollisionWorld world;
+  world.add_object(std::make_shared<MeshBvh>(mesh), Pose::Identity());
+  const auto at_vertex1 = world.shaded_normal_W({0, 0}, Eigen::Vector3d(1, 0, 0));
+  EXPECT_TRUE(at_vertex1.isApprox(Eigen::Vector3d(1, 0, 1).normalized(), 1e-12));
+  const auto at_vertex0 = world.shaded_normal_W({0, 0}, Eigen::Vector3d(0, 0, 0));
+  EXPECT_TRUE(at_vertex0.isApprox(Eigen::Vector3d(0, 0, 1), 1e-12));
+  EXPECT_NEAR(world.shaded_normal_W({0, 0}, Eigen::Vector3d(0.5, 0, 0)).norm(), 1.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace mhd
