@@ -37,6 +37,8 @@ void MeshBvh::make_interface() {
   const double extent = bounds_.sizes().maxCoeff();
   bvh_scale_ = extent > 0.0 ? kBvhExtentUnits / extent : 1.0;
   interface_->setScaling(btVector3(bvh_scale_, bvh_scale_, bvh_scale_));
+  // The bounds are known; without them Bullet walks every triangle to find them.
+  interface_->setPremadeAabb(to_bt(bounds_.min() * bvh_scale_), to_bt(bounds_.max() * bvh_scale_));
 }
 
 MeshBvh::MeshBvh(std::shared_ptr<const TriangleMesh> mesh) : mesh_(std::move(mesh)) {
@@ -72,7 +74,8 @@ std::unique_ptr<MeshBvh> MeshBvh::from_serialized(std::shared_ptr<const Triangle
   }
   out->adopted_bvh_ = bvh;
   out->shape_ = std::make_unique<btBvhTriangleMeshShape>(out->interface_.get(), true, /*buildBvh=*/false);
-  out->shape_->setOptimizedBvh(bvh);
+  // Same scaling as the interface, or Bullet resets it and re-walks the tree.
+  out->shape_->setOptimizedBvh(bvh, btVector3(out->bvh_scale_, out->bvh_scale_, out->bvh_scale_));
   return out;
 }
 
@@ -88,7 +91,9 @@ std::vector<std::byte> MeshBvh::serialize_bvh() const {
   const std::size_t padded = (size + kBulletAlignment - 1) / kBulletAlignment * kBulletAlignment;
   std::unique_ptr<std::byte[], void (*)(std::byte*)> buffer(
       static_cast<std::byte*>(std::aligned_alloc(kBulletAlignment, padded)), &free_aligned);
-  if (!buffer || !bvh->serializeInPlace(buffer.get(), size, /*swapEndian=*/false)) {
+  // A tree adopted from the cache is a plain btQuantizedBvh (deSerializeInPlace builds
+  // that), so call the base class's serializer, valid for both.
+  if (!buffer || !static_cast<const btQuantizedBvh*>(bvh)->serialize(buffer.get(), size, /*swapEndian=*/false)) {
     throw std::runtime_error("MeshBvh: Bullet failed to serialize the BVH");
   }
   return {buffer.get(), buffer.get() + size};

@@ -4,7 +4,10 @@ namespace mhd {
 
 std::string Diagnostic::to_string() const {
   std::string out = where.file;
-  if (where.line > 0) out += ":" + std::to_string(where.line);
+  if (where.line > 0) {
+    out += ':';
+    out += std::to_string(where.line);
+  }
   out += ": error: ";
   out += message;
   return out;

@@ -58,6 +58,10 @@ TEST(MeshBvh, SerializedTreeAnswersLikeTheBuiltOne) {
   const Eigen::AlignedBox3d box(Eigen::Vector3d(0.2, 0.3, -0.01), Eigen::Vector3d(0.25, 0.45, 0.01));
   EXPECT_EQ(query(built, box), query(*loaded, box));
   EXPECT_FALSE(query(built, box).empty());
+  // A tree adopted from a buffer serializes again to a tree that answers the same.
+  const auto again = MeshBvh::from_serialized(mesh, loaded->serialize_bvh());
+  ASSERT_NE(again, nullptr);
+  EXPECT_EQ(query(built, box), query(*again, box));
 }
 
 TEST(MeshBvh, RejectsATreeOfAnotherMesh) {

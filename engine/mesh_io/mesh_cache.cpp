@@ -1,0 +1,492 @@
+#include "mesh_io/mesh_cache.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <sys/uio.h>
+#include <unistd.h>
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+#include <xxhash.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <bit>
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+#include <mutex>
+#include <set>
+#include <span>
+#include <system_error>
+#include <type_traits>
+#include <vector>
+
+namespace mhd {
+namespace {
+
+static_assert(sizeof(Eigen::Vector3d) == 3 * sizeof(double), "vertices are stored as packed doubles");
+static_assert(sizeof(TriangleIndices) == 3 * sizeof(std::uint32_t));
+static_assert(std::is_trivially_copyable_v<TriangleIndices>);
+
+constexpr std::array<char, 8> kMagic = {'M', 'H', 'D', 'B', 'V', 'H', '\0', '\0'};
+constexpr std::uint32_t kEndianTag = 0x01020304u;
+constexpr std::size_t kAlign = 16;
+constexpr const char* kExtension = ".mhdbvh";
+
+/// The first 128 bytes of a cache file (native byte order; the endian tag, scalar and
+/// pointer sizes and Bullet version make a file from another platform a mismatch).
+struct FileHeader {
+  std::array<char, 8> magic;
+  std::uint32_t format_version;
+  std::uint32_t header_bytes;
+  std::uint32_t endian_tag;
+  std::uint32_t scalar_bytes;
+  std::uint32_t pointer_bytes;
+  std::uint32_t bullet_version;
+  std::uint64_t key_low, key_high;
+  std::uint64_t vertex_count;
+  std::uint64_t triangle_count;
+  std::uint64_t normal_count;
+  std::uint64_t bvh_bytes;
+  std::uint64_t payload_bytes;
+  std::uint64_t payload_hash_low, payload_hash_high;  ///< XXH3-128 of everything after the header
+  std::array<std::uint64_t, 2> reserved;
+  std::uint64_t header_hash;  ///< XXH3-64 of this header with header_hash = 0
+};
+static_assert(sizeof(FileHeader) == 128);
+static_assert(std::is_trivially_copyable_v<FileHeader>);
+
+constexpr std::size_t align_up(std::size_t n) { return (n + kAlign - 1) / kAlign * kAlign; }
+
+/// Byte offsets of the payload sections, relative to the file start.
+struct Layout {
+  std::size_t vertices, triangles, normals, bvh, end;
+};
+/// Layout for the given counts; nullopt if it would not fit in `limit` bytes (checked
+/// before multiplying, so hostile counts cannot overflow).
+std::optional<Layout> layout_for(std::uint64_t vertices, std::uint64_t triangles, std::uint64_t normals,
+                                 std::uint64_t bvh_bytes, std::uint64_t limit) {
+  if (vertices > limit / sizeof(Eigen::Vector3d) || triangles > limit / sizeof(TriangleIndices) ||
+      normals > limit / sizeof(Eigen::Vector3d) || bvh_bytes > limit) {
+    return std::nullopt;
+  }
+  Layout l{};
+  l.vertices = sizeof(FileHeader);
+  l.triangles = align_up(l.vertices + static_cast<std::size_t>(vertices) * sizeof(Eigen::Vector3d));
+  l.normals = align_up(l.triangles + static_cast<std::size_t>(triangles) * sizeof(TriangleIndices));
+  l.bvh = align_up(l.normals + static_cast<std::size_t>(normals) * sizeof(Eigen::Vector3d));
+  l.end = l.bvh + static_cast<std::size_t>(bvh_bytes);
+  if (l.end > limit) return std::nullopt;
+  return l;
+}
+
+std::uint64_t header_hash(FileHeader h) {
+  h.header_hash = 0;
+  return XXH3_64bits(&h, sizeof h);
+}
+
+/// Closes a file descriptor on scope exit.
+struct Fd {
+  int fd = -1;
+  explicit Fd(int f) : fd(f) {}
+  ~Fd() {
+    if (fd >= 0) ::close(fd);
+  }
+  Fd(const Fd&) = delete;
+  Fd& operator=(const Fd&) = delete;
+};
+
+/// Reads exactly `size` bytes (retrying short reads); false on error or early EOF.
+bool read_all(int fd, std::byte* out, std::size_t size) {
+  while (size > 0) {
+    const ssize_t n = ::read(fd, out, size);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    out += n;
+    size -= static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+bool write_all(int fd, const std::byte* data, std::size_t size) {
+  while (size > 0) {
+    const ssize_t n = ::write(fd, data, size);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    data += n;
+    size -= static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+/// Warns once per folder and process that the cache cannot be written there.
+void warn_unwritable_once(const std::filesystem::path& dir, const std::string& why) {
+  static std::mutex mutex;
+  static std::set<std::string> warned;
+  std::lock_guard lock(mutex);
+  if (warned.insert(dir.string()).second) {
+    spdlog::warn("mesh cache: cannot write to '{}' ({}); meshes load without the cache", dir.string(), why);
+  }
+}
+
+struct HashInput {
+  std::uint32_t format_version;
+  std::uint32_t bullet_version;
+  double scale[3];
+};
+
+std::string short_name(const std::filesystem::path& file) { return file.filename().string(); }
+
+/// Validates a cache file's header against the expected key and the file's size;
+/// returns the payload layout or the reason for rejecting the file.
+std::optional<Layout> check_header(const FileHeader& h, const MeshCacheKey& key, std::size_t file_size,
+                                   std::string& why) {
+  if (h.magic != kMagic) {
+    why = "bad magic";
+    return std::nullopt;
+  }
+  if (h.format_version != kMeshCacheFormatVersion || h.header_bytes != sizeof(FileHeader) ||
+      h.endian_tag != kEndianTag || h.scalar_bytes != sizeof(btScalar) || h.pointer_bytes != sizeof(void*) ||
+      h.bullet_version != BT_BULLET_VERSION) {
+    why = "format or platform mismatch";
+    return std::nullopt;
+  }
+  if (h.header_hash != header_hash(h)) {
+    why = "header checksum mismatch";
+    return std::nullopt;
+  }
+  if (h.key_low != key.low || h.key_high != key.high) {
+    why = "key mismatch";
+    return std::nullopt;
+  }
+  if (h.triangle_count == 0 || h.vertex_count < 3 || h.vertex_count > std::numeric_limits<std::uint32_t>::max() ||
+      h.normal_count != h.vertex_count || h.bvh_bytes == 0 ||
+      h.triangle_count > static_cast<std::uint64_t>(std::numeric_limits<int>::max())) {
+    why = "implausible counts";
+    return std::nullopt;
+  }
+  const auto layout = layout_for(h.vertex_count, h.triangle_count, h.normal_count, h.bvh_bytes, file_size);
+  if (!layout || layout->end != file_size || h.payload_bytes != file_size - sizeof(FileHeader)) {
+    why = fmt::format("size mismatch ({} bytes)", file_size);
+    return std::nullopt;
+  }
+  return layout;
+}
+
+/// Spot check that the BVH was built for this mesh in the frame MeshBvh uses now: each
+/// sampled triangle must be found by a query with its own bounding box. Catches a tree
+/// from an older MeshBvh convention that checksums cannot.
+bool bvh_finds_its_triangles(const MeshBvh& bvh) {
+  const TriangleMesh& m = bvh.mesh();
+  const std::size_t n = m.triangles.size();
+  const std::size_t samples = std::min<std::size_t>(n, 64);
+  for (std::size_t k = 0; k <= samples; ++k) {
+    const auto t = static_cast<std::uint32_t>(k == samples ? n - 1 : k * n / samples);
+    Eigen::AlignedBox3d box;
+    for (const auto v : m.triangles[t]) box.extend(m.vertices_m[v]);
+    bool found = false;
+    bvh.for_each_triangle_overlapping(box, [&](std::uint32_t i) { found = found || i == t; });
+    if (!found) return false;
+  }
+  return true;
+}
+
+/// Builds the mesh and BVH from a whole cache file image whose header passed
+/// check_header(); returns null with the reason if the payload fails validation.
+std::unique_ptr<MeshBvh> parse_payload(const FileHeader& h, const Layout& layout, std::span<const std::byte> image,
+                                       std::string& why) {
+  const XXH128_hash_t payload = XXH3_128bits(image.data() + sizeof(FileHeader), image.size() - sizeof(FileHeader));
+  if (payload.low64 != h.payload_hash_low || payload.high64 != h.payload_hash_high) {
+    why = "payload checksum mismatch";
+    return nullptr;
+  }
+  auto mesh = std::make_shared<TriangleMesh>();
+  const auto nv = static_cast<std::size_t>(h.vertex_count);
+  const auto nt = static_cast<std::size_t>(h.triangle_count);
+  mesh->vertices_m.resize(nv);
+  mesh->triangles.resize(nt);
+  mesh->vertex_normals.resize(nv);
+  std::memcpy(static_cast<void*>(mesh->vertices_m.data()), image.data() + layout.vertices, nv * sizeof(Eigen::Vector3d));
+  std::memcpy(mesh->triangles.data(), image.data() + layout.triangles, nt * sizeof(TriangleIndices));
+  std::memcpy(static_cast<void*>(mesh->vertex_normals.data()), image.data() + layout.normals, nv * sizeof(Eigen::Vector3d));
+  // A matching checksum makes accidental corruption vanishingly unlikely; these checks
+  // are cheap and keep a hand-made file from breaking the mesh invariants.
+  const auto n32 = static_cast<std::uint32_t>(nv);
+  for (const auto& t : mesh->triangles) {
+    if (t[0] >= n32 || t[1] >= n32 || t[2] >= n32 || t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
+      why = "triangle index out of range";
+      return nullptr;
+    }
+  }
+  for (std::size_t i = 0; i < nv; ++i) {
+    if (!mesh->vertices_m[i].allFinite() || !mesh->vertex_normals[i].allFinite()) {
+      why = "non-finite vertex data";
+      return nullptr;
+    }
+  }
+  auto bvh = MeshBvh::from_serialized(std::move(mesh), image.subspan(layout.bvh, static_cast<std::size_t>(h.bvh_bytes)));
+  if (!bvh) {
+    why = "invalid serialized BVH";
+  } else if (!bvh_finds_its_triangles(*bvh)) {
+    why = "BVH does not match the mesh";
+    bvh.reset();
+  }
+  return bvh;
+}
+
+/// Reads and validates the cache file for `key`: nullptr with `why` set if it is
+/// unusable, nullptr with `why` empty if there is none.
+std::unique_ptr<MeshBvh> read_cache_file(const std::filesystem::path& path, const MeshCacheKey& key,
+                                         const std::string& name, const MeshProgress& progress, std::string& why) {
+  Fd fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
+  if (fd.fd < 0) {
+    if (errno != ENOENT && errno != ENOTDIR) why = fmt::format("cannot open: {}", std::strerror(errno));
+    return nullptr;
+  }
+  struct stat st {};
+  if (::fstat(fd.fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    why = "not a regular file";
+    return nullptr;
+  }
+  const auto size = static_cast<std::size_t>(st.st_size);
+  FileHeader h;
+  if (size < sizeof(FileHeader) || !read_all(fd.fd, reinterpret_cast<std::byte*>(&h), sizeof h)) {
+    why = "truncated header";
+    return nullptr;
+  }
+  const auto layout = check_header(h, key, size, why);
+  if (!layout) return nullptr;
+  const bool report = progress && h.triangle_count >= kProgressMinTriangles;
+  const std::string what = fmt::format("reading cached BVH of {}", name);
+  if (report) progress(what, 0.0);
+  // One read of the whole file into one buffer.
+  auto image = std::make_unique_for_overwrite<std::byte[]>(size);
+  std::memcpy(image.get(), &h, sizeof h);
+  if (!read_all(fd.fd, image.get() + sizeof h, size - sizeof h)) {
+    why = "read error or file shrank";
+    return nullptr;
+  }
+  auto bvh = parse_payload(h, *layout, {image.get(), size}, why);
+  if (report) progress(what, 1.0);
+  return bvh;
+}
+
+}  // namespace
+
+std::optional<std::filesystem::path> default_mesh_cache_dir() {
+  auto env = [](const char* name) -> std::string {
+    const char* v = std::getenv(name);
+    return v != nullptr ? std::string(v) : std::string();
+  };
+  if (auto d = env("MHD_CACHE_DIR"); !d.empty()) return std::filesystem::path(d);
+  if (auto d = env("XDG_CACHE_HOME"); !d.empty() && std::filesystem::path(d).is_absolute()) {
+    return std::filesystem::path(d) / "mhd";
+  }
+  if (auto d = env("HOME"); !d.empty()) return std::filesystem::path(d) / ".cache" / "mhd";
+  return std::nullopt;
+}
+
+std::string MeshCacheKey::hex() const { return fmt::format("{:016x}{:016x}", high, low); }
+
+std::optional<MeshCacheKey> mesh_cache_key(const std::filesystem::path& file, const Eigen::Vector3d& scale_to_m) {
+  Fd fd(::open(file.c_str(), O_RDONLY | O_CLOEXEC));
+  if (fd.fd < 0) return std::nullopt;
+  ::posix_fadvise(fd.fd, 0, 0, POSIX_FADV_SEQUENTIAL);
+  std::unique_ptr<XXH3_state_t, XXH_errorcode (*)(XXH3_state_t*)> state(XXH3_createState(), &XXH3_freeState);
+  if (!state || XXH3_128bits_reset(state.get()) != XXH_OK) return std::nullopt;
+  constexpr std::size_t kChunk = std::size_t{4} << 20;
+  const auto buffer = std::make_unique_for_overwrite<std::byte[]>(kChunk);
+  for (;;) {
+    const ssize_t n = ::read(fd.fd, buffer.get(), kChunk);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) return std::nullopt;
+    if (n == 0) break;
+    XXH3_128bits_update(state.get(), buffer.get(), static_cast<std::size_t>(n));
+  }
+  // +0.0 folds -0.0 so equal scales give equal keys.
+  const HashInput extra{kMeshCacheFormatVersion, BT_BULLET_VERSION,
+                        {scale_to_m.x() + 0.0, scale_to_m.y() + 0.0, scale_to_m.z() + 0.0}};
+  XXH3_128bits_update(state.get(), &extra, sizeof extra);
+  const XXH128_hash_t h = XXH3_128bits_digest(state.get());
+  return MeshCacheKey{h.low64, h.high64};
+}
+
+MeshCache::MeshCache(std::optional<std::filesystem::path> dir) : dir_(std::move(dir)) {
+  if (!dir_) return;
+  std::error_code ec;
+  std::filesystem::create_directories(*dir_, ec);
+  if (ec) {
+    warn_unwritable_once(*dir_, ec.message());
+  } else if (::access(dir_->c_str(), W_OK | X_OK) != 0) {
+    warn_unwritable_once(*dir_, std::strerror(errno));
+  } else {
+    writable_ = true;
+  }
+}
+
+std::filesystem::path MeshCache::file_for(const MeshCacheKey& key) const {
+  return dir_.value_or(std::filesystem::path()) / (key.hex() + kExtension);
+}
+
+CachedMesh MeshCache::load(const std::filesystem::path& file, const Eigen::Vector3d& scale_to_m,
+                           const MeshProgress& progress) {
+  CachedMesh result;
+  const std::string name = short_name(file);
+  std::optional<MeshCacheKey> key;
+  if (dir_) key = mesh_cache_key(file, scale_to_m);  // unreadable: the loader says why
+
+  // 1. Try the cache file.
+  if (key) {
+    result.cache_file = file_for(*key);
+    std::string why;
+    auto bvh = read_cache_file(result.cache_file, *key, name, progress, why);
+    if (bvh) {
+      ++stats_.hits;
+      result.outcome = CacheOutcome::Hit;
+      result.bvh = std::shared_ptr<const MeshBvh>(std::move(bvh));
+      spdlog::debug("mesh cache: hit for '{}' ({})", file.string(), result.cache_file.string());
+      return result;
+    }
+    if (why.empty()) {
+      ++stats_.misses;
+      result.outcome = CacheOutcome::Miss;
+    } else {
+      ++stats_.rejected;
+      result.outcome = CacheOutcome::Rejected;
+      result.rejected_reason = why;
+      spdlog::info("mesh cache: ignoring '{}' for '{}': {}; rebuilding", result.cache_file.string(), file.string(),
+                   why);
+    }
+  }
+
+  // 2. Load the file and build the BVH.
+  MeshProgress read_progress;
+  std::error_code ec;
+  const auto file_bytes = std::filesystem::file_size(file, ec);
+  // Roughly 16+ bytes per triangle in binary formats; text formats are larger, so this
+  // errs towards reporting.
+  if (progress && !ec && file_bytes >= kProgressMinTriangles * 16) read_progress = progress;
+  MeshLoadResult loaded = load_mesh_file(file, scale_to_m, read_progress);
+  if (!loaded.ok()) {
+    result.error = std::move(loaded.error);
+    return result;
+  }
+  result.dropped_triangles = loaded.dropped_triangles;
+  auto mesh = std::make_shared<const TriangleMesh>(std::move(*loaded.mesh));
+  const bool big = mesh->triangle_count() >= kProgressMinTriangles;
+  const std::string what = fmt::format("building BVH of {} ({} triangles)", name, mesh->triangle_count());
+  if (big && progress) progress(what, 0.0);
+  auto bvh = std::make_shared<const MeshBvh>(std::move(mesh));
+  if (big && progress) progress(what, 1.0);
+  result.bvh = bvh;
+
+  // 3. Store it.
+  if (key && writable_) store(result.cache_file, *key, *bvh, result);
+  return result;
+}
+
+void MeshCache::store(const std::filesystem::path& target, const MeshCacheKey& key, const MeshBvh& bvh,
+                      CachedMesh& result) {
+  const TriangleMesh& mesh = bvh.mesh();
+  std::vector<std::byte> serialized;
+  try {
+    serialized = bvh.serialize_bvh();
+  } catch (const std::exception& e) {
+    ++stats_.write_failures;
+    spdlog::warn("mesh cache: not caching '{}': {}", target.string(), e.what());
+    return;
+  }
+  const std::size_t limit = std::numeric_limits<std::size_t>::max() / 2;
+  const auto layout = layout_for(mesh.vertices_m.size(), mesh.triangles.size(), mesh.vertex_normals.size(),
+                                 serialized.size(), limit);
+  if (!layout || mesh.vertex_normals.size() != mesh.vertices_m.size()) {
+    ++stats_.write_failures;
+    return;
+  }
+
+  // Sections with the zero padding between them, in file order.
+  static constexpr std::array<std::byte, kAlign> kZeros{};
+  std::vector<std::span<const std::byte>> parts;
+  std::size_t at = sizeof(FileHeader);
+  auto add = [&](std::size_t offset, const void* data, std::size_t bytes) {
+    if (offset > at) parts.emplace_back(kZeros.data(), offset - at);
+    parts.emplace_back(static_cast<const std::byte*>(data), bytes);
+    at = offset + bytes;
+  };
+  add(layout->vertices, mesh.vertices_m.data(), mesh.vertices_m.size() * sizeof(Eigen::Vector3d));
+  add(layout->triangles, mesh.triangles.data(), mesh.triangles.size() * sizeof(TriangleIndices));
+  add(layout->normals, mesh.vertex_normals.data(), mesh.vertex_normals.size() * sizeof(Eigen::Vector3d));
+  add(layout->bvh, serialized.data(), serialized.size());
+
+  std::unique_ptr<XXH3_state_t, XXH_errorcode (*)(XXH3_state_t*)> state(XXH3_createState(), &XXH3_freeState);
+  if (!state || XXH3_128bits_reset(state.get()) != XXH_OK) {
+    ++stats_.write_failures;
+    return;
+  }
+  for (const auto& p : parts) XXH3_128bits_update(state.get(), p.data(), p.size());
+  const XXH128_hash_t payload = XXH3_128bits_digest(state.get());
+
+  FileHeader h{};
+  h.magic = kMagic;
+  h.format_version = kMeshCacheFormatVersion;
+  h.header_bytes = sizeof(FileHeader);
+  h.endian_tag = kEndianTag;
+  h.scalar_bytes = sizeof(btScalar);
+  h.pointer_bytes = sizeof(void*);
+  h.bullet_version = BT_BULLET_VERSION;
+  h.key_low = key.low;
+  h.key_high = key.high;
+  h.vertex_count = mesh.vertices_m.size();
+  h.triangle_count = mesh.triangles.size();
+  h.normal_count = mesh.vertex_normals.size();
+  h.bvh_bytes = serialized.size();
+  h.payload_bytes = layout->end - sizeof(FileHeader);
+  h.payload_hash_low = payload.low64;
+  h.payload_hash_high = payload.high64;
+  h.header_hash = header_hash(h);
+
+  // Unique temp name in the same folder, then an atomic rename over the target.
+  static std::atomic<unsigned> counter{0};
+  std::filesystem::path temp = target;
+  temp += fmt::format(".tmp.{}.{}", ::getpid(), counter.fetch_add(1));
+  bool ok = false;
+  std::string why;
+  {
+    Fd fd(::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644));
+    if (fd.fd < 0) {
+      why = std::strerror(errno);
+    } else {
+      ok = write_all(fd.fd, reinterpret_cast<const std::byte*>(&h), sizeof h);
+      for (const auto& p : parts) ok = ok && write_all(fd.fd, p.data(), p.size());
+      if (!ok) why = std::strerror(errno);
+      if (::close(fd.fd) != 0 && ok) {
+        ok = false;
+        why = std::strerror(errno);
+      }
+      fd.fd = -1;
+    }
+  }
+  std::error_code ec;
+  if (ok) {
+    std::filesystem::rename(temp, target, ec);
+    if (ec) {
+      ok = false;
+      why = ec.message();
+    }
+  }
+  if (!ok) {
+    std::filesystem::remove(temp, ec);
+    ++stats_.write_failures;
+    writable_ = false;
+    warn_unwritable_once(*dir_, why);
+    return;
+  }
+  ++stats_.writes;
+  result.written = true;
+  spdlog::debug("mesh cache: wrote '{}'", target.string());
+}
+
+}  // namespace mhd

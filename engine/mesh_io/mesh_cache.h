@@ -1,0 +1,102 @@
+#pragma once
+// On-disk cache of loaded meshes with their BVHs, so a second load of a large mesh
+// skips both assimp and the BVH build.
+//
+// Key: XXH3-128 of the mesh file's bytes, the scale, the cache format version and the
+// Bullet version. One file per key, "<32 hex digits>.mhdbvh" in the cache folder:
+// a 128-byte header (magic "MHDBVH", versions, key, counts, payload checksum, header
+// checksum), then vertices (double), triangles (uint32), vertex normals (double) and
+// Bullet's serialized BVH, each section 16-byte aligned. Files are written to a temp
+// file and renamed into place; a file that fails any check (size, counts, checksums,
+// key, index ranges, BVH leaves) is ignored and rebuilt, never trusted.
+
+#include "collision/mesh_bvh.h"
+#include "geometry/triangle_mesh.h"
+#include "mesh_io/mesh_loader.h"
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace mhd {
+
+/// Version of the cache file layout; part of every key. Bump it whenever the file
+/// layout, the loader's processing (load_mesh_file) or MeshBvh's tree convention
+/// changes, so that old entries are never used.
+inline constexpr std::uint32_t kMeshCacheFormatVersion = 1;
+
+/// Meshes with at least this many triangles report progress.
+inline constexpr std::size_t kProgressMinTriangles = 100'000;
+
+/// $MHD_CACHE_DIR, else $XDG_CACHE_HOME/mhd, else $HOME/.cache/mhd (empty or, for
+/// XDG_CACHE_HOME, relative values are skipped); nullopt when none is set.
+[[nodiscard]] std::optional<std::filesystem::path> default_mesh_cache_dir();
+
+struct MeshCacheKey {
+  std::uint64_t low = 0, high = 0;
+  [[nodiscard]] std::string hex() const;  ///< 32 lowercase hex digits
+  friend bool operator==(const MeshCacheKey&, const MeshCacheKey&) = default;
+};
+
+/// Key of a mesh file at a scale; nullopt if the file cannot be read.
+[[nodiscard]] std::optional<MeshCacheKey> mesh_cache_key(const std::filesystem::path& file,
+                                                         const Eigen::Vector3d& scale_to_m);
+
+enum class CacheOutcome {
+  Disabled,  ///< no cache folder: loaded and built from scratch
+  Hit,       ///< mesh and BVH came from the cache file
+  Miss,      ///< no cache file: loaded, built and (if writable) written
+  Rejected,  ///< a cache file existed but failed validation: rebuilt and overwritten
+};
+
+struct CachedMesh {
+  std::shared_ptr<const MeshBvh> bvh;  ///< null on error; bvh->mesh_ptr() is the mesh
+  std::optional<MeshLoadError> error;
+  CacheOutcome outcome = CacheOutcome::Disabled;
+  bool written = false;         ///< a new cache file was written
+  std::string rejected_reason;  ///< why the existing cache file was rejected
+  std::filesystem::path cache_file;
+  std::size_t dropped_triangles = 0;  ///< by the loader (0 on a hit)
+  [[nodiscard]] bool ok() const { return bvh != nullptr; }
+  [[nodiscard]] const TriangleMesh& mesh() const { return bvh->mesh(); }
+};
+
+struct MeshCacheStats {
+  std::size_t hits = 0, misses = 0, rejected = 0, writes = 0, write_failures = 0;
+};
+
+/// Not thread-safe; use one instance per thread (files are safe to share between
+/// processes: writers rename complete files into place).
+class MeshCache {
+ public:
+  /// `dir` nullopt disables caching. The folder is created if missing; if it cannot be
+  /// created or written, the cache works read-only (logged once per folder).
+  explicit MeshCache(std::optional<std::filesystem::path> dir);
+
+  /// Loads `file` at `scale_to_m` (see load_mesh_file()) with its BVH, from the cache
+  /// if a valid entry exists, else from the file, then stores it.
+  /// `progress` is called for meshes of kProgressMinTriangles or more (for the read
+  /// step, estimated from the file size).
+  [[nodiscard]] CachedMesh load(const std::filesystem::path& file, const Eigen::Vector3d& scale_to_m,
+                                const MeshProgress& progress = {});
+
+  [[nodiscard]] const std::optional<std::filesystem::path>& dir() const { return dir_; }
+  [[nodiscard]] bool writable() const { return writable_; }
+  [[nodiscard]] const MeshCacheStats& stats() const { return stats_; }
+  /// Where the entry for `key` lives (requires dir()).
+  [[nodiscard]] std::filesystem::path file_for(const MeshCacheKey& key) const;
+
+ private:
+  void store(const std::filesystem::path& target, const MeshCacheKey& key, const MeshBvh& bvh, CachedMesh& result);
+
+  std::optional<std::filesystem::path> dir_;
+  bool writable_ = false;
+  MeshCacheStats stats_;
+};
+
+}  // namespace mhd

@@ -1,0 +1,227 @@
+#include "mesh_io/mesh_loader.h"
+
+#include <assimp/Importer.hpp>
+#include <assimp/ProgressHandler.hpp>
+#include <assimp/config.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <bit>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <limits>
+#include <system_error>
+#include <unordered_map>
+
+namespace mhd {
+
+std::string MeshLoadError::message() const {
+  return fmt::format("mesh file '{}': {}", file.string(), reason);
+}
+
+namespace {
+
+/// Forwards assimp's progress (owned and deleted by the Importer).
+class ForwardProgress final : public Assimp::ProgressHandler {
+ public:
+  ForwardProgress(const MeshProgress& progress, std::string what)
+      : progress_(progress), what_(std::move(what)) {}
+  bool Update(float percentage) override {
+    if (percentage >= 0.0f) progress_(what_, std::clamp(static_cast<double>(percentage), 0.0, 1.0));
+    return true;  // never abort
+  }
+
+ private:
+  const MeshProgress& progress_;
+  std::string what_;
+};
+
+MeshLoadResult fail(const std::filesystem::path& file, std::string reason) {
+  MeshLoadResult r;
+  r.error = MeshLoadError{file, std::move(reason)};
+  return r;
+}
+
+/// Key of a position for welding: the bit patterns, with -0 folded into +0.
+struct PositionKey {
+  std::uint64_t x, y, z;
+  friend bool operator==(const PositionKey&, const PositionKey&) = default;
+};
+struct PositionKeyHash {
+  std::size_t operator()(const PositionKey& k) const noexcept {
+    std::uint64_t h = k.x * 0x9E3779B97F4A7C15ull;
+    h ^= (h >> 29) ^ (k.y * 0xC2B2AE3D27D4EB4Full);
+    h ^= (h >> 31) ^ (k.z * 0x165667B19E3779F9ull);
+    return static_cast<std::size_t>(h ^ (h >> 32));
+  }
+};
+PositionKey key_of(const Eigen::Vector3d& p) {
+  return {std::bit_cast<std::uint64_t>(p.x() + 0.0), std::bit_cast<std::uint64_t>(p.y() + 0.0),
+          std::bit_cast<std::uint64_t>(p.z() + 0.0)};
+}
+
+/// Merges vertices at bit-identical positions (seams between the file's meshes).
+void weld_identical_positions(TriangleMesh& mesh) {
+  std::unordered_map<PositionKey, std::uint32_t, PositionKeyHash> first;
+  first.reserve(mesh.vertices_m.size());
+  std::vector<std::uint32_t> remap(mesh.vertices_m.size());
+  std::vector<Eigen::Vector3d> kept;
+  kept.reserve(mesh.vertices_m.size());
+  for (std::size_t i = 0; i < mesh.vertices_m.size(); ++i) {
+    auto [it, inserted] = first.try_emplace(key_of(mesh.vertices_m[i]), static_cast<std::uint32_t>(kept.size()));
+    if (inserted) kept.push_back(mesh.vertices_m[i]);
+    remap[i] = it->second;
+  }
+  if (kept.size() == mesh.vertices_m.size()) return;
+  for (auto& t : mesh.triangles) {
+    for (auto& i : t) i = i < remap.size() ? remap[i] : std::numeric_limits<std::uint32_t>::max();
+  }
+  mesh.vertices_m = std::move(kept);
+}
+
+/// Removes vertices no triangle uses, keeping the order of the rest.
+void drop_unused_vertices(TriangleMesh& mesh) {
+  constexpr auto kUnused = std::numeric_limits<std::uint32_t>::max();
+  std::vector<std::uint32_t> remap(mesh.vertices_m.size(), kUnused);
+  for (const auto& t : mesh.triangles) {
+    for (auto i : t) remap[i] = 0;
+  }
+  std::uint32_t next = 0;
+  for (std::size_t i = 0; i < remap.size(); ++i) {
+    if (remap[i] != kUnused) {
+      remap[i] = next;
+      mesh.vertices_m[next++] = mesh.vertices_m[i];
+    }
+  }
+  if (next == mesh.vertices_m.size()) return;
+  mesh.vertices_m.resize(next);
+  for (auto& t : mesh.triangles) {
+    for (auto& i : t) i = remap[i];
+  }
+}
+
+}  // namespace
+
+std::size_t finish_loaded_mesh(TriangleMesh& mesh, const Eigen::Vector3d& scale_to_m) {
+  for (auto& v : mesh.vertices_m) v = v.cwiseProduct(scale_to_m);
+  // A mirroring scale turns counter-clockwise into clockwise; swap two corners back.
+  if (scale_to_m.x() * scale_to_m.y() * scale_to_m.z() < 0.0) {
+    for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
+  }
+  std::size_t dropped = remove_invalid_triangles(mesh);
+  // Zero-area triangles (collinear corners) have no surface and no normal.
+  const auto before = mesh.triangles.size();
+  std::erase_if(mesh.triangles, [&](const TriangleIndices& t) {
+    const Eigen::Vector3d& a = mesh.vertices_m[t[0]];
+    return (mesh.vertices_m[t[1]] - a).cross(mesh.vertices_m[t[2]] - a).isZero(0.0);
+  });
+  dropped += before - mesh.triangles.size();
+  drop_unused_vertices(mesh);
+  compute_vertex_normals(mesh);
+  return dropped;
+}
+
+MeshLoadResult load_mesh_file(const std::filesystem::path& file, const Eigen::Vector3d& scale_to_m,
+                              const MeshProgress& progress) {
+  if (!scale_to_m.allFinite() || (scale_to_m.array() == 0.0).any()) {
+    return fail(file, fmt::format("invalid scale ({}, {}, {}): every factor must be finite and non-zero",
+                                  scale_to_m.x(), scale_to_m.y(), scale_to_m.z()));
+  }
+  std::error_code ec;
+  const auto status = std::filesystem::status(file, ec);
+  if (!std::filesystem::exists(status)) {
+    if (ec && ec != std::errc::no_such_file_or_directory) {
+      return fail(file, fmt::format("cannot access file: {}", ec.message()));
+    }
+    return fail(file, "file not found");
+  }
+  if (!std::filesystem::is_regular_file(status)) return fail(file, "not a regular file");
+  if (std::FILE* f = std::fopen(file.c_str(), "rb")) {
+    std::fclose(f);
+  } else {
+    return fail(file, fmt::format("cannot open file: {}", std::strerror(errno)));
+  }
+  if (std::filesystem::file_size(file, ec) == 0 && !ec) return fail(file, "file is empty");
+
+  Assimp::Importer importer;
+  // Keep positions only, so vertices that differ only in normals, UVs or colours
+  // (flat-shaded or STL files) join into one. SortByPType splits point and line
+  // primitives into meshes of their own, which are skipped below (not removed by
+  // assimp, which would fail a file without triangles with a less helpful message).
+  importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS,
+                              aiComponent_NORMALS | aiComponent_TANGENTS_AND_BITANGENTS | aiComponent_COLORS |
+                                  aiComponent_TEXCOORDS | aiComponent_BONEWEIGHTS | aiComponent_ANIMATIONS |
+                                  aiComponent_TEXTURES | aiComponent_LIGHTS | aiComponent_CAMERAS);
+  if (progress) {
+    importer.SetProgressHandler(new ForwardProgress(progress, fmt::format("reading {}", file.filename().string())));
+  }
+  const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices |
+                         aiProcess_SortByPType | aiProcess_RemoveComponent;
+  const aiScene* scene = importer.ReadFile(file.string(), flags);
+  if (scene == nullptr) {
+    std::string why = importer.GetErrorString();
+    if (why.empty()) why = "unknown error";
+    return fail(file, fmt::format("assimp could not read it: {}", why));
+  }
+
+  // Merge the triangle meshes.
+  TriangleMesh mesh;
+  std::size_t vertex_total = 0, face_total = 0, triangle_meshes = 0;
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+    const aiMesh* am = scene->mMeshes[m];
+    if (am == nullptr || (am->mPrimitiveTypes & aiPrimitiveType_TRIANGLE) == 0) continue;
+    vertex_total += am->mNumVertices;
+    face_total += am->mNumFaces;
+    ++triangle_meshes;
+  }
+  if (vertex_total >= std::numeric_limits<std::uint32_t>::max()) {
+    return fail(file, fmt::format("too many vertices ({})", vertex_total));
+  }
+  mesh.vertices_m.reserve(vertex_total);
+  mesh.triangles.reserve(face_total);
+  std::size_t dropped = 0;
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+    const aiMesh* am = scene->mMeshes[m];
+    if (am == nullptr || (am->mPrimitiveTypes & aiPrimitiveType_TRIANGLE) == 0) continue;
+    const auto base = static_cast<std::uint32_t>(mesh.vertices_m.size());
+    for (unsigned i = 0; i < am->mNumVertices; ++i) {
+      const aiVector3D& p = am->mVertices[i];
+      mesh.vertices_m.emplace_back(static_cast<double>(p.x), static_cast<double>(p.y), static_cast<double>(p.z));
+    }
+    for (unsigned f = 0; f < am->mNumFaces; ++f) {
+      const aiFace& face = am->mFaces[f];
+      if (face.mNumIndices != 3) {
+        ++dropped;
+        continue;
+      }
+      // An index past this mesh's vertices is made invalid so it is dropped below.
+      auto idx = [&](unsigned k) {
+        const unsigned i = face.mIndices[k];
+        return i < am->mNumVertices ? base + i : std::numeric_limits<std::uint32_t>::max();
+      };
+      mesh.triangles.push_back({idx(0), idx(1), idx(2)});
+    }
+  }
+  importer.FreeScene();
+  if (mesh.triangles.empty()) return fail(file, "mesh has no triangles");
+  if (triangle_meshes > 1) weld_identical_positions(mesh);
+
+  dropped += finish_loaded_mesh(mesh, scale_to_m);
+  if (mesh.triangles.empty()) return fail(file, "mesh has no triangles (all are degenerate)");
+  for (const auto& v : mesh.vertices_m) {
+    if (!v.allFinite()) return fail(file, "non-finite vertex coordinates");
+  }
+
+  MeshLoadResult result;
+  result.mesh = std::move(mesh);
+  result.dropped_triangles = dropped;
+  return result;
+}
+
+}  // namespace mhd

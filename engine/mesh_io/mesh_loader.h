@@ -1,0 +1,52 @@
+#pragma once
+// Loads a mesh file (any format assimp reads) into one TriangleMesh in metres.
+
+#include "geometry/triangle_mesh.h"
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace mhd {
+
+/// Progress of a long step: (what is being done, fraction 0..1 of that step).
+using MeshProgress = std::function<void(std::string_view, double)>;
+
+/// Why a mesh file could not be used.
+struct MeshLoadError {
+  std::filesystem::path file;
+  std::string reason;  ///< e.g. "file not found", "mesh has no triangles"
+  /// "mesh file '<file>': <reason>"
+  [[nodiscard]] std::string message() const;
+};
+
+struct MeshLoadResult {
+  std::optional<TriangleMesh> mesh;    ///< set on success
+  std::optional<MeshLoadError> error;  ///< set on failure
+  /// Triangles dropped: bad or repeated indices, zero area, non-triangle faces.
+  std::size_t dropped_triangles = 0;
+  [[nodiscard]] bool ok() const { return mesh.has_value(); }
+};
+
+/// Loads every triangle of every mesh in `file` (scene-graph transforms applied, points
+/// and lines dropped) into one mesh, multiplies coordinates by `scale_to_m` per axis
+/// (a mirroring scale, i.e. an odd number of negative factors, flips the winding so the
+/// mesh keeps facing outwards), welds vertices at identical positions across the
+/// file's meshes, drops degenerate triangles and unused vertices, and computes vertex
+/// normals. Positions pass through assimp's single precision.
+/// `progress`, if set, receives assimp's read/post-processing progress.
+[[nodiscard]] MeshLoadResult load_mesh_file(const std::filesystem::path& file,
+                                            const Eigen::Vector3d& scale_to_m,
+                                            const MeshProgress& progress = {});
+
+/// Applies the loader's clean-up to a mesh in memory: scale (and winding flip for a
+/// mirroring scale), invalid/degenerate triangle and unused vertex removal, vertex
+/// normals. Returns the number of dropped triangles. Exposed for tests and tools.
+std::size_t finish_loaded_mesh(TriangleMesh& mesh, const Eigen::Vector3d& scale_to_m);
+
+}  // namespace mhd

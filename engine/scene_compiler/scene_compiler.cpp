@@ -1,0 +1,246 @@
+#include "scene_compiler/scene_compiler.h"
+
+#include "geometry/primitive_mesh.h"
+#include "mesh_io/mesh_cache.h"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <array>
+#include <bit>
+#include <cmath>
+#include <exception>
+#include <map>
+#include <string>
+#include <system_error>
+#include <utility>
+#include <variant>
+#include <vector>
+
+namespace mhd {
+namespace {
+
+/// Highest cylinder tessellation accepted (far beyond anything a hand can feel).
+constexpr int kMaxCylinderSegments = 1 << 16;
+
+bool positive_finite(double x) { return std::isfinite(x) && x > 0.0; }
+
+Diagnostic make_diagnostic(const SourceLocation& where, std::string message) {
+  Diagnostic d;
+  d.where = where;
+  d.message = std::move(message);
+  return d;
+}
+
+SourceLocation file_location(const std::filesystem::path& file) {
+  SourceLocation where;
+  where.file = file.string();
+  return where;
+}
+
+template <class... Fs>
+struct Overloaded : Fs... {
+  using Fs::operator()...;
+};
+template <class... Fs>
+Overloaded(Fs...) -> Overloaded<Fs...>;
+
+/// Identity of a mesh source: the file (symlinks and ".." resolved where possible) and
+/// the exact scale.
+using MeshKey = std::pair<std::string, std::array<std::uint64_t, 3>>;
+
+MeshKey mesh_key(const MeshSource& source) {
+  std::error_code ec;
+  std::filesystem::path p = std::filesystem::weakly_canonical(source.file, ec);
+  if (ec) p = source.file.lexically_normal();
+  return {p.string(),
+          {std::bit_cast<std::uint64_t>(source.scale_to_m.x() + 0.0), std::bit_cast<std::uint64_t>(source.scale_to_m.y() + 0.0),
+           std::bit_cast<std::uint64_t>(source.scale_to_m.z() + 0.0)}};
+}
+
+/// A shape shared by every object that names the same source.
+struct SharedShape {
+  std::shared_ptr<const MeshBvh> bvh;
+  std::string error;  ///< set instead of bvh when the source cannot be used
+};
+
+class Compiler {
+ public:
+  Compiler(const SceneDescription& description, const CompileOptions& options)
+      : description_(description),
+        options_(options),
+        cache_(options.use_cache ? (options.cache_dir ? options.cache_dir : default_mesh_cache_dir())
+                                 : std::nullopt) {}
+
+  CompileResult run() {
+    CompileResult result;
+    const auto& objects = description_.objects;
+    std::vector<std::shared_ptr<const MeshBvh>> shapes(objects.size());
+
+    if (!positive_finite(description_.haptics.max_force_N)) {
+      result.diagnostics.push_back(
+          make_diagnostic(file_location(description_.file),
+                          fmt::format("haptics: max force must be positive and finite (got {} N)",
+                                      description_.haptics.max_force_N)));
+    }
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+      const ObjectDescription& object = objects[i];
+      std::string error = check_pose(object.X_WO);
+      if (error.empty()) {
+        try {
+          const SharedShape& shape = shape_for(object);
+          if (shape.bvh) {
+            shapes[i] = shape.bvh;
+          } else {
+            error = shape.error;
+          }
+        } catch (const std::exception& e) {
+          error = e.what();
+        }
+      }
+      if (!error.empty()) {
+        result.diagnostics.push_back(make_diagnostic(object.where, fmt::format("object '{}': {}", object.name, error)));
+      }
+    }
+    if (!result.diagnostics.empty()) return result;  // nothing half-loaded
+
+    auto scene = std::make_unique<CompiledScene>();
+    scene->name = description_.name;
+    scene->proxy.max_force_N = description_.haptics.max_force_N;
+    scene->materials.reserve(objects.size());
+    scene->object_names.reserve(objects.size());
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+      scene->world.add_object(shapes[i], objects[i].X_WO);
+      scene->materials.push_back(objects[i].material);
+      scene->object_names.push_back(objects[i].name);
+      scene->triangle_count += shapes[i]->mesh().triangle_count();
+    }
+    const auto& stats = cache_.stats();
+    spdlog::debug("compiled scene '{}': {} objects, {} triangles, {} distinct shapes (mesh cache: {} hits, {} misses, "
+                  "{} rejected)",
+                  scene->name, objects.size(), scene->triangle_count, meshes_.size() + primitives_.size(),
+                  stats.hits, stats.misses, stats.rejected);
+    result.scene = std::move(scene);
+    return result;
+  }
+
+ private:
+  static std::string check_pose(const Pose& X_WO) {
+    if (!X_WO.matrix().allFinite()) return "pose is not finite";
+    const Eigen::Matrix3d R = X_WO.linear();
+    if (!(R.transpose() * R).isIdentity(1e-9) || R.determinant() < 0.0) return "pose rotation is not a rotation";
+    return {};
+  }
+
+  /// Reports progress for `object` (no-op without a callback).
+  MeshProgress progress_for(const ObjectDescription& object) const {
+    if (!options_.progress) return {};
+    return [this, name = object.name](std::string_view what, double fraction) {
+      options_.progress(fmt::format("object '{}': {}", name, what), fraction);
+    };
+  }
+
+  const SharedShape& shape_for(const ObjectDescription& object) {
+    return std::visit(
+        Overloaded{
+            [&](const MeshSource& s) -> const SharedShape& { return mesh_shape(object, s); },
+            [&](const PlaneSource& s) -> const SharedShape& {
+              if (!positive_finite(s.size_x_m) || !positive_finite(s.size_y_m)) {
+                return invalid(fmt::format("plane size must be positive and finite (got {} x {} m)", s.size_x_m,
+                                           s.size_y_m));
+              }
+              return primitive(object, fmt::format("plane {:a} {:a}", s.size_x_m, s.size_y_m),
+                               [&] { return make_plane_mesh(s.size_x_m, s.size_y_m); });
+            },
+            [&](const SphereSource& s) -> const SharedShape& {
+              if (!positive_finite(s.radius_m)) {
+                return invalid(fmt::format("sphere radius must be positive and finite (got {} m)", s.radius_m));
+              }
+              if (s.subdivisions < 0 || s.subdivisions > 7) {
+                return invalid(fmt::format("sphere subdivisions must be 0..7 (got {})", s.subdivisions));
+              }
+              return primitive(object, fmt::format("sphere {:a} {}", s.radius_m, s.subdivisions),
+                               [&] { return make_sphere_mesh(s.radius_m, s.subdivisions); });
+            },
+            [&](const BoxSource& s) -> const SharedShape& {
+              if (!positive_finite(s.size_m.x()) || !positive_finite(s.size_m.y()) || !positive_finite(s.size_m.z())) {
+                return invalid(fmt::format("box size must be positive and finite (got {} x {} x {} m)", s.size_m.x(),
+                                           s.size_m.y(), s.size_m.z()));
+              }
+              return primitive(object, fmt::format("box {:a} {:a} {:a}", s.size_m.x(), s.size_m.y(), s.size_m.z()),
+                               [&] { return make_box_mesh(s.size_m); });
+            },
+            [&](const CylinderSource& s) -> const SharedShape& {
+              if (!positive_finite(s.radius_m) || !positive_finite(s.height_m)) {
+                return invalid(fmt::format("cylinder radius and height must be positive and finite (got {} m, {} m)",
+                                           s.radius_m, s.height_m));
+              }
+              if (s.segments < 3 || s.segments > kMaxCylinderSegments) {
+                return invalid(
+                    fmt::format("cylinder segments must be 3..{} (got {})", kMaxCylinderSegments, s.segments));
+              }
+              return primitive(object, fmt::format("cylinder {:a} {:a} {}", s.radius_m, s.height_m, s.segments),
+                               [&] { return make_cylinder_mesh(s.radius_m, s.height_m, s.segments); });
+            },
+        },
+        object.shape);
+  }
+
+  const SharedShape& invalid(std::string message) {
+    invalid_ = SharedShape{nullptr, std::move(message)};
+    return invalid_;
+  }
+
+  const SharedShape& mesh_shape(const ObjectDescription& object, const MeshSource& source) {
+    const MeshKey key = mesh_key(source);
+    if (const auto it = meshes_.find(key); it != meshes_.end()) return it->second;
+    SharedShape shape;
+    const CachedMesh loaded = cache_.load(source.file, source.scale_to_m, progress_for(object));
+    if (loaded.ok()) {
+      shape.bvh = loaded.bvh;
+      if (loaded.dropped_triangles > 0) {
+        spdlog::info("{}: mesh file '{}': dropped {} degenerate triangles", object.name, source.file.string(),
+                     loaded.dropped_triangles);
+      }
+    } else {
+      shape.error = loaded.error ? loaded.error->message()
+                                 : fmt::format("mesh file '{}': could not be loaded", source.file.string());
+    }
+    return meshes_.emplace(key, std::move(shape)).first->second;
+  }
+
+  template <class Make>
+  const SharedShape& primitive(const ObjectDescription& object, const std::string& key, Make&& make) {
+    if (const auto it = primitives_.find(key); it != primitives_.end()) return it->second;
+    auto mesh = std::make_shared<const TriangleMesh>(make());
+    const bool report = options_.progress && mesh->triangle_count() >= kProgressMinTriangles;
+    const MeshProgress progress = progress_for(object);
+    const std::string what = fmt::format("building BVH ({} triangles)", mesh->triangle_count());
+    if (report) progress(what, 0.0);
+    SharedShape shape{std::make_shared<const MeshBvh>(std::move(mesh)), {}};
+    if (report) progress(what, 1.0);
+    return primitives_.emplace(key, std::move(shape)).first->second;
+  }
+
+  const SceneDescription& description_;
+  const CompileOptions& options_;
+  MeshCache cache_;
+  std::map<MeshKey, SharedShape> meshes_;
+  std::map<std::string, SharedShape> primitives_;
+  SharedShape invalid_;
+};
+
+}  // namespace
+
+CompileResult compile_scene(const SceneDescription& description, const CompileOptions& options) {
+  try {
+    return Compiler(description, options).run();
+  } catch (const std::exception& e) {
+    CompileResult result;
+    result.diagnostics.push_back(
+        make_diagnostic(file_location(description.file), fmt::format("cannot compile scene: {}", e.what())));
+    return result;
+  }
+}
+
+}  // namespace mhd

@@ -1,0 +1,618 @@
+#include "scene_xml/scene_reader.h"
+
+#include "geometry/pose.h"
+#include "scene_xml/diagnostic_sink.h"
+#include "scene_xml/frame_graph.h"
+#include "scene_xml/message_text.h"
+#include "scene_xml/number_parser.h"
+#include "scene_xml/readable_file.h"
+#include "scene_xml/xml_attribute_parser.h"
+#include "scene_xml/xml_parse_error.h"
+
+#include <tinyxml2.h>
+
+#include <array>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <numbers>
+#include <string>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+namespace mhd {
+namespace {
+
+namespace fs = std::filesystem;
+using scene_xml::AttributeParser;
+using scene_xml::Bound;
+using scene_xml::concat;
+using scene_xml::DiagnosticSink;
+using scene_xml::Emptiness;
+using scene_xml::Presence;
+
+constexpr std::string_view kVersion = "1";
+constexpr double kMinScaleToM = 1e-6;
+constexpr double kMaxScaleToM = 1e6;
+constexpr std::array<std::string_view, 5> kShapes = {"mesh", "plane", "sphere", "box", "cylinder"};
+
+bool is_shape(std::string_view name) {
+  for (const std::string_view s : kShapes) {
+    if (s == name) return true;
+  }
+  return false;
+}
+
+std::string tag(const tinyxml2::XMLElement& e) { return concat("<", e.Name(), ">"); }
+
+std::string where_text(const SourceLocation& where) {
+  return where.line > 0 ? concat(where.file, ":", where.line) : where.file;
+}
+
+/// A path's identity for include-cycle checks: absolute, with links resolved as far
+/// as they exist.
+fs::path identity_of(const fs::path& path) {
+  std::error_code ec;
+  fs::path absolute = fs::absolute(path, ec);
+  if (ec) absolute = path;
+  fs::path canonical = fs::weakly_canonical(absolute, ec);
+  return ec ? absolute.lexically_normal() : canonical;
+}
+
+/// A path named in a file, resolved against that file's folder (the display path
+/// of the file, so relative display paths stay relative to the working directory).
+fs::path resolve_against(const std::string& including_file, const std::string& named) {
+  const fs::path p(named);
+  if (p.is_absolute()) return p.lexically_normal();
+  return (fs::path(including_file).parent_path() / p).lexically_normal();
+}
+
+/// Per-file reading state: where messages go and the file's length unit.
+struct FileContext {
+  DiagnosticSink sink;
+  double unit_to_m = 1.0;
+};
+
+/// Calls `visit` for each child element; reports non-blank text inside `parent`.
+void for_each_child(const tinyxml2::XMLElement& parent, const DiagnosticSink& sink,
+                    const std::function<void(const tinyxml2::XMLElement&)>& visit) {
+  for (const tinyxml2::XMLNode* n = parent.FirstChild(); n != nullptr; n = n->NextSibling()) {
+    if (const tinyxml2::XMLElement* e = n->ToElement()) {
+      visit(*e);
+    } else if (const tinyxml2::XMLText* t = n->ToText()) {
+      if (!scene_xml::trim_xml_space(t->Value()).empty()) {
+        sink.error(t->GetLineNum(), concat("unexpected text in ", tag(parent)));
+      }
+    }
+    // Comments, declarations and other markup carry nothing and are skipped.
+  }
+}
+
+void report_unknown_element(const tinyxml2::XMLElement& e, const tinyxml2::XMLElement& parent,
+                            const DiagnosticSink& sink) {
+  sink.error(e.GetLineNum(), concat("unknown element ", tag(e), " in ", tag(parent)));
+}
+
+/// For elements that take attributes only.
+void expect_no_children(const tinyxml2::XMLElement& e, const DiagnosticSink& sink) {
+  for_each_child(e, sink, [&](const tinyxml2::XMLElement& child) {
+    report_unknown_element(child, e, sink);
+  });
+}
+
+/// position / rpy_deg / quaternion_wxyz on <pose> and <frame>.
+Pose read_pose_attributes(AttributeParser& a, const FileContext& ctx) {
+  const Eigen::Vector3d p_m =
+      a.vector3("position", Presence::Optional, Bound::Any).value_or(Eigen::Vector3d::Zero()) *
+      ctx.unit_to_m;
+  if (a.has("rpy_deg") && a.has("quaternion_wxyz")) {
+    ctx.sink.error(a.line(), concat(a.tag(), " takes rpy_deg or quaternion_wxyz, not both"));
+  }
+  if (a.has("quaternion_wxyz")) {
+    const auto q = a.numbers("quaternion_wxyz", Presence::Optional, 4, Bound::Any);
+    if (!q) return pose_from_xyz_rpy(p_m, Eigen::Vector3d::Zero());
+    const Eigen::Quaterniond quaternion((*q)[0], (*q)[1], (*q)[2], (*q)[3]);
+    if (quaternion.coeffs().squaredNorm() == 0.0) {
+      ctx.sink.error(a.line_of("quaternion_wxyz"),
+                     concat("attribute 'quaternion_wxyz' on ", a.tag(), " must not be all zeros"));
+      return pose_from_xyz_rpy(p_m, Eigen::Vector3d::Zero());
+    }
+    return pose_from_xyz_quaternion(p_m, quaternion);
+  }
+  const Eigen::Vector3d rpy_deg =
+      a.vector3("rpy_deg", Presence::Optional, Bound::Any).value_or(Eigen::Vector3d::Zero());
+  return pose_from_xyz_rpy(p_m, rpy_deg * (std::numbers::pi / 180.0));
+}
+
+class SceneReader {
+ public:
+  SceneReader() = default;
+
+  void read_root(std::string_view xml, const fs::path& file) {
+    const std::string display = file.string();
+    scene_.file = file;
+    scene_.name = file.stem().string();
+    read_document(xml, display, identity_of(file), /*is_root=*/true);
+  }
+
+  void read_root_file(const fs::path& file) {
+    scene_xml::FileProblem problem{};
+    const std::optional<std::string> bytes = scene_xml::read_whole_file(file, problem);
+    if (!bytes) {
+      DiagnosticSink(file.string(), diagnostics_)
+          .error(0, concat("scene file ", scene_xml::describe(problem)));
+      return;
+    }
+    read_root(*bytes, file);
+  }
+
+  SceneReadResult finish() {
+    resolve_material_references();
+    scene_xml::check_frame_graph(scene_.rig_frames, diagnostics_);
+    SceneReadResult result;
+    result.diagnostics = std::move(diagnostics_);
+    if (result.diagnostics.empty()) result.scene = std::move(scene_);
+    return result;
+  }
+
+ private:
+  struct OpenFile {
+    fs::path identity;
+    std::string display;
+  };
+  struct MaterialReference {
+    std::size_t object_index;
+    std::string name;
+    SourceLocation where;
+  };
+
+  void read_document(std::string_view xml, const std::string& display, fs::path identity,
+                     bool is_root) {
+    FileContext ctx{DiagnosticSink(display, diagnostics_), 1.0};
+    tinyxml2::XMLDocument document;
+    if (document.Parse(xml.data(), xml.size()) != tinyxml2::XML_SUCCESS) {
+      ctx.sink.error(document.ErrorLineNum(), scene_xml::describe_xml_error(document));
+      return;
+    }
+    const tinyxml2::XMLElement* root = nullptr;
+    for (const tinyxml2::XMLNode* n = document.FirstChild(); n != nullptr; n = n->NextSibling()) {
+      if (const tinyxml2::XMLElement* e = n->ToElement()) {
+        if (root == nullptr) {
+          root = e;
+        } else {
+          ctx.sink.error(e->GetLineNum(),
+                         concat("unexpected element ", tag(*e), " after the root element"));
+        }
+      } else if (const tinyxml2::XMLText* t = n->ToText()) {
+        if (!scene_xml::trim_xml_space(t->Value()).empty()) {
+          ctx.sink.error(t->GetLineNum(), "unexpected text outside the root element");
+        }
+      }
+    }
+    if (root == nullptr) {
+      ctx.sink.error(0, "malformed XML: no root element");
+      return;
+    }
+    if (std::string_view(root->Name()) != "scene") {
+      ctx.sink.error(root->GetLineNum(), concat("root element must be <scene>, found ", tag(*root)));
+      return;
+    }
+    open_files_.push_back({std::move(identity), display});
+    read_scene_element(*root, ctx, is_root);
+    open_files_.pop_back();
+  }
+
+  void read_scene_element(const tinyxml2::XMLElement& root, FileContext& ctx, bool is_root) {
+    AttributeParser a(root, ctx.sink,
+                      {"version", "name", "unit", "xmlns:xsi", "xsi:noNamespaceSchemaLocation"});
+    if (const auto version = a.token("version", Presence::Required); version && *version != kVersion) {
+      ctx.sink.error(a.line_of("version"),
+                     concat("unsupported scene version '", *version, "' (this reader reads version ",
+                            kVersion, ")"));
+      return;  // another version's content would only produce noise
+    }
+    if (const auto name = a.text("name", Presence::Optional, Emptiness::Forbidden); name && is_root) {
+      scene_.name = *name;
+    }
+    if (const auto unit = a.token("unit", Presence::Optional)) {
+      if (*unit == "m") {
+        ctx.unit_to_m = 1.0;
+      } else if (*unit == "mm") {
+        ctx.unit_to_m = 0.001;
+      } else {
+        ctx.sink.error(a.line_of("unit"),
+                       concat("invalid unit '", *unit, "' on <scene> (expected m or mm)"));
+      }
+    }
+    for_each_child(root, ctx.sink, [&](const tinyxml2::XMLElement& e) {
+      const std::string_view name = e.Name();
+      if (name == "include") {
+        read_include(e, ctx);
+      } else if (name == "haptics") {
+        read_haptics(e, ctx);
+      } else if (name == "material") {
+        read_named_material(e, ctx);
+      } else if (name == "object") {
+        read_object(e, ctx);
+      } else if (name == "rig") {
+        read_rig(e, ctx);
+      } else if (name == "plugins") {
+        read_plugins(e, ctx);
+      } else {
+        report_unknown_element(e, root, ctx.sink);
+      }
+    });
+  }
+
+  void read_include(const tinyxml2::XMLElement& e, const FileContext& ctx) {
+    AttributeParser a(e, ctx.sink, {"file"});
+    expect_no_children(e, ctx.sink);
+    const auto named = a.text("file", Presence::Required, Emptiness::Forbidden);
+    if (!named) return;
+    const int line = a.line_of("file");
+    const fs::path path = resolve_against(ctx.sink.file(), *named);
+    const std::string display = path.string();
+    fs::path identity = identity_of(path);
+    for (std::size_t i = 0; i < open_files_.size(); ++i) {
+      if (open_files_[i].identity != identity) continue;
+      std::string chain;
+      for (std::size_t j = i; j < open_files_.size(); ++j) chain += open_files_[j].display + " -> ";
+      chain += display;
+      ctx.sink.error(line, concat("include cycle: ", chain));
+      return;
+    }
+    scene_xml::FileProblem problem{};
+    const std::optional<std::string> bytes = scene_xml::read_whole_file(path, problem);
+    if (!bytes) {
+      ctx.sink.error(line, concat("included file '", *named, "' ", scene_xml::describe(problem),
+                                  " (resolved to '", display, "')"));
+      return;
+    }
+    read_document(*bytes, display, std::move(identity), /*is_root=*/false);
+  }
+
+  void read_haptics(const tinyxml2::XMLElement& e, const FileContext& ctx) {
+    AttributeParser a(e, ctx.sink, {"max_force_N", "update_rate_Hz"});
+    expect_no_children(e, ctx.sink);
+    if (haptics_where_) {
+      ctx.sink.error(e.GetLineNum(),
+                     concat("duplicate <haptics> (first defined at ", where_text(*haptics_where_), ")"));
+      return;
+    }
+    haptics_where_ = ctx.sink.at(e.GetLineNum());
+    HapticsSettings& h = scene_.haptics;
+    h.max_force_N = a.number("max_force_N", Presence::Optional, Bound::Positive).value_or(h.max_force_N);
+    h.update_rate_Hz =
+        a.number("update_rate_Hz", Presence::Optional, Bound::Positive).value_or(h.update_rate_Hz);
+  }
+
+  /// The material attributes shared by named and inline materials.
+  static HapticMaterial read_material_properties(AttributeParser& a, const FileContext& ctx) {
+    HapticMaterial m;
+    m.stiffness_N_per_m =
+        a.number("stiffness_N_per_m", Presence::Required, Bound::Positive).value_or(m.stiffness_N_per_m);
+    m.damping_Ns_per_m =
+        a.number("damping_Ns_per_m", Presence::Optional, Bound::NonNegative).value_or(m.damping_Ns_per_m);
+    const auto static_mu = a.number("static_friction", Presence::Optional, Bound::NonNegative);
+    const auto dynamic_mu = a.number("dynamic_friction", Presence::Optional, Bound::NonNegative);
+    m.static_friction = static_mu.value_or(m.static_friction);
+    m.dynamic_friction = dynamic_mu.value_or(m.dynamic_friction);
+    const bool both_valid = (static_mu || !a.has("static_friction")) &&
+                            (dynamic_mu || !a.has("dynamic_friction"));
+    if (both_valid && m.dynamic_friction > m.static_friction) {
+      ctx.sink.error(a.line_of("dynamic_friction"),
+                     concat("dynamic_friction (", scene_xml::format_g(m.dynamic_friction),
+                            ") must not exceed static_friction (",
+                            scene_xml::format_g(m.static_friction), ") on <material>"));
+    }
+    m.force_shading = a.boolean("force_shading", Presence::Optional).value_or(m.force_shading);
+    return m;
+  }
+
+  void read_named_material(const tinyxml2::XMLElement& e, const FileContext& ctx) {
+    AttributeParser a(e, ctx.sink,
+                      {"name", "stiffness_N_per_m", "damping_Ns_per_m", "static_friction",
+                       "dynamic_friction", "force_shading"});
+    expect_no_children(e, ctx.sink);
+    const auto name = a.text("name", Presence::Required, Emptiness::Forbidden);
+    const HapticMaterial m = read_material_properties(a, ctx);
+    if (!name) return;
+    if (!claim_name(material_where_, "material", *name, ctx.sink.at(e.GetLineNum()), ctx)) return;
+    scene_.materials.emplace(*name, m);
+  }
+
+  /// Records `name` as defined at `where`; reports and returns false when it already was.
+  static bool claim_name(std::map<std::string, SourceLocation, std::less<>>& defined,
+                         std::string_view what, const std::string& name,
+                         const SourceLocation& where, const FileContext& ctx) {
+    const auto [it, inserted] = defined.emplace(name, where);
+    if (!inserted) {
+      ctx.sink.error(where.line, concat("duplicate ", what, " name '", name, "' (first defined at ",
+                                        where_text(it->second), ")"));
+    }
+    return inserted;
+  }
+
+  void read_object(const tinyxml2::XMLElement& e, const FileContext& ctx) {
+    AttributeParser a(e, ctx.sink, {"name", "material"});
+    const auto name = a.text("name", Presence::Required, Emptiness::Forbidden);
+    const auto material_ref = a.text("material", Presence::Optional, Emptiness::Forbidden);
+    const std::string label = name ? concat("object '", *name, "'") : std::string("<object>");
+
+    ObjectDescription object;
+    object.name = name.value_or("");
+    object.where = ctx.sink.at(e.GetLineNum());
+    const tinyxml2::XMLElement* shape = nullptr;
+    const tinyxml2::XMLElement* pose = nullptr;
+    const tinyxml2::XMLElement* scale = nullptr;
+    const tinyxml2::XMLElement* inline_material = nullptr;
+    Eigen::Vector3d scale_factors = Eigen::Vector3d::Ones();
+
+    // Only the first of each child counts; a repeat is reported against it.
+    const auto first_of = [&](const tinyxml2::XMLElement*& slot, const tinyxml2::XMLElement& child) {
+      if (slot == nullptr) {
+        slot = &child;
+        return true;
+      }
+      ctx.sink.error(child.GetLineNum(), concat(label, " has more than one ", tag(child),
+                                                " (the first is at line ", slot->GetLineNum(), ")"));
+      return false;
+    };
+
+    for_each_child(e, ctx.sink, [&](const tinyxml2::XMLElement& child) {
+      const std::string_view child_name = child.Name();
+      if (is_shape(child_name)) {
+        if (shape != nullptr) {
+          ctx.sink.error(child.GetLineNum(),
+                         concat(label, " has more than one shape: ", tag(child), " after ",
+                                tag(*shape), " at line ", shape->GetLineNum()));
+          return;
+        }
+        shape = &child;
+        object.shape = read_shape(child, ctx);
+      } else if (child_name == "pose") {
+        if (!first_of(pose, child)) return;
+        AttributeParser pa(child, ctx.sink, {"position", "rpy_deg", "quaternion_wxyz"});
+        expect_no_children(child, ctx.sink);
+        object.X_WO = read_pose_attributes(pa, ctx);
+      } else if (child_name == "scale") {
+        if (!first_of(scale, child)) return;
+        scale_factors = read_scale(child, ctx);
+      } else if (child_name == "material") {
+        if (!first_of(inline_material, child)) return;
+        AttributeParser ma(child, ctx.sink,
+                           {"name", "stiffness_N_per_m", "damping_Ns_per_m", "static_friction",
+                            "dynamic_friction", "force_shading"});
+        expect_no_children(child, ctx.sink);
+        if (ma.has("name")) {
+          ctx.sink.error(ma.line_of("name"),
+                         "an inline <material> takes no name (define named materials in <scene>)");
+        }
+        object.material = read_material_properties(ma, ctx);
+      } else {
+        report_unknown_element(child, e, ctx.sink);
+      }
+    });
+
+    if (shape == nullptr) {
+      ctx.sink.error(e.GetLineNum(),
+                     concat(label, " has no shape (expected <mesh>, <plane>, <sphere>, <box> or "
+                                   "<cylinder>)"));
+    }
+    if (scale != nullptr) {
+      if (shape != nullptr && !std::holds_alternative<MeshSource>(object.shape)) {
+        ctx.sink.error(scale->GetLineNum(), concat("<scale> applies to mesh objects only; ", label,
+                                                   " is a ", tag(*shape)));
+      } else if (auto* mesh = std::get_if<MeshSource>(&object.shape); mesh != nullptr) {
+        mesh->scale_to_m = scale_factors * ctx.unit_to_m;
+        if (mesh->scale_to_m.minCoeff() < kMinScaleToM || mesh->scale_to_m.maxCoeff() > kMaxScaleToM) {
+          ctx.sink.error(scale->GetLineNum(),
+                         concat("absurd scale: unit times scale is (",
+                                scene_xml::format_g(mesh->scale_to_m.x()), " ",
+                                scene_xml::format_g(mesh->scale_to_m.y()), " ",
+                                scene_xml::format_g(mesh->scale_to_m.z()),
+                                ") metres per mesh unit, outside [1e-06, 1e+06]"));
+        }
+      }
+    }
+    if (material_ref && inline_material != nullptr) {
+      ctx.sink.error(inline_material->GetLineNum(),
+                     concat(label, " has both material=\"", *material_ref,
+                            "\" and an inline <material>"));
+    } else if (!material_ref && inline_material == nullptr && !a.has("material")) {
+      ctx.sink.error(e.GetLineNum(), concat(label, " has no material (set material=\"NAME\" or add "
+                                                   "an inline <material>)"));
+    }
+    if (name) claim_name(object_where_, "object", *name, object.where, ctx);
+    if (material_ref) {
+      object.material_name = *material_ref;
+      material_references_.push_back(
+          {scene_.objects.size(), *material_ref, ctx.sink.at(a.line_of("material"))});
+    }
+    scene_.objects.push_back(std::move(object));
+  }
+
+  /// <scale value="s"/> or <scale xyz="sx sy sz"/>; ones when invalid (already reported).
+  static Eigen::Vector3d read_scale(const tinyxml2::XMLElement& e, const FileContext& ctx) {
+    AttributeParser a(e, ctx.sink, {"value", "xyz"});
+    expect_no_children(e, ctx.sink);
+    if (a.has("value") == a.has("xyz")) {
+      ctx.sink.error(e.GetLineNum(), "<scale> needs exactly one of 'value' or 'xyz'");
+      return Eigen::Vector3d::Ones();
+    }
+    if (a.has("value")) {
+      return Eigen::Vector3d::Constant(
+          a.number("value", Presence::Required, Bound::Positive).value_or(1.0));
+    }
+    return a.vector3("xyz", Presence::Required, Bound::Positive).value_or(Eigen::Vector3d::Ones());
+  }
+
+  static ShapeSource read_shape(const tinyxml2::XMLElement& e, const FileContext& ctx) {
+    expect_no_children(e, ctx.sink);
+    const std::string_view name = e.Name();
+    const double u = ctx.unit_to_m;
+    if (name == "mesh") {
+      AttributeParser a(e, ctx.sink, {"file"});
+      MeshSource mesh;
+      mesh.scale_to_m = Eigen::Vector3d::Constant(u);
+      if (const auto file = a.text("file", Presence::Required, Emptiness::Forbidden)) {
+        std::error_code ec;
+        const fs::path resolved = resolve_against(ctx.sink.file(), *file);
+        fs::path absolute = fs::absolute(resolved, ec);
+        mesh.file = ec ? resolved : absolute.lexically_normal();
+        const scene_xml::FileProblem problem = scene_xml::check_readable_file(mesh.file);
+        if (problem != scene_xml::FileProblem::None) {
+          ctx.sink.error(a.line_of("file"),
+                         concat("mesh file '", *file, "' ", scene_xml::describe(problem),
+                                " (resolved to '", mesh.file.string(), "')"));
+        }
+      }
+      return mesh;
+    }
+    if (name == "plane") {
+      AttributeParser a(e, ctx.sink, {"size"});
+      PlaneSource plane;
+      if (const auto size = a.numbers("size", Presence::Required, 2, Bound::Positive)) {
+        plane.size_x_m = (*size)[0] * u;
+        plane.size_y_m = (*size)[1] * u;
+      }
+      return plane;
+    }
+    if (name == "sphere") {
+      AttributeParser a(e, ctx.sink, {"radius", "subdivisions"});
+      SphereSource sphere;
+      sphere.radius_m = a.number("radius", Presence::Required, Bound::Positive).value_or(0.0) * u;
+      sphere.subdivisions =
+          a.integer("subdivisions", Presence::Optional, 0, 7).value_or(sphere.subdivisions);
+      return sphere;
+    }
+    if (name == "box") {
+      AttributeParser a(e, ctx.sink, {"size"});
+      BoxSource box;
+      box.size_m = a.vector3("size", Presence::Required, Bound::Positive)
+                       .value_or(Eigen::Vector3d::Zero()) * u;
+      return box;
+    }
+    AttributeParser a(e, ctx.sink, {"radius", "height", "segments"});  // cylinder
+    CylinderSource cylinder;
+    cylinder.radius_m = a.number("radius", Presence::Required, Bound::Positive).value_or(0.0) * u;
+    cylinder.height_m = a.number("height", Presence::Required, Bound::Positive).value_or(0.0) * u;
+    cylinder.segments = a.integer("segments", Presence::Optional, 3, 4096).value_or(cylinder.segments);
+    return cylinder;
+  }
+
+  void read_rig(const tinyxml2::XMLElement& e, const FileContext& ctx) {
+    AttributeParser rig_attributes(e, ctx.sink, {});
+    for_each_child(e, ctx.sink, [&](const tinyxml2::XMLElement& child) {
+      if (std::string_view(child.Name()) != "frame") {
+        report_unknown_element(child, e, ctx.sink);
+        return;
+      }
+      AttributeParser a(child, ctx.sink, {"name", "parent", "position", "rpy_deg", "quaternion_wxyz"});
+      expect_no_children(child, ctx.sink);
+      FrameDescription frame;
+      frame.where = ctx.sink.at(child.GetLineNum());
+      const auto name = a.text("name", Presence::Required, Emptiness::Forbidden);
+      const auto parent = a.text("parent", Presence::Required, Emptiness::Forbidden);
+      frame.X_PF = read_pose_attributes(a, ctx);
+      if (!name || !parent) return;
+      if (*name == "world") {
+        ctx.sink.error(a.line_of("name"), "frame name 'world' is reserved");
+        return;
+      }
+      if (!claim_name(frame_where_, "frame", *name, frame.where, ctx)) return;
+      frame.name = *name;
+      frame.parent = *parent;
+      scene_.rig_frames.push_back(std::move(frame));
+    });
+  }
+
+  void read_plugins(const tinyxml2::XMLElement& e, const FileContext& ctx) {
+    AttributeParser plugins_attributes(e, ctx.sink, {});
+    for_each_child(e, ctx.sink, [&](const tinyxml2::XMLElement& child) {
+      if (std::string_view(child.Name()) != "plugin") {
+        report_unknown_element(child, e, ctx.sink);
+        return;
+      }
+      read_plugin(child, ctx);
+    });
+  }
+
+  void read_plugin(const tinyxml2::XMLElement& e, const FileContext& ctx) {
+    AttributeParser a(e, ctx.sink, {"kind", "name"});
+    PluginDescription plugin;
+    plugin.where = ctx.sink.at(e.GetLineNum());
+    if (const auto kind = a.token("kind", Presence::Required)) {
+      static const std::map<std::string, PluginKind, std::less<>> kinds = {
+          {"device", PluginKind::Device}, {"tracker", PluginKind::Tracker},
+          {"base", PluginKind::Base}, {"display", PluginKind::Display}};
+      if (const auto it = kinds.find(*kind); it != kinds.end()) {
+        plugin.kind = it->second;
+      } else {
+        ctx.sink.error(a.line_of("kind"),
+                       concat("unknown plugin kind '", *kind,
+                              "' (expected device, tracker, base or display)"));
+      }
+    }
+    plugin.name = a.text("name", Presence::Required, Emptiness::Forbidden).value_or("");
+    std::map<std::string, int, std::less<>> param_lines;
+    for_each_child(e, ctx.sink, [&](const tinyxml2::XMLElement& child) {
+      if (std::string_view(child.Name()) != "param") {
+        report_unknown_element(child, e, ctx.sink);
+        return;
+      }
+      AttributeParser pa(child, ctx.sink, {"name", "value"});
+      expect_no_children(child, ctx.sink);
+      const auto name = pa.text("name", Presence::Required, Emptiness::Forbidden);
+      const auto value = pa.text("value", Presence::Required);
+      if (!name) return;
+      const auto [it, inserted] = param_lines.emplace(*name, child.GetLineNum());
+      if (!inserted) {
+        ctx.sink.error(child.GetLineNum(),
+                       concat("duplicate param '", *name, "' in plugin '", plugin.name,
+                              "' (the first is at line ", it->second, ")"));
+        return;
+      }
+      if (value) plugin.params.emplace(*name, *value);
+    });
+    scene_.plugins.push_back(std::move(plugin));
+  }
+
+  void resolve_material_references() {
+    for (const MaterialReference& ref : material_references_) {
+      const auto it = scene_.materials.find(ref.name);
+      if (it == scene_.materials.end()) {
+        diagnostics_.push_back({ref.where, concat("object '", scene_.objects[ref.object_index].name,
+                                                  "' uses unknown material '", ref.name, "'")});
+      } else {
+        scene_.objects[ref.object_index].material = it->second;
+      }
+    }
+  }
+
+  SceneDescription scene_;
+  Diagnostics diagnostics_;
+  std::vector<OpenFile> open_files_;  ///< the include chain being read, root first
+  std::vector<MaterialReference> material_references_;
+  std::map<std::string, SourceLocation, std::less<>> material_where_;
+  std::map<std::string, SourceLocation, std::less<>> object_where_;
+  std::map<std::string, SourceLocation, std::less<>> frame_where_;
+  std::optional<SourceLocation> haptics_where_;
+};
+
+}  // namespace
+
+SceneReadResult read_scene_file(const std::filesystem::path& file) {
+  SceneReader reader;
+  reader.read_root_file(file);
+  return reader.finish();
+}
+
+SceneReadResult read_scene_string(std::string_view xml, const std::filesystem::path& file) {
+  SceneReader reader;
+  reader.read_root(xml, file);
+  return reader.finish();
+}
+
+}  // namespace mhd

@@ -1,0 +1,330 @@
+#include "mesh_io/mesh_cache.h"
+
+#include "geometry/primitive_mesh.h"
+#include "test_mesh_files.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace mhd {
+namespace {
+
+using test::TempDir;
+
+std::vector<char> read_bytes(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void write_bytes(const std::filesystem::path& file, const std::vector<char>& bytes) {
+  std::ofstream out(file, std::ios::binary | std::ios::trunc);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+}
+
+std::vector<std::uint32_t> query(const MeshBvh& bvh, const Eigen::AlignedBox3d& box) {
+  std::vector<std::uint32_t> hits;
+  bvh.for_each_triangle_overlapping(box, [&](std::uint32_t t) { hits.push_back(t); });
+  std::sort(hits.begin(), hits.end());
+  return hits;
+}
+
+/// Random boxes of varied sizes around the mesh.
+std::vector<Eigen::AlignedBox3d> random_boxes(const Eigen::AlignedBox3d& bounds, int count) {
+  std::mt19937 rng(1234);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Eigen::AlignedBox3d> boxes;
+  const Eigen::Vector3d size = bounds.sizes();
+  for (int i = 0; i < count; ++i) {
+    const Eigen::Vector3d c = bounds.min() - 0.1 * size +
+                              Eigen::Vector3d(u(rng), u(rng), u(rng)).cwiseProduct(1.2 * size);
+    const Eigen::Vector3d half = size * (0.001 + 0.2 * u(rng) * u(rng));
+    boxes.emplace_back(c - half, c + half);
+  }
+  return boxes;
+}
+
+/// The triangles whose own bounding box overlaps `box` (what a BVH query must report
+/// at least).
+std::vector<std::uint32_t> brute_force(const TriangleMesh& m, const Eigen::AlignedBox3d& box) {
+  std::vector<std::uint32_t> out;
+  for (std::uint32_t i = 0; i < m.triangles.size(); ++i) {
+    Eigen::AlignedBox3d tb;
+    for (auto v : m.triangles[i]) tb.extend(m.vertices_m[v]);
+    if (tb.intersects(box)) out.push_back(i);
+  }
+  return out;
+}
+
+class MeshCacheTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    mesh_file_ = dir_ / "sphere.ply";
+    test::write_binary_ply(mesh_file_, make_sphere_mesh(0.04, 4));
+    cache_dir_ = dir_ / "cache";
+  }
+  TempDir dir_;
+  std::filesystem::path mesh_file_;
+  std::filesystem::path cache_dir_;
+};
+
+TEST_F(MeshCacheTest, SecondLoadHitsAndMatchesAFreshBuild) {
+  MeshCache cache(cache_dir_);
+  EXPECT_TRUE(cache.writable());
+  const CachedMesh cold = cache.load(mesh_file_, Eigen::Vector3d::Ones());
+  ASSERT_TRUE(cold.ok()) << cold.error->message();
+  EXPECT_EQ(cold.outcome, CacheOutcome::Miss);
+  EXPECT_TRUE(cold.written);
+  EXPECT_TRUE(std::filesystem::is_regular_file(cold.cache_file));
+  EXPECT_EQ(cold.cache_file.parent_path(), cache_dir_);
+
+  const CachedMesh warm = cache.load(mesh_file_, Eigen::Vector3d::Ones());
+  ASSERT_TRUE(warm.ok());
+  EXPECT_EQ(warm.outcome, CacheOutcome::Hit);
+  EXPECT_FALSE(warm.written);
+  EXPECT_EQ(warm.cache_file, cold.cache_file);
+  EXPECT_EQ(cache.stats().hits, 1u);
+  EXPECT_EQ(cache.stats().misses, 1u);
+  EXPECT_EQ(cache.stats().writes, 1u);
+  EXPECT_NE(&warm.mesh(), &cold.mesh());
+
+  // Bit-identical mesh data.
+  EXPECT_EQ(warm.mesh().vertices_m, cold.mesh().vertices_m);
+  EXPECT_EQ(warm.mesh().triangles, cold.mesh().triangles);
+  EXPECT_EQ(warm.mesh().vertex_normals, cold.mesh().vertex_normals);
+  EXPECT_EQ(warm.bvh->bounds().min(), cold.bvh->bounds().min());
+  EXPECT_EQ(warm.bvh->bounds().max(), cold.bvh->bounds().max());
+
+  // The cached BVH answers box queries exactly like a freshly built one.
+  const MeshBvh fresh(warm.bvh->mesh_ptr());
+  std::size_t reported = 0;
+  for (const auto& box : random_boxes(fresh.bounds(), 300)) {
+    const auto from_cache = query(*warm.bvh, box);
+    EXPECT_EQ(from_cache, query(fresh, box));
+    EXPECT_EQ(from_cache, query(*cold.bvh, box));
+    const auto must = brute_force(warm.mesh(), box);
+    EXPECT_TRUE(std::includes(from_cache.begin(), from_cache.end(), must.begin(), must.end()));
+    reported += from_cache.size();
+  }
+  EXPECT_GT(reported, 0u);
+
+  // A second cache object (another process, say) finds the file too.
+  MeshCache other(cache_dir_);
+  EXPECT_EQ(other.load(mesh_file_, Eigen::Vector3d::Ones()).outcome, CacheOutcome::Hit);
+}
+
+TEST_F(MeshCacheTest, TruncatedCacheFileIsRejectedAndRebuilt) {
+  MeshCache cache(cache_dir_);
+  const CachedMesh cold = cache.load(mesh_file_, Eigen::Vector3d::Ones());
+  ASSERT_TRUE(cold.ok());
+  const auto bytes = read_bytes(cold.cache_file);
+  ASSERT_GT(bytes.size(), 200u);
+  for (const std::size_t keep : {bytes.size() - 1, bytes.size() / 2, std::size_t{100}, std::size_t{0}}) {
+    SCOPED_TRACE(keep);
+    write_bytes(cold.cache_file, std::vector<char>(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(keep)));
+    const CachedMesh again = cache.load(mesh_file_, Eigen::Vector3d::Ones());
+    ASSERT_TRUE(again.ok());
+    EXPECT_EQ(again.outcome, CacheOutcome::Rejected);
+    EXPECT_FALSE(again.rejected_reason.empty());
+    EXPECT_TRUE(again.written);
+    EXPECT_EQ(again.mesh().triangles, cold.mesh().triangles);
+    // Rebuilt: the same size (Bullet's in-place image holds pointer values, so the
+    // bytes may differ) and valid.
+    EXPECT_EQ(std::filesystem::file_size(cold.cache_file), bytes.size());
+    EXPECT_EQ(cache.load(mesh_file_, Eigen::Vector3d::Ones()).outcome, CacheOutcome::Hit);
+  }
+}
+
+TEST_F(MeshCacheTest, FlippedBytesAreRejectedAndRebuilt) {
+  MeshCache cache(cache_dir_);
+  const CachedMesh cold = cache.load(mesh_file_, Eigen::Vector3d::Ones());
+  ASSERT_TRUE(cold.ok());
+  const auto bytes = read_bytes(cold.cache_file);
+  // Header fields, vertices, triangles, normals and the BVH at the very end.
+  for (const std::size_t at : {std::size_t{0}, std::size_t{20}, std::size_t{60}, std::size_t{127}, std::size_t{128},
+                               bytes.size() / 4, bytes.size() / 2, bytes.size() * 3 / 4, bytes.size() - 1}) {
+    SCOPED_TRACE(at);
+    auto bad = bytes;
+    bad[at] = static_cast<char>(bad[at] ^ 0x10);
+    write_bytes(cold.cache_file, bad);
+    const CachedMesh again = cache.load(mesh_file_, Eigen::Vector3d::Ones());
+    ASSERT_TRUE(again.ok());
+    EXPECT_EQ(again.outcome, CacheOutcome::Rejected);
+    EXPECT_EQ(again.mesh().vertices_m, cold.mesh().vertices_m);
+    EXPECT_TRUE(again.written);
+    EXPECT_EQ(std::filesystem::file_size(cold.cache_file), bytes.size());
+  }
+  EXPECT_EQ(cache.stats().rejected, 9u);
+  EXPECT_EQ(cache.load(mesh_file_, Eigen::Vector3d::Ones()).outcome, CacheOutcome::Hit);
+}
+
+TEST_F(MeshCacheTest, CacheFileOfAnotherKeyIsRejected) {
+  MeshCache cache(cache_dir_);
+  const CachedMesh a = cache.load(mesh_file_, Eigen::Vector3d::Ones());
+  const CachedMesh b = cache.load(mesh_file_, Eigen::Vector3d::Constant(2.0));
+  ASSERT_TRUE(a.ok() && b.ok());
+  std::filesystem::copy_file(a.cache_file, b.cache_file, std::filesystem::copy_options::overwrite_existing);
+  const CachedMesh again = cache.load(mesh_file_, Eigen::Vector3d::Constant(2.0));
+  EXPECT_EQ(again.outcome, CacheOutcome::Rejected);
+  EXPECT_EQ(again.rejected_reason, "key mismatch");
+  EXPECT_NEAR(mesh_bounds(again.mesh()).max().x(), 0.08, 1e-6);
+}
+
+TEST_F(MeshCacheTest, ScaleAndContentChangeTheKey) {
+  const auto k1 = mesh_cache_key(mesh_file_, Eigen::Vector3d::Ones());
+  const auto k1_again = mesh_cache_key(mesh_file_, Eigen::Vector3d::Ones());
+  const auto k_mm = mesh_cache_key(mesh_file_, Eigen::Vector3d::Constant(0.001));
+  const auto k_axis = mesh_cache_key(mesh_file_, Eigen::Vector3d(1, 1, -1));
+  ASSERT_TRUE(k1 && k1_again && k_mm && k_axis);
+  EXPECT_EQ(*k1, *k1_again);
+  EXPECT_NE(*k1, *k_mm);
+  EXPECT_NE(*k1, *k_axis);
+  EXPECT_EQ(k1->hex().size(), 32u);
+  EXPECT_EQ(k1->hex().find_first_not_of("0123456789abcdef"), std::string::npos);
+
+  MeshCache cache(cache_dir_);
+  const CachedMesh m1 = cache.load(mesh_file_, Eigen::Vector3d::Ones());
+  const CachedMesh mm = cache.load(mesh_file_, Eigen::Vector3d::Constant(0.001));
+  EXPECT_EQ(m1.outcome, CacheOutcome::Miss);
+  EXPECT_EQ(mm.outcome, CacheOutcome::Miss);
+  EXPECT_NE(m1.cache_file, mm.cache_file);
+  EXPECT_EQ(m1.cache_file, cache.file_for(*k1));
+  EXPECT_EQ(mm.cache_file, cache.file_for(*k_mm));
+  EXPECT_NEAR(mesh_bounds(mm.mesh()).max().x(), 0.04e-3, 1e-9);
+
+  // New content under the same name: a new key, never the old entry.
+  test::write_binary_ply(mesh_file_, make_sphere_mesh(0.04, 3));
+  const auto k2 = mesh_cache_key(mesh_file_, Eigen::Vector3d::Ones());
+  ASSERT_TRUE(k2);
+  EXPECT_NE(*k1, *k2);
+  const CachedMesh changed = cache.load(mesh_file_, Eigen::Vector3d::Ones());
+  EXPECT_EQ(changed.outcome, CacheOutcome::Miss);
+  EXPECT_EQ(changed.mesh().triangle_count(), 1280u);
+}
+
+TEST_F(MeshCacheTest, DisabledCacheStillLoads) {
+  MeshCache cache(std::nullopt);
+  EXPECT_FALSE(cache.writable());
+  const CachedMesh r = cache.load(mesh_file_, Eigen::Vector3d::Ones());
+  ASSERT_TRUE(r.ok());
+  EXPECT_EQ(r.outcome, CacheOutcome::Disabled);
+  EXPECT_EQ(r.mesh().triangle_count(), 5120u);
+  EXPECT_FALSE(std::filesystem::exists(cache_dir_));
+}
+
+TEST_F(MeshCacheTest, UnusableCacheFolderFallsBackToLoading) {
+  // A regular file where the folder should be: it can be neither created nor written.
+  test::write_text(dir_ / "blocker", "x");
+  MeshCache cache(dir_ / "blocker" / "cache");
+  EXPECT_FALSE(cache.writable());
+  const CachedMesh r = cache.load(mesh_file_, Eigen::Vector3d::Ones());
+  ASSERT_TRUE(r.ok());
+  EXPECT_FALSE(r.written);
+  EXPECT_EQ(cache.load(mesh_file_, Eigen::Vector3d::Ones()).outcome, CacheOutcome::Miss);
+}
+
+TEST_F(MeshCacheTest, LoadErrorsPassThrough) {
+  MeshCache cache(cache_dir_);
+  const CachedMesh r = cache.load(dir_ / "missing.stl", Eigen::Vector3d::Ones());
+  ASSERT_FALSE(r.ok());
+  ASSERT_TRUE(r.error);
+  EXPECT_EQ(r.error->reason, "file not found");
+  EXPECT_EQ(cache.stats().writes, 0u);
+}
+
+TEST_F(MeshCacheTest, LargeMeshesReportProgress) {
+  // 2 * 320 * 159 = 101760 triangles: over the progress threshold.
+  const auto big_file = dir_ / "big.ply";
+  test::write_binary_ply(big_file, make_uv_sphere_mesh(0.1, 160, 320));
+  MeshCache cache(cache_dir_);
+  std::vector<std::pair<std::string, double>> calls;
+  auto record = [&](std::string_view what, double f) { calls.emplace_back(std::string(what), f); };
+
+  const CachedMesh cold = cache.load(big_file, Eigen::Vector3d::Ones(), record);
+  ASSERT_TRUE(cold.ok());
+  ASSERT_GE(cold.mesh().triangle_count(), kProgressMinTriangles);
+  auto saw = [&](std::string_view prefix, double f) {
+    return std::any_of(calls.begin(), calls.end(), [&](const auto& c) { return c.first.starts_with(prefix) && c.second == f; });
+  };
+  EXPECT_TRUE(saw("building BVH of big.ply", 0.0));
+  EXPECT_TRUE(saw("building BVH of big.ply", 1.0));
+  EXPECT_TRUE(saw("reading big.ply", 1.0));
+  for (const auto& c : calls) {
+    EXPECT_GE(c.second, 0.0);
+    EXPECT_LE(c.second, 1.0);
+  }
+
+  calls.clear();
+  const CachedMesh warm = cache.load(big_file, Eigen::Vector3d::Ones(), record);
+  EXPECT_EQ(warm.outcome, CacheOutcome::Hit);
+  EXPECT_TRUE(saw("reading cached BVH of big.ply", 0.0));
+  EXPECT_TRUE(saw("reading cached BVH of big.ply", 1.0));
+
+  // A small mesh stays quiet.
+  calls.clear();
+  ASSERT_TRUE(cache.load(mesh_file_, Eigen::Vector3d::Ones(), record).ok());
+  EXPECT_TRUE(calls.empty());
+}
+
+/// Sets an environment variable for the scope (nullptr unsets it).
+class ScopedEnv {
+ public:
+  ScopedEnv(const char* name, const char* value) : name_(name) {
+    if (const char* old = std::getenv(name)) old_ = old;
+    if (value != nullptr) {
+      ::setenv(name, value, 1);
+    } else {
+      ::unsetenv(name);
+    }
+  }
+  ~ScopedEnv() {
+    if (old_) {
+      ::setenv(name_, old_->c_str(), 1);
+    } else {
+      ::unsetenv(name_);
+    }
+  }
+  ScopedEnv(const ScopedEnv&) = delete;
+  ScopedEnv& operator=(const ScopedEnv&) = delete;
+
+ private:
+  const char* name_;
+  std::optional<std::string> old_;
+};
+
+TEST(MeshCacheDir, EnvironmentOrder) {
+  {
+    ScopedEnv a("MHD_CACHE_DIR", "/tmp/mhd-a");
+    ScopedEnv b("XDG_CACHE_HOME", "/tmp/xdg");
+    ScopedEnv c("HOME", "/home/someone");
+    EXPECT_EQ(default_mesh_cache_dir(), std::filesystem::path("/tmp/mhd-a"));
+  }
+  {
+    ScopedEnv a("MHD_CACHE_DIR", "");
+    ScopedEnv b("XDG_CACHE_HOME", "/tmp/xdg");
+    ScopedEnv c("HOME", "/home/someone");
+    EXPECT_EQ(default_mesh_cache_dir(), std::filesystem::path("/tmp/xdg/mhd"));
+  }
+  {
+    ScopedEnv a("MHD_CACHE_DIR", nullptr);
+    ScopedEnv b("XDG_CACHE_HOME", "relative/path");  // not absolute: ignored per XDG spec
+    ScopedEnv c("HOME", "/home/someone");
+    EXPECT_EQ(default_mesh_cache_dir(), std::filesystem::path("/home/someone/.cache/mhd"));
+  }
+  {
+    ScopedEnv a("MHD_CACHE_DIR", nullptr);
+    ScopedEnv b("XDG_CACHE_HOME", nullptr);
+    ScopedEnv c("HOME", nullptr);
+    EXPECT_EQ(default_mesh_cache_dir(), std::nullopt);
+  }
+}
+
+}  // namespace
+}  // namespace mhd

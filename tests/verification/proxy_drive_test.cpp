@@ -1,0 +1,89 @@
+#include "verification/proxy_drive.h"
+#include "verification/stroke_set.h"
+#include "test_meshes.h"
+
+using namespace mhd::test;  // hand-made meshes
+
+#include <gtest/gtest.h>
+
+#include <memory>
+
+namespace mhd::verify {
+namespace {
+
+using Eigen::Vector3d;
+
+struct BoxWorld {
+  CollisionWorld world;
+  std::vector<HapticMaterial> materials;
+  ProxySettings settings;
+  BoxWorld() {
+    auto mesh = std::make_shared<const TriangleMesh>(make_test_box({-0.1, -0.1, -0.1}, {0.1, 0.1, 0.1}));
+    world.add_object(std::make_shared<const MeshBvh>(mesh), pose_from_xyz_rpy(Vector3d(0.0, 0.0, 0.05),
+                                                                                Vector3d(0.1, 0.2, 0.3)));
+    materials.resize(1);
+  }
+};
+
+TEST(DriveProxy, RecordsEveryTickAndAContinuousPath) {
+  const BoxWorld box;
+  const SurfaceCrossingOracle oracle(box.world);
+  const StrokeSet set = make_anchor_strokes(oracle, 77, 10);
+  for (const Stroke& stroke : set.strokes) {
+    const TickRecord records = drive_proxy(box.world, box.materials, box.settings, stroke.hip_W, 1000.0);
+    ASSERT_EQ(records.size(), stroke.hip_W.size());
+    std::size_t contact = 0;
+    for (std::size_t k = 0; k < records.size(); ++k) {
+      const TickSample& s = records[k];
+      EXPECT_EQ(s.hip_W, stroke.hip_W[k]);
+      ASSERT_GE(s.path_points, 1);
+      ASSERT_LE(s.path_points, kMaxProxyPath);
+      // The path ends where the proxy ends.
+      EXPECT_EQ(s.path_W[static_cast<std::size_t>(s.path_points - 1)], s.proxy_W);
+      EXPECT_LE(s.force_W.norm(), box.settings.max_force_N * (1.0 + 1e-12));
+      if (s.in_contact) ++contact;
+    }
+    // 5 mm approach + 50 mm slide at 0.5 mm per tick, on a box face or past its edge.
+    EXPECT_GT(contact, 10U);
+    EXPECT_EQ(count_crossings(oracle, records), 0U);
+    EXPECT_EQ(count_ticks_inside(oracle, records), 0U);
+  }
+}
+
+TEST(DriveProxy, FastStrokesDoNotPopThrough) {
+  const BoxWorld box;
+  const SurfaceCrossingOracle oracle(box.world);
+  const StrokeSet set = make_fast_strokes(oracle, 78, 50);
+  std::size_t crossings = 0, inside = 0;
+  for (const Stroke& stroke : set.strokes) {
+    const TickRecord records = drive_proxy(box.world, box.materials, box.settings, stroke.hip_W, 1000.0);
+    crossings += count_crossings(oracle, records);
+    inside += count_ticks_inside(oracle, records);
+  }
+  EXPECT_EQ(crossings, 0U);
+  EXPECT_EQ(inside, 0U);
+}
+
+TEST(DriveProxy, AProxyThatFollowsTheHipIsCaught) {
+  const BoxWorld box;
+  const SurfaceCrossingOracle oracle(box.world);
+  const Stroke stroke = make_anchor_strokes(oracle, 79, 1).strokes.front();
+  TickRecord records(stroke.hip_W.size());
+  for (std::size_t k = 0; k < records.size(); ++k) {
+    records[k].hip_W = records[k].proxy_W = records[k].path_W[0] = stroke.hip_W[k];
+    records[k].path_points = 1;
+  }
+  // In through the face on the way down, out again on the retract (or past an edge).
+  EXPECT_GE(count_crossings(oracle, records), 2U);
+  EXPECT_GT(count_ticks_inside(oracle, records), 100U);
+}
+
+TEST(DriveProxy, EmptyPathGivesEmptyRecord) {
+  const BoxWorld box;
+  EXPECT_TRUE(drive_proxy(box.world, box.materials, box.settings, {}, 1000.0).empty());
+  const std::vector<Vector3d> one{Vector3d(0.5, 0.5, 0.5)};
+  EXPECT_THROW((void)drive_proxy(box.world, box.materials, box.settings, one, 0.0), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace mhd::verify

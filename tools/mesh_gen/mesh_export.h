@@ -1,0 +1,20 @@
+#pragma once
+// Writes a TriangleMesh through assimp's exporter, the format chosen by the file's
+// extension: .ply (binary PLY), .obj (no material file), .stl (binary STL).
+
+#include "geometry/triangle_mesh.h"
+
+#include <filesystem>
+#include <string>
+
+namespace mhd::mesh_gen {
+
+/// The assimp exporter id for the file's extension ("plyb", "objnomtl", "stlb"); throws
+/// std::runtime_error for any other extension.
+[[nodiscard]] std::string mesh_file_format(const std::filesystem::path& file);
+
+/// Writes `mesh` with every coordinate multiplied by file_units_per_m (1000 writes
+/// millimetres). Throws std::runtime_error for an unknown extension or a failed write.
+void write_mesh_file(const TriangleMesh& mesh, const std::filesystem::path& file, double file_units_per_m);
+
+}  // namespace mhd::mesh_gen

@@ -1,0 +1,94 @@
+// mhd-mesh-gen: writes the procedural test meshes (dolphin, UV sphere, bowl) in
+// millimetres, the format chosen by the output file's extension.
+
+#include "mesh_gen/bowl_mesh.h"
+#include "mesh_gen/dolphin_mesh.h"
+#include "mesh_gen/mesh_export.h"
+#include "mesh_gen/uv_sphere_mesh.h"
+
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <numbers>
+#include <string>
+
+namespace {
+
+constexpr double kMillimetresPerMetre = 1000.0;
+
+int write_and_report(const mhd::TriangleMesh& mesh, const std::string& out,
+                     std::chrono::steady_clock::time_point start) {
+  const auto built = std::chrono::steady_clock::now();
+  const std::filesystem::path file(out);
+  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
+  mhd::mesh_gen::write_mesh_file(mesh, file, kMillimetresPerMetre);
+  const auto written = std::chrono::steady_clock::now();
+  const Eigen::AlignedBox3d box = mhd::mesh_bounds(mesh);
+  const Eigen::Vector3d size_mm = box.sizes() * kMillimetresPerMetre;
+  using ms = std::chrono::duration<double, std::milli>;
+  std::printf("%s: %zu triangles, %zu vertices, %.1f x %.1f x %.1f mm; built in %.0f ms, written in %.0f ms\n",
+              out.c_str(), mesh.triangle_count(), mesh.vertices_m.size(), size_mm.x(), size_mm.y(), size_mm.z(),
+              ms(built - start).count(), ms(written - built).count());
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Writes MHD's procedural test meshes in millimetres (.ply binary, .obj or .stl)."};
+  app.require_subcommand(1);
+
+  std::size_t dolphin_triangles = 3000;
+  std::string dolphin_out;
+  CLI::App* dolphin = app.add_subcommand("dolphin", "closed bottlenose dolphin, 2000 mm from beak to fluke tips");
+  dolphin->add_option("--triangles", dolphin_triangles, "target triangle count (met within 2 %)")
+      ->check(CLI::Range(std::size_t{500}, std::size_t{50'000'000}));
+  dolphin->add_option("--out", dolphin_out, "output file")->required();
+
+  std::size_t sphere_triangles = 1'000'000;
+  double sphere_radius_mm = 100.0;
+  std::string sphere_out;
+  CLI::App* sphere = app.add_subcommand("uv-sphere", "closed latitude/longitude sphere");
+  sphere->add_option("--triangles", sphere_triangles, "target triangle count")
+      ->check(CLI::Range(std::size_t{12}, std::size_t{50'000'000}));
+  sphere->add_option("--radius-mm", sphere_radius_mm, "radius")->check(CLI::PositiveNumber);
+  sphere->add_option("--out", sphere_out, "output file")->required();
+
+  std::size_t bowl_triangles = 4000;
+  double bowl_radius_mm = 150.0;
+  double bowl_cap_deg = 90.0;
+  std::string bowl_out;
+  CLI::App* bowl = app.add_subcommand("bowl", "open single-layer spherical cap, opening upward (+y)");
+  bowl->add_option("--triangles", bowl_triangles, "target triangle count")
+      ->check(CLI::Range(std::size_t{8}, std::size_t{50'000'000}));
+  bowl->add_option("--radius-mm", bowl_radius_mm, "sphere radius")->check(CLI::PositiveNumber);
+  bowl->add_option("--cap-deg", bowl_cap_deg, "polar angle of the rim from the bottom (90: hemisphere)")
+      ->check(CLI::Range(1.0, 179.0));
+  bowl->add_option("--out", bowl_out, "output file")->required();
+
+  CLI11_PARSE(app, argc, argv);
+
+  try {
+    (void)mhd::mesh_gen::mesh_file_format(dolphin->parsed() ? dolphin_out : sphere->parsed() ? sphere_out : bowl_out);
+    const auto start = std::chrono::steady_clock::now();
+    if (dolphin->parsed()) {
+      return write_and_report(mhd::mesh_gen::make_dolphin(mhd::mesh_gen::dolphin_layout(dolphin_triangles)),
+                              dolphin_out, start);
+    }
+    if (sphere->parsed()) {
+      return write_and_report(mhd::mesh_gen::make_uv_sphere(sphere_radius_mm / kMillimetresPerMetre,
+                                                             mhd::mesh_gen::uv_sphere_layout(sphere_triangles)),
+                              sphere_out, start);
+    }
+    const double cap_rad = bowl_cap_deg * std::numbers::pi / 180.0;
+    return write_and_report(mhd::mesh_gen::make_bowl(bowl_radius_mm / kMillimetresPerMetre, cap_rad,
+                                                     mhd::mesh_gen::bowl_layout(bowl_triangles, cap_rad)),
+                            bowl_out, start);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "mhd-mesh-gen: %s\n", e.what());
+    return 1;
+  }
+}

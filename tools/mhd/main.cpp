@@ -1,0 +1,52 @@
+// mhd: the MHD command line. Each subcommand lives in its own *_command.cpp and is
+// registered here by its add_*_command(app); a subcommand's callback does the work
+// and reports failure through mhd::cli::exit_with (command_exit.h).
+
+#include "command_exit.h"
+#include "run_command.h"
+#include "validate_command.h"
+
+#include <CLI/CLI.hpp>
+#include <fmt/core.h>
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/spdlog.h>
+
+#include <cstdio>
+#include <exception>
+
+namespace {
+
+void set_up_logging() {
+  auto logger = spdlog::stderr_color_mt("mhd");
+  logger->set_pattern("mhd: %^%l%$: %v");
+  spdlog::set_default_logger(logger);
+  spdlog::set_level(spdlog::level::info);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  set_up_logging();
+
+  CLI::App app{"MHD: haptic rendering engine", "mhd"};
+  app.set_version_flag("--version", "mhd " MHD_VERSION);
+  app.require_subcommand(1);
+  app.add_flag_callback("-v,--verbose", [] { spdlog::set_level(spdlog::level::debug); },
+                        "Log what each command does");
+
+  add_validate_command(app);
+  add_run_command(app);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::RuntimeError& e) {
+    return e.get_exit_code();  // a subcommand's exit_with(status)
+  } catch (const CLI::ParseError& e) {
+    const int status = app.exit(e);  // prints help, version or the usage error
+    return status == 0 ? 0 : mhd::cli::kUsageError;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "mhd: error: {}\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,80 @@
+#include "verification/stroke_run.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace mhd::verify {
+namespace {
+
+double quantile(const std::vector<double>& sorted, double q) {
+  const auto index = static_cast<std::size_t>(std::ceil(q * static_cast<double>(sorted.size()))) - 1;
+  return sorted[std::min(index, sorted.size() - 1)];
+}
+
+}  // namespace
+
+LatencySummary summarize_latency(std::vector<double>& samples_us) {
+  LatencySummary s;
+  if (samples_us.empty()) return s;
+  std::sort(samples_us.begin(), samples_us.end());
+  s.count = samples_us.size();
+  s.median_us = quantile(samples_us, 0.5);
+  s.p99_us = quantile(samples_us, 0.99);
+  s.p999_us = quantile(samples_us, 0.999);
+  s.max_us = samples_us.back();
+  return s;
+}
+
+StrokeRunReport run_strokes(const CompiledScene& scene, const SurfaceCrossingOracle& oracle,
+                            const StrokeSet& strokes, double rate_Hz) {
+  using Clock = std::chrono::steady_clock;
+  StrokeRunReport report;
+  std::vector<double> contact_us;
+  std::vector<double> all_us;
+  double contact_force_sum = 0.0;
+  const double dt_s = 1.0 / rate_Hz;
+  TickRecord record;
+  for (const Stroke& stroke : strokes.strokes) {
+    if (stroke.hip_W.empty()) continue;
+    ++report.strokes;
+    record.clear();
+    record.reserve(stroke.hip_W.size());
+    ProxyState state;
+    reset_proxy(state, stroke.hip_W.front());
+    for (const Eigen::Vector3d& hip : stroke.hip_W) {
+      const auto t0 = Clock::now();
+      const ProxyOutput out = step_proxy(scene.world, scene.materials, scene.proxy, state, hip, dt_s);
+      const auto t1 = Clock::now();
+      const double us = std::chrono::duration<double, std::micro>(t1 - t0).count();
+      all_us.push_back(us);
+      ++report.ticks;
+      if (out.in_contact) {
+        contact_us.push_back(us);
+        ++report.contact_ticks;
+        contact_force_sum += out.force_W.norm();
+      }
+      if (out.force_clamped) ++report.clamped_ticks;
+      report.max_force_N = std::max(report.max_force_N, out.force_W.norm());
+      report.max_plane_count = std::max(report.max_plane_count, out.plane_count);
+      TickSample& tick = record.emplace_back();
+      tick.hip_W = hip;
+      tick.proxy_W = out.proxy_W;
+      tick.force_W = out.force_W;
+      tick.in_contact = out.in_contact;
+      tick.force_clamped = out.force_clamped;
+      tick.plane_count = out.plane_count;
+      tick.path_points = state.path_points;
+      tick.path_W = state.path_W;
+    }
+    report.pop_throughs += count_crossings(oracle, record);
+    report.ticks_inside += count_ticks_inside(oracle, record);
+  }
+  report.mean_contact_force_N =
+      report.contact_ticks > 0 ? contact_force_sum / static_cast<double>(report.contact_ticks) : 0.0;
+  report.contact_updates = summarize_latency(contact_us);
+  report.all_updates = summarize_latency(all_us);
+  return report;
+}
+
+}  // namespace mhd::verify

@@ -1,0 +1,40 @@
+#pragma once
+// Runs a stroke set through the proxy at a fixed rate, timing every update and checking
+// every proxy move against the exact surface oracle. Used by `mhd run` and the bench.
+
+#include "verification/proxy_drive.h"
+#include "verification/stroke_set.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace mhd::verify {
+
+/// Order statistics of per-update times, microseconds.
+struct LatencySummary {
+  std::size_t count = 0;
+  double median_us = 0, p99_us = 0, p999_us = 0, max_us = 0;
+};
+
+/// Sorts `samples_us` and summarises it (all zero for an empty input).
+[[nodiscard]] LatencySummary summarize_latency(std::vector<double>& samples_us);
+
+struct StrokeRunReport {
+  std::size_t strokes = 0;
+  std::size_t ticks = 0;
+  std::size_t contact_ticks = 0;
+  std::size_t clamped_ticks = 0;
+  int max_plane_count = 0;
+  double max_force_N = 0.0;
+  double mean_contact_force_N = 0.0;
+  LatencySummary contact_updates;  ///< ticks that ended in contact
+  LatencySummary all_updates;
+  std::size_t pop_throughs = 0;  ///< proxy moves that touched the surface (exact check)
+  std::size_t ticks_inside = 0;  ///< ticks that ended inside a closed object
+};
+
+/// Steps the proxy along every stroke (reset at each stroke's first sample).
+[[nodiscard]] StrokeRunReport run_strokes(const CompiledScene& scene, const SurfaceCrossingOracle& oracle,
+                                          const StrokeSet& strokes, double rate_Hz);
+
+}  // namespace mhd::verify

@@ -1,0 +1,362 @@
+#include "verification/surface_crossing_oracle.h"
+
+// CGAL stays in this one translation unit (it is slow to compile).
+#include <CGAL/AABB_segment_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <iterator>
+#include <limits>
+#include <mutex>
+#include <random>
+#include <stdexcept>
+#include <unordered_map>
+
+namespace mhd::verify {
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = K::Point_3;
+using Segment = K::Segment_3;
+using Triangle = K::Triangle_3;
+using TriangleIterator = std::vector<Triangle>::const_iterator;
+using SegmentIterator = std::vector<Segment>::const_iterator;
+using TriangleTree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, TriangleIterator>>>;
+using SegmentTree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_segment_primitive<K, SegmentIterator>>>;
+
+Point to_point(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+Eigen::Vector3d to_eigen(const Point& p) { return {p.x(), p.y(), p.z()}; }
+
+// Fraction of a->b at x (x is on or near the segment), clamped to [0, 1].
+double param_on(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Point& x) {
+  const Eigen::Vector3d ab = b - a;
+  const double len2 = ab.squaredNorm();
+  if (len2 == 0.0) return 0.0;
+  return std::clamp((to_eigen(x) - a).dot(ab) / len2, 0.0, 1.0);
+}
+
+// Smallest fraction of a->b inside an intersection result (a point or a segment).
+template <class Result>
+double first_param(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Result& result, double fallback) {
+  if (!result) return fallback;
+  if (const Point* p = boost::get<Point>(&*result)) return param_on(a, b, *p);
+  if (const Segment* s = boost::get<Segment>(&*result)) {
+    return std::min(param_on(a, b, s->source()), param_on(a, b, s->target()));
+  }
+  return fallback;
+}
+
+// Bit pattern of a vertex for exact welding; -0.0 and 0.0 weld.
+struct VertexKey {
+  std::array<std::uint64_t, 3> bits;
+  friend bool operator==(const VertexKey&, const VertexKey&) = default;
+};
+struct VertexKeyHash {
+  std::size_t operator()(const VertexKey& k) const {
+    std::uint64_t h = 0x9e3779b97f4a7c15ULL;
+    for (std::uint64_t b : k.bits) h = (h ^ b) * 0x100000001b3ULL + (h >> 29);
+    return static_cast<std::size_t>(h);
+  }
+};
+VertexKey key_of(const Eigen::Vector3d& v) {
+  return {{std::bit_cast<std::uint64_t>(v.x() + 0.0), std::bit_cast<std::uint64_t>(v.y() + 0.0),
+           std::bit_cast<std::uint64_t>(v.z() + 0.0)}};
+}
+
+bool triangle_indices_valid(const TriangleIndices& t, std::size_t vertex_count) {
+  return t[0] < vertex_count && t[1] < vertex_count && t[2] < vertex_count;
+}
+
+// Even edge incidence after exact welding (a mod-2 cycle: ray parity is well defined).
+bool mesh_is_closed(const TriangleMesh& mesh) {
+  const std::size_t n = mesh.vertices_m.size();
+  std::unordered_map<VertexKey, std::uint32_t, VertexKeyHash> weld;
+  weld.reserve(n);
+  std::vector<std::uint32_t> canonical(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    auto [it, inserted] = weld.try_emplace(key_of(mesh.vertices_m[i]), static_cast<std::uint32_t>(weld.size()));
+    canonical[i] = it->second;
+  }
+  std::unordered_map<std::uint64_t, std::uint32_t> edge_count;
+  edge_count.reserve(mesh.triangles.size() * 2);
+  std::size_t used = 0;
+  for (const TriangleIndices& t : mesh.triangles) {
+    if (!triangle_indices_valid(t, n)) continue;
+    const std::array<std::uint32_t, 3> c{canonical[t[0]], canonical[t[1]], canonical[t[2]]};
+    if (c[0] == c[1] || c[1] == c[2] || c[2] == c[0]) continue;
+    ++used;
+    for (int e = 0; e < 3; ++e) {
+      const std::uint32_t u = c[static_cast<std::size_t>(e)];
+      const std::uint32_t v = c[static_cast<std::size_t>((e + 1) % 3)];
+      const std::uint64_t key = (std::uint64_t{std::min(u, v)} << 32) | std::max(u, v);
+      ++edge_count[key];
+    }
+  }
+  if (used == 0) return false;
+  return std::all_of(edge_count.begin(), edge_count.end(), [](const auto& kv) { return kv.second % 2 == 0; });
+}
+
+}  // namespace
+
+struct SurfaceCrossingOracle::Impl {
+  // Every triangle, world frame, in input order (degenerate ones included).
+  std::vector<std::array<Eigen::Vector3d, 3>> triangles_W;
+  std::vector<TriangleRef> refs;
+  std::vector<bool> closed;  // per object
+
+  // Non-degenerate triangles go in a triangle tree; collinear ones become their
+  // non-degenerate edges in a segment tree; single points are checked one by one.
+  std::vector<Triangle> cgal_triangles;
+  std::vector<std::size_t> cgal_triangle_source;
+  std::vector<Segment> cgal_segments;
+  std::vector<std::size_t> cgal_segment_source;
+  std::vector<Point> cgal_points;
+  std::vector<std::size_t> cgal_point_source;
+  TriangleTree triangle_tree;
+  SegmentTree segment_tree;
+  Eigen::AlignedBox3d bounds_W;
+
+  std::once_flag distance_once;
+
+  void add_triangle(const std::array<Eigen::Vector3d, 3>& abc, const TriangleRef& ref) {
+    const std::size_t source = triangles_W.size();
+    triangles_W.push_back(abc);
+    refs.push_back(ref);
+    for (const Eigen::Vector3d& v : abc) bounds_W.extend(v);
+    const Point a = to_point(abc[0]), b = to_point(abc[1]), c = to_point(abc[2]);
+    if (!CGAL::collinear(a, b, c)) {
+      cgal_triangles.emplace_back(a, b, c);
+      cgal_triangle_source.push_back(source);
+    } else if (a == b && b == c) {
+      cgal_points.push_back(a);
+      cgal_point_source.push_back(source);
+    } else {
+      for (const auto& [p, q] : {std::pair{a, b}, std::pair{b, c}, std::pair{c, a}}) {
+        if (p == q) continue;
+        cgal_segments.emplace_back(p, q);
+        cgal_segment_source.push_back(source);
+      }
+    }
+  }
+
+  void build(std::span<const PlacedMesh> meshes) {
+    bounds_W.setEmpty();
+    closed.reserve(meshes.size());
+    for (std::size_t i = 0; i < meshes.size(); ++i) {
+      const TriangleMesh& mesh = *meshes[i].mesh;
+      const Pose& X_WO = meshes[i].X_WO;
+      closed.push_back(mesh_is_closed(mesh));
+      const std::size_t n = mesh.vertices_m.size();
+      for (std::size_t j = 0; j < mesh.triangles.size(); ++j) {
+        const TriangleIndices& t = mesh.triangles[j];
+        if (!triangle_indices_valid(t, n)) continue;
+        add_triangle({X_WO * mesh.vertices_m[t[0]], X_WO * mesh.vertices_m[t[1]], X_WO * mesh.vertices_m[t[2]]},
+                     TriangleRef{static_cast<int>(i), static_cast<std::uint32_t>(j)});
+      }
+    }
+    triangle_tree.insert(cgal_triangles.cbegin(), cgal_triangles.cend());
+    triangle_tree.build();
+    segment_tree.insert(cgal_segments.cbegin(), cgal_segments.cend());
+    segment_tree.build();
+  }
+
+  // Calls f(source index, t) for every touched primitive. Query: Point or Segment.
+  template <class Query, class F>
+  void for_each_touch(const Query& query, const Eigen::Vector3d& a, const Eigen::Vector3d& b, F&& f) const {
+    constexpr bool kIsPoint = std::is_same_v<Query, Point>;
+    if (!triangle_tree.empty()) {
+      std::vector<TriangleIterator> hits;
+      triangle_tree.all_intersected_primitives(query, std::back_inserter(hits));
+      for (TriangleIterator it : hits) {
+        double t = 0.0;
+        if constexpr (!kIsPoint) t = first_param(a, b, CGAL::intersection(query, *it), 0.0);
+        f(cgal_triangle_source[static_cast<std::size_t>(it - cgal_triangles.cbegin())], t);
+      }
+    }
+    if (!segment_tree.empty()) {
+      std::vector<SegmentIterator> hits;
+      segment_tree.all_intersected_primitives(query, std::back_inserter(hits));
+      for (SegmentIterator it : hits) {
+        double t = 0.0;
+        if constexpr (!kIsPoint) t = first_param(a, b, CGAL::intersection(query, *it), 0.0);
+        f(cgal_segment_source[static_cast<std::size_t>(it - cgal_segments.cbegin())], t);
+      }
+    }
+    for (std::size_t i = 0; i < cgal_points.size(); ++i) {
+      bool touch = false;
+      if constexpr (kIsPoint) {
+        touch = query == cgal_points[i];
+      } else {
+        touch = query.has_on(cgal_points[i]);
+      }
+      if (touch) f(cgal_point_source[i], kIsPoint ? 0.0 : param_on(a, b, cgal_points[i]));
+    }
+  }
+
+  template <class Query>
+  bool touches(const Query& query) const {
+    if (!triangle_tree.empty() && triangle_tree.do_intersect(query)) return true;
+    if (!segment_tree.empty() && segment_tree.do_intersect(query)) return true;
+    for (const Point& p : cgal_points) {
+      if constexpr (std::is_same_v<Query, Point>) {
+        if (query == p) return true;
+      } else {
+        if (query.has_on(p)) return true;
+      }
+    }
+    return false;
+  }
+};
+
+SurfaceCrossingOracle::SurfaceCrossingOracle(const CollisionWorld& world) : impl_(std::make_unique<Impl>()) {
+  std::vector<PlacedMesh> meshes;
+  meshes.reserve(static_cast<std::size_t>(world.object_count()));
+  for (int i = 0; i < world.object_count(); ++i) meshes.push_back({&world.shape(i).mesh(), world.pose(i)});
+  impl_->build(meshes);
+}
+
+SurfaceCrossingOracle::SurfaceCrossingOracle(std::span<const PlacedMesh> meshes) : impl_(std::make_unique<Impl>()) {
+  impl_->build(meshes);
+}
+
+SurfaceCrossingOracle::SurfaceCrossingOracle(const TriangleMesh& mesh, const Pose& X_WO)
+    : impl_(std::make_unique<Impl>()) {
+  const PlacedMesh placed{&mesh, X_WO};
+  impl_->build(std::span<const PlacedMesh>(&placed, 1));
+}
+
+SurfaceCrossingOracle::~SurfaceCrossingOracle() = default;
+SurfaceCrossingOracle::SurfaceCrossingOracle(SurfaceCrossingOracle&&) noexcept = default;
+SurfaceCrossingOracle& SurfaceCrossingOracle::operator=(SurfaceCrossingOracle&&) noexcept = default;
+
+bool SurfaceCrossingOracle::segment_touches_surface(const Eigen::Vector3d& a_W, const Eigen::Vector3d& b_W) const {
+  if (a_W == b_W) return point_touches_surface(a_W);
+  return impl_->touches(Segment(to_point(a_W), to_point(b_W)));
+}
+
+bool SurfaceCrossingOracle::point_touches_surface(const Eigen::Vector3d& p_W) const {
+  return impl_->touches(to_point(p_W));
+}
+
+std::vector<OracleHit> SurfaceCrossingOracle::touched_triangles(const Eigen::Vector3d& a_W,
+                                                                const Eigen::Vector3d& b_W) const {
+  std::vector<std::pair<std::size_t, double>> touched;  // (source, t)
+  auto collect = [&](std::size_t source, double t) { touched.emplace_back(source, t); };
+  if (a_W == b_W) {
+    impl_->for_each_touch(to_point(a_W), a_W, b_W, collect);
+  } else {
+    impl_->for_each_touch(Segment(to_point(a_W), to_point(b_W)), a_W, b_W, collect);
+  }
+  // A collinear triangle may be reported once per edge: keep its smallest t.
+  std::sort(touched.begin(), touched.end());
+  std::vector<OracleHit> hits;
+  for (std::size_t i = 0; i < touched.size(); ++i) {
+    if (i > 0 && touched[i].first == touched[i - 1].first) continue;
+    hits.push_back({impl_->refs[touched[i].first], touched[i].second});
+  }
+  std::sort(hits.begin(), hits.end(), [](const OracleHit& x, const OracleHit& y) {
+    if (x.t != y.t) return x.t < y.t;
+    if (x.where.object != y.where.object) return x.where.object < y.where.object;
+    return x.where.triangle < y.where.triangle;
+  });
+  return hits;
+}
+
+std::optional<OracleHit> SurfaceCrossingOracle::first_touched_triangle(const Eigen::Vector3d& a_W,
+                                                                       const Eigen::Vector3d& b_W) const {
+  std::vector<OracleHit> hits = touched_triangles(a_W, b_W);
+  if (hits.empty()) return std::nullopt;
+  return hits.front();
+}
+
+SurfaceSide SurfaceCrossingOracle::side_of_closed_surfaces(const Eigen::Vector3d& p_W) const {
+  const Impl& m = *impl_;
+  if (std::none_of(m.closed.begin(), m.closed.end(), [](bool c) { return c; })) return SurfaceSide::Outside;
+  const Point p = to_point(p_W);
+
+  bool on_surface = false;
+  m.for_each_touch(p, p_W, p_W, [&](std::size_t source, double) {
+    if (m.closed[static_cast<std::size_t>(m.refs[source].object)]) on_surface = true;
+  });
+  if (on_surface) return SurfaceSide::OnSurface;
+
+  // Cast rays until one crosses every triangle it meets through the interior, away
+  // from edges, vertices and supporting planes; then parity per closed object is exact.
+  double reach = 1.0;
+  for (int corner = 0; corner < 8; ++corner) {
+    reach = std::max(reach, (m.bounds_W.corner(static_cast<Eigen::AlignedBox3d::CornerType>(corner)) - p_W).norm());
+  }
+  std::mt19937_64 rng(0x5eedULL);
+  std::normal_distribution<double> gauss;
+  std::vector<TriangleIterator> hits;
+  std::vector<unsigned char> parity(m.closed.size());
+  for (int attempt = 0; attempt < 256; ++attempt) {
+    Eigen::Vector3d d(gauss(rng), gauss(rng), gauss(rng));
+    if (d.norm() < 1e-3) continue;
+    d.normalize();
+    const Point q = to_point(p_W + (2.0 * reach + 1.0) * d);
+    hits.clear();
+    m.triangle_tree.all_intersected_primitives(Segment(p, q), std::back_inserter(hits));
+    std::fill(parity.begin(), parity.end(), 0);
+    bool degenerate = false;
+    for (TriangleIterator it : hits) {
+      const std::size_t object = static_cast<std::size_t>(
+          m.refs[m.cgal_triangle_source[static_cast<std::size_t>(it - m.cgal_triangles.cbegin())]].object);
+      if (!m.closed[object]) continue;
+      const Point& a = it->vertex(0);
+      const Point& b = it->vertex(1);
+      const Point& c = it->vertex(2);
+      if (CGAL::orientation(a, b, c, p) == CGAL::COPLANAR || CGAL::orientation(a, b, c, q) == CGAL::COPLANAR ||
+          CGAL::orientation(p, q, a, b) == CGAL::COPLANAR || CGAL::orientation(p, q, b, c) == CGAL::COPLANAR ||
+          CGAL::orientation(p, q, c, a) == CGAL::COPLANAR) {
+        degenerate = true;
+        break;
+      }
+      parity[object] ^= 1U;
+    }
+    if (degenerate) continue;
+    return std::any_of(parity.begin(), parity.end(), [](unsigned char x) { return x != 0; }) ? SurfaceSide::Inside
+                                                                                           : SurfaceSide::Outside;
+  }
+  throw std::runtime_error("SurfaceCrossingOracle: no non-degenerate parity ray found");
+}
+
+bool SurfaceCrossingOracle::point_inside_closed_mesh(const Eigen::Vector3d& p_W) const {
+  return side_of_closed_surfaces(p_W) != SurfaceSide::Outside;
+}
+
+double SurfaceCrossingOracle::distance_to_surface(const Eigen::Vector3d& p_W) const {
+  Impl& m = *impl_;
+  std::call_once(m.distance_once, [&m] {
+    if (!m.triangle_tree.empty()) m.triangle_tree.accelerate_distance_queries();
+    if (!m.segment_tree.empty()) m.segment_tree.accelerate_distance_queries();
+  });
+  const Point p = to_point(p_W);
+  double d2 = std::numeric_limits<double>::infinity();
+  if (!m.triangle_tree.empty()) d2 = std::min(d2, CGAL::to_double(m.triangle_tree.squared_distance(p)));
+  if (!m.segment_tree.empty()) d2 = std::min(d2, CGAL::to_double(m.segment_tree.squared_distance(p)));
+  for (const Point& q : m.cgal_points) d2 = std::min(d2, CGAL::to_double(CGAL::squared_distance(p, q)));
+  return std::sqrt(d2);
+}
+
+bool SurfaceCrossingOracle::is_closed(int object) const {
+  return impl_->closed.at(static_cast<std::size_t>(object));
+}
+
+int SurfaceCrossingOracle::object_count() const { return static_cast<int>(impl_->closed.size()); }
+
+std::size_t SurfaceCrossingOracle::triangle_count() const { return impl_->triangles_W.size(); }
+
+const std::array<Eigen::Vector3d, 3>& SurfaceCrossingOracle::triangle_W(std::size_t i) const {
+  return impl_->triangles_W.at(i);
+}
+
+const TriangleRef& SurfaceCrossingOracle::triangle_ref(std::size_t i) const { return impl_->refs.at(i); }
+
+}  // namespace mhd::verify

@@ -1,0 +1,93 @@
+#pragma once
+// An exact, independent checker for "a moving point never crosses a surface". It shares
+// no code with the collision layer: it copies the triangles into the world frame and
+// answers with CGAL's exact predicates (Epick) over its own AABB tree, so a bug in the
+// engine's conservative sweeps cannot hide itself here. Touching counts as crossing.
+
+#include "collision/collision_world.h"
+#include "geometry/pose.h"
+#include "geometry/triangle_mesh.h"
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace mhd::verify {
+
+/// A mesh placed in the world, as the oracle reads it during construction.
+struct PlacedMesh {
+  const TriangleMesh* mesh = nullptr;  ///< not owned; read only in the constructor
+  Pose X_WO = Pose::Identity();
+};
+
+/// A triangle a segment touches.
+struct OracleHit {
+  TriangleRef where;
+  /// Fraction of a->b at the first touching point, in [0, 1]. Whether the segment
+  /// touches is exact; this position is computed in doubles.
+  double t = 0.0;
+};
+
+enum class SurfaceSide { Outside, OnSurface, Inside };
+
+class SurfaceCrossingOracle {
+ public:
+  /// Snapshot of the world at its current poses; later set_pose() calls are not seen.
+  explicit SurfaceCrossingOracle(const CollisionWorld& world);
+  /// Object i of the oracle is meshes[i]; triangles with invalid indices are skipped.
+  explicit SurfaceCrossingOracle(std::span<const PlacedMesh> meshes);
+  explicit SurfaceCrossingOracle(const TriangleMesh& mesh, const Pose& X_WO = Pose::Identity());
+
+  ~SurfaceCrossingOracle();
+  SurfaceCrossingOracle(SurfaceCrossingOracle&&) noexcept;
+  SurfaceCrossingOracle& operator=(SurfaceCrossingOracle&&) noexcept;
+  SurfaceCrossingOracle(const SurfaceCrossingOracle&) = delete;
+  SurfaceCrossingOracle& operator=(const SurfaceCrossingOracle&) = delete;
+
+  /// Exact: true iff the closed segment [a_W, b_W] shares at least one point with any
+  /// triangle (interior, edge or vertex; coplanar overlap included). a_W == b_W tests
+  /// the point. Degenerate (zero-area) triangles count as the segment or point they are.
+  [[nodiscard]] bool segment_touches_surface(const Eigen::Vector3d& a_W, const Eigen::Vector3d& b_W) const;
+  [[nodiscard]] bool point_touches_surface(const Eigen::Vector3d& p_W) const;
+
+  /// Every touched triangle, ordered by t (then by object, triangle).
+  [[nodiscard]] std::vector<OracleHit> touched_triangles(const Eigen::Vector3d& a_W,
+                                                         const Eigen::Vector3d& b_W) const;
+  /// The touched triangle with the smallest t; nullopt iff segment_touches_surface is false.
+  [[nodiscard]] std::optional<OracleHit> first_touched_triangle(const Eigen::Vector3d& a_W,
+                                                                const Eigen::Vector3d& b_W) const;
+
+  /// Where p lies with respect to the closed objects (see is_closed), by exact ray
+  /// parity: Inside if inside any closed object, OnSurface if on one's surface.
+  /// Open objects are ignored.
+  [[nodiscard]] SurfaceSide side_of_closed_surfaces(const Eigen::Vector3d& p_W) const;
+  /// side_of_closed_surfaces(p) != Outside.
+  [[nodiscard]] bool point_inside_closed_mesh(const Eigen::Vector3d& p_W) const;
+
+  /// Distance from p to the nearest triangle (constructions in doubles; for clearances,
+  /// not for deciding contact). +infinity for an empty oracle. Builds a search
+  /// structure on first use (thread-safe).
+  [[nodiscard]] double distance_to_surface(const Eigen::Vector3d& p_W) const;
+
+  /// An object is closed when, after welding vertices with identical coordinates, every
+  /// edge of its non-degenerate triangles is shared by an even number of them (so ray
+  /// parity defines an inside). Not closed: open scans, planes, meshes with cracks.
+  [[nodiscard]] bool is_closed(int object) const;
+  [[nodiscard]] int object_count() const;
+
+  /// The triangles as the oracle holds them (world frame), in a fixed order.
+  [[nodiscard]] std::size_t triangle_count() const;
+  [[nodiscard]] const std::array<Eigen::Vector3d, 3>& triangle_W(std::size_t i) const;
+  [[nodiscard]] const TriangleRef& triangle_ref(std::size_t i) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace mhd::verify
