@@ -45,6 +45,7 @@ MeshBvh::MeshBvh(std::shared_ptr<const TriangleMesh> mesh) : mesh_(std::move(mes
   make_interface();
   shape_ = std::make_unique<btBvhTriangleMeshShape>(interface_.get(), /*quantized=*/true,
                                                      /*buildBvh=*/true);
+  tree_ = shape_->getOptimizedBvh();
 }
 
 std::unique_ptr<MeshBvh> MeshBvh::from_serialized(std::shared_ptr<const TriangleMesh> mesh,
@@ -58,50 +59,51 @@ std::unique_ptr<MeshBvh> MeshBvh::from_serialized(std::shared_ptr<const Triangle
   if (raw == nullptr) return nullptr;
   out->serialized_storage_ = {raw, &free_aligned};
   std::memcpy(raw, serialized.data(), serialized.size());
-  btOptimizedBvh* bvh = btOptimizedBvh::deSerializeInPlace(raw, static_cast<unsigned>(serialized.size()),
-                                                           /*swapEndian=*/false);
-  if (bvh == nullptr || !bvh->isQuantized()) return nullptr;
+  // Bullet's own adoption path: it builds a btQuantizedBvh in the buffer and hands it out
+  // as btOptimizedBvh* (which adds no data). Our calls go through the object's true
+  // type, btQuantizedBvh, at the same address (single inheritance, offset 0).
+  btOptimizedBvh* adopted = btOptimizedBvh::deSerializeInPlace(raw, static_cast<unsigned>(serialized.size()),
+                                                               /*swapEndian=*/false);
+  if (adopted == nullptr) return nullptr;
+  auto* tree = reinterpret_cast<btQuantizedBvh*>(adopted);
+  out->adopted_tree_ = tree;  // from here on the destructor releases it
+  if (!tree->isQuantized()) return nullptr;
   // The tree must cover exactly this mesh: every leaf names a triangle that exists.
-  const auto& leaves = bvh->getQuantizedNodeArray();
+  const auto& leaves = tree->getQuantizedNodeArray();
   for (int i = 0; i < leaves.size(); ++i) {
     const auto& node = leaves[i];
     if (node.isLeafNode() &&
         (node.getPartId() != 0 ||
          static_cast<std::size_t>(node.getTriangleIndex()) >= out->mesh_->triangles.size())) {
-      bvh->~btOptimizedBvh();
       return nullptr;
     }
   }
-  out->adopted_bvh_ = bvh;
+  out->tree_ = tree;
   out->shape_ = std::make_unique<btBvhTriangleMeshShape>(out->interface_.get(), true, /*buildBvh=*/false);
   // Same scaling as the interface, or Bullet resets it and re-walks the tree.
-  out->shape_->setOptimizedBvh(bvh, btVector3(out->bvh_scale_, out->bvh_scale_, out->bvh_scale_));
+  out->shape_->setOptimizedBvh(adopted, btVector3(out->bvh_scale_, out->bvh_scale_, out->bvh_scale_));
   return out;
 }
 
 MeshBvh::~MeshBvh() {
   shape_.reset();
   // An in-place BVH lives in serialized_storage_; run its destructor, the buffer is freed after.
-  if (adopted_bvh_ != nullptr) adopted_bvh_->~btOptimizedBvh();
+  if (adopted_tree_ != nullptr) adopted_tree_->~btQuantizedBvh();
 }
 
 std::vector<std::byte> MeshBvh::serialize_bvh() const {
-  const btOptimizedBvh* bvh = const_cast<btBvhTriangleMeshShape&>(*shape_).getOptimizedBvh();
-  const unsigned size = bvh->calculateSerializeBufferSize();
+  const unsigned size = tree_->calculateSerializeBufferSize();
   const std::size_t padded = (size + kBulletAlignment - 1) / kBulletAlignment * kBulletAlignment;
   std::unique_ptr<std::byte[], void (*)(std::byte*)> buffer(
       static_cast<std::byte*>(std::aligned_alloc(kBulletAlignment, padded)), &free_aligned);
-  // A tree adopted from the cache is a plain btQuantizedBvh (deSerializeInPlace builds
-  // that), so call the base class's serializer, valid for both.
-  if (!buffer || !static_cast<const btQuantizedBvh*>(bvh)->serialize(buffer.get(), size, /*swapEndian=*/false)) {
+  if (!buffer || !tree_->serialize(buffer.get(), size, /*swapEndian=*/false)) {
     throw std::runtime_error("MeshBvh: Bullet failed to serialize the BVH");
   }
   return {buffer.get(), buffer.get() + size};
 }
 
 void MeshBvh::query(const Eigen::AlignedBox3d& box_O, btNodeOverlapCallback& callback) const {
-  const btOptimizedBvh* bvh = const_cast<btBvhTriangleMeshShape&>(*shape_).getOptimizedBvh();
-  bvh->reportAabbOverlappingNodex(&callback, to_bt(box_O.min() * bvh_scale_), to_bt(box_O.max() * bvh_scale_));
+  tree_->reportAabbOverlappingNodex(&callback, to_bt(box_O.min() * bvh_scale_), to_bt(box_O.max() * bvh_scale_));
 }
 
 }  // namespace mhd

@@ -63,7 +63,10 @@ class MeshBvh {
   std::unique_ptr<btBvhTriangleMeshShape> shape_;
   // Backing store of a deserialized BVH (Bullet's in-place format points into it).
   std::unique_ptr<std::byte[], void (*)(std::byte*)> serialized_storage_{nullptr, nullptr};
-  btOptimizedBvh* adopted_bvh_ = nullptr;
+  // The tree our own code queries. A deserialized tree is a plain btQuantizedBvh
+  // (Bullet's deSerializeInPlace builds that), so it is never used as btOptimizedBvh here.
+  const btQuantizedBvh* tree_ = nullptr;
+  btQuantizedBvh* adopted_tree_ = nullptr;
 };
 
 }  // namespace mhd
