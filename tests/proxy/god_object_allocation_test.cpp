@@ -1,0 +1,62 @@
+// step_proxy must not allocate: it runs in the 1 kHz haptic thread. This binary replaces
+// the global operator new to count allocations made while counting is switched on.
+
+#include "proxy/god_object.h"
+
+#include "geometry/primitive_mesh.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+namespace {
+std::atomic<bool> g_counting{false};
+std::atomic<long> g_allocations{0};
+}  // namespace
+
+void* operator new(std::size_t size) {
+  if (g_counting.load(std::memory_order_relaxed)) g_allocations.fetch_add(1, std::memory_order_relaxed);
+  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+namespace mhd {
+namespace {
+
+TEST(GodObjectAllocation, StepProxyAllocatesNothing) {
+  TriangleMesh sphere = make_sphere_mesh(0.1, 5);
+  compute_vertex_normals(sphere);
+  CollisionWorld world;
+  world.add_object(std::make_shared<MeshBvh>(std::make_shared<TriangleMesh>(std::move(sphere))), Pose::Identity());
+  HapticMaterial mat;
+  mat.static_friction = 0.4;
+  mat.dynamic_friction = 0.3;
+  mat.damping_Ns_per_m = 1.0;
+  mat.force_shading = true;
+  const std::vector<HapticMaterial> materials{mat};
+  const ProxySettings settings;
+  ProxyState state;
+  reset_proxy(state, Eigen::Vector3d(0, 0, 0.15));
+
+  g_allocations = 0;
+  g_counting = true;
+  int contact_ticks = 0;
+  // Press in, circle around the sphere 8 mm deep (friction, shading, edges), come out.
+  for (int i = 0; i < 3000; ++i) {
+    const double a = 0.002 * i;
+    const double r = i < 2900 ? 0.092 : 0.15;
+    const Eigen::Vector3d hip(r * std::sin(a) * std::cos(3 * a), r * std::sin(a) * std::sin(3 * a), r * std::cos(a));
+    const ProxyOutput out = step_proxy(world, materials, settings, state, hip, 1e-3);
+    if (out.in_contact) ++contact_ticks;
+  }
+  g_counting = false;
+  EXPECT_GT(contact_ticks, 2000);
+  EXPECT_EQ(g_allocations.load(), 0);
+}
+
+}  // namespace
+}  // namespace mhd
