@@ -30,7 +30,7 @@ cmake --preset release >/dev/null
 cmake --build --preset release
 
 if [ "$mode" = demo ]; then
-  exec build/release/tools/mhd/mhd run scenes/dolphin.xml
+  exec build/release/tools/mhd/mhd run scenes/dolphin.xml --touch dolphin
 else
   exec ctest --preset release
 fi

@@ -27,7 +27,31 @@ struct RunOptions {
   double speed_m_per_s = 0.5;
   double rate_Hz = 1000.0;
   bool no_cache = false;
+  std::string touch;  ///< object whose surface anchors the strokes; empty: all objects
 };
+
+// Strokes anchored on one object: sampled on that object alone, kept only where the
+// start is also clear of every other object (the proxy starts in free space).
+mhd::verify::StrokeSet strokes_on_object(const mhd::CompiledScene& scene, int object,
+                                         const mhd::verify::SurfaceCrossingOracle& whole_scene, std::uint64_t seed,
+                                         int count, const mhd::verify::AnchorStrokeParams& params) {
+  const mhd::verify::SurfaceCrossingOracle just_object(scene.world.shape(object).mesh(), scene.world.pose(object));
+  mhd::verify::StrokeSet out;
+  for (int round = 0; round < 8 && static_cast<int>(out.strokes.size()) < count; ++round) {
+    auto candidates = mhd::verify::make_anchor_strokes(just_object, seed + static_cast<std::uint64_t>(round), count, params);
+    for (auto& stroke : candidates.strokes) {
+      const Eigen::Vector3d& start = stroke.hip_W.front();
+      if (static_cast<int>(out.strokes.size()) == count) break;
+      if (whole_scene.distance_to_surface(start) < params.min_start_clearance_m ||
+          whole_scene.point_inside_closed_mesh(start)) {
+        ++out.rejected;
+        continue;
+      }
+      out.strokes.push_back(std::move(stroke));
+    }
+  }
+  return out;
+}
 
 int run(const RunOptions& opt) {
   using Clock = std::chrono::steady_clock;
@@ -54,16 +78,35 @@ int run(const RunOptions& opt) {
   mhd::verify::AnchorStrokeParams params;
   params.speed_m_per_s = opt.speed_m_per_s;
   params.rate_Hz = opt.rate_Hz;
-  const auto strokes = mhd::verify::make_anchor_strokes(oracle, opt.seed, opt.strokes, params);
+  int touch_object = -1;
+  if (!opt.touch.empty()) {
+    for (std::size_t i = 0; i < scene.object_names.size(); ++i) {
+      if (scene.object_names[i] == opt.touch) touch_object = static_cast<int>(i);
+    }
+    if (touch_object < 0) {
+      fmt::print(stderr, "mhd run: error: scene {} has no object '{}'\n", opt.scene, opt.touch);
+      return 1;
+    }
+  }
+  const auto strokes = touch_object < 0
+                           ? mhd::verify::make_anchor_strokes(oracle, opt.seed, opt.strokes, params)
+                           : strokes_on_object(scene, touch_object, oracle, opt.seed, opt.strokes, params);
   const auto r = mhd::verify::run_strokes(scene, oracle, strokes, opt.rate_Hz);
 
-  fmt::print("strokes: {} at {} m/s, {} Hz (approach 20 mm -> 5 mm deep, slide 50 mm, retract)\n", r.strokes,
-             opt.speed_m_per_s, opt.rate_Hz);
+  fmt::print("strokes: {} at {} m/s, {} Hz on {} (approach 20 mm -> 5 mm deep, slide 50 mm, retract)\n", r.strokes,
+             opt.speed_m_per_s, opt.rate_Hz, opt.touch.empty() ? std::string("every object") : opt.touch);
   fmt::print("ticks: {}, in contact {} ({:.1f} %), up to {} constraint planes at once\n", r.ticks, r.contact_ticks,
              r.ticks > 0 ? 100.0 * static_cast<double>(r.contact_ticks) / static_cast<double>(r.ticks) : 0.0,
              r.max_plane_count);
   fmt::print("force: mean in contact {:.2f} N, max {:.2f} N (limit {:.2f} N), clamped on {} ticks\n",
              r.mean_contact_force_N, r.max_force_N, scene.proxy.max_force_N, r.clamped_ticks);
+  for (std::size_t i = 0; i < r.contact_ticks_by_object.size(); ++i) {
+    const std::size_t n = r.contact_ticks_by_object[i];
+    if (n == 0) continue;
+    fmt::print("  {}: {} contact ticks, mean force {:.2f} N (k = {:.0f} N/m, mu_s = {:.2f})\n", scene.object_names[i], n,
+               r.force_sum_by_object_N[i] / static_cast<double>(n), scene.materials[i].stiffness_N_per_m,
+               scene.materials[i].static_friction);
+  }
   fmt::print("proxy update in contact: median {:.2f} us, p99 {:.2f} us, p99.9 {:.2f} us, max {:.1f} us\n",
              r.contact_updates.median_us, r.contact_updates.p99_us, r.contact_updates.p999_us,
              r.contact_updates.max_us);
@@ -83,6 +126,7 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--seed", opt->seed, "Random seed of the stroke set");
   cmd->add_option("--speed-mps", opt->speed_m_per_s, "HIP speed, m/s")->check(CLI::Range(1e-4, 10.0));
   cmd->add_option("--rate-hz", opt->rate_Hz, "Haptic update rate, Hz")->check(CLI::Range(10.0, 100000.0));
+  cmd->add_option("--touch", opt->touch, "Anchor the strokes on this object only (default: every object)");
   cmd->add_flag("--no-cache", opt->no_cache, "Build every BVH instead of using the on-disk cache");
   cmd->callback([opt] { mhd::cli::exit_with(run(*opt)); });
 }

@@ -34,6 +34,9 @@ StrokeRunReport run_strokes(const CompiledScene& scene, const SurfaceCrossingOra
   std::vector<double> all_us;
   double contact_force_sum = 0.0;
   const double dt_s = 1.0 / rate_Hz;
+  const auto objects = static_cast<std::size_t>(scene.world.object_count());
+  report.contact_ticks_by_object.assign(objects, 0);
+  report.force_sum_by_object_N.assign(objects, 0.0);
   TickRecord record;
   for (const Stroke& stroke : strokes.strokes) {
     if (stroke.hip_W.empty()) continue;
@@ -53,6 +56,10 @@ StrokeRunReport run_strokes(const CompiledScene& scene, const SurfaceCrossingOra
         contact_us.push_back(us);
         ++report.contact_ticks;
         contact_force_sum += out.force_W.norm();
+        if (out.contact_object >= 0 && static_cast<std::size_t>(out.contact_object) < objects) {
+          ++report.contact_ticks_by_object[static_cast<std::size_t>(out.contact_object)];
+          report.force_sum_by_object_N[static_cast<std::size_t>(out.contact_object)] += out.force_W.norm();
+        }
       }
       if (out.force_clamped) ++report.clamped_ticks;
       report.max_force_N = std::max(report.max_force_N, out.force_W.norm());

@@ -29,6 +29,9 @@ struct StrokeRunReport {
   double mean_contact_force_N = 0.0;
   LatencySummary contact_updates;  ///< ticks that ended in contact
   LatencySummary all_updates;
+  /// Contact ticks and summed force magnitude per object (indexed like the world).
+  std::vector<std::size_t> contact_ticks_by_object;
+  std::vector<double> force_sum_by_object_N;
   std::size_t pop_throughs = 0;  ///< proxy moves that touched the surface (exact check)
   std::size_t ticks_inside = 0;  ///< ticks that ended inside a closed object
 };
