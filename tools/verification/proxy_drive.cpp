@@ -16,17 +16,22 @@ TickRecord drive_proxy(const CollisionWorld& world, std::span<const HapticMateri
   reset_proxy(state, hip_path_W.front());
   for (const Eigen::Vector3d& hip_W : hip_path_W) {
     const ProxyOutput out = step_proxy(world, materials, settings, state, hip_W, dt_s);
-    TickSample& s = records.emplace_back();
-    s.hip_W = hip_W;
-    s.proxy_W = out.proxy_W;
-    s.force_W = out.force_W;
-    s.in_contact = out.in_contact;
-    s.force_clamped = out.force_clamped;
-    s.plane_count = out.plane_count;
-    s.path_points = state.path_points;
-    s.path_W = state.path_W;
+    records.push_back(make_tick_sample(hip_W, out, state));
   }
   return records;
+}
+
+TickSample make_tick_sample(const Eigen::Vector3d& hip_W, const ProxyOutput& out, const ProxyState& state) {
+  TickSample s;
+  s.hip_W = hip_W;
+  s.proxy_W = out.proxy_W;
+  s.force_W = out.force_W;
+  s.in_contact = out.in_contact;
+  s.force_clamped = out.force_clamped;
+  s.plane_count = out.plane_count;
+  s.path_points = state.path_points;
+  s.path_W = state.path_W;
+  return s;
 }
 
 TickRecord drive_proxy(const CompiledScene& scene, std::span<const Eigen::Vector3d> hip_path_W, double rate_Hz) {

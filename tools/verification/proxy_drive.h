@@ -32,6 +32,11 @@ struct TickSample {
 /// One sample per tick, in order.
 using TickRecord = std::vector<TickSample>;
 
+/// The sample of one tick: the HIP it was given, what step_proxy returned and the path
+/// it left in `state`.
+[[nodiscard]] TickSample make_tick_sample(const Eigen::Vector3d& hip_W, const ProxyOutput& out,
+                                          const ProxyState& state);
+
 /// Resets the proxy at hip_path_W[0] (which must be in free space), then steps it once
 /// per sample, the first included, with dt = 1 / rate_Hz. An empty path gives an empty
 /// record. Precondition: rate_Hz > 0, materials indexed like the world's objects.

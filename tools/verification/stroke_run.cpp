@@ -64,15 +64,7 @@ StrokeRunReport run_strokes(const CompiledScene& scene, const SurfaceCrossingOra
       if (out.force_clamped) ++report.clamped_ticks;
       report.max_force_N = std::max(report.max_force_N, out.force_W.norm());
       report.max_plane_count = std::max(report.max_plane_count, out.plane_count);
-      TickSample& tick = record.emplace_back();
-      tick.hip_W = hip;
-      tick.proxy_W = out.proxy_W;
-      tick.force_W = out.force_W;
-      tick.in_contact = out.in_contact;
-      tick.force_clamped = out.force_clamped;
-      tick.plane_count = out.plane_count;
-      tick.path_points = state.path_points;
-      tick.path_W = state.path_W;
+      record.push_back(make_tick_sample(hip, out, state));
     }
     report.pop_throughs += count_crossings(oracle, record);
     report.ticks_inside += count_ticks_inside(oracle, record);
