@@ -114,6 +114,30 @@ bool add_constraint(Motion& m, const SweepHit& hit, double skin_m) {
   return true;
 }
 
+// Starts a pass with the planes the proxy rested on last tick, so a contact tick does
+// not first sweep just to find the same triangle again. Each plane is rebuilt from its
+// triangle's current pose (an object may have moved) and kept only while the proxy is
+// on its free side; the pass then keeps every move inside it, so the triangle, now
+// ignored by the sweeps, still cannot be crossed.
+void seed_constraints(const CollisionWorld& world, std::span<const ConstraintPlane> previous,
+                      const Eigen::Vector3d& p, double skin_m, Motion& m) {
+  for (const ConstraintPlane& plane : previous) {
+    const auto v = world.triangle_W(plane.triangle);
+    const Eigen::Vector3d area_normal = (v[1] - v[0]).cross(v[2] - v[0]);
+    const double twice_area = area_normal.norm();
+    if (!(twice_area > 0.0)) continue;
+    Eigen::Vector3d n = area_normal / twice_area;
+    if (n.dot(plane.normal_W) < 0.0) n = -n;
+    const double surface_offset = n.dot(v[0]);
+    if (n.dot(p) - (surface_offset + skin_m) < -kActivePerSkin * skin_m) continue;
+    SweepHit seed;
+    seed.where = plane.triangle;
+    seed.normal_W = n;
+    seed.plane_offset_m = surface_offset;
+    if (!add_constraint(m, seed, skin_m)) return;
+  }
+}
+
 // Moves the proxy from `start` towards `goal`: project the goal onto the collected
 // constraints, sweep there, and on each hit stop short by the skin and add the hit
 // plane. A move that carries the proxy off a triangle (past a convex edge) releases
@@ -122,10 +146,12 @@ bool add_constraint(Motion& m, const SweepHit& hit, double skin_m) {
 // found. Every leg is swept, and legs inside collected half-spaces cannot cross the
 // triangles that made them, so the proxy never crosses the surface.
 void solve_motion(const CollisionWorld& world, const ProxySettings& settings, const Eigen::Vector3d& start,
-                  const Eigen::Vector3d& goal, Motion& m, ProxyState& state) {
+                  const Eigen::Vector3d& goal, std::span<const ConstraintPlane> previous_planes, Motion& m,
+                  ProxyState& state) {
   const double skin = settings.skin_m;
   const double min_step_sq = (kMinStepPerSkin * skin) * (kMinStepPerSkin * skin);
   m.p = start;
+  seed_constraints(world, previous_planes, start, skin, m);
   state.path_points = 0;
   append_path(state, start);
   for (int iteration = 0; iteration < kMaxProxyIterations; ++iteration) {
@@ -224,9 +250,13 @@ ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMateri
 
   const Eigen::Vector3d start = state.proxy_W;
   const bool was_in_contact = state.plane_count > 0;
+  // Last tick's contact planes seed both passes (store_active_planes overwrites state).
+  const std::array<ConstraintPlane, kMaxConstraintPlanes> previous_planes = state.planes;
+  const std::span<const ConstraintPlane> previous(previous_planes.data(),
+                                                  static_cast<std::size_t>(state.plane_count));
 
   Motion motion;
-  solve_motion(world, settings, start, hip_W, motion, state);
+  solve_motion(world, settings, start, hip_W, previous, motion, state);
   store_active_planes(motion, settings.skin_m, state);
 
   bool sticking = false;
@@ -250,7 +280,7 @@ ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMateri
       } else if (mat.dynamic_friction > 0.0 && slip > 0.0) {
         const Eigen::Vector3d goal = hip_W + tangential * (mat.dynamic_friction * depth / slip);
         Motion sliding;
-        solve_motion(world, settings, start, goal, sliding, state);
+        solve_motion(world, settings, start, goal, previous, sliding, state);
         motion = sliding;
         store_active_planes(motion, settings.skin_m, state);
       }

@@ -88,6 +88,23 @@ TEST(GodObject, ProxySlidesAlongAFrictionlessWall) {
   EXPECT_NEAR(out.force_W.x(), 0.0, 1e-9);
 }
 
+TEST(GodObject, ContactPlanesAreRebuiltWhenTheObjectMoves) {
+  // Last tick's contact plane seeds the next tick; it must come from the triangle's
+  // current pose, so a wall that moves away is followed, not a stale plane.
+  Rig rig;
+  rig.settings.max_force_N = 100;
+  rig.add(quad(V(-1, -1, 0), V(1, -1, 0), V(1, 1, 0), V(-1, 1, 0)), stiff(1000));
+  reset_proxy(rig.state, V(0, 0, 0.01));
+  const V hip(0, 0, -0.004);
+  ASSERT_TRUE(rig.move(V(0, 0, 0.01), hip, 14).in_contact);
+  Pose lowered = Pose::Identity();
+  lowered.translation() = V(0, 0, -0.001);
+  rig.world.set_pose(0, lowered);
+  const auto out = rig.step(hip);
+  EXPECT_NEAR(out.proxy_W.z(), -0.001 + rig.settings.skin_m, 1e-12);
+  EXPECT_NEAR(out.force_W.z(), 1000 * (0.003 + rig.settings.skin_m), 1e-9);
+}
+
 TEST(GodObject, ForceIsClampedToTheMaximum) {
   Rig rig;
   rig.settings.max_force_N = 3.0;
