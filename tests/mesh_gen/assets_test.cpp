@@ -32,7 +32,8 @@ TEST(MeshGenAssets, DefaultDolphinIsTheSmallClosedOne) {
   const TriangleMesh mesh = test::read_mesh_file(file, kMm);
   expect_closed_dolphin(mesh, 3'000);
   EXPECT_GT(test::min_triangle_area(mesh), 0.0);
-  const DolphinLandmarks& lm = DolphinShape().landmarks();
+  const DolphinShape shape;
+  const DolphinLandmarks& lm = shape.landmarks();
   EXPECT_NEAR(test::winding_number(mesh, lm.p_dorsal_fin_m), 1.0, 1e-6);
   EXPECT_NEAR(test::winding_number(mesh, lm.p_fluke_notch_m), 0.0, 1e-6);
 }

@@ -46,7 +46,8 @@ void expect_dolphin_size(const TriangleMesh& mesh) {
 }
 
 void expect_landmarks_classified(const TriangleMesh& mesh) {
-  const DolphinLandmarks& lm = DolphinShape().landmarks();
+  const DolphinShape shape;
+  const DolphinLandmarks& lm = shape.landmarks();
   EXPECT_NEAR(winding_number(mesh, lm.p_body_centre_m), 1.0, 1e-6);
   EXPECT_NEAR(winding_number(mesh, lm.p_dorsal_fin_m), 1.0, 1e-6);
   EXPECT_NEAR(winding_number(mesh, lm.p_pectoral_fin_m), 1.0, 1e-6);

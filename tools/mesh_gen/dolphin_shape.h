@@ -40,7 +40,9 @@ class DolphinShape {
   [[nodiscard]] Eigen::Vector3d nose() const;
   [[nodiscard]] Eigen::Vector3d tail() const;
 
-  [[nodiscard]] const DolphinLandmarks& landmarks() const { return landmarks_; }
+  [[nodiscard]] const DolphinLandmarks& landmarks() const& { return landmarks_; }
+  // A reference into a temporary shape would dangle.
+  const DolphinLandmarks& landmarks() const&& = delete;
 
   /// Evaluates a whole ring at once (faster than point() per vertex).
   void ring(double s, const std::vector<double>& thetas, std::vector<Eigen::Vector3d>& out) const;
