@@ -28,7 +28,8 @@ namespace mhd {
 /// Version of the cache file layout; part of every key. Bump it whenever the file
 /// layout, the loader's processing (load_mesh_file) or MeshBvh's tree convention
 /// changes, so that old entries are never used.
-inline constexpr std::uint32_t kMeshCacheFormatVersion = 1;
+/// 2: the loader welds unshared files itself instead of assimp's JoinIdenticalVertices.
+inline constexpr std::uint32_t kMeshCacheFormatVersion = 2;
 
 /// Meshes with at least this many triangles report progress.
 inline constexpr std::size_t kProgressMinTriangles = 100'000;
