@@ -3,6 +3,7 @@
 // and reports failure through mhd::cli::exit_with (command_exit.h).
 
 #include "command_exit.h"
+#include "plugins_command.h"
 #include "run_command.h"
 #include "validate_command.h"
 
@@ -36,6 +37,7 @@ int main(int argc, char** argv) {
 
   add_validate_command(app);
   add_run_command(app);
+  add_plugins_command(app);
 
   try {
     app.parse(argc, argv);

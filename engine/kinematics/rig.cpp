@@ -1,0 +1,173 @@
+#include "kinematics/rig.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+namespace mhd {
+
+namespace {
+
+constexpr double kLevelTolerance_rad = 1e-4;
+constexpr double kFloorTolerance_m = 1e-4;
+
+struct RequiredFrame {
+  std::string_view name;
+  std::string_view parent;
+};
+
+// The chain in the order it is composed.
+constexpr std::array<RequiredFrame, 5> kRequired = {{
+    {rig_frame::kIs900, "world"},
+    {rig_frame::kBaseSensor, rig_frame::kIs900},
+    {rig_frame::kRobot, rig_frame::kBaseSensor},
+    {rig_frame::kPhantom, rig_frame::kRobot},
+    {rig_frame::kBase, rig_frame::kRobot},
+}};
+
+// Appending piece by piece (std::string's operator+ chains trip GCC 12's -Wrestrict).
+template <typename... Parts>
+std::string concat(const Parts&... parts) {
+  std::string out;
+  (out.append(std::string_view(parts)), ...);
+  return out;
+}
+
+std::string in_quotes(std::string_view s) { return concat("'", s, "'"); }
+
+std::string format_degrees(double value_rad) {
+  std::array<char, 64> buffer{};
+  std::snprintf(buffer.data(), buffer.size(), "%.4g", value_rad * 180.0 / std::numbers::pi);
+  return std::string(buffer.data());
+}
+
+std::string format_metres(double value_m) {
+  std::array<char, 64> buffer{};
+  std::snprintf(buffer.data(), buffer.size(), "%.6g", value_m);
+  return std::string(buffer.data());
+}
+
+}  // namespace
+
+std::string RigError::to_string() const {
+  if (where.file.empty()) return concat("error: ", message);
+  if (where.line <= 0) return concat(where.file, ": error: ", message);
+  return concat(where.file, ":", std::to_string(where.line), ": error: ", message);
+}
+
+RigBuildResult Rig::from_scene(const SceneDescription& scene, const PhantomModel& device) {
+  return from_frames(scene.rig_frames, device);
+}
+
+RigBuildResult Rig::from_frames(const std::vector<FrameDescription>& frames, const PhantomModel& device) {
+  RigBuildResult result;
+  std::array<const FrameDescription*, kRequired.size()> found{};
+  for (std::size_t i = 0; i < kRequired.size(); ++i) {
+    const RequiredFrame& required = kRequired[i];
+    for (const FrameDescription& frame : frames) {
+      if (frame.name != required.name) continue;
+      if (found[i] != nullptr) {
+        result.errors.push_back({RigErrorKind::DuplicateFrame, frame.name,
+                                 concat("rig frame ", in_quotes(frame.name), " is defined twice (first at ",
+                                        found[i]->where.file, ":", std::to_string(found[i]->where.line), ")"),
+                                 frame.where});
+        continue;
+      }
+      found[i] = &frame;
+    }
+    if (found[i] == nullptr) {
+      result.errors.push_back({RigErrorKind::MissingFrame, std::string(required.name),
+                               concat("rig has no frame ", in_quotes(required.name), " (expected <frame name=\"",
+                                      required.name, "\" parent=\"", required.parent, "\" .../>)"),
+                               SourceLocation{}});
+    } else if (found[i]->parent != required.parent) {
+      result.errors.push_back({RigErrorKind::WrongParent, found[i]->name,
+                               concat("rig frame ", in_quotes(found[i]->name), " must have parent ",
+                                      in_quotes(required.parent), ", not ", in_quotes(found[i]->parent)),
+                               found[i]->where});
+    }
+  }
+  if (!result.errors.empty()) return result;
+
+  Rig rig;
+  rig.device_ = device;
+  rig.X_W_is900_ = found[0]->X_PF;
+  rig.X_is900_base_sensor_nominal_ = found[1]->X_PF;
+  rig.X_base_sensor_robot_ = found[2]->X_PF;
+  rig.X_robot_phantom_ = found[3]->X_PF;
+  rig.X_robot_base_ = found[4]->X_PF;
+  rig.X_base_robot_ = rig.X_robot_base_.inverse(Eigen::Isometry);
+
+  const Pose X_W_base = rig.X_W_robot_from_sensor(rig.X_is900_base_sensor_nominal_) * rig.X_robot_base_;
+  const double tilt_rad = std::acos(std::clamp(X_W_base.linear().col(1).dot(Eigen::Vector3d::UnitY()), -1.0, 1.0));
+  const FrameDescription& base = *found[4];
+  if (tilt_rad > kLevelTolerance_rad) {
+    result.errors.push_back({RigErrorKind::BaseNotLevel, base.name,
+                             concat("rig frame 'base' is not level: with base_sensor at its nominal pose, its y "
+                                    "axis is ",
+                                    format_degrees(tilt_rad), " degrees from world up"),
+                             base.where});
+  }
+  const double height_m = X_W_base.translation().y();
+  if (std::abs(height_m) > kFloorTolerance_m) {
+    result.errors.push_back({RigErrorKind::BaseNotOnFloor, base.name,
+                             concat("rig frame 'base' is not on the floor: with base_sensor at its nominal pose, "
+                                    "it is at y = ",
+                                    format_metres(height_m), " m"),
+                             base.where});
+  }
+  if (result.errors.empty()) result.rig = rig;
+  return result;
+}
+
+Pose Rig::X_W_robot_from_sensor(const Pose& X_is900_base_sensor) const noexcept {
+  return X_W_is900_ * X_is900_base_sensor * X_base_sensor_robot_;
+}
+
+Pose Rig::X_W_robot_from_base(const BasePose& base) const noexcept { return pose_from_base(base) * X_base_robot_; }
+
+BasePose Rig::base_from_sensor(const Pose& X_is900_base_sensor) const noexcept {
+  return base_from_pose(X_W_robot_from_sensor(X_is900_base_sensor) * X_robot_base_);
+}
+
+Pose Rig::X_is900_base_sensor_from_base(const BasePose& base) const noexcept {
+  return X_W_is900_.inverse(Eigen::Isometry) * X_W_robot_from_base(base) *
+         X_base_sensor_robot_.inverse(Eigen::Isometry);
+}
+
+Pose Rig::X_W_phantom(const Pose& X_W_robot) const noexcept { return X_W_robot * X_robot_phantom_; }
+
+Pose Rig::X_W_tool(const Pose& X_W_robot, const Eigen::Vector3d& q_rad) const noexcept {
+  return X_W_phantom(X_W_robot) * phantom_tool_pose(device_.geometry, q_rad);
+}
+
+Eigen::Vector3d Rig::p_W_hip(const Pose& X_W_robot, const Eigen::Vector3d& q_rad) const noexcept {
+  return X_W_phantom(X_W_robot) * phantom_tool_position(device_.geometry, q_rad);
+}
+
+Eigen::Vector3d Rig::p_P_from_W(const Pose& X_W_robot, const Eigen::Vector3d& p_W) const noexcept {
+  return X_W_phantom(X_W_robot).inverse(Eigen::Isometry) * p_W;
+}
+
+Eigen::Vector3d Rig::joint_torques_Nm(const Pose& X_W_robot, const Eigen::Vector3d& q_rad,
+                                      const Eigen::Vector3d& force_W_N) const noexcept {
+  const Eigen::Matrix3d R_W_P = X_W_phantom(X_W_robot).linear();
+  return phantom_joint_torques(device_.geometry, q_rad, R_W_P.transpose() * force_W_N);
+}
+
+Rig::HipJacobian Rig::hip_jacobian(const BasePose& base, const Eigen::Vector3d& q_rad) const noexcept {
+  const Pose X_W_robot = X_W_robot_from_base(base);
+  const Pose X_W_P = X_W_phantom(X_W_robot);
+  const Eigen::Vector3d p_W = X_W_P * phantom_tool_position(device_.geometry, q_rad);
+  HipJacobian J;
+  J.leftCols<3>().setIdentity();
+  // Turning the base about the vertical through its origin moves the HIP by up x (p - base).
+  const Eigen::Vector3d lever_W = p_W - Eigen::Vector3d(base.x_m, 0.0, base.z_m);
+  J.col(kBaseHeading) = Eigen::Vector3d::UnitY().cross(lever_W);
+  J.rightCols<3>() = X_W_P.linear() * phantom_position_jacobian(device_.geometry, q_rad);
+  return J;
+}
+
+}  // namespace mhd

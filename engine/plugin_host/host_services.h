@@ -1,0 +1,37 @@
+#pragma once
+// What the host offers every plugin (mhd_host): a monotonic clock and, when a simulated
+// world exists, a pointer to it. Plugins keep the mhd_host pointer they get in open(),
+// so a HostServices must outlive every instance opened with it and cannot move.
+
+#include <mhd/plugin_abi.h>
+
+#include <chrono>
+
+namespace mhd {
+
+class HostServices {
+ public:
+  /// `sim_world` may be null (real hardware); it is not owned and must outlive this.
+  explicit HostServices(const mhd_sim_world* sim_world = nullptr) noexcept;
+  HostServices(const HostServices&) = delete;
+  HostServices& operator=(const HostServices&) = delete;
+  HostServices(HostServices&&) = delete;
+  HostServices& operator=(HostServices&&) = delete;
+  ~HostServices() = default;
+
+  /// The table handed to open(); abi_version and struct_size are this host's.
+  [[nodiscard]] const mhd_host& abi() const noexcept { return host_; }
+
+  /// Seconds on the steady clock since this object was made (the host clock plugins see).
+  [[nodiscard]] double now_s() const noexcept;
+
+  [[nodiscard]] const mhd_sim_world* sim_world() const noexcept { return host_.sim_world; }
+  /// Set before opening plugins: they may read the pointer once, in open().
+  void set_sim_world(const mhd_sim_world* sim_world) noexcept { host_.sim_world = sim_world; }
+
+ private:
+  std::chrono::steady_clock::time_point epoch_;
+  mhd_host host_;
+};
+
+}  // namespace mhd

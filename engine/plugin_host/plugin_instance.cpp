@@ -1,0 +1,408 @@
+#include "plugin_host/plugin_instance.h"
+
+#include "plugin_host/plugin_kind.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <initializer_list>
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace mhd {
+namespace {
+
+// Statuses are handled as numbers: a plugin may return any value, and reading an
+// out-of-range value through the enum type would be undefined behaviour.
+using StatusCode = long;
+
+std::string status_name(StatusCode code) {
+  switch (code) {
+    case MHD_OK: return "MHD_OK";
+    case MHD_NO_DATA: return "MHD_NO_DATA";
+    case MHD_ERROR: return "MHD_ERROR";
+    case MHD_DEACTIVATE: return "MHD_DEACTIVATE";
+    default: return fmt::format("status {}", code);
+  }
+}
+
+std::string plugin_message(const mhd_error& err) {
+  const std::size_t length = strnlen(err.message, sizeof(err.message));
+  return std::string(err.message, length);
+}
+
+/// "open failed: MESSAGE" or "open failed (no message)".
+std::string failed(std::string_view call, const mhd_error& err) {
+  const std::string text = plugin_message(err);
+  return text.empty() ? fmt::format("{} failed (no message)", call) : fmt::format("{} failed: {}", call, text);
+}
+
+/// One checked group of doubles in a struct: "timestamp_s" or "joint_angles_rad[3]".
+struct Field {
+  std::string_view name;
+  const double* values;
+  std::size_t count;  ///< 1: a scalar, named without an index
+};
+
+/// The first non-finite value among `fields`, named "p_T_m[2]" (with `prefix` before it).
+std::optional<std::string> first_non_finite(std::initializer_list<Field> fields, std::string_view prefix = {}) {
+  for (const Field& field : fields) {
+    for (std::size_t i = 0; i < field.count; ++i) {
+      if (std::isfinite(field.values[i])) continue;
+      if (field.count == 1) return fmt::format("{}{}", prefix, field.name);
+      return fmt::format("{}{}[{}]", prefix, field.name, i);
+    }
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> non_finite_in(const mhd_device_state& s) {
+  return first_non_finite({{"timestamp_s", &s.timestamp_s, 1},
+                           {"joint_angles_rad", s.joint_angles_rad, 3},
+                           {"p_D_hip_m", s.p_D_hip_m, 3}});
+}
+
+std::optional<std::string> non_finite_in(const mhd_device_command& c) {
+  return first_non_finite({{"timestamp_s", &c.timestamp_s, 1}, {"joint_torques_Nm", c.joint_torques_Nm, 3}});
+}
+
+std::optional<std::string> non_finite_in(const mhd_device_limits& l) {
+  return first_non_finite({{"max_force_N", &l.max_force_N, 1}, {"max_joint_torque_Nm", l.max_joint_torque_Nm, 3}});
+}
+
+std::optional<std::string> non_finite_in(const mhd_tracker_sample& s, std::string_view prefix) {
+  return first_non_finite(
+      {{"timestamp_s", &s.timestamp_s, 1}, {"p_T_m", s.p_T_m, 3}, {"q_T_wxyz", s.q_T_wxyz, 4}}, prefix);
+}
+
+std::optional<std::string> non_finite_in(const mhd_base_state& s) {
+  return first_non_finite({{"timestamp_s", &s.timestamp_s, 1},
+                           {"x_m", &s.x_m, 1},
+                           {"z_m", &s.z_m, 1},
+                           {"heading_rad", &s.heading_rad, 1},
+                           {"vx_mps", &s.vx_mps, 1},
+                           {"vz_mps", &s.vz_mps, 1},
+                           {"omega_radps", &s.omega_radps, 1}});
+}
+
+std::optional<std::string> non_finite_in(const mhd_base_command& c) {
+  return first_non_finite({{"timestamp_s", &c.timestamp_s, 1},
+                           {"vx_mps", &c.vx_mps, 1},
+                           {"vz_mps", &c.vz_mps, 1},
+                           {"omega_radps", &c.omega_radps, 1}});
+}
+
+std::optional<std::string> non_finite_in(const mhd_display_frame& f) {
+  return first_non_finite({{"timestamp_s", &f.timestamp_s, 1},
+                           {"p_W_hip_m", f.p_W_hip_m, 3},
+                           {"p_W_proxy_m", f.p_W_proxy_m, 3},
+                           {"force_W_N", f.force_W_N, 3},
+                           {"base_x_m", &f.base_x_m, 1},
+                           {"base_z_m", &f.base_z_m, 1},
+                           {"base_heading_rad", &f.base_heading_rad, 1},
+                           {"p_W_head_m", f.p_W_head_m, 3},
+                           {"q_W_head_wxyz", f.q_W_head_wxyz, 4}});
+}
+
+// A tracker quaternion is a unit quaternion up to this much error in its norm.
+constexpr double kUnitQuaternionTolerance = 1e-3;
+
+}  // namespace
+
+std::string_view to_string(PluginState state) {
+  switch (state) {
+    case PluginState::Loaded: return "loaded";
+    case PluginState::Open: return "open";
+    case PluginState::Running: return "running";
+    case PluginState::Stopped: return "stopped";
+    case PluginState::Closed: return "closed";
+  }
+  return "unknown";
+}
+
+PluginInstance::PluginInstance(std::shared_ptr<const PluginLibrary> library) : library_(std::move(library)) {}
+
+PluginInstance::~PluginInstance() { (void)close(); }
+
+PluginInstance::PluginInstance(PluginInstance&& other) noexcept
+    : library_(std::move(other.library_)),
+      handle_(std::exchange(other.handle_, nullptr)),
+      state_(std::exchange(other.state_, PluginState::Closed)),
+      limits_(other.limits_) {}
+
+PluginInstance& PluginInstance::operator=(PluginInstance&& other) noexcept {
+  if (this != &other) {
+    (void)close();
+    library_ = std::move(other.library_);
+    handle_ = std::exchange(other.handle_, nullptr);
+    state_ = std::exchange(other.state_, PluginState::Closed);
+    limits_ = other.limits_;
+  }
+  return *this;
+}
+
+const std::string& PluginInstance::name() const noexcept {
+  static const std::string kNone;
+  return library_ ? library_->name() : kNone;
+}
+
+PluginKind PluginInstance::kind() const noexcept { return library_ ? library_->kind() : PluginKind::Device; }
+
+bool PluginInstance::simulates() const noexcept { return library_ && library_->api().simulate_until != nullptr; }
+
+PluginError PluginInstance::error(PluginErrorKind kind, std::string message) const {
+  return PluginError{kind, name(), {}, std::move(message)};
+}
+
+PluginStatus PluginInstance::check_call(std::string_view call, PluginKind needed_kind) const {
+  if (library_ && kind() != needed_kind) {
+    return error(PluginErrorKind::WrongKind, fmt::format("{} called on a {} plugin", call, to_string(kind())));
+  }
+  return {};
+}
+
+PluginStatus PluginInstance::check_running(std::string_view call) const {
+  if (state_ != PluginState::Running) {
+    return error(PluginErrorKind::WrongState,
+                 fmt::format("{} called while the plugin is {}; it must be running", call, to_string(state_)));
+  }
+  return {};
+}
+
+PluginStatus PluginInstance::open(const std::map<std::string, std::string>& params, const mhd_host& host) {
+  if (state_ != PluginState::Loaded) {
+    return error(PluginErrorKind::WrongState,
+                 fmt::format("open called while the plugin is {}; it must be loaded", to_string(state_)));
+  }
+  std::vector<mhd_param> abi_params;
+  abi_params.reserve(params.size());
+  for (const auto& [key, value] : params) abi_params.push_back(mhd_param{key.c_str(), value.c_str()});
+
+  mhd_error err{};
+  handle_ = library_->api().open(&host, abi_params.data(), abi_params.size(), &err);
+  if (handle_ == nullptr) return error(PluginErrorKind::OpenFailed, failed("open", err));
+  state_ = PluginState::Open;
+
+  if (kind() == PluginKind::Device) {
+    PluginStatus limits = read_device_limits();
+    if (!limits) {
+      close_handle();
+      state_ = PluginState::Loaded;
+      return limits;
+    }
+  }
+  return {};
+}
+
+PluginStatus PluginInstance::read_device_limits() {
+  mhd_error err{};
+  mhd_device_limits limits{};
+  const StatusCode code = static_cast<StatusCode>(library_->api().device_limits(handle_, &limits, &err));
+  if (code == MHD_ERROR) return error(PluginErrorKind::CallFailed, failed("device_limits", err));
+  if (code != MHD_OK) {
+    return error(PluginErrorKind::InvalidData,
+                 fmt::format("device_limits returned {}; expected MHD_OK or MHD_ERROR", status_name(code)));
+  }
+  if (auto field = non_finite_in(limits)) {
+    return error(PluginErrorKind::InvalidData, fmt::format("device_limits returned a non-finite {}", *field));
+  }
+  if (!(limits.max_force_N > 0.0)) {
+    return error(PluginErrorKind::InvalidData,
+                 fmt::format("device_limits returned max_force_N = {}, which must be > 0", limits.max_force_N));
+  }
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (!(limits.max_joint_torque_Nm[i] > 0.0)) {
+      return error(PluginErrorKind::InvalidData,
+                   fmt::format("device_limits returned max_joint_torque_Nm[{}] = {}, which must be > 0", i,
+                               limits.max_joint_torque_Nm[i]));
+    }
+  }
+  limits_ = limits;
+  return {};
+}
+
+PluginStatus PluginInstance::start() {
+  if (state_ != PluginState::Open && state_ != PluginState::Stopped) {
+    return error(PluginErrorKind::WrongState,
+                 fmt::format("start called while the plugin is {}; it must be open or stopped", to_string(state_)));
+  }
+  mhd_error err{};
+  const StatusCode code = static_cast<StatusCode>(library_->api().start(handle_, &err));
+  if (code == MHD_ERROR) return error(PluginErrorKind::StartFailed, failed("start", err));
+  if (code != MHD_OK) {
+    return error(PluginErrorKind::InvalidData,
+                 fmt::format("start returned {}; expected MHD_OK or MHD_ERROR", status_name(code)));
+  }
+  state_ = PluginState::Running;
+  return {};
+}
+
+PluginStatus PluginInstance::stop() {
+  if (state_ != PluginState::Running) {
+    return error(PluginErrorKind::WrongState,
+                 fmt::format("stop called while the plugin is {}; it must be running", to_string(state_)));
+  }
+  state_ = PluginState::Stopped;  // the host stops driving it whatever the plugin says
+  mhd_error err{};
+  const StatusCode code = static_cast<StatusCode>(library_->api().stop(handle_, &err));
+  if (code == MHD_ERROR) return error(PluginErrorKind::StopFailed, failed("stop", err));
+  if (code != MHD_OK) {
+    return error(PluginErrorKind::InvalidData,
+                 fmt::format("stop returned {}; expected MHD_OK or MHD_ERROR", status_name(code)));
+  }
+  return {};
+}
+
+PluginStatus PluginInstance::close() {
+  PluginStatus result;
+  if (state_ == PluginState::Running) result = stop();
+  close_handle();
+  state_ = PluginState::Closed;
+  return result;
+}
+
+void PluginInstance::close_handle() noexcept {
+  if (handle_ != nullptr) library_->api().close(handle_);
+  handle_ = nullptr;
+}
+
+PluginResult<mhd_device_limits> PluginInstance::device_limits() const {
+  if (PluginStatus s = check_call("device_limits", PluginKind::Device); !s) return s.error();
+  if (state_ != PluginState::Open && state_ != PluginState::Running && state_ != PluginState::Stopped) {
+    return error(PluginErrorKind::WrongState,
+                 fmt::format("device_limits called while the plugin is {}; it must be open, running or stopped",
+                             to_string(state_)));
+  }
+  return limits_;
+}
+
+namespace {
+
+/// Maps a read/write status; MHD_ERROR becomes CallFailed and unknown numbers InvalidData.
+PluginResult<PluginCallStatus> call_outcome(const std::string& plugin, std::string_view call, StatusCode code,
+                                            const mhd_error& err) {
+  switch (code) {
+    case MHD_OK: return PluginCallStatus::Ok;
+    case MHD_NO_DATA: return PluginCallStatus::NoData;
+    case MHD_DEACTIVATE: return PluginCallStatus::Deactivate;
+    case MHD_ERROR: return PluginError{PluginErrorKind::CallFailed, plugin, {}, failed(call, err)};
+    default:
+      return PluginError{PluginErrorKind::InvalidData, plugin, {},
+                         fmt::format("{} returned status {}, which is not an mhd_status", call, code)};
+  }
+}
+
+}  // namespace
+
+PluginResult<PluginCallStatus> PluginInstance::device_read(mhd_device_state& out) {
+  if (PluginStatus s = check_call("device_read", PluginKind::Device); !s) return s.error();
+  if (PluginStatus s = check_running("device_read"); !s) return s.error();
+  mhd_error err{};
+  mhd_device_state state{};
+  PluginResult<PluginCallStatus> outcome =
+      call_outcome(name(), "device_read", static_cast<StatusCode>(library_->api().device_read(handle_, &state, &err)), err);
+  if (!outcome || outcome.value() != PluginCallStatus::Ok) return outcome;
+  if (auto field = non_finite_in(state)) {
+    return error(PluginErrorKind::InvalidData, fmt::format("device_read returned a non-finite {}", *field));
+  }
+  out = state;
+  return outcome;
+}
+
+PluginResult<PluginCallStatus> PluginInstance::device_write(const mhd_device_command& command) {
+  if (PluginStatus s = check_call("device_write", PluginKind::Device); !s) return s.error();
+  if (PluginStatus s = check_running("device_write"); !s) return s.error();
+  if (auto field = non_finite_in(command)) {
+    return error(PluginErrorKind::InvalidData, fmt::format("refused to send a non-finite {} to device_write", *field));
+  }
+  mhd_device_command clamped = command;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const double limit = limits_.max_joint_torque_Nm[i];
+    clamped.joint_torques_Nm[i] = std::clamp(clamped.joint_torques_Nm[i], -limit, limit);
+  }
+  mhd_error err{};
+  return call_outcome(name(), "device_write", static_cast<StatusCode>(library_->api().device_write(handle_, &clamped, &err)), err);
+}
+
+PluginResult<PluginCallStatus> PluginInstance::tracker_read(std::span<mhd_tracker_sample> out, std::size_t& count) {
+  count = 0;
+  if (PluginStatus s = check_call("tracker_read", PluginKind::Tracker); !s) return s.error();
+  if (PluginStatus s = check_running("tracker_read"); !s) return s.error();
+  mhd_error err{};
+  std::size_t returned = 0;
+  PluginResult<PluginCallStatus> outcome = call_outcome(
+      name(), "tracker_read",
+      static_cast<StatusCode>(library_->api().tracker_read(handle_, out.data(), out.size(), &returned, &err)), err);
+  if (!outcome || outcome.value() != PluginCallStatus::Ok) return outcome;
+  if (returned > out.size()) {
+    return error(PluginErrorKind::InvalidData,
+                 fmt::format("tracker_read returned count {} for capacity {}", returned, out.size()));
+  }
+  for (std::size_t i = 0; i < returned; ++i) {
+    const mhd_tracker_sample& sample = out[i];
+    const std::string prefix = fmt::format("samples[{}].", i);
+    if (auto field = non_finite_in(sample, prefix)) {
+      return error(PluginErrorKind::InvalidData, fmt::format("tracker_read returned a non-finite {}", *field));
+    }
+    const double* q = sample.q_T_wxyz;
+    const double norm = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    if (std::abs(norm - 1.0) > kUnitQuaternionTolerance) {
+      return error(PluginErrorKind::InvalidData,
+                   fmt::format("tracker_read returned samples[{}].q_T_wxyz of norm {}, not a unit quaternion", i, norm));
+    }
+  }
+  count = returned;
+  return outcome;
+}
+
+PluginResult<PluginCallStatus> PluginInstance::base_read(mhd_base_state& out) {
+  if (PluginStatus s = check_call("base_read", PluginKind::Base); !s) return s.error();
+  if (PluginStatus s = check_running("base_read"); !s) return s.error();
+  mhd_error err{};
+  mhd_base_state state{};
+  PluginResult<PluginCallStatus> outcome =
+      call_outcome(name(), "base_read", static_cast<StatusCode>(library_->api().base_read(handle_, &state, &err)), err);
+  if (!outcome || outcome.value() != PluginCallStatus::Ok) return outcome;
+  if (auto field = non_finite_in(state)) {
+    return error(PluginErrorKind::InvalidData, fmt::format("base_read returned a non-finite {}", *field));
+  }
+  out = state;
+  return outcome;
+}
+
+PluginResult<PluginCallStatus> PluginInstance::base_write(const mhd_base_command& command) {
+  if (PluginStatus s = check_call("base_write", PluginKind::Base); !s) return s.error();
+  if (PluginStatus s = check_running("base_write"); !s) return s.error();
+  if (auto field = non_finite_in(command)) {
+    return error(PluginErrorKind::InvalidData, fmt::format("refused to send a non-finite {} to base_write", *field));
+  }
+  mhd_error err{};
+  return call_outcome(name(), "base_write", static_cast<StatusCode>(library_->api().base_write(handle_, &command, &err)), err);
+}
+
+PluginResult<PluginCallStatus> PluginInstance::display_write(const mhd_display_frame& frame) {
+  if (PluginStatus s = check_call("display_write", PluginKind::Display); !s) return s.error();
+  if (PluginStatus s = check_running("display_write"); !s) return s.error();
+  if (auto field = non_finite_in(frame)) {
+    return error(PluginErrorKind::InvalidData, fmt::format("refused to send a non-finite {} to display_write", *field));
+  }
+  mhd_error err{};
+  return call_outcome(name(), "display_write", static_cast<StatusCode>(library_->api().display_write(handle_, &frame, &err)), err);
+}
+
+PluginResult<PluginCallStatus> PluginInstance::simulate_until(double t_s) {
+  if (library_ && !simulates()) {
+    return error(PluginErrorKind::WrongKind, "simulate_until called on a plugin that does not simulate");
+  }
+  if (PluginStatus s = check_running("simulate_until"); !s) return s.error();
+  if (!std::isfinite(t_s)) {
+    return error(PluginErrorKind::InvalidData, "refused to send a non-finite t_s to simulate_until");
+  }
+  mhd_error err{};
+  return call_outcome(name(), "simulate_until", static_cast<StatusCode>(library_->api().simulate_until(handle_, t_s, &err)), err);
+}
+
+}  // namespace mhd

@@ -1,0 +1,97 @@
+#pragma once
+// One opened plugin and its lifecycle:
+//   Loaded --open--> Open --start--> Running --stop--> Stopped --start--> Running ...
+//   any state --close--> Closed (a running plugin is stopped first; the destructor closes)
+// Calls out of this order are refused with WrongState before the plugin sees them.
+// Kind-specific calls are refused with WrongKind on a plugin of another kind, so no
+// null pointer is ever called. Reads and writes need Running; device_limits needs an
+// opened plugin. What a plugin returns is checked (finite numbers, unit quaternions,
+// count <= capacity, known statuses) and a violation is an InvalidData error naming the
+// call and the field; an out-parameter is written only when the call returns Ok.
+// What the host sends is checked too: a non-finite command never reaches a plugin, and
+// device torques are clamped to the limits the device reported at open.
+// An instance is driven by one thread at a time; wrappers allocate only on error.
+
+#include "plugin_host/plugin_library.h"
+#include "plugin_host/plugin_result.h"
+
+#include <mhd/plugin_abi.h>
+
+#include <cstddef>
+#include <map>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace mhd {
+
+enum class PluginState { Loaded, Open, Running, Stopped, Closed };
+
+/// "loaded", "open", "running", "stopped", "closed".
+[[nodiscard]] std::string_view to_string(PluginState state);
+
+/// A read or write that did not fail (MHD_ERROR and bad returns are PluginErrors).
+enum class PluginCallStatus {
+  Ok,          ///< done; a read's output is written
+  NoData,      ///< a read found nothing new; output untouched
+  Deactivate,  ///< the hardware asks to be stopped (e.g. emergency stop): call stop()
+};
+
+class PluginInstance {
+ public:
+  /// A Loaded instance of `library` (not null).
+  explicit PluginInstance(std::shared_ptr<const PluginLibrary> library);
+  ~PluginInstance();
+  PluginInstance(PluginInstance&& other) noexcept;
+  PluginInstance& operator=(PluginInstance&& other) noexcept;
+  PluginInstance(const PluginInstance&) = delete;
+  PluginInstance& operator=(const PluginInstance&) = delete;
+
+  /// Loaded -> Open: calls open(params) with `host`, which must outlive this instance
+  /// (the plugin may keep the pointer). A device's limits are read and checked here.
+  /// On failure the instance stays Loaded.
+  PluginStatus open(const std::map<std::string, std::string>& params, const mhd_host& host);
+  /// Open or Stopped -> Running. On failure the state does not change.
+  PluginStatus start();
+  /// Running -> Stopped; the state changes even when the plugin reports an error.
+  PluginStatus stop();
+  /// Any state -> Closed (stops a running plugin first and returns that error, if any).
+  /// Closing a closed instance does nothing.
+  PluginStatus close();
+
+  [[nodiscard]] PluginState state() const noexcept { return state_; }
+  [[nodiscard]] const std::string& name() const noexcept;
+  [[nodiscard]] PluginKind kind() const noexcept;
+  /// Null only for a moved-from instance.
+  [[nodiscard]] const std::shared_ptr<const PluginLibrary>& library() const noexcept { return library_; }
+  /// True when the plugin provides simulate_until.
+  [[nodiscard]] bool simulates() const noexcept;
+
+  /// Device: the limits read at open (Open, Running or Stopped).
+  [[nodiscard]] PluginResult<mhd_device_limits> device_limits() const;
+  [[nodiscard]] PluginResult<PluginCallStatus> device_read(mhd_device_state& out);
+  /// Torques beyond the device's max_joint_torque_Nm are clamped before the plugin sees them.
+  [[nodiscard]] PluginResult<PluginCallStatus> device_write(const mhd_device_command& command);
+  /// Tracker: up to out.size() samples; `count` is how many were written (0 unless Ok).
+  [[nodiscard]] PluginResult<PluginCallStatus> tracker_read(std::span<mhd_tracker_sample> out, std::size_t& count);
+  [[nodiscard]] PluginResult<PluginCallStatus> base_read(mhd_base_state& out);
+  [[nodiscard]] PluginResult<PluginCallStatus> base_write(const mhd_base_command& command);
+  [[nodiscard]] PluginResult<PluginCallStatus> display_write(const mhd_display_frame& frame);
+  /// Simulated backends: advance to host time t_s (WrongKind when the plugin does not simulate).
+  [[nodiscard]] PluginResult<PluginCallStatus> simulate_until(double t_s);
+
+ private:
+  [[nodiscard]] PluginError error(PluginErrorKind kind, std::string message) const;
+  [[nodiscard]] PluginStatus check_call(std::string_view call, PluginKind needed_kind) const;
+  [[nodiscard]] PluginStatus check_running(std::string_view call) const;
+  PluginStatus read_device_limits();
+  void close_handle() noexcept;
+
+  std::shared_ptr<const PluginLibrary> library_;
+  mhd_plugin_instance* handle_ = nullptr;
+  PluginState state_ = PluginState::Loaded;
+  mhd_device_limits limits_{};
+};
+
+}  // namespace mhd

@@ -1,0 +1,24 @@
+#pragma once
+// The plugin kinds as the ABI numbers them and as the scene names them.
+
+#include "scene/scene_description.h"
+
+#include <mhd/plugin_abi.h>
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+namespace mhd {
+
+/// The ABI kind for a scene's plugin kind.
+[[nodiscard]] mhd_plugin_kind to_abi_kind(PluginKind kind);
+
+/// The kind a table's raw kind field names; nullopt outside 1..4. Takes the raw number
+/// because a plugin may put any value there (reading it as the enum would be UB).
+[[nodiscard]] std::optional<PluginKind> plugin_kind_from_abi(std::uint32_t raw_kind);
+
+/// "device", "tracker", "base", "display" (the scene's <plugin kind="...">).
+[[nodiscard]] std::string_view to_string(PluginKind kind);
+
+}  // namespace mhd

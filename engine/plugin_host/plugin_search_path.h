@@ -1,0 +1,75 @@
+#pragma once
+// Where plugins are found. Folders are searched in this order:
+//   1. --plugin-path folders from the command line, in the order given;
+//   2. $MHD_PLUGIN_PATH, colon-separated (empty entries skipped);
+//   3. <executable's folder>/../lib/mhd/plugins-abi<N> (an installed mhd);
+//   4. the build tree's <build>/lib/mhd/plugins-abi<N> (MHD_BUILD_PLUGIN_DIR).
+// N is MHD_PLUGIN_ABI_VERSION: a host never even looks at plugins of another ABI.
+// Plugin NAME is the file libmhd_NAME.so; the first folder holding it wins, whether or
+// not that file loads (a broken file is reported, never silently skipped).
+
+#include "plugin_host/plugin_library.h"
+#include "plugin_host/plugin_result.h"
+
+#include <filesystem>
+#include <memory>
+#include <string_view>
+#include <vector>
+
+namespace mhd {
+
+enum class PluginFolderSource { CommandLine, Environment, Executable, BuildTree, Given };
+
+/// "--plugin-path", "MHD_PLUGIN_PATH", "installed", "build tree", "given".
+[[nodiscard]] std::string_view to_string(PluginFolderSource source);
+
+struct PluginFolder {
+  std::filesystem::path dir;
+  PluginFolderSource source = PluginFolderSource::Given;
+};
+
+/// "mhd/plugins-abi1": the versioned folder under a lib folder.
+[[nodiscard]] std::filesystem::path versioned_plugin_subdir();
+
+/// The build tree's plugin folder (where mhd_add_plugin puts plugins).
+[[nodiscard]] std::filesystem::path build_tree_plugin_dir();
+
+/// The search order above from its inputs: `env_value` is $MHD_PLUGIN_PATH's value and
+/// `executable` the running program (either may be empty). A folder named twice keeps
+/// its first place.
+[[nodiscard]] std::vector<PluginFolder> plugin_folders(const std::vector<std::filesystem::path>& command_line,
+                                                       std::string_view env_value,
+                                                       const std::filesystem::path& executable);
+
+/// One plugin file found by list().
+struct PluginListing {
+  std::filesystem::path path;
+  PluginResult<PluginInfo> loaded;  ///< what the plugin says, or why it did not load
+  bool shadowed = false;            ///< an earlier folder holds the same name; find() never returns this file
+};
+
+class PluginSearchPath {
+ public:
+  explicit PluginSearchPath(std::vector<PluginFolder> folders);
+
+  /// The standard order, reading $MHD_PLUGIN_PATH and /proc/self/exe.
+  [[nodiscard]] static PluginSearchPath standard(const std::vector<std::filesystem::path>& command_line);
+
+  [[nodiscard]] const std::vector<PluginFolder>& folders() const noexcept { return folders_; }
+
+  /// The first folder's libmhd_NAME.so; NotFound names every folder searched.
+  [[nodiscard]] PluginResult<std::filesystem::path> find(std::string_view name) const;
+
+  /// find() and PluginLibrary::load().
+  [[nodiscard]] PluginResult<std::shared_ptr<const PluginLibrary>> load(std::string_view name) const;
+
+  /// Every libmhd_*.so in every folder, folder by folder in search order and by file
+  /// name within a folder; each is loaded (and unloaded) to read what it says. A file
+  /// that does not load is listed with its error.
+  [[nodiscard]] std::vector<PluginListing> list() const;
+
+ private:
+  std::vector<PluginFolder> folders_;
+};
+
+}  // namespace mhd

@@ -1,0 +1,171 @@
+// The sim_omni3 base plugin: the C ABI over Omni3Model. Commands are stamped with the
+// host clock when they arrive; the host advances the base with simulate_until(), and
+// the true pose goes to the shared simulated world after every advance.
+
+#include "sim_omni3_model.h"
+#include "sim_common/plugin_params.h"
+#include "sim_common/plugin_shell.h"
+
+#include <mhd/plugin_abi.h>
+
+#include <cmath>
+#include <mutex>
+#include <numbers>
+#include <stdexcept>
+
+namespace mhd::sim_omni3 {
+namespace {
+
+using plugin_support::guarded;
+using plugin_support::guarded_open;
+
+constexpr double kDegToRad = std::numbers::pi / 180.0;
+
+struct Instance {
+  Instance(const mhd_host& h, const Omni3Config& config) : host(h), model(config) {}
+
+  std::mutex mutex;
+  mhd_host host;
+  Omni3Model model;
+  bool started = false;
+  bool read_once = false;
+  double last_read_time_s = 0.0;
+
+  void publish_pose() {
+    if (host.sim_world == nullptr) return;
+    const PlanarPose& p = model.pose();
+    host.sim_world->set_base_pose(host.sim_world->context, p.x_m, p.z_m, p.heading_rad);
+  }
+};
+
+Instance& self_of(mhd_plugin_instance* self) {
+  if (self == nullptr) throw std::invalid_argument("instance is NULL");
+  return *reinterpret_cast<Instance*>(self);
+}
+
+void require_started(const Instance& s) {
+  if (!s.started) throw std::logic_error("sim_omni3 is not started");
+}
+
+Omni3Config read_config(const mhd_host& host, const mhd_param* params, std::size_t count) {
+  plugin_support::ParamReader reader(params, count);
+  Omni3Config c;
+  c.base_radius_m = reader.positive("base_radius_m", c.base_radius_m);
+  c.wheel_radius_m = reader.positive("wheel_radius_m", c.wheel_radius_m);
+  c.max_speed_mps = reader.positive("max_speed_mps", c.max_speed_mps);
+  c.max_omega_radps = reader.positive("max_omega_degps", c.max_omega_radps / kDegToRad) * kDegToRad;
+  c.control_rate_hz = reader.positive("control_rate_hz", c.control_rate_hz);
+  c.motor_time_constant_s = reader.non_negative("motor_time_constant_s", c.motor_time_constant_s);
+  c.max_wheel_accel_mps2 = reader.positive("max_wheel_accel_mps2", c.max_wheel_accel_mps2);
+  c.slip_fraction = reader.fraction("slip_fraction", c.slip_fraction);
+  c.watchdog_s = reader.positive("watchdog_s", c.watchdog_s);
+  c.seed = reader.unsigned_integer("seed", c.seed, UINT64_MAX);
+  // The start pose: the simulated world's base pose when there is one, each field
+  // overridden by its parameter.
+  PlanarPose& p = c.initial_pose;
+  if (host.sim_world != nullptr) host.sim_world->get_base_pose(host.sim_world->context, &p.x_m, &p.z_m, &p.heading_rad);
+  p.x_m = reader.number("x_m", p.x_m);
+  p.z_m = reader.number("z_m", p.z_m);
+  if (const auto heading_deg = reader.optional_number("heading_deg")) p.heading_rad = *heading_deg * kDegToRad;
+  reader.reject_unknown();
+  return c;
+}
+
+mhd_plugin_instance* open_instance(const mhd_host* host, const mhd_param* params, size_t param_count, mhd_error* err) {
+  return guarded_open(err, [&] {
+    plugin_support::check_host(host);
+    plugin_support::check_sim_world(*host);
+    auto* instance = new Instance(*host, read_config(*host, params, param_count));
+    return reinterpret_cast<mhd_plugin_instance*>(instance);
+  });
+}
+
+mhd_status start_instance(mhd_plugin_instance* self, mhd_error* err) {
+  return guarded(err, [&] {
+    Instance& s = self_of(self);
+    const std::lock_guard lock(s.mutex);
+    s.model.start(plugin_support::host_now(s.host));
+    s.started = true;
+    s.read_once = false;
+    s.publish_pose();
+    return MHD_OK;
+  });
+}
+
+mhd_status stop_instance(mhd_plugin_instance* self, mhd_error* err) {
+  return guarded(err, [&] {
+    Instance& s = self_of(self);
+    const std::lock_guard lock(s.mutex);
+    s.started = false;  // the base stands where it is; start() begins again from here
+    return MHD_OK;
+  });
+}
+
+void close_instance(mhd_plugin_instance* self) { delete reinterpret_cast<Instance*>(self); }
+
+mhd_status base_read(mhd_plugin_instance* self, mhd_base_state* out, mhd_error* err) {
+  return guarded(err, [&] {
+    Instance& s = self_of(self);
+    const std::lock_guard lock(s.mutex);
+    require_started(s);
+    if (out == nullptr) throw std::invalid_argument("base_read: out is NULL");
+    const double t = s.model.time_s();
+    if (s.read_once && t == s.last_read_time_s) return MHD_NO_DATA;
+    const PlanarPose& p = s.model.pose();
+    const Twist v_W = s.model.velocity_W();
+    *out = mhd_base_state{t, p.x_m, p.z_m, p.heading_rad, v_W[0], v_W[1], v_W[2]};
+    s.read_once = true;
+    s.last_read_time_s = t;
+    return MHD_OK;
+  });
+}
+
+mhd_status base_write(mhd_plugin_instance* self, const mhd_base_command* command, mhd_error* err) {
+  return guarded(err, [&] {
+    Instance& s = self_of(self);
+    const std::lock_guard lock(s.mutex);
+    require_started(s);
+    if (command == nullptr) throw std::invalid_argument("base_write: command is NULL");
+    s.model.command(Twist(command->vx_mps, command->vz_mps, command->omega_radps), plugin_support::host_now(s.host));
+    return MHD_OK;
+  });
+}
+
+mhd_status simulate_until(mhd_plugin_instance* self, double t_s, mhd_error* err) {
+  return guarded(err, [&] {
+    Instance& s = self_of(self);
+    const std::lock_guard lock(s.mutex);
+    require_started(s);
+    s.model.simulate_until(t_s);
+    s.publish_pose();
+    return MHD_OK;
+  });
+}
+
+constexpr mhd_plugin_api kApi = {
+    MHD_PLUGIN_ABI_VERSION,
+    sizeof(mhd_plugin_api),
+    MHD_PLUGIN_KIND,
+    MHD_PLUGIN_NAME,  // both from mhd_add_plugin, so the table matches the file name
+    "1.0.0",
+    "Simulated three-omni-wheel base: 50 Hz wheel-speed control, limits, watchdog, optional slip",
+    open_instance,
+    start_instance,
+    stop_instance,
+    close_instance,
+    nullptr,  // device_limits
+    nullptr,  // device_read
+    nullptr,  // device_write
+    nullptr,  // tracker_read
+    base_read,
+    base_write,
+    nullptr,  // display_write
+    simulate_until,
+};
+
+}  // namespace
+}  // namespace mhd::sim_omni3
+
+extern "C" MHD_PLUGIN_EXPORT const mhd_plugin_api* mhd_plugin_entry(uint32_t host_abi_version) {
+  return host_abi_version == MHD_PLUGIN_ABI_VERSION ? &mhd::sim_omni3::kApi : nullptr;
+}

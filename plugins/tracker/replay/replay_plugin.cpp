@@ -1,0 +1,105 @@
+// The replay tracker plugin: plays a recorded CSV (see replay_csv.h) on the host clock
+// from start(). open() reads and checks the whole file, so a bad row fails the open
+// with "FILE:LINE: ...". A relative path is relative to the host's working directory.
+
+#include "replay_csv.h"
+#include "replay_model.h"
+#include "sim_common/plugin_params.h"
+#include "sim_common/plugin_shell.h"
+
+#include <mhd/plugin_abi.h>
+
+#include <mutex>
+#include <stdexcept>
+#include <utility>
+
+namespace mhd::tracker_replay {
+namespace {
+
+using plugin_support::guarded;
+using plugin_support::guarded_open;
+
+struct Instance {
+  Instance(const mhd_host& h, std::vector<mhd_tracker_sample> samples) : host(h), model(std::move(samples)) {}
+
+  std::mutex mutex;
+  mhd_host host;
+  ReplayModel model;
+  bool started = false;
+};
+
+Instance& self_of(mhd_plugin_instance* self) {
+  if (self == nullptr) throw std::invalid_argument("instance is NULL");
+  return *reinterpret_cast<Instance*>(self);
+}
+
+mhd_plugin_instance* open_instance(const mhd_host* host, const mhd_param* params, size_t param_count, mhd_error* err) {
+  return guarded_open(err, [&] {
+    plugin_support::check_host(host);
+    plugin_support::ParamReader reader(params, param_count);
+    const std::string file = reader.required_text("file");
+    reader.reject_unknown();
+    return reinterpret_cast<mhd_plugin_instance*>(new Instance(*host, read_replay_csv(file)));
+  });
+}
+
+mhd_status start_instance(mhd_plugin_instance* self, mhd_error* err) {
+  return guarded(err, [&] {
+    Instance& s = self_of(self);
+    const std::lock_guard lock(s.mutex);
+    s.model.start(plugin_support::host_now(s.host));
+    s.started = true;
+    return MHD_OK;
+  });
+}
+
+mhd_status stop_instance(mhd_plugin_instance* self, mhd_error* err) {
+  return guarded(err, [&] {
+    Instance& s = self_of(self);
+    const std::lock_guard lock(s.mutex);
+    s.started = false;
+    return MHD_OK;
+  });
+}
+
+void close_instance(mhd_plugin_instance* self) { delete reinterpret_cast<Instance*>(self); }
+
+mhd_status tracker_read(mhd_plugin_instance* self, mhd_tracker_sample* out, size_t capacity, size_t* count,
+                        mhd_error* err) {
+  return guarded(err, [&] {
+    Instance& s = self_of(self);
+    const std::lock_guard lock(s.mutex);
+    if (!s.started) throw std::logic_error("replay is not started");
+    if (count == nullptr || (out == nullptr && capacity > 0)) throw std::invalid_argument("tracker_read: NULL output");
+    *count = s.model.read(plugin_support::host_now(s.host), std::span(out, capacity));
+    return *count > 0 ? MHD_OK : MHD_NO_DATA;
+  });
+}
+
+constexpr mhd_plugin_api kApi = {
+    MHD_PLUGIN_ABI_VERSION,
+    sizeof(mhd_plugin_api),
+    MHD_PLUGIN_KIND,
+    MHD_PLUGIN_NAME,  // both from mhd_add_plugin, so the table matches the file name
+    "1.0.0",
+    "Tracker replay: plays a recorded CSV of tracker samples on the host clock",
+    open_instance,
+    start_instance,
+    stop_instance,
+    close_instance,
+    nullptr,  // device_limits
+    nullptr,  // device_read
+    nullptr,  // device_write
+    tracker_read,
+    nullptr,  // base_read
+    nullptr,  // base_write
+    nullptr,  // display_write
+    nullptr,  // simulate_until: plays on the host clock
+};
+
+}  // namespace
+}  // namespace mhd::tracker_replay
+
+extern "C" MHD_PLUGIN_EXPORT const mhd_plugin_api* mhd_plugin_entry(uint32_t host_abi_version) {
+  return host_abi_version == MHD_PLUGIN_ABI_VERSION ? &mhd::tracker_replay::kApi : nullptr;
+}

@@ -1,0 +1,43 @@
+// The host table plugins get in open(): this host's ABI numbers, a monotonic clock and
+// the optional simulated world.
+
+#include "plugin_host/host_services.h"
+
+#include <gtest/gtest.h>
+
+namespace mhd {
+namespace {
+
+TEST(HostServices, AbiTable) {
+  const HostServices host;
+  EXPECT_EQ(host.abi().abi_version, MHD_PLUGIN_ABI_VERSION);
+  EXPECT_EQ(host.abi().struct_size, sizeof(mhd_host));
+  EXPECT_EQ(host.abi().sim_world, nullptr);
+  ASSERT_NE(host.abi().now_s, nullptr);
+}
+
+TEST(HostServices, ClockIsMonotonicAndStartsNearZero) {
+  const HostServices host;
+  const mhd_host& abi = host.abi();
+  const double t0 = abi.now_s(abi.clock_context);
+  EXPECT_GE(t0, 0.0);
+  EXPECT_LT(t0, 1.0);
+  double last = t0;
+  for (int i = 0; i < 1000; ++i) {
+    const double t = abi.now_s(abi.clock_context);
+    EXPECT_GE(t, last);
+    last = t;
+  }
+  EXPECT_GE(host.now_s(), last);
+}
+
+TEST(HostServices, CarriesTheSimulatedWorld) {
+  mhd_sim_world world{};
+  HostServices host(&world);
+  EXPECT_EQ(host.abi().sim_world, &world);
+  host.set_sim_world(nullptr);
+  EXPECT_EQ(host.sim_world(), nullptr);
+}
+
+}  // namespace
+}  // namespace mhd

@@ -1,0 +1,390 @@
+// Driving one plugin: lifecycle order, kind-specific calls, what the host checks in
+// what plugins return and in what it sends them. All through real test plugins.
+
+#include "plugin_host/host_services.h"
+#include "plugin_host/plugin_instance.h"
+#include "test_plugins.h"
+
+#include <gtest/gtest.h>
+
+#include <dlfcn.h>
+
+#include <array>
+#include <limits>
+#include <map>
+#include <memory>
+#include <string>
+
+namespace mhd {
+namespace {
+
+using Params = std::map<std::string, std::string>;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+std::shared_ptr<const PluginLibrary> load(const std::filesystem::path& path) {
+  auto loaded = PluginLibrary::load(path);
+  if (!loaded.ok()) ADD_FAILURE() << loaded.error().to_string();
+  return loaded.ok() ? loaded.value() : nullptr;
+}
+
+std::shared_ptr<const PluginLibrary> load_test(const std::string& name) { return load(test::test_plugin(name)); }
+
+/// good_device's log of the lifecycle calls that reached it (exported for tests only).
+class CallLog {
+ public:
+  explicit CallLog(const PluginLibrary& library) {
+    handle_ = dlopen(std::filesystem::absolute(library.path()).c_str(), RTLD_NOW | RTLD_NOLOAD);
+    EXPECT_NE(handle_, nullptr);
+    get_ = reinterpret_cast<const char* (*)()>(dlsym(handle_, "mhd_test_call_log"));
+    reinterpret_cast<void (*)()>(dlsym(handle_, "mhd_test_clear_call_log"))();
+  }
+  ~CallLog() { dlclose(handle_); }
+  CallLog(const CallLog&) = delete;
+  CallLog& operator=(const CallLog&) = delete;
+  [[nodiscard]] std::string calls() const { return get_(); }
+
+ private:
+  void* handle_ = nullptr;
+  const char* (*get_)() = nullptr;
+};
+
+void expect_error(const PluginError& e, PluginErrorKind kind, const std::string& text) {
+  EXPECT_EQ(e.kind, kind) << to_string(e.kind);
+  EXPECT_EQ(e.to_string(), text);
+}
+
+class PluginInstanceTest : public ::testing::Test {
+ protected:
+  /// An instance of test plugin `name`, opened with `params` and started.
+  PluginInstance running(const std::string& name, const Params& params = {}) {
+    PluginInstance instance(load_test(name));
+    EXPECT_TRUE(instance.open(params, host_.abi()).ok());
+    EXPECT_TRUE(instance.start().ok());
+    return instance;
+  }
+
+  HostServices host_;
+};
+
+TEST_F(PluginInstanceTest, LifecycleInOrder) {
+  PluginInstance device(load_test("good_device"));
+  CallLog log(*device.library());
+  EXPECT_EQ(device.state(), PluginState::Loaded);
+  EXPECT_EQ(device.name(), "good_device");
+  EXPECT_EQ(device.kind(), PluginKind::Device);
+  ASSERT_TRUE(device.open({}, host_.abi()).ok());
+  EXPECT_EQ(device.state(), PluginState::Open);
+  ASSERT_TRUE(device.start().ok());
+  EXPECT_EQ(device.state(), PluginState::Running);
+  ASSERT_TRUE(device.stop().ok());
+  EXPECT_EQ(device.state(), PluginState::Stopped);
+  ASSERT_TRUE(device.start().ok());  // stopped -> running again
+  EXPECT_EQ(device.state(), PluginState::Running);
+  EXPECT_TRUE(device.close().ok());  // stops first
+  EXPECT_EQ(device.state(), PluginState::Closed);
+  EXPECT_TRUE(device.close().ok());  // closing twice does nothing
+  EXPECT_EQ(log.calls(), "open start stop start stop close ");
+}
+
+TEST_F(PluginInstanceTest, DestructorStopsAndCloses) {
+  auto library = load_test("good_device");
+  CallLog log(*library);
+  {
+    PluginInstance device(library);
+    ASSERT_TRUE(device.open({}, host_.abi()).ok());
+    ASSERT_TRUE(device.start().ok());
+  }
+  EXPECT_EQ(log.calls(), "open start stop close ");
+}
+
+TEST_F(PluginInstanceTest, MovedInstanceClosesOnce) {
+  auto library = load_test("good_device");
+  CallLog log(*library);
+  {
+    PluginInstance first(library);
+    ASSERT_TRUE(first.open({}, host_.abi()).ok());
+    PluginInstance second(std::move(first));
+    EXPECT_EQ(second.state(), PluginState::Open);
+    EXPECT_EQ(first.state(), PluginState::Closed);  // a moved-from instance is closed
+    expect_error(first.start().error(), PluginErrorKind::WrongState,
+                 "plugin '': start called while the plugin is closed; it must be open or stopped");
+  }
+  EXPECT_EQ(log.calls(), "open close ");
+}
+
+TEST_F(PluginInstanceTest, CallsOutOfOrderAreRefusedBeforeThePluginSeesThem) {
+  PluginInstance device(load_test("good_device"));
+  CallLog log(*device.library());
+  mhd_device_state state{};
+  expect_error(device.start().error(), PluginErrorKind::WrongState,
+               "plugin 'good_device': start called while the plugin is loaded; it must be open or stopped");
+  expect_error(device.device_read(state).error(), PluginErrorKind::WrongState,
+               "plugin 'good_device': device_read called while the plugin is loaded; it must be running");
+  expect_error(device.device_limits().error(), PluginErrorKind::WrongState,
+               "plugin 'good_device': device_limits called while the plugin is loaded; it must be open, running or "
+               "stopped");
+  ASSERT_TRUE(device.open({}, host_.abi()).ok());
+  expect_error(device.open({}, host_.abi()).error(), PluginErrorKind::WrongState,
+               "plugin 'good_device': open called while the plugin is open; it must be loaded");
+  expect_error(device.stop().error(), PluginErrorKind::WrongState,
+               "plugin 'good_device': stop called while the plugin is open; it must be running");
+  expect_error(device.device_write(mhd_device_command{}).error(), PluginErrorKind::WrongState,
+               "plugin 'good_device': device_write called while the plugin is open; it must be running");
+  ASSERT_TRUE(device.start().ok());
+  expect_error(device.start().error(), PluginErrorKind::WrongState,
+               "plugin 'good_device': start called while the plugin is running; it must be open or stopped");
+  ASSERT_TRUE(device.stop().ok());
+  expect_error(device.stop().error(), PluginErrorKind::WrongState,
+               "plugin 'good_device': stop called while the plugin is stopped; it must be running");
+  EXPECT_TRUE(device.close().ok());
+  expect_error(device.start().error(), PluginErrorKind::WrongState,
+               "plugin 'good_device': start called while the plugin is closed; it must be open or stopped");
+  expect_error(device.open({}, host_.abi()).error(), PluginErrorKind::WrongState,
+               "plugin 'good_device': open called while the plugin is closed; it must be loaded");
+  EXPECT_EQ(log.calls(), "open start stop close ");
+}
+
+TEST_F(PluginInstanceTest, CallsOfAnotherKindAreRefused) {
+  PluginInstance device = running("good_device");
+  std::array<mhd_tracker_sample, 4> samples{};
+  std::size_t count = 99;
+  expect_error(device.tracker_read(samples, count).error(), PluginErrorKind::WrongKind,
+               "plugin 'good_device': tracker_read called on a device plugin");
+  EXPECT_EQ(count, 0u);
+  mhd_base_state base{};
+  expect_error(device.base_read(base).error(), PluginErrorKind::WrongKind,
+               "plugin 'good_device': base_read called on a device plugin");
+  expect_error(device.display_write(mhd_display_frame{}).error(), PluginErrorKind::WrongKind,
+               "plugin 'good_device': display_write called on a device plugin");
+}
+
+TEST_F(PluginInstanceTest, DeviceReadsFixedDataWithParamsAndTheHostClock) {
+  PluginInstance device = running("good_device", {{"joint0_rad", "1.5"}});
+  const double before_s = host_.now_s();
+  mhd_device_state state{};
+  auto read = device.device_read(state);
+  ASSERT_TRUE(read.ok()) << read.error().to_string();
+  EXPECT_EQ(read.value(), PluginCallStatus::Ok);
+  EXPECT_EQ(state.joint_angles_rad[0], 1.5);
+  EXPECT_EQ(state.joint_angles_rad[1], 0.5);
+  EXPECT_EQ(state.joint_angles_rad[2], -0.5);
+  EXPECT_GE(state.timestamp_s, before_s);
+  EXPECT_LE(state.timestamp_s, host_.now_s());
+  EXPECT_EQ(state.buttons, 1u);
+}
+
+TEST_F(PluginInstanceTest, DeviceLimitsAreReadAtOpen) {
+  PluginInstance device(load_test("good_device"));
+  ASSERT_TRUE(device.open({{"max_torque_Nm", "0.75"}}, host_.abi()).ok());
+  auto limits = device.device_limits();
+  ASSERT_TRUE(limits.ok());
+  EXPECT_EQ(limits.value().max_force_N, 8.5);
+  EXPECT_EQ(limits.value().max_joint_torque_Nm[2], 0.75);
+}
+
+TEST_F(PluginInstanceTest, BadDeviceLimitsFailTheOpen) {
+  PluginInstance device(load_test("good_device"));
+  CallLog log(*device.library());
+  expect_error(device.open({{"max_torque_Nm", "0"}}, host_.abi()).error(), PluginErrorKind::InvalidData,
+               "plugin 'good_device': device_limits returned max_joint_torque_Nm[0] = 0, which must be > 0");
+  EXPECT_EQ(device.state(), PluginState::Loaded);
+  expect_error(device.open({{"max_torque_Nm", "nan"}}, host_.abi()).error(), PluginErrorKind::InvalidData,
+               "plugin 'good_device': device_limits returned a non-finite max_joint_torque_Nm[0]");
+  EXPECT_EQ(log.calls(), "open close open close ");
+}
+
+TEST_F(PluginInstanceTest, TorquesAreClampedToTheDeviceLimits) {
+  PluginInstance device = running("good_device", {{"max_torque_Nm", "0.5"}});
+  mhd_device_command command{};
+  command.joint_torques_Nm[0] = 2.0;
+  command.joint_torques_Nm[1] = -2.0;
+  command.joint_torques_Nm[2] = 0.125;
+  ASSERT_TRUE(device.device_write(command).ok());
+  mhd_device_state state{};
+  ASSERT_TRUE(device.device_read(state).ok());
+  EXPECT_EQ(state.p_D_hip_m[0], 0.5);  // good_device echoes the torques it got
+  EXPECT_EQ(state.p_D_hip_m[1], -0.5);
+  EXPECT_EQ(state.p_D_hip_m[2], 0.125);
+}
+
+TEST_F(PluginInstanceTest, NonFiniteCommandsNeverReachThePlugin) {
+  PluginInstance device = running("good_device");
+  mhd_device_command command{};
+  command.joint_torques_Nm[1] = kNaN;
+  expect_error(device.device_write(command).error(), PluginErrorKind::InvalidData,
+               "plugin 'good_device': refused to send a non-finite joint_torques_Nm[1] to device_write");
+  expect_error(device.simulate_until(kNaN).error(), PluginErrorKind::InvalidData,
+               "plugin 'good_device': refused to send a non-finite t_s to simulate_until");
+  mhd_device_state state{};
+  ASSERT_TRUE(device.device_read(state).ok());
+  EXPECT_EQ(state.p_D_hip_m[1], 0.0);
+}
+
+TEST_F(PluginInstanceTest, NonFiniteDeviceStateIsInvalidData) {
+  PluginInstance device = running("nan_device");
+  mhd_device_state state{};
+  state.joint_angles_rad[0] = 42.0;
+  expect_error(device.device_read(state).error(), PluginErrorKind::InvalidData,
+               "plugin 'nan_device': device_read returned a non-finite joint_angles_rad[1]");
+  EXPECT_EQ(state.joint_angles_rad[0], 42.0);  // untouched
+}
+
+TEST_F(PluginInstanceTest, ReadStatuses) {
+  mhd_device_state state{};
+  state.joint_angles_rad[0] = 42.0;
+  {
+    PluginInstance device = running("good_device", {{"read_status", "no_data"}});
+    auto read = device.device_read(state);
+    ASSERT_TRUE(read.ok());
+    EXPECT_EQ(read.value(), PluginCallStatus::NoData);
+    EXPECT_EQ(state.joint_angles_rad[0], 42.0);  // untouched
+  }
+  {
+    PluginInstance device = running("good_device", {{"read_status", "deactivate"}});
+    auto read = device.device_read(state);
+    ASSERT_TRUE(read.ok());
+    EXPECT_EQ(read.value(), PluginCallStatus::Deactivate);
+    EXPECT_EQ(state.joint_angles_rad[0], 42.0);
+  }
+  {
+    PluginInstance device = running("good_device", {{"read_status", "error"}});
+    expect_error(device.device_read(state).error(), PluginErrorKind::CallFailed,
+                 "plugin 'good_device': device_read failed: encoder cable unplugged");
+  }
+  {
+    PluginInstance device = running("good_device", {{"read_status", "bogus"}});
+    expect_error(device.device_read(state).error(), PluginErrorKind::InvalidData,
+                 "plugin 'good_device': device_read returned status 7, which is not an mhd_status");
+  }
+  EXPECT_EQ(state.joint_angles_rad[0], 42.0);
+}
+
+TEST_F(PluginInstanceTest, OpenFailureSaysWhy) {
+  PluginInstance device(load_test("open_fails"));
+  expect_error(device.open({}, host_.abi()).error(), PluginErrorKind::OpenFailed,
+               "plugin 'open_fails': open failed: no device on /dev/ttyUSB0");
+  EXPECT_EQ(device.state(), PluginState::Loaded);
+}
+
+TEST_F(PluginInstanceTest, UnknownParameterFailsTheOpen) {
+  PluginInstance device(load_test("rejects_unknown_param"));
+  expect_error(device.open({{"x", "1"}}, host_.abi()).error(), PluginErrorKind::OpenFailed,
+               "plugin 'rejects_unknown_param': open failed: unknown parameter 'x'");
+  EXPECT_TRUE(device.open({}, host_.abi()).ok());
+}
+
+TEST_F(PluginInstanceTest, StartFailureKeepsThePluginOpen) {
+  PluginInstance device(load_test("good_device"));
+  ASSERT_TRUE(device.open({{"fail", "start"}}, host_.abi()).ok());
+  expect_error(device.start().error(), PluginErrorKind::StartFailed,
+               "plugin 'good_device': start failed: motors not powered");
+  EXPECT_EQ(device.state(), PluginState::Open);
+}
+
+TEST_F(PluginInstanceTest, StopFailureStillStops) {
+  PluginInstance device = running("good_device", {{"fail", "stop"}});
+  expect_error(device.stop().error(), PluginErrorKind::StopFailed,
+               "plugin 'good_device': stop failed: brake did not engage");
+  EXPECT_EQ(device.state(), PluginState::Stopped);
+}
+
+TEST_F(PluginInstanceTest, CloseReportsTheStopFailureOfARunningPlugin) {
+  PluginInstance device = running("good_device", {{"fail", "stop"}});
+  expect_error(device.close().error(), PluginErrorKind::StopFailed,
+               "plugin 'good_device': stop failed: brake did not engage");
+  EXPECT_EQ(device.state(), PluginState::Closed);
+}
+
+TEST_F(PluginInstanceTest, SimulateUntil) {
+  PluginInstance device = running("good_device");
+  EXPECT_TRUE(device.simulates());
+  auto step = device.simulate_until(0.5);
+  ASSERT_TRUE(step.ok());
+  EXPECT_EQ(step.value(), PluginCallStatus::Ok);
+
+  PluginInstance display(load(test::null_display_plugin()));
+  EXPECT_FALSE(display.simulates());
+  ASSERT_TRUE(display.open({}, host_.abi()).ok());
+  ASSERT_TRUE(display.start().ok());
+  expect_error(display.simulate_until(0.5).error(), PluginErrorKind::WrongKind,
+               "plugin 'null_display': simulate_until called on a plugin that does not simulate");
+}
+
+TEST_F(PluginInstanceTest, TrackerSamples) {
+  PluginInstance tracker = running("good_tracker");
+  std::array<mhd_tracker_sample, 4> samples{};
+  std::size_t count = 0;
+  auto read = tracker.tracker_read(samples, count);
+  ASSERT_TRUE(read.ok()) << read.error().to_string();
+  EXPECT_EQ(read.value(), PluginCallStatus::Ok);
+  ASSERT_EQ(count, 2u);
+  EXPECT_EQ(samples[1].sensor_id, 1u);
+  EXPECT_EQ(samples[1].p_T_m[0], 0.1);
+  EXPECT_EQ(samples[1].sequence, 2u);
+}
+
+TEST_F(PluginInstanceTest, TrackerNoData) {
+  PluginInstance tracker = running("good_tracker", {{"mode", "no_data"}});
+  std::array<mhd_tracker_sample, 4> samples{};
+  std::size_t count = 99;
+  auto read = tracker.tracker_read(samples, count);
+  ASSERT_TRUE(read.ok());
+  EXPECT_EQ(read.value(), PluginCallStatus::NoData);
+  EXPECT_EQ(count, 0u);
+}
+
+TEST_F(PluginInstanceTest, BadTrackerSamplesAreInvalidData) {
+  std::array<mhd_tracker_sample, 4> samples{};
+  std::size_t count = 99;
+  {
+    PluginInstance tracker = running("good_tracker", {{"mode", "too_many"}});
+    expect_error(tracker.tracker_read(samples, count).error(), PluginErrorKind::InvalidData,
+                 "plugin 'good_tracker': tracker_read returned count 5 for capacity 4");
+    EXPECT_EQ(count, 0u);
+  }
+  {
+    PluginInstance tracker = running("good_tracker", {{"mode", "bad_quat"}});
+    expect_error(tracker.tracker_read(samples, count).error(), PluginErrorKind::InvalidData,
+                 "plugin 'good_tracker': tracker_read returned samples[0].q_T_wxyz of norm 2, not a unit quaternion");
+  }
+  {
+    PluginInstance tracker = running("good_tracker", {{"mode", "nan"}});
+    expect_error(tracker.tracker_read(samples, count).error(), PluginErrorKind::InvalidData,
+                 "plugin 'good_tracker': tracker_read returned a non-finite samples[1].p_T_m[2]");
+    EXPECT_EQ(count, 0u);
+  }
+}
+
+TEST_F(PluginInstanceTest, BaseWriteAndRead) {
+  PluginInstance base = running("good_base");
+  mhd_base_command command{};
+  command.vx_mps = 0.25;
+  command.omega_radps = -0.5;
+  ASSERT_TRUE(base.base_write(command).ok());
+  mhd_base_state state{};
+  auto read = base.base_read(state);
+  ASSERT_TRUE(read.ok()) << read.error().to_string();
+  EXPECT_EQ(state.vx_mps, 0.25);
+  EXPECT_EQ(state.omega_radps, -0.5);
+  command.omega_radps = std::numeric_limits<double>::infinity();
+  expect_error(base.base_write(command).error(), PluginErrorKind::InvalidData,
+               "plugin 'good_base': refused to send a non-finite omega_radps to base_write");
+}
+
+TEST_F(PluginInstanceTest, DisplayFrames) {
+  PluginInstance display(load(test::null_display_plugin()));
+  ASSERT_TRUE(display.open({}, host_.abi()).ok());
+  ASSERT_TRUE(display.start().ok());
+  mhd_display_frame frame{};
+  frame.q_W_head_wxyz[0] = 1.0;
+  for (int i = 0; i < 3; ++i) ASSERT_TRUE(display.display_write(frame).ok());
+  frame.q_W_head_wxyz[3] = kNaN;
+  expect_error(display.display_write(frame).error(), PluginErrorKind::InvalidData,
+               "plugin 'null_display': refused to send a non-finite q_W_head_wxyz[3] to display_write");
+  PluginInstance other(load(test::null_display_plugin()));
+  expect_error(other.open({{"colour", "red"}}, host_.abi()).error(), PluginErrorKind::OpenFailed,
+               "plugin 'null_display': open failed: unknown parameter 'colour'");
+}
+
+}  // namespace
+}  // namespace mhd

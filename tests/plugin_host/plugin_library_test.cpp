@@ -1,0 +1,164 @@
+// Loading plugin files through the real dlopen path: one test plugin per way a plugin
+// can be broken, each refused with its own error kind and exact message.
+
+#include "plugin_host/plugin_library.h"
+#include "plugin_host/plugin_name.h"
+#include "test_plugins.h"
+
+#include <gtest/gtest.h>
+
+#include <dlfcn.h>
+
+#include <string>
+
+namespace mhd {
+namespace {
+
+using test::test_plugin;
+
+/// True while `path` is loaded in this process (dlopen with RTLD_NOLOAD loads nothing).
+bool is_loaded(const std::filesystem::path& path) {
+  void* handle = dlopen(std::filesystem::absolute(path).c_str(), RTLD_NOW | RTLD_NOLOAD);
+  if (handle == nullptr) return false;
+  dlclose(handle);
+  return true;
+}
+
+/// Loads the test plugin `name`, expects failure and returns the error.
+PluginError load_error(const std::string& name) {
+  auto loaded = PluginLibrary::load(test_plugin(name));
+  EXPECT_FALSE(loaded.ok()) << name << " should not load";
+  if (loaded.ok()) return {};
+  return loaded.error();
+}
+
+std::string where(const std::string& name) { return "plugin '" + name + "' (" + test_plugin(name).string() + "): "; }
+
+TEST(PluginLibrary, LoadsAGoodPluginAndReadsItsTable) {
+  auto loaded = PluginLibrary::load(test_plugin("good_device"));
+  ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
+  const PluginLibrary& library = *loaded.value();
+  EXPECT_EQ(library.name(), "good_device");
+  EXPECT_EQ(library.kind(), PluginKind::Device);
+  EXPECT_EQ(library.info().version, "1.2.3");
+  EXPECT_EQ(library.info().description, "test device");
+  EXPECT_EQ(library.path(), test_plugin("good_device"));
+  EXPECT_EQ(library.api().abi_version, MHD_PLUGIN_ABI_VERSION);
+  EXPECT_TRUE(is_loaded(test_plugin("good_device")));
+}
+
+TEST(PluginLibrary, UnloadsWhenTheLastReferenceGoes) {
+  {
+    auto loaded = PluginLibrary::load(test_plugin("good_tracker"));
+    ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
+    EXPECT_TRUE(is_loaded(test_plugin("good_tracker")));
+  }
+  EXPECT_FALSE(is_loaded(test_plugin("good_tracker")));
+}
+
+TEST(PluginLibrary, MissingFile) {
+  const PluginError e = load_error("no_such_plugin");
+  EXPECT_EQ(e.kind, PluginErrorKind::NotFound);
+  EXPECT_EQ(e.plugin, "no_such_plugin");
+  EXPECT_EQ(e.to_string(), where("no_such_plugin") + "no such file");
+}
+
+TEST(PluginLibrary, TextFileIsNotALibrary) {
+  const PluginError e = load_error("garbage");
+  EXPECT_EQ(e.kind, PluginErrorKind::NotALibrary);
+  EXPECT_EQ(e.to_string(), where("garbage") + "not a loadable library (invalid ELF header)");
+}
+
+TEST(PluginLibrary, LibraryWithoutEntryPoint) {
+  const PluginError e = load_error("no_entry");
+  EXPECT_EQ(e.kind, PluginErrorKind::NoEntryPoint);
+  EXPECT_EQ(e.to_string(), where("no_entry") + "exports no mhd_plugin_entry");
+  EXPECT_FALSE(is_loaded(test_plugin("no_entry")));
+}
+
+TEST(PluginLibrary, EntryThatRefusesTheHost) {
+  const PluginError e = load_error("entry_returns_null");
+  EXPECT_EQ(e.kind, PluginErrorKind::EntryReturnedNull);
+  EXPECT_EQ(e.to_string(), where("entry_returns_null") + "refused this host (mhd_plugin_entry(1) returned NULL)");
+  EXPECT_FALSE(is_loaded(test_plugin("entry_returns_null")));
+}
+
+TEST(PluginLibrary, WrongAbiVersion) {
+  const PluginError e = load_error("wrong_abi_version");
+  EXPECT_EQ(e.kind, PluginErrorKind::AbiVersionMismatch);
+  EXPECT_EQ(e.to_string(), where("wrong_abi_version") + "ABI version 2, this host speaks 1");
+  EXPECT_FALSE(is_loaded(test_plugin("wrong_abi_version")));
+}
+
+TEST(PluginLibrary, WrongStructSize) {
+  const PluginError e = load_error("wrong_struct_size");
+  EXPECT_EQ(e.kind, PluginErrorKind::StructSizeMismatch);
+  EXPECT_EQ(e.to_string(), where("wrong_struct_size") + "plugin table is " +
+                               std::to_string(sizeof(mhd_plugin_api) + sizeof(void*)) + " bytes, this host's is " +
+                               std::to_string(sizeof(mhd_plugin_api)) + " (built against another plugin_abi.h)");
+  EXPECT_FALSE(is_loaded(test_plugin("wrong_struct_size")));
+}
+
+TEST(PluginLibrary, UnknownKind) {
+  const PluginError e = load_error("wrong_kind");
+  EXPECT_EQ(e.kind, PluginErrorKind::WrongKind);
+  EXPECT_EQ(e.to_string(), where("wrong_kind") + "unknown kind 99");
+}
+
+TEST(PluginLibrary, MissingMandatoryCall) {
+  const PluginError e = load_error("missing_device_read");
+  EXPECT_EQ(e.kind, PluginErrorKind::BadTable);
+  EXPECT_EQ(e.to_string(), where("missing_device_read") + "the table lacks device_read (mandatory for a device plugin)");
+  EXPECT_FALSE(is_loaded(test_plugin("missing_device_read")));
+}
+
+TEST(PluginLibrary, EmptyName) {
+  const PluginError e = load_error("empty_name");
+  EXPECT_EQ(e.kind, PluginErrorKind::BadTable);
+  EXPECT_EQ(e.to_string(), where("empty_name") + "the table gives no name");
+}
+
+TEST(PluginLibrary, NameThatDisagreesWithTheFile) {
+  const PluginError e = load_error("misnamed");
+  EXPECT_EQ(e.kind, PluginErrorKind::BadTable);
+  EXPECT_EQ(e.to_string(), where("misnamed") + "the table names the plugin 'someone_else', the file is named for 'misnamed'");
+}
+
+TEST(PluginLibrary, PluginsThatFailLaterStillLoad) {
+  for (const char* name : {"open_fails", "rejects_unknown_param", "nan_device", "good_base"}) {
+    auto loaded = PluginLibrary::load(test_plugin(name));
+    EXPECT_TRUE(loaded.ok()) << loaded.error().to_string();
+  }
+}
+
+TEST(PluginLibrary, LoadsTheExampleDisplay) {
+  auto loaded = PluginLibrary::load(test::null_display_plugin());
+  ASSERT_TRUE(loaded.ok()) << loaded.error().to_string();
+  EXPECT_EQ(loaded.value()->name(), "null_display");
+  EXPECT_EQ(loaded.value()->kind(), PluginKind::Display);
+  EXPECT_EQ(loaded.value()->info().version, "1.0.0");
+}
+
+TEST(PluginName, FileNames) {
+  EXPECT_EQ(plugin_file_name("sim_phantom"), "libmhd_sim_phantom.so");
+  EXPECT_EQ(plugin_name_from_file("/a/b/libmhd_sim_phantom.so"), "sim_phantom");
+  EXPECT_EQ(plugin_name_from_file("libmhd_.so"), "");
+  EXPECT_EQ(plugin_name_from_file("libfoo.so"), "");
+  EXPECT_EQ(plugin_name_from_file("libmhd_x.so.1"), "");
+  EXPECT_TRUE(is_valid_plugin_name("sim_phantom-2"));
+  EXPECT_FALSE(is_valid_plugin_name(""));
+  EXPECT_FALSE(is_valid_plugin_name("../x"));
+  EXPECT_FALSE(is_valid_plugin_name("a b"));
+}
+
+TEST(PluginError, MessageWithAndWithoutPath) {
+  PluginError e{PluginErrorKind::AbiVersionMismatch, "sim_phantom", "/p/libmhd_sim_phantom.so",
+                "ABI version 2, this host speaks 1"};
+  EXPECT_EQ(e.to_string(), "plugin 'sim_phantom' (/p/libmhd_sim_phantom.so): ABI version 2, this host speaks 1");
+  e.path.clear();
+  EXPECT_EQ(e.to_string(), "plugin 'sim_phantom': ABI version 2, this host speaks 1");
+  EXPECT_EQ(to_string(PluginErrorKind::StructSizeMismatch), "struct-size-mismatch");
+}
+
+}  // namespace
+}  // namespace mhd

@@ -1,0 +1,86 @@
+#include "plugin_file.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace mhd::test {
+namespace {
+
+TEST(SimOmni3Plugin, TheTableIdentifiesABase) {
+  const PluginFile file(MHD_SIM_OMNI3_PLUGIN);
+  EXPECT_EQ(file.entry(MHD_PLUGIN_ABI_VERSION + 1), nullptr);
+  const mhd_plugin_api& api = file.api();
+  EXPECT_EQ(api.abi_version, MHD_PLUGIN_ABI_VERSION);
+  EXPECT_EQ(api.struct_size, sizeof(mhd_plugin_api));
+  EXPECT_EQ(api.kind, MHD_KIND_BASE);
+  EXPECT_STREQ(api.name, "sim_omni3");
+  EXPECT_NE(api.base_read, nullptr);
+  EXPECT_NE(api.base_write, nullptr);
+  EXPECT_NE(api.simulate_until, nullptr);
+  EXPECT_EQ(api.device_read, nullptr);
+  EXPECT_EQ(api.tracker_read, nullptr);
+}
+
+TEST(SimOmni3Plugin, OpenRejectsUnknownAndMalformedParameters) {
+  const PluginFile file(MHD_SIM_OMNI3_PLUGIN);
+  FakeHost h;
+  EXPECT_EQ(open_plugin(file.api(), h.host, {{"speed", "1"}}).error,
+            "unknown parameter 'speed' (known: base_radius_m, wheel_radius_m, max_speed_mps, max_omega_degps, "
+            "control_rate_hz, motor_time_constant_s, max_wheel_accel_mps2, slip_fraction, watchdog_s, seed, x_m, z_m, "
+            "heading_deg)");
+  EXPECT_EQ(open_plugin(file.api(), h.host, {{"max_speed_mps", "fast"}}).error,
+            "parameter 'max_speed_mps' must be a positive number, got 'fast'");
+  EXPECT_EQ(open_plugin(file.api(), h.host, {{"slip_fraction", "1.5"}}).error,
+            "parameter 'slip_fraction' must be a number in [0, 1), got '1.5'");
+  mhd_host old_host = h.host;
+  old_host.abi_version = 0;
+  EXPECT_EQ(open_plugin(file.api(), old_host, {}).error, "host ABI version 0 is not 1");
+}
+
+TEST(SimOmni3Plugin, DrivesTheBaseAndMovesItInTheSimulatedWorld) {
+  const PluginFile file(MHD_SIM_OMNI3_PLUGIN);
+  const mhd_plugin_api& api = file.api();
+  FakeHost h;
+  h.world.set_base_pose({1.0, 2.0, 0.0});  // the plugin starts where the world has the base
+  const Opened opened = open_plugin(api, h.host, {{"seed", "3"}, {"heading_deg", "0"}});
+  ASSERT_NE(opened.instance, nullptr) << opened.error;
+  mhd_plugin_instance* base = opened.instance;
+  mhd_error err{};
+  ASSERT_EQ(api.start(base, &err), MHD_OK) << err.message;
+
+  mhd_base_state state{};
+  ASSERT_EQ(api.base_read(base, &state, &err), MHD_OK) << err.message;
+  EXPECT_EQ(state.x_m, 1.0);
+  EXPECT_EQ(state.z_m, 2.0);
+  EXPECT_EQ(api.base_read(base, &state, &err), MHD_NO_DATA);  // nothing new yet
+
+  // 10 Hz commands of 0.25 m/s ahead for 2 s, simulated at 100 Hz, then a stop.
+  for (int k = 0; k <= 20; ++k) {
+    h.now_s = 0.1 * k;
+    const mhd_base_command command{h.now_s, k < 20 ? 0.25 : 0.0, 0.0, 0.0};
+    ASSERT_EQ(api.base_write(base, &command, &err), MHD_OK) << err.message;
+    for (int i = 1; i <= 10; ++i) ASSERT_EQ(api.simulate_until(base, 0.1 * k + 0.01 * i, &err), MHD_OK);
+  }
+  ASSERT_EQ(api.simulate_until(base, 3.0, &err), MHD_OK);
+  ASSERT_EQ(api.base_read(base, &state, &err), MHD_OK);
+  EXPECT_NEAR(state.timestamp_s, 3.0, 1e-12);
+  EXPECT_NEAR(state.x_m, 1.5, 1e-9);
+  EXPECT_NEAR(state.z_m, 2.0, 1e-12);
+  EXPECT_NEAR(state.vx_mps, 0.0, 1e-6);
+  const simulation::PlanarPose world_base = h.world.base_pose();
+  EXPECT_EQ(world_base.x_m, state.x_m);
+  EXPECT_EQ(world_base.z_m, state.z_m);
+
+  const mhd_base_command bad{0.0, std::nan(""), 0.0, 0.0};
+  EXPECT_EQ(api.base_write(base, &bad, &err), MHD_ERROR);
+  EXPECT_STREQ(err.message, "base command has a non-finite value");
+
+  ASSERT_EQ(api.stop(base, &err), MHD_OK);
+  EXPECT_EQ(api.base_read(base, &state, &err), MHD_ERROR);
+  EXPECT_STREQ(err.message, "sim_omni3 is not started");
+  api.close(base);
+}
+
+}  // namespace
+}  // namespace mhd::test
