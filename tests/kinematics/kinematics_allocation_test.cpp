@@ -1,30 +1,16 @@
 // The rig's per-tick functions run in the 1 kHz haptic thread: they must not allocate.
-// This binary replaces the global operator new to count allocations while counting is on.
+// Counted with test::AllocationCounter (its own binary: it replaces operator new).
 
 #include "kinematics/rig.h"
 
 #include "scene_xml/scene_reader.h"
 
+#include "support/allocation_counter.h"
+
 #include <gtest/gtest.h>
 
-#include <atomic>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
-#include <new>
-
-namespace {
-std::atomic<bool> g_counting{false};
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-  if (g_counting.load(std::memory_order_relaxed)) g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace mhd {
 namespace {
@@ -36,8 +22,7 @@ TEST(KinematicsAllocation, PerTickRigFunctionsAllocateNothing) {
   ASSERT_TRUE(built.ok());
   const Rig& rig = *built.rig;
 
-  g_allocations = 0;
-  g_counting = true;
+  test::AllocationCounter allocations;
   double sum = 0;
   for (int i = 0; i < 3000; ++i) {
     const double t = 0.001 * i;
@@ -53,9 +38,9 @@ TEST(KinematicsAllocation, PerTickRigFunctionsAllocateNothing) {
     const PhantomIkResult ik = phantom_inverse_kinematics(rig.device(), rig.p_P_from_W(X_W_robot, p_W));
     sum += p_W.sum() + X_W_tool.translation().sum() + tau.sum() + J.sum() + ik.q_rad.sum();
   }
-  g_counting = false;
+  allocations.stop();
   EXPECT_TRUE(std::isfinite(sum));
-  EXPECT_EQ(g_allocations.load(), 0);
+  EXPECT_EQ(allocations.count(), 0);
 }
 
 }  // namespace

@@ -1,35 +1,20 @@
 // The predictor runs in the 1 kHz haptic thread: feeding and querying it must not allocate.
-// This binary replaces the global operator new to count allocations while counting is on.
+// Counted with test::AllocationCounter (its own binary: it replaces operator new).
 
 #include "prediction/base_pose_predictor.h"
 
+#include "support/allocation_counter.h"
+
 #include <gtest/gtest.h>
 
-#include <atomic>
 #include <cmath>
-#include <cstdlib>
-#include <new>
-
-namespace {
-std::atomic<bool> g_counting{false};
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-  if (g_counting.load(std::memory_order_relaxed)) g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace mhd {
 namespace {
 
 TEST(BasePosePredictorAllocation, FeedingAndPredictingAllocatesNothing) {
   BasePosePredictor predictor;
-  g_allocations = 0;
-  g_counting = true;
+  test::AllocationCounter allocations;
   double sum = 0;
   for (int i = 0; i < 5000; ++i) {
     const double t = 0.001 * i;
@@ -39,9 +24,9 @@ TEST(BasePosePredictorAllocation, FeedingAndPredictingAllocatesNothing) {
     const BasePose out = predictor.predict(t);
     sum += out.x_m + predictor.age_s(t);
   }
-  g_counting = false;
+  allocations.stop();
   EXPECT_TRUE(std::isfinite(sum));
-  EXPECT_EQ(g_allocations.load(), 0);
+  EXPECT_EQ(allocations.count(), 0);
 }
 
 }  // namespace

@@ -1,28 +1,14 @@
-// step_proxy must not allocate: it runs in the 1 kHz haptic thread. This binary replaces
-// the global operator new to count allocations made while counting is switched on.
+// step_proxy must not allocate: it runs in the 1 kHz haptic thread. Counted with
+// test::AllocationCounter (its own binary: the counter replaces operator new).
 
 #include "proxy/god_object.h"
 
 #include "geometry/primitive_mesh.h"
 
+#include "support/allocation_counter.h"
+
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
-
-namespace {
-std::atomic<bool> g_counting{false};
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-void* operator new(std::size_t size) {
-  if (g_counting.load(std::memory_order_relaxed)) g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace mhd {
 namespace {
@@ -42,8 +28,7 @@ TEST(GodObjectAllocation, StepProxyAllocatesNothing) {
   ProxyState state;
   reset_proxy(state, Eigen::Vector3d(0, 0, 0.15));
 
-  g_allocations = 0;
-  g_counting = true;
+  test::AllocationCounter allocations;
   int contact_ticks = 0;
   // Press in, circle around the sphere 8 mm deep (friction, shading, edges), come out.
   for (int i = 0; i < 3000; ++i) {
@@ -53,9 +38,9 @@ TEST(GodObjectAllocation, StepProxyAllocatesNothing) {
     const ProxyOutput out = step_proxy(world, materials, settings, state, hip, 1e-3);
     if (out.in_contact) ++contact_ticks;
   }
-  g_counting = false;
+  allocations.stop();
   EXPECT_GT(contact_ticks, 2000);
-  EXPECT_EQ(g_allocations.load(), 0);
+  EXPECT_EQ(allocations.count(), 0);
 }
 
 }  // namespace
