@@ -61,6 +61,9 @@ function(mhd_add_plugin)
   mhd_set_warnings(${target})
   # A symbol the plugin forgot to link is a build error, not a dlopen failure later.
   target_link_options(${target} PRIVATE "LINKER:--no-undefined")
+  # Engine libraries a plugin links stay out of its dynamic table (only the entry is
+  # exported), so they never interpose with the host's own copies.
+  target_link_options(${target} PRIVATE "LINKER:--exclude-libs,ALL")
   if(NOT ARG_NO_INSTALL)
     install(TARGETS ${target} LIBRARY DESTINATION "${MHD_PLUGIN_INSTALL_DIR}")
   endif()

@@ -1,0 +1,197 @@
+// The sim_phantom device plugin: the C ABI over PhantomSimModel. Torques are stamped with
+// the host clock when they arrive; the host advances the device with simulate_until(),
+// which reads the hand and the base pose from the simulated world (without a world: a
+// fixed hand, parameter hand_P_m, in the device frame). docs/sim_phantom.md.
+
+#include "sim_phantom_model.h"
+#include "sim_common/plugin_params.h"
+#include "sim_common/plugin_shell.h"
+
+#include "geometry/pose.h"
+
+#include <mhd/plugin_abi.h>
+
+#include <cmath>
+#include <mutex>
+#include <numbers>
+#include <stdexcept>
+
+namespace mhd::sim_phantom {
+namespace {
+
+using plugin_support::guarded;
+using plugin_support::guarded_open;
+
+constexpr double kDegToRad = std::numbers::pi / 180.0;
+
+struct Config {
+  PhantomSimConfig model;
+  Eigen::Vector3d rest_hand_P_m = Eigen::Vector3d::Zero();
+};
+
+struct Instance {
+  Instance(const mhd_host& h, const Config& config) : host(h), model(config.model), rest_hand_P_m(config.rest_hand_P_m) {}
+
+  std::mutex mutex;
+  mhd_host host;
+  PhantomSimModel model;
+  Eigen::Vector3d rest_hand_P_m;
+  bool started = false;
+  bool read_once = false;
+  double last_read_time_s = 0.0;
+
+  /// The hand in P: the world's hand seen from the device at the world's base pose.
+  Eigen::Vector3d hand_P() const {
+    if (host.sim_world == nullptr) return rest_hand_P_m;
+    const mhd_sim_world& w = *host.sim_world;
+    BasePose base;
+    w.get_base_pose(w.context, &base.x_m, &base.z_m, &base.heading_rad);
+    Eigen::Vector3d p_W;
+    w.get_hand(w.context, p_W.data());
+    return model.p_P_from_W(base, p_W);
+  }
+};
+
+Instance& self_of(mhd_plugin_instance* self) {
+  if (self == nullptr) throw std::invalid_argument("instance is NULL");
+  return *reinterpret_cast<Instance*>(self);
+}
+
+void require_started(const Instance& s) {
+  if (!s.started) throw std::logic_error("sim_phantom is not started");
+}
+
+Eigen::Isometry3d read_pose(plugin_support::ParamReader& reader, const char* position_name, const char* rpy_name,
+                            const Eigen::Isometry3d& fallback) {
+  const std::optional<Eigen::Vector3d> p = reader.optional_vector3(position_name);
+  const std::optional<Eigen::Vector3d> rpy_deg = reader.optional_vector3(rpy_name);
+  Eigen::Isometry3d X = fallback;
+  if (rpy_deg) X.linear() = rotation_from_rpy(*rpy_deg * kDegToRad);
+  if (p) X.translation() = *p;
+  return X;
+}
+
+Config read_config(const mhd_param* params, std::size_t count) {
+  plugin_support::ParamReader reader(params, count);
+  Config c;
+  PhantomSimConfig& m = c.model;
+  m.hand_stiffness_N_per_m = reader.positive("hand_stiffness_N_per_m", m.hand_stiffness_N_per_m);
+  m.watchdog_s = reader.positive("watchdog_s", m.watchdog_s);
+  m.position_resolution_m = reader.non_negative("position_resolution_m", m.position_resolution_m);
+  m.X_robot_phantom = read_pose(reader, "phantom_position_m", "phantom_rpy_deg", m.X_robot_phantom);
+  m.X_robot_base = read_pose(reader, "base_position_m", "base_rpy_deg", m.X_robot_base);
+  c.rest_hand_P_m = reader.vector3("hand_P_m", m.device.workspace.center_P_m());
+  reader.reject_unknown();
+  return c;
+}
+
+mhd_plugin_instance* open_instance(const mhd_host* host, const mhd_param* params, size_t param_count, mhd_error* err) {
+  return guarded_open(err, [&] {
+    plugin_support::check_host(host);
+    plugin_support::check_sim_world(*host);
+    auto* instance = new Instance(*host, read_config(params, param_count));
+    return reinterpret_cast<mhd_plugin_instance*>(instance);
+  });
+}
+
+mhd_status start_instance(mhd_plugin_instance* self, mhd_error* err) {
+  return guarded(err, [&] {
+    Instance& s = self_of(self);
+    const std::lock_guard lock(s.mutex);
+    const double now = plugin_support::host_now(s.host);
+    s.model.start(now);
+    s.model.simulate_until(now, s.hand_P());
+    s.started = true;
+    s.read_once = false;
+    return MHD_OK;
+  });
+}
+
+mhd_status stop_instance(mhd_plugin_instance* self, mhd_error* err) {
+  return guarded(err, [&] {
+    Instance& s = self_of(self);
+    const std::lock_guard lock(s.mutex);
+    s.started = false;
+    return MHD_OK;
+  });
+}
+
+void close_instance(mhd_plugin_instance* self) { delete reinterpret_cast<Instance*>(self); }
+
+mhd_status device_limits(mhd_plugin_instance* self, mhd_device_limits* out, mhd_error* err) {
+  return guarded(err, [&] {
+    Instance& s = self_of(self);
+    const std::lock_guard lock(s.mutex);
+    if (out == nullptr) throw std::invalid_argument("device_limits: out is NULL");
+    const Eigen::Vector3d tau = s.model.max_joint_torques_Nm();
+    *out = mhd_device_limits{s.model.config().max_force_N, {tau[0], tau[1], tau[2]}};
+    return MHD_OK;
+  });
+}
+
+mhd_status device_read(mhd_plugin_instance* self, mhd_device_state* out, mhd_error* err) {
+  return guarded(err, [&] {
+    Instance& s = self_of(self);
+    const std::lock_guard lock(s.mutex);
+    require_started(s);
+    if (out == nullptr) throw std::invalid_argument("device_read: out is NULL");
+    const double t = s.model.time_s();
+    if (s.read_once && t == s.last_read_time_s) return MHD_NO_DATA;
+    const Eigen::Vector3d& q = s.model.joint_angles_rad();
+    const Eigen::Vector3d& p = s.model.p_P_hip_m();
+    *out = mhd_device_state{t, {q[0], q[1], q[2]}, {p[0], p[1], p[2]}, 0u};
+    s.read_once = true;
+    s.last_read_time_s = t;
+    return MHD_OK;
+  });
+}
+
+mhd_status device_write(mhd_plugin_instance* self, const mhd_device_command* command, mhd_error* err) {
+  return guarded(err, [&] {
+    Instance& s = self_of(self);
+    const std::lock_guard lock(s.mutex);
+    require_started(s);
+    if (command == nullptr) throw std::invalid_argument("device_write: command is NULL");
+    const Eigen::Vector3d tau(command->joint_torques_Nm[0], command->joint_torques_Nm[1], command->joint_torques_Nm[2]);
+    s.model.command(tau, plugin_support::host_now(s.host));
+    return MHD_OK;
+  });
+}
+
+mhd_status simulate_until(mhd_plugin_instance* self, double t_s, mhd_error* err) {
+  return guarded(err, [&] {
+    Instance& s = self_of(self);
+    const std::lock_guard lock(s.mutex);
+    require_started(s);
+    s.model.simulate_until(t_s, s.hand_P());
+    return MHD_OK;
+  });
+}
+
+constexpr mhd_plugin_api kApi = {
+    MHD_PLUGIN_ABI_VERSION,
+    sizeof(mhd_plugin_api),
+    MHD_PLUGIN_KIND,
+    MHD_PLUGIN_NAME,  // both from mhd_add_plugin, so the table matches the file name
+    "1.0.0",
+    "Simulated PHANToM Premium 1.5 held by the simulated hand: IK, hand spring, torque watchdog",
+    open_instance,
+    start_instance,
+    stop_instance,
+    close_instance,
+    device_limits,
+    device_read,
+    device_write,
+    nullptr,  // tracker_read
+    nullptr,  // base_read
+    nullptr,  // base_write
+    nullptr,  // display_write
+    simulate_until,
+};
+
+}  // namespace
+}  // namespace mhd::sim_phantom
+
+extern "C" MHD_PLUGIN_EXPORT const mhd_plugin_api* mhd_plugin_entry(uint32_t host_abi_version) {
+  return host_abi_version == MHD_PLUGIN_ABI_VERSION ? &mhd::sim_phantom::kApi : nullptr;
+}

@@ -1,0 +1,183 @@
+// The built libmhd_sim_phantom.so through the real dlopen path, with a fake host clock and
+// a SimulatedWorld; the world's hand is placed with the rig read from scenes/rigs/pomhi.xml.
+#include "plugin_file.h"
+
+#include "kinematics/rig.h"
+#include "scene_xml/scene_reader.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+#include <string>
+
+namespace mhd::test {
+namespace {
+
+Eigen::Vector3d hip_of(const mhd_device_state& s) { return {s.p_D_hip_m[0], s.p_D_hip_m[1], s.p_D_hip_m[2]}; }
+Eigen::Vector3d angles_of(const mhd_device_state& s) {
+  return {s.joint_angles_rad[0], s.joint_angles_rad[1], s.joint_angles_rad[2]};
+}
+
+Rig pomhi_rig() {
+  const SceneReadResult read = read_scene_file(std::filesystem::path(MHD_SOURCE_DIR) / "scenes/rigs/pomhi.xml");
+  EXPECT_TRUE(read.ok());
+  RigBuildResult built = Rig::from_scene(read.scene.value_or(SceneDescription{}));
+  EXPECT_TRUE(built.ok());
+  return *built.rig;
+}
+
+TEST(SimPhantomPlugin, TheTableIdentifiesADevice) {
+  // What `mhd plugins` lists: the entry's table, checked as the host checks it.
+  const PluginFile file(MHD_SIM_PHANTOM_PLUGIN);
+  EXPECT_EQ(file.entry(MHD_PLUGIN_ABI_VERSION + 1), nullptr);
+  const mhd_plugin_api& api = file.api();
+  EXPECT_EQ(api.abi_version, MHD_PLUGIN_ABI_VERSION);
+  EXPECT_EQ(api.struct_size, sizeof(mhd_plugin_api));
+  EXPECT_EQ(api.kind, MHD_KIND_DEVICE);
+  EXPECT_STREQ(api.name, "sim_phantom");
+  EXPECT_STREQ(api.version, "1.0.0");
+  EXPECT_NE(api.description, nullptr);
+  EXPECT_NE(api.device_limits, nullptr);
+  EXPECT_NE(api.device_read, nullptr);
+  EXPECT_NE(api.device_write, nullptr);
+  EXPECT_NE(api.simulate_until, nullptr);
+  EXPECT_EQ(api.base_read, nullptr);
+  EXPECT_EQ(api.tracker_read, nullptr);
+  EXPECT_EQ(api.display_write, nullptr);
+}
+
+TEST(SimPhantomPlugin, OpenRejectsUnknownAndMalformedParameters) {
+  const PluginFile file(MHD_SIM_PHANTOM_PLUGIN);
+  FakeHost h;
+  EXPECT_EQ(open_plugin(file.api(), h.host, {{"stiffness", "1"}}).error,
+            "unknown parameter 'stiffness' (known: hand_stiffness_N_per_m, watchdog_s, position_resolution_m, "
+            "phantom_position_m, phantom_rpy_deg, base_position_m, base_rpy_deg, hand_P_m)");
+  EXPECT_EQ(open_plugin(file.api(), h.host, {{"hand_stiffness_N_per_m", "-5"}}).error,
+            "parameter 'hand_stiffness_N_per_m' must be a positive number, got '-5'");
+  EXPECT_EQ(open_plugin(file.api(), h.host, {{"position_resolution_m", "fine"}}).error,
+            "parameter 'position_resolution_m' must be a non-negative number, got 'fine'");
+  EXPECT_EQ(open_plugin(file.api(), h.host, {{"hand_P_m", "0 0.1"}}).error,
+            "parameter 'hand_P_m' must be three numbers 'x y z', got '0 0.1'");
+  mhd_host old_host = h.host;
+  old_host.abi_version = 0;
+  EXPECT_EQ(open_plugin(file.api(), old_host, {}).error, "host ABI version 0 is not 1");
+}
+
+TEST(SimPhantomPlugin, FollowsTheWorldsHandAndIsPushedByTorques) {
+  const PluginFile file(MHD_SIM_PHANTOM_PLUGIN);
+  const mhd_plugin_api& api = file.api();
+  const Rig rig = pomhi_rig();
+  FakeHost h;
+  const BasePose base{0.5, -0.3, 0.4};
+  h.world.set_base_pose({base.x_m, base.z_m, base.heading_rad});
+  const Pose X_W_P = rig.X_W_phantom(rig.X_W_robot_from_base(base));
+  const Eigen::Vector3d hand_P(0.03, 0.12, -0.02);
+  h.world.set_hand(X_W_P * hand_P);
+
+  const Opened opened = open_plugin(api, h.host, {{"position_resolution_m", "0"}});
+  ASSERT_NE(opened.instance, nullptr) << opened.error;
+  mhd_plugin_instance* device = opened.instance;
+  mhd_error err{};
+  mhd_device_limits limits{};
+  ASSERT_EQ(api.device_limits(device, &limits, &err), MHD_OK) << err.message;
+  EXPECT_EQ(limits.max_force_N, 8.5);
+  for (const double tau : limits.max_joint_torque_Nm) {
+    EXPECT_GT(tau, 0.5);
+    EXPECT_LT(tau, 8.5 * 0.42);
+  }
+
+  h.now_s = 1.0;
+  ASSERT_EQ(api.start(device, &err), MHD_OK) << err.message;
+  mhd_device_state state{};
+  ASSERT_EQ(api.device_read(device, &state, &err), MHD_OK) << err.message;
+  EXPECT_EQ(state.timestamp_s, 1.0);
+  EXPECT_LT((hip_of(state) - hand_P).norm(), 1e-9);
+  EXPECT_LT((phantom_tool_position(rig.device().geometry, angles_of(state)) - hip_of(state)).norm(), 1e-15);
+  EXPECT_EQ(api.device_read(device, &state, &err), MHD_NO_DATA);
+
+  // The hand moves in the world.
+  const Eigen::Vector3d hand2_P(-0.05, 0.16, 0.03);
+  h.world.set_hand(X_W_P * hand2_P);
+  ASSERT_EQ(api.simulate_until(device, 1.001, &err), MHD_OK) << err.message;
+  ASSERT_EQ(api.device_read(device, &state, &err), MHD_OK);
+  EXPECT_EQ(state.timestamp_s, 1.001);
+  EXPECT_LT((hip_of(state) - hand2_P).norm(), 1e-9);
+
+  // A force of (2, 0, -1) N in P, as the host commands it: tau = J^T F.
+  const Eigen::Vector3d F(2.0, 0.0, -1.0);
+  const Eigen::Vector3d tau = phantom_joint_torques(rig.device().geometry, angles_of(state), F);
+  h.now_s = 1.001;
+  const mhd_device_command command{h.now_s, {tau[0], tau[1], tau[2]}};
+  ASSERT_EQ(api.device_write(device, &command, &err), MHD_OK) << err.message;
+  ASSERT_EQ(api.simulate_until(device, 1.002, &err), MHD_OK);
+  ASSERT_EQ(api.device_read(device, &state, &err), MHD_OK);
+  EXPECT_LT((hip_of(state) - (hand2_P + F / 2000.0)).norm(), 1e-9);
+
+  // The host stalls: 0.1 s later the force is gone.
+  ASSERT_EQ(api.simulate_until(device, 1.2, &err), MHD_OK);
+  ASSERT_EQ(api.device_read(device, &state, &err), MHD_OK);
+  EXPECT_LT((hip_of(state) - hand2_P).norm(), 1e-9);
+
+  const mhd_device_command bad{h.now_s, {0.0, std::nan(""), 0.0}};
+  EXPECT_EQ(api.device_write(device, &bad, &err), MHD_ERROR);
+  EXPECT_STREQ(err.message, "device command has a non-finite value");
+
+  ASSERT_EQ(api.stop(device, &err), MHD_OK);
+  EXPECT_EQ(api.device_read(device, &state, &err), MHD_ERROR);
+  EXPECT_STREQ(err.message, "sim_phantom is not started");
+  api.close(device);
+}
+
+TEST(SimPhantomPlugin, RigTransformsCanBeOverridden) {
+  const PluginFile file(MHD_SIM_PHANTOM_PLUGIN);
+  const mhd_plugin_api& api = file.api();
+  FakeHost h;
+  const BasePose base{-0.4, 0.2, -1.1};
+  h.world.set_base_pose({base.x_m, base.z_m, base.heading_rad});
+  // Robot 0.9 m above the floor, the device 0.1 m ahead of the robot, turned 20 deg about P's y.
+  const Pose X_robot_base = pose_from_xyz_rpy(Eigen::Vector3d(0.0, 0.0, -0.9), Eigen::Vector3d(std::numbers::pi / 2, 0.0, 0.0));
+  const Pose X_robot_phantom =
+      pose_from_xyz_rpy(Eigen::Vector3d(0.1, 0.0, 0.05), Eigen::Vector3d(std::numbers::pi / 2, 0.0, 0.0)) *
+      pose_from_xyz_rpy(Eigen::Vector3d::Zero(), Eigen::Vector3d(0.0, 20.0 * std::numbers::pi / 180.0, 0.0));
+  const Pose X_W_P = pose_from_base(base) * X_robot_base.inverse(Eigen::Isometry) * X_robot_phantom;
+  const Eigen::Vector3d hand_P(0.02, 0.11, 0.01);
+  h.world.set_hand(X_W_P * hand_P);
+  const Eigen::Vector3d rpy_deg = X_robot_phantom.linear().eulerAngles(2, 1, 0).reverse() * (180.0 / std::numbers::pi);
+  const std::string rpy = std::to_string(rpy_deg.x()) + " " + std::to_string(rpy_deg.y()) + " " + std::to_string(rpy_deg.z());
+  const Opened opened = open_plugin(api, h.host,
+                                    {{"position_resolution_m", "0"},
+                                     {"phantom_position_m", "0.1 0 0.05"},
+                                     {"phantom_rpy_deg", rpy.c_str()},
+                                     {"base_position_m", "0 0 -0.9"},
+                                     {"base_rpy_deg", "90 0 0"}});
+  ASSERT_NE(opened.instance, nullptr) << opened.error;
+  mhd_error err{};
+  ASSERT_EQ(api.start(opened.instance, &err), MHD_OK) << err.message;
+  mhd_device_state state{};
+  ASSERT_EQ(api.device_read(opened.instance, &state, &err), MHD_OK);
+  // rpy printed with 6 decimals: 1e-6 deg of rotation error over ~1.3 m.
+  EXPECT_LT((hip_of(state) - hand_P).norm(), 1e-6);
+  api.close(opened.instance);
+}
+
+TEST(SimPhantomPlugin, WithoutAWorldTheHandRestsAtHandP) {
+  const PluginFile file(MHD_SIM_PHANTOM_PLUGIN);
+  const mhd_plugin_api& api = file.api();
+  FakeHost h;
+  const Opened opened = open_plugin(api, h.host_without_world, {{"hand_P_m", "0.01 0.1 0.02"}});
+  ASSERT_NE(opened.instance, nullptr) << opened.error;
+  mhd_error err{};
+  ASSERT_EQ(api.start(opened.instance, &err), MHD_OK) << err.message;
+  ASSERT_EQ(api.simulate_until(opened.instance, 0.5, &err), MHD_OK) << err.message;
+  mhd_device_state state{};
+  ASSERT_EQ(api.device_read(opened.instance, &state, &err), MHD_OK);
+  EXPECT_EQ(state.timestamp_s, 0.5);
+  // Default resolution 0.03 mm: within 1.5 resolution steps.
+  EXPECT_LT((hip_of(state) - Eigen::Vector3d(0.01, 0.1, 0.02)).norm(), 1.5 * 0.03e-3);
+  api.close(opened.instance);
+}
+
+}  // namespace
+}  // namespace mhd::test
