@@ -5,6 +5,9 @@
 #include <mhd/plugin_abi.h>
 
 #include <exception>
+#include <mutex>
+#include <stdexcept>
+#include <string>
 #include <string_view>
 
 namespace mhd::plugin_support {
@@ -45,6 +48,25 @@ mhd_plugin_instance* guarded_open(mhd_error* err, F&& f) noexcept {
     set_error(err, "unknown exception");
   }
   return nullptr;
+}
+
+/// What a call needs of the instance: only that it is open, or that it runs (started).
+enum class Need { Open, Running };
+
+/// The frame of every instance call of a shell: the plugin's Instance (a struct with
+/// `std::mutex mutex` and `bool started`) is taken from `self`, locked and, for
+/// Need::Running, checked to be started ("<plugin> is not started"); then f(instance)
+/// runs as guarded() does.
+template <class Instance, class F>
+mhd_status with_instance(std::string_view plugin, mhd_plugin_instance* self, Need need, mhd_error* err,
+                         F&& f) noexcept {
+  return guarded(err, [&]() -> mhd_status {
+    if (self == nullptr) throw std::invalid_argument("instance is NULL");
+    Instance& instance = *reinterpret_cast<Instance*>(self);
+    const std::lock_guard lock(instance.mutex);
+    if (need == Need::Running && !instance.started) throw std::logic_error(std::string(plugin) + " is not started");
+    return f(instance);
+  });
 }
 
 }  // namespace mhd::plugin_support

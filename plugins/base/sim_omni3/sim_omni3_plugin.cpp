@@ -12,11 +12,11 @@
 #include <mutex>
 #include <numbers>
 #include <stdexcept>
+#include <utility>
 
 namespace mhd::sim_omni3 {
 namespace {
 
-using plugin_support::guarded;
 using plugin_support::guarded_open;
 
 constexpr double kDegToRad = std::numbers::pi / 180.0;
@@ -37,15 +37,6 @@ struct Instance {
     host.sim_world->set_base_pose(host.sim_world->context, p.x_m, p.z_m, p.heading_rad);
   }
 };
-
-Instance& self_of(mhd_plugin_instance* self) {
-  if (self == nullptr) throw std::invalid_argument("instance is NULL");
-  return *reinterpret_cast<Instance*>(self);
-}
-
-void require_started(const Instance& s) {
-  if (!s.started) throw std::logic_error("sim_omni3 is not started");
-}
 
 Omni3Config read_config(const mhd_host& host, const mhd_param* params, std::size_t count) {
   plugin_support::ParamReader reader(params, count);
@@ -80,10 +71,14 @@ mhd_plugin_instance* open_instance(const mhd_host* host, const mhd_param* params
   });
 }
 
+// Every instance call: find, lock and (for Need::Running) check the instance.
+template <class F>
+mhd_status call(mhd_plugin_instance* self, plugin_support::Need need, mhd_error* err, F&& f) {
+  return plugin_support::with_instance<Instance>(MHD_PLUGIN_NAME, self, need, err, std::forward<F>(f));
+}
+
 mhd_status start_instance(mhd_plugin_instance* self, mhd_error* err) {
-  return guarded(err, [&] {
-    Instance& s = self_of(self);
-    const std::lock_guard lock(s.mutex);
+  return call(self, plugin_support::Need::Open, err, [&](Instance& s) {
     s.model.start(plugin_support::host_now(s.host));
     s.started = true;
     s.read_once = false;
@@ -93,9 +88,7 @@ mhd_status start_instance(mhd_plugin_instance* self, mhd_error* err) {
 }
 
 mhd_status stop_instance(mhd_plugin_instance* self, mhd_error* err) {
-  return guarded(err, [&] {
-    Instance& s = self_of(self);
-    const std::lock_guard lock(s.mutex);
+  return call(self, plugin_support::Need::Open, err, [&](Instance& s) {
     s.started = false;  // the base stands where it is; start() begins again from here
     return MHD_OK;
   });
@@ -104,10 +97,7 @@ mhd_status stop_instance(mhd_plugin_instance* self, mhd_error* err) {
 void close_instance(mhd_plugin_instance* self) { delete reinterpret_cast<Instance*>(self); }
 
 mhd_status base_read(mhd_plugin_instance* self, mhd_base_state* out, mhd_error* err) {
-  return guarded(err, [&] {
-    Instance& s = self_of(self);
-    const std::lock_guard lock(s.mutex);
-    require_started(s);
+  return call(self, plugin_support::Need::Running, err, [&](Instance& s) {
     if (out == nullptr) throw std::invalid_argument("base_read: out is NULL");
     const double t = s.model.time_s();
     if (s.read_once && t == s.last_read_time_s) return MHD_NO_DATA;
@@ -121,10 +111,7 @@ mhd_status base_read(mhd_plugin_instance* self, mhd_base_state* out, mhd_error* 
 }
 
 mhd_status base_write(mhd_plugin_instance* self, const mhd_base_command* command, mhd_error* err) {
-  return guarded(err, [&] {
-    Instance& s = self_of(self);
-    const std::lock_guard lock(s.mutex);
-    require_started(s);
+  return call(self, plugin_support::Need::Running, err, [&](Instance& s) {
     if (command == nullptr) throw std::invalid_argument("base_write: command is NULL");
     s.model.command(Twist(command->vx_mps, command->vz_mps, command->omega_radps), plugin_support::host_now(s.host));
     return MHD_OK;
@@ -132,10 +119,7 @@ mhd_status base_write(mhd_plugin_instance* self, const mhd_base_command* command
 }
 
 mhd_status simulate_until(mhd_plugin_instance* self, double t_s, mhd_error* err) {
-  return guarded(err, [&] {
-    Instance& s = self_of(self);
-    const std::lock_guard lock(s.mutex);
-    require_started(s);
+  return call(self, plugin_support::Need::Running, err, [&](Instance& s) {
     s.model.simulate_until(t_s);
     s.publish_pose();
     return MHD_OK;

@@ -15,11 +15,11 @@
 #include <mutex>
 #include <numbers>
 #include <stdexcept>
+#include <utility>
 
 namespace mhd::sim_phantom {
 namespace {
 
-using plugin_support::guarded;
 using plugin_support::guarded_open;
 
 constexpr double kDegToRad = std::numbers::pi / 180.0;
@@ -51,15 +51,6 @@ struct Instance {
     return model.p_P_from_W(base, p_W);
   }
 };
-
-Instance& self_of(mhd_plugin_instance* self) {
-  if (self == nullptr) throw std::invalid_argument("instance is NULL");
-  return *reinterpret_cast<Instance*>(self);
-}
-
-void require_started(const Instance& s) {
-  if (!s.started) throw std::logic_error("sim_phantom is not started");
-}
 
 Eigen::Isometry3d read_pose(plugin_support::ParamReader& reader, const char* position_name, const char* rpy_name,
                             const Eigen::Isometry3d& fallback) {
@@ -94,10 +85,14 @@ mhd_plugin_instance* open_instance(const mhd_host* host, const mhd_param* params
   });
 }
 
+// Every instance call: find, lock and (for Need::Running) check the instance.
+template <class F>
+mhd_status call(mhd_plugin_instance* self, plugin_support::Need need, mhd_error* err, F&& f) {
+  return plugin_support::with_instance<Instance>(MHD_PLUGIN_NAME, self, need, err, std::forward<F>(f));
+}
+
 mhd_status start_instance(mhd_plugin_instance* self, mhd_error* err) {
-  return guarded(err, [&] {
-    Instance& s = self_of(self);
-    const std::lock_guard lock(s.mutex);
+  return call(self, plugin_support::Need::Open, err, [&](Instance& s) {
     const double now = plugin_support::host_now(s.host);
     s.model.start(now);
     s.model.simulate_until(now, s.hand_P());
@@ -108,9 +103,7 @@ mhd_status start_instance(mhd_plugin_instance* self, mhd_error* err) {
 }
 
 mhd_status stop_instance(mhd_plugin_instance* self, mhd_error* err) {
-  return guarded(err, [&] {
-    Instance& s = self_of(self);
-    const std::lock_guard lock(s.mutex);
+  return call(self, plugin_support::Need::Open, err, [&](Instance& s) {
     s.started = false;
     return MHD_OK;
   });
@@ -119,9 +112,7 @@ mhd_status stop_instance(mhd_plugin_instance* self, mhd_error* err) {
 void close_instance(mhd_plugin_instance* self) { delete reinterpret_cast<Instance*>(self); }
 
 mhd_status device_limits(mhd_plugin_instance* self, mhd_device_limits* out, mhd_error* err) {
-  return guarded(err, [&] {
-    Instance& s = self_of(self);
-    const std::lock_guard lock(s.mutex);
+  return call(self, plugin_support::Need::Open, err, [&](Instance& s) {
     if (out == nullptr) throw std::invalid_argument("device_limits: out is NULL");
     const Eigen::Vector3d tau = s.model.max_joint_torques_Nm();
     *out = mhd_device_limits{s.model.config().max_force_N, {tau[0], tau[1], tau[2]}};
@@ -130,10 +121,7 @@ mhd_status device_limits(mhd_plugin_instance* self, mhd_device_limits* out, mhd_
 }
 
 mhd_status device_read(mhd_plugin_instance* self, mhd_device_state* out, mhd_error* err) {
-  return guarded(err, [&] {
-    Instance& s = self_of(self);
-    const std::lock_guard lock(s.mutex);
-    require_started(s);
+  return call(self, plugin_support::Need::Running, err, [&](Instance& s) {
     if (out == nullptr) throw std::invalid_argument("device_read: out is NULL");
     const double t = s.model.time_s();
     if (s.read_once && t == s.last_read_time_s) return MHD_NO_DATA;
@@ -147,10 +135,7 @@ mhd_status device_read(mhd_plugin_instance* self, mhd_device_state* out, mhd_err
 }
 
 mhd_status device_write(mhd_plugin_instance* self, const mhd_device_command* command, mhd_error* err) {
-  return guarded(err, [&] {
-    Instance& s = self_of(self);
-    const std::lock_guard lock(s.mutex);
-    require_started(s);
+  return call(self, plugin_support::Need::Running, err, [&](Instance& s) {
     if (command == nullptr) throw std::invalid_argument("device_write: command is NULL");
     const Eigen::Vector3d tau(command->joint_torques_Nm[0], command->joint_torques_Nm[1], command->joint_torques_Nm[2]);
     s.model.command(tau, plugin_support::host_now(s.host));
@@ -159,10 +144,7 @@ mhd_status device_write(mhd_plugin_instance* self, const mhd_device_command* com
 }
 
 mhd_status simulate_until(mhd_plugin_instance* self, double t_s, mhd_error* err) {
-  return guarded(err, [&] {
-    Instance& s = self_of(self);
-    const std::lock_guard lock(s.mutex);
-    require_started(s);
+  return call(self, plugin_support::Need::Running, err, [&](Instance& s) {
     s.model.simulate_until(t_s, s.hand_P());
     return MHD_OK;
   });

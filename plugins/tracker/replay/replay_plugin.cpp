@@ -16,7 +16,6 @@
 namespace mhd::tracker_replay {
 namespace {
 
-using plugin_support::guarded;
 using plugin_support::guarded_open;
 
 struct Instance {
@@ -28,11 +27,6 @@ struct Instance {
   bool started = false;
 };
 
-Instance& self_of(mhd_plugin_instance* self) {
-  if (self == nullptr) throw std::invalid_argument("instance is NULL");
-  return *reinterpret_cast<Instance*>(self);
-}
-
 mhd_plugin_instance* open_instance(const mhd_host* host, const mhd_param* params, size_t param_count, mhd_error* err) {
   return guarded_open(err, [&] {
     plugin_support::check_host(host);
@@ -43,10 +37,14 @@ mhd_plugin_instance* open_instance(const mhd_host* host, const mhd_param* params
   });
 }
 
+// Every instance call: find, lock and (for Need::Running) check the instance.
+template <class F>
+mhd_status call(mhd_plugin_instance* self, plugin_support::Need need, mhd_error* err, F&& f) {
+  return plugin_support::with_instance<Instance>(MHD_PLUGIN_NAME, self, need, err, std::forward<F>(f));
+}
+
 mhd_status start_instance(mhd_plugin_instance* self, mhd_error* err) {
-  return guarded(err, [&] {
-    Instance& s = self_of(self);
-    const std::lock_guard lock(s.mutex);
+  return call(self, plugin_support::Need::Open, err, [&](Instance& s) {
     s.model.start(plugin_support::host_now(s.host));
     s.started = true;
     return MHD_OK;
@@ -54,9 +52,7 @@ mhd_status start_instance(mhd_plugin_instance* self, mhd_error* err) {
 }
 
 mhd_status stop_instance(mhd_plugin_instance* self, mhd_error* err) {
-  return guarded(err, [&] {
-    Instance& s = self_of(self);
-    const std::lock_guard lock(s.mutex);
+  return call(self, plugin_support::Need::Open, err, [&](Instance& s) {
     s.started = false;
     return MHD_OK;
   });
@@ -66,10 +62,7 @@ void close_instance(mhd_plugin_instance* self) { delete reinterpret_cast<Instanc
 
 mhd_status tracker_read(mhd_plugin_instance* self, mhd_tracker_sample* out, size_t capacity, size_t* count,
                         mhd_error* err) {
-  return guarded(err, [&] {
-    Instance& s = self_of(self);
-    const std::lock_guard lock(s.mutex);
-    if (!s.started) throw std::logic_error("replay is not started");
+  return call(self, plugin_support::Need::Running, err, [&](Instance& s) {
     if (count == nullptr || (out == nullptr && capacity > 0)) throw std::invalid_argument("tracker_read: NULL output");
     *count = s.model.read(plugin_support::host_now(s.host), std::span(out, capacity));
     return *count > 0 ? MHD_OK : MHD_NO_DATA;

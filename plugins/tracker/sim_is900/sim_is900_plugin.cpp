@@ -11,12 +11,12 @@
 #include <mutex>
 #include <numbers>
 #include <stdexcept>
+#include <utility>
 #include <string>
 
 namespace mhd::sim_is900 {
 namespace {
 
-using plugin_support::guarded;
 using plugin_support::guarded_open;
 
 constexpr double kDegToRad = std::numbers::pi / 180.0;
@@ -69,15 +69,6 @@ struct Instance {
   bool started = false;
 };
 
-Instance& self_of(mhd_plugin_instance* self) {
-  if (self == nullptr) throw std::invalid_argument("instance is NULL");
-  return *reinterpret_cast<Instance*>(self);
-}
-
-void require_started(const Instance& s) {
-  if (!s.started) throw std::logic_error("sim_is900 is not started");
-}
-
 Is900Config read_config(const mhd_param* params, std::size_t count) {
   plugin_support::ParamReader reader(params, count);
   Is900Config c;
@@ -112,10 +103,14 @@ mhd_plugin_instance* open_instance(const mhd_host* host, const mhd_param* params
   });
 }
 
+// Every instance call: find, lock and (for Need::Running) check the instance.
+template <class F>
+mhd_status call(mhd_plugin_instance* self, plugin_support::Need need, mhd_error* err, F&& f) {
+  return plugin_support::with_instance<Instance>(MHD_PLUGIN_NAME, self, need, err, std::forward<F>(f));
+}
+
 mhd_status start_instance(mhd_plugin_instance* self, mhd_error* err) {
-  return guarded(err, [&] {
-    Instance& s = self_of(self);
-    const std::lock_guard lock(s.mutex);
+  return call(self, plugin_support::Need::Open, err, [&](Instance& s) {
     s.model.start(plugin_support::host_now(s.host), read_world(*s.host.sim_world));
     s.started = true;
     return MHD_OK;
@@ -123,9 +118,7 @@ mhd_status start_instance(mhd_plugin_instance* self, mhd_error* err) {
 }
 
 mhd_status stop_instance(mhd_plugin_instance* self, mhd_error* err) {
-  return guarded(err, [&] {
-    Instance& s = self_of(self);
-    const std::lock_guard lock(s.mutex);
+  return call(self, plugin_support::Need::Open, err, [&](Instance& s) {
     s.started = false;
     return MHD_OK;
   });
@@ -135,10 +128,7 @@ void close_instance(mhd_plugin_instance* self) { delete reinterpret_cast<Instanc
 
 mhd_status tracker_read(mhd_plugin_instance* self, mhd_tracker_sample* out, size_t capacity, size_t* count,
                         mhd_error* err) {
-  return guarded(err, [&] {
-    Instance& s = self_of(self);
-    const std::lock_guard lock(s.mutex);
-    require_started(s);
+  return call(self, plugin_support::Need::Running, err, [&](Instance& s) {
     if (count == nullptr || (out == nullptr && capacity > 0)) throw std::invalid_argument("tracker_read: NULL output");
     *count = s.model.read(std::span(out, capacity));
     return *count > 0 ? MHD_OK : MHD_NO_DATA;
@@ -146,10 +136,7 @@ mhd_status tracker_read(mhd_plugin_instance* self, mhd_tracker_sample* out, size
 }
 
 mhd_status simulate_until(mhd_plugin_instance* self, double t_s, mhd_error* err) {
-  return guarded(err, [&] {
-    Instance& s = self_of(self);
-    const std::lock_guard lock(s.mutex);
-    require_started(s);
+  return call(self, plugin_support::Need::Running, err, [&](Instance& s) {
     s.model.simulate_until(t_s, read_world(*s.host.sim_world));
     return MHD_OK;
   });
