@@ -1,0 +1,94 @@
+#pragma once
+// The planner simulator of thesis ch. 3.6 (Fig. 3.8-3.10), faster than real time.
+//
+// Scene: the user stands at the origin facing +x (heading 0) with the hand arm's length
+// (settings.arm_length_m) in front; the base waits at its target, facing the user, planner
+// idle. At t = 0 the user is at a new position of a grid (and turned by a facing change),
+// hand again arm's length in front, and stands there. The planner runs at its command period
+// (10 Hz) on a velocity-controlled base (the twist held over each period, exact arcs, no
+// acceleration limit, as in the thesis's simulator). The position is "followed" when the
+// HIP (the hand) is inside the planar usable workspace at some check time t <= 1 s (checks
+// every period / substeps). The followed area is the number of followed cells times the
+// cell area. Deterministic; nothing here touches files except the writers.
+
+#include "planner/planner.h"
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace mhd::plan_sim {
+
+struct MapSpec {
+  double half_size_m = 1.5;         ///< the grid covers [-half, half]^2 around the start
+  double cell_m = 0.025;
+  double facing_change_rad = 0.0;   ///< the user's new facing minus the old one
+  double horizon_s = 1.0;
+  int substeps = 10;                ///< success checks per command period
+};
+
+struct CaseResult {
+  bool followed = false;
+  double time_s = 0.0;        ///< when the HIP was first back inside (if followed)
+  bool base_entered = false;  ///< the base moved into (or deeper into) the user's cylinder
+};
+
+/// One next user position (world x, z) with the spec's facing change.
+[[nodiscard]] CaseResult simulate_case(PlannerKind kind, const PlannerSettings& settings, const MapSpec& spec,
+                                       const Eigen::Vector2d& next_user_W);
+
+struct FollowMap {
+  int cells_per_side = 0;
+  double half_size_m = 0.0;
+  double cell_m = 0.0;
+  std::vector<std::uint8_t> followed;  ///< row-major: row = z index (z ascending), column = x index
+  int followed_cells = 0;
+  int base_entries = 0;
+
+  [[nodiscard]] double followed_area_m2() const noexcept { return followed_cells * cell_m * cell_m; }
+  [[nodiscard]] Eigen::Vector2d cell_center(int ix, int iz) const noexcept;
+};
+
+[[nodiscard]] FollowMap simulate_map(PlannerKind kind, const PlannerSettings& settings, const MapSpec& spec);
+
+struct TableRow {
+  PlannerKind kind = PlannerKind::Seed;
+  double facing_change_rad = 0.0;
+  double max_linear_speed_mps = 0.0;
+  double max_angular_speed_radps = 0.0;
+  double followed_area_m2 = 0.0;
+  int followed_cells = 0;
+  int base_entries = 0;
+};
+
+/// "planner,facing_change_deg,max_linear_speed_mps,max_angular_speed_degps,followed_cells,followed_area_m2,base_entries"
+/// and one line per row.
+[[nodiscard]] std::string table_csv(const std::vector<TableRow>& rows);
+/// The table as printed by `mhd plan-sim`: per facing change, areas in m^2 by linear speed
+/// (rows) and angular speed (columns) for each planner, and predictive / seed.
+[[nodiscard]] std::string table_text(const std::vector<TableRow>& rows);
+
+/// Colours of the map images.
+struct MapStyle {
+  int pixels_per_cell = 4;
+};
+
+/// An RGB image.
+struct Image {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> rgb;  ///< row-major, 3 bytes per pixel
+};
+
+/// Top view (x to the right, z down): followed cells blue, others white, the axes grey, the
+/// user's start black, the base's start red, the user's cylinder at the start outlined.
+[[nodiscard]] Image render_map(const FollowMap& map, const PlannerSettings& settings, const MapStyle& style = {});
+/// Tiles images in a grid (row-major, `columns` per row) with a white gap.
+[[nodiscard]] Image tile(const std::vector<Image>& images, int columns, int gap_px = 8);
+/// Writes a PNG (libpng). Returns an error message, empty on success.
+[[nodiscard]] std::string write_png(const std::filesystem::path& path, const Image& image);
+
+}  // namespace mhd::plan_sim
