@@ -6,6 +6,8 @@
 #include <mhd/plugin_abi.h>
 
 #include <chrono>
+#include <filesystem>
+#include <string>
 
 namespace mhd {
 
@@ -28,10 +30,15 @@ class HostServices {
   [[nodiscard]] const mhd_sim_world* sim_world() const noexcept { return host_.sim_world; }
   /// Set before opening plugins: they may read the pointer once, in open().
   void set_sim_world(const mhd_sim_world* sim_world) noexcept { host_.sim_world = sim_world; }
+  /// The root scene file plugins see as mhd_host::scene_file (kept as an absolute path);
+  /// set before opening plugins. Empty: none.
+  void set_scene_file(const std::filesystem::path& scene_file);
+  [[nodiscard]] const std::string& scene_file() const noexcept { return scene_file_; }
 
  private:
   std::chrono::steady_clock::time_point epoch_;
   mhd_host host_;
+  std::string scene_file_;
 };
 
 }  // namespace mhd

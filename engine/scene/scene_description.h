@@ -58,6 +58,17 @@ struct PluginDescription {
   SourceLocation where;
 };
 
+/// A block of named settings for an engine part that reads its own parameters (the
+/// simulated user, the base planner, the haptic server): <simulated_user>, <planner
+/// kind="...">, <server>, each holding <param name="..." value="..."/>. The part checks the
+/// names and values itself and reports errors against `param_where`.
+struct ParamBlock {
+  std::string kind;  ///< the kind="..." attribute where the element has one, else empty
+  std::map<std::string, std::string> params;
+  std::map<std::string, SourceLocation> param_where;  ///< each param's line
+  SourceLocation where;                               ///< the element
+};
+
 struct HapticsSettings {
   double max_force_N = 8.5;   ///< force clamp (PHANToM Premium 1.5 peak)
   double update_rate_Hz = 1000.0;
@@ -71,6 +82,9 @@ struct SceneDescription {
   std::vector<ObjectDescription> objects;
   std::vector<FrameDescription> rig_frames;
   std::vector<PluginDescription> plugins;
+  std::optional<ParamBlock> simulated_user;  ///< <simulated_user>: who drives simulated hardware
+  std::optional<ParamBlock> planner;         ///< <planner kind="...">: the base's motion planner
+  std::optional<ParamBlock> server;          ///< <server>: haptic server rates, sensors, safety limits
 };
 
 }  // namespace mhd

@@ -239,6 +239,12 @@ class SceneReader {
         read_rig(e, ctx);
       } else if (name == "plugins") {
         read_plugins(e, ctx);
+      } else if (name == "simulated_user") {
+        read_param_block(e, ctx, scene_.simulated_user, /*has_kind=*/false);
+      } else if (name == "planner") {
+        read_param_block(e, ctx, scene_.planner, /*has_kind=*/true);
+      } else if (name == "server") {
+        read_param_block(e, ctx, scene_.server, /*has_kind=*/false);
       } else {
         report_unknown_element(e, root, ctx.sink);
       }
@@ -556,6 +562,14 @@ class SceneReader {
       }
     }
     plugin.name = a.text("name", Presence::Required, Emptiness::Forbidden).value_or("");
+    read_params(e, ctx, concat("plugin '", plugin.name, "'"), plugin.params, nullptr);
+    scene_.plugins.push_back(std::move(plugin));
+  }
+
+  /// <param name="..." value="..."/> children of `e` into `params` (and their lines into
+  /// `where`, when given); `owner` names `e` in messages.
+  void read_params(const tinyxml2::XMLElement& e, const FileContext& ctx, const std::string& owner,
+                   std::map<std::string, std::string>& params, std::map<std::string, SourceLocation>* where) {
     std::map<std::string, int, std::less<>> param_lines;
     for_each_child(e, ctx.sink, [&](const tinyxml2::XMLElement& child) {
       if (std::string_view(child.Name()) != "param") {
@@ -569,14 +583,30 @@ class SceneReader {
       if (!name) return;
       const auto [it, inserted] = param_lines.emplace(*name, child.GetLineNum());
       if (!inserted) {
-        ctx.sink.error(child.GetLineNum(),
-                       concat("duplicate param '", *name, "' in plugin '", plugin.name,
-                              "' (the first is at line ", it->second, ")"));
+        ctx.sink.error(child.GetLineNum(), concat("duplicate param '", *name, "' in ", owner,
+                                                  " (the first is at line ", it->second, ")"));
         return;
       }
-      if (value) plugin.params.emplace(*name, *value);
+      if (value) {
+        params.emplace(*name, *value);
+        if (where != nullptr) where->emplace(*name, ctx.sink.at(child.GetLineNum()));
+      }
     });
-    scene_.plugins.push_back(std::move(plugin));
+  }
+
+  /// <simulated_user>, <planner kind="...">, <server>: one per scene, across includes.
+  void read_param_block(const tinyxml2::XMLElement& e, const FileContext& ctx, std::optional<ParamBlock>& slot,
+                        bool has_kind) {
+    AttributeParser a = has_kind ? AttributeParser(e, ctx.sink, {"kind"}) : AttributeParser(e, ctx.sink, {});
+    if (slot) {
+      ctx.sink.error(e.GetLineNum(), concat("second ", tag(e), " (the first is at ", where_text(slot->where), ")"));
+      return;
+    }
+    ParamBlock block;
+    block.where = ctx.sink.at(e.GetLineNum());
+    if (has_kind) block.kind = a.token("kind", Presence::Required).value_or("");
+    read_params(e, ctx, tag(e), block.params, &block.param_where);
+    slot = std::move(block);
   }
 
   void resolve_material_references() {

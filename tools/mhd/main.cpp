@@ -3,8 +3,10 @@
 // and reports failure through mhd::cli::exit_with (command_exit.h).
 
 #include "command_exit.h"
+#include "plan_sim_command.h"
 #include "plugins_command.h"
 #include "run_command.h"
+#include "strokes_command.h"
 #include "validate_command.h"
 
 #include <CLI/CLI.hpp>
@@ -38,6 +40,8 @@ int main(int argc, char** argv) {
   add_validate_command(app);
   add_run_command(app);
   add_plugins_command(app);
+  add_plan_sim_command(app);
+  add_strokes_command(app);
 
   try {
     app.parse(argc, argv);

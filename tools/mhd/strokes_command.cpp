@@ -1,9 +1,9 @@
-// `mhd run SCENE`: loads a scene and drives the scripted stroke set (the ANCHORS.md
-// protocol) through the god-object proxy at the haptic rate, then prints contacts,
-// forces, update timings and an exact pop-through count. Until the plugin layer lands
-// this is the main job on simulated hardware: a scripted hand instead of a device.
+// `mhd strokes SCENE`: loads a scene and drives the scripted stroke set (the ANCHORS.md
+// protocol) through the god-object proxy at the haptic rate, without plugins or threads,
+// then prints contacts, forces, update timings and an exact pop-through count (CGAL).
+// The rendering check behind the figures in docs/benchmarks.md; `mhd run` is the server.
 
-#include "run_command.h"
+#include "strokes_command.h"
 
 #include "command_exit.h"
 #include "scene_compiler/scene_compiler.h"
@@ -84,7 +84,7 @@ int run(const RunOptions& opt) {
       if (scene.object_names[i] == opt.touch) touch_object = static_cast<int>(i);
     }
     if (touch_object < 0) {
-      fmt::print(stderr, "mhd run: error: scene {} has no object '{}'\n", opt.scene, opt.touch);
+      fmt::print(stderr, "mhd strokes: error: scene {} has no object '{}'\n", opt.scene, opt.touch);
       return 1;
     }
   }
@@ -117,10 +117,10 @@ int run(const RunOptions& opt) {
 
 }  // namespace
 
-void add_run_command(CLI::App& app) {
+void add_strokes_command(CLI::App& app) {
   auto opt = std::make_shared<RunOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "run", "Load a scene and drive the scripted stroke set through the haptic proxy (simulated hand)");
+      "strokes", "Drive the scripted stroke set through the haptic proxy and count pop-throughs exactly");
   cmd->add_option("scene", opt->scene, "Scene XML file")->required()->check(CLI::ExistingFile);
   cmd->add_option("--strokes", opt->strokes, "Number of strokes")->check(CLI::Range(1, 1000000));
   cmd->add_option("--seed", opt->seed, "Random seed of the stroke set");

@@ -1,6 +1,6 @@
 #pragma once
-// `mhd run`: runs a scene on the haptic device (run_command.cpp).
+// `mhd strokes`: the scripted stroke set through the proxy (strokes_command.cpp).
 
 #include <CLI/CLI.hpp>
 
-void add_run_command(CLI::App& app);
+void add_strokes_command(CLI::App& app);

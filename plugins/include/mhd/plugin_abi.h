@@ -140,6 +140,9 @@ typedef struct mhd_host {
   void* clock_context;
   /* NULL when no simulated world exists (real hardware only). */
   const mhd_sim_world* sim_world;
+  /* Absolute path of the root scene XML the host runs, NULL when there is none. A display
+   * plugin loads the scene's geometry from it; paths inside resolve against it. */
+  const char* scene_file;
 } mhd_host;
 
 /* ---- the plugin's table ----------------------------------------------------- */

@@ -1,0 +1,682 @@
+#include "haptic_server/haptic_server.h"
+
+#include "haptic_server/haptic_tick.h"
+#include "haptic_server/scene_planner.h"
+#include "haptic_server/tick_histogram.h"
+#include "kinematics/rig.h"
+#include "plugin_host/host_services.h"
+#include "plugin_host/open_plugin.h"
+#include "plugin_host/plugin_kind.h"
+#include "plugin_host/plugin_search_path.h"
+#include "realtime/periodic_timer.h"
+#include "realtime/spsc_ring.h"
+#include "realtime/triple_buffer.h"
+#include "recording/csv_recording.h"
+#include "safety/base_command_guard.h"
+#include "simulation/simulated_user.h"
+#include "simulation/simulated_user_params.h"
+#include "simulation/simulated_world.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <mutex>
+#include <thread>
+#include <utility>
+
+namespace mhd {
+namespace {
+
+struct BaseSensorSample {
+  double t_s = 0.0;
+  Pose X_is900_base_sensor = Pose::Identity();
+};
+
+struct BaseCommandEvent {
+  double t_s = 0.0;
+  BaseTwist twist_B;
+};
+
+/// State the haptic thread publishes each tick (for the planner and the displays).
+struct HapticSnapshot {
+  double t_s = 0.0;
+  bool valid = false;  ///< a HIP is known
+  Eigen::Vector3d hip_W_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d proxy_W_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d force_W_N = Eigen::Vector3d::Zero();
+  bool in_contact = false;
+  BasePose base;
+};
+
+struct HeadState {
+  bool known = false;
+  double t_s = 0.0;
+  Eigen::Vector3d p_W_m = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond q_W = Eigen::Quaterniond::Identity();
+};
+
+/// A value shared between non-real-time threads.
+template <typename T>
+class Shared {
+ public:
+  void set(const T& value) {
+    const std::lock_guard lock(mutex_);
+    value_ = value;
+  }
+  [[nodiscard]] T get() const {
+    const std::lock_guard lock(mutex_);
+    return value_;
+  }
+
+ private:
+  mutable std::mutex mutex_;
+  T value_{};
+};
+
+struct OpenedPlugin {
+  PluginDescription description;
+  PluginInstance instance;
+};
+
+std::string plugin_failure(const PluginDescription& d, const PluginError& e) {
+  return Diagnostic{d.where, e.to_string()}.to_string();
+}
+
+double planar_heading_of(const Eigen::Quaterniond& q_W) {
+  const Eigen::Vector3d forward = q_W * Eigen::Vector3d::UnitX();  // line of sight
+  return std::atan2(-forward.z(), forward.x());
+}
+
+}  // namespace
+
+struct HapticServer::Impl {
+  const CompiledScene& scene;
+  ServerSettings settings;
+  ServerOptions options;
+  Rig rig;
+  std::optional<simulation::SimulatedUserConfig> user_config;
+
+  simulation::SimulatedWorld world;
+  HostServices host;
+  std::vector<OpenedPlugin> plugins;  // device first, then tracker, base, displays
+  OpenedPlugin* device = nullptr;
+  OpenedPlugin* tracker = nullptr;
+  OpenedPlugin* base = nullptr;
+  std::vector<OpenedPlugin*> displays;
+
+  // Hand-offs.
+  realtime::SpscRing<BaseSensorSample> base_samples{512};
+  realtime::SpscRing<BaseCommandEvent> commands_to_haptic{64};
+  realtime::SpscRing<RecordingRow> recording_rows{1 << 14};
+  realtime::TripleBuffer<HapticSnapshot> snapshot_for_planner;
+  realtime::TripleBuffer<HapticSnapshot> snapshot_for_display;
+  Shared<HeadState> head;
+  Shared<std::pair<std::uint64_t, BaseTwist>> planned_command;  // sequence, twist
+
+  // Status, written by the haptic and io threads, read by run().
+  std::atomic<std::uint64_t> ticks{0}, overruns{0}, missed{0}, contact_ticks{0};
+  std::atomic<double> force_N{0.0}, safety_gain{0.0}, tracker_age_s{std::numeric_limits<double>::infinity()};
+  std::atomic<bool> in_contact{false};
+  std::atomic<std::uint64_t> tracker_samples{0}, tracker_rejected{0}, recording_dropped{0};
+  std::atomic<std::uint64_t> base_commands{0}, base_stops{0};
+  Shared<BasePose> status_base;
+
+  std::atomic<bool> stop{false};
+  std::atomic<bool> recorder_stop{false};  ///< set after the haptic thread has ended
+  std::mutex error_mutex;
+  std::optional<std::string> error;
+
+  // Filled by the threads before they end.
+  TickHistogram tick_histogram;
+  ForceSafetyCounters safety_counters;
+  std::optional<CsvRecording> recording;  ///< opened by run(), written by the recorder thread
+  bool zero_force_sent = false;
+  bool base_stop_sent = false;
+  std::uint64_t recording_rows_written = 0;
+
+  Impl(const CompiledScene& s, ServerSettings st, ServerOptions o, Rig r)
+      : scene(s), settings(std::move(st)), options(std::move(o)), rig(std::move(r)), host(&world.table()) {}
+
+  void fail(std::string message) {
+    {
+      const std::lock_guard lock(error_mutex);
+      if (!error) error = std::move(message);
+    }
+    stop.store(true);
+  }
+
+  /// True when the call failed (the run is ending); `what` says which call.
+  template <typename Result>
+  bool check(const Result& result, const OpenedPlugin& plugin) {
+    if (result.ok()) return false;
+    fail(plugin_failure(plugin.description, result.error()));
+    return true;
+  }
+
+  bool deactivated(PluginCallStatus status, const OpenedPlugin& plugin, const char* call) {
+    if (status != PluginCallStatus::Deactivate) return false;
+    fail(Diagnostic{plugin.description.where,
+                    "plugin '" + plugin.description.name + "': " + call + " asked to be stopped (MHD_DEACTIVATE)"}
+             .to_string());
+    return true;
+  }
+
+  void haptic_thread();
+  void io_thread();
+  void planner_thread();
+  void display_thread();
+  void recorder_thread();
+};
+
+// ---- haptic thread ------------------------------------------------------------------
+
+void HapticServer::Impl::haptic_thread() {
+  HapticTickSettings tick_settings = settings.tick;
+  if (auto limits = device->instance.device_limits(); limits.ok()) {
+    tick_settings.safety.max_force_N = std::min(tick_settings.safety.max_force_N, limits.value().max_force_N);
+  }
+  HapticTick tick(scene, rig, tick_settings);
+  realtime::PeriodicTimer timer(1.0 / settings.haptic_rate_hz);
+  Eigen::Vector3d q_rad = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+  double last_t_s = host.now_s();
+
+  while (!stop.load(std::memory_order_relaxed)) {
+    (void)timer.wait_next();
+    const double t_s = host.now_s();
+    const double dt_s = std::max(0.0, t_s - last_t_s);
+    last_t_s = t_s;
+
+    BaseSensorSample sample;
+    while (base_samples.pop(sample)) (void)tick.add_base_sensor_sample(sample.t_s, sample.X_is900_base_sensor);
+    BaseCommandEvent command;
+    while (commands_to_haptic.pop(command)) tick.add_base_command(command.t_s, command.twist_B);
+
+    if (device->instance.simulates()) {
+      auto r = device->instance.simulate_until(t_s);
+      if (check(r, *device)) break;
+    }
+    mhd_device_state state{};
+    auto read = device->instance.device_read(state);
+    if (check(read, *device) || deactivated(read.value(), *device, "device_read")) break;
+    if (read.value() == PluginCallStatus::Ok) {
+      q_rad = Eigen::Vector3d(state.joint_angles_rad[0], state.joint_angles_rad[1], state.joint_angles_rad[2]);
+    }
+
+    const HapticTickOutput out = tick.tick(t_s, dt_s, q_rad);
+
+    mhd_device_command cmd{};
+    cmd.timestamp_s = t_s;
+    for (int j = 0; j < 3; ++j) cmd.joint_torques_Nm[j] = out.torques_Nm[j];
+    auto write = device->instance.device_write(cmd);
+    if (check(write, *device) || deactivated(write.value(), *device, "device_write")) break;
+
+    tick_histogram.add(host.now_s() - t_s);
+
+    HapticSnapshot snap;
+    snap.t_s = t_s;
+    snap.valid = out.hip_W_m.allFinite();
+    if (snap.valid) {
+      snap.hip_W_m = out.hip_W_m;
+      snap.proxy_W_m = out.proxy_W_m;
+    }
+    snap.force_W_N = out.force_W_N;
+    snap.in_contact = out.in_contact;
+    snap.base = out.base;
+    snapshot_for_planner.write(snap);
+    snapshot_for_display.write(snap);
+
+    if (!options.recording.empty()) {
+      RecordingRow row;
+      row.t_s = t_s;
+      for (int i = 0; i < 3; ++i) {
+        row.q_rad[static_cast<std::size_t>(i)] = out.q_rad[i];
+        row.hip_W_m[static_cast<std::size_t>(i)] = out.hip_W_m[i];
+        row.proxy_W_m[static_cast<std::size_t>(i)] = out.proxy_W_m[i];
+        row.force_W_N[static_cast<std::size_t>(i)] = out.force_W_N[i];
+        row.cmd_force_W_N[static_cast<std::size_t>(i)] = out.proxy_force_W_N[i];
+        row.torques_Nm[static_cast<std::size_t>(i)] = out.torques_Nm[i];
+      }
+      row.base_x_m = out.base.x_m;
+      row.base_z_m = out.base.z_m;
+      row.base_heading_rad = out.base.heading_rad;
+      row.tracker_age_s = std::isfinite(out.tracker_age_s) ? out.tracker_age_s : -1.0;
+      row.safety_gain = out.safety_gain;
+      row.contact = out.in_contact ? 1 : 0;
+      row.contact_object = out.contact_object;
+      if (!recording_rows.push(row)) recording_dropped.fetch_add(1, std::memory_order_relaxed);
+    }
+
+    ticks.fetch_add(1, std::memory_order_relaxed);
+    if (out.in_contact) contact_ticks.fetch_add(1, std::memory_order_relaxed);
+    overruns.store(timer.stats().overruns, std::memory_order_relaxed);
+    missed.store(timer.stats().missed_deadlines, std::memory_order_relaxed);
+    force_N.store(out.force_W_N.norm(), std::memory_order_relaxed);
+    safety_gain.store(out.safety_gain, std::memory_order_relaxed);
+    tracker_age_s.store(out.tracker_age_s, std::memory_order_relaxed);
+    in_contact.store(out.in_contact, std::memory_order_relaxed);
+  }
+
+  // Safe state: zero torque, whatever ended the loop.
+  if (device->instance.state() == PluginState::Running) {
+    mhd_device_command zero{};
+    zero.timestamp_s = host.now_s();
+    zero_force_sent = device->instance.device_write(zero).ok();
+  }
+  safety_counters = tick.safety().counters();
+}
+
+// ---- io thread: tracker, base, simulated user -----------------------------------------
+
+void HapticServer::Impl::io_thread() {
+  std::optional<simulation::SimulatedUser> user;
+  if (user_config) user.emplace(*user_config);
+  BaseCommandGuard guard(settings.base_guard);
+  realtime::PeriodicTimer timer(1.0 / settings.io_rate_hz);
+  std::array<mhd_tracker_sample, 64> samples{};
+  std::map<std::uint32_t, std::uint64_t> last_sequence;
+  double newest_base_sample_t_s = -std::numeric_limits<double>::infinity();
+  std::uint64_t command_sequence_seen = 0;
+  BaseTwist planned;
+  double last_base_write_t_s = -1.0;
+  bool last_write_was_zero = false;
+  const double base_period_s = 1.0 / settings.base_rate_hz;
+
+  while (!stop.load(std::memory_order_relaxed)) {
+    (void)timer.wait_next();
+    const double t_s = host.now_s();
+    if (user) user->update(t_s, world);
+    if (base != nullptr && base->instance.simulates() && check(base->instance.simulate_until(t_s), *base)) break;
+    if (tracker->instance.simulates() && check(tracker->instance.simulate_until(t_s), *tracker)) break;
+
+    // Tracker: everything received since the last read.
+    bool tracker_failed = false;
+    for (;;) {
+      std::size_t count = 0;
+      auto r = tracker->instance.tracker_read(samples, count);
+      if (check(r, *tracker) || deactivated(r.value(), *tracker, "tracker_read")) {
+        tracker_failed = true;
+        break;
+      }
+      for (std::size_t i = 0; i < count; ++i) {
+        const mhd_tracker_sample& s = samples[i];
+        auto [it, first] = last_sequence.emplace(s.sensor_id, s.sequence);
+        const bool backwards = !first && s.sequence <= it->second;
+        const bool future = s.timestamp_s > t_s + 0.01;  // clocks agree; 10 ms of slack
+        const bool known = s.sensor_id == settings.base_sensor_id || s.sensor_id == settings.head_sensor_id;
+        if (backwards || future || !known) {
+          tracker_rejected.fetch_add(1, std::memory_order_relaxed);
+          continue;
+        }
+        it->second = s.sequence;
+        tracker_samples.fetch_add(1, std::memory_order_relaxed);
+        const Pose X_T_S = pose_from_xyz_quaternion(Eigen::Vector3d(s.p_T_m[0], s.p_T_m[1], s.p_T_m[2]),
+                                                    Eigen::Quaterniond(s.q_T_wxyz[0], s.q_T_wxyz[1], s.q_T_wxyz[2], s.q_T_wxyz[3]));
+        if (s.sensor_id == settings.base_sensor_id) {
+          if (!base_samples.push({s.timestamp_s, X_T_S})) tracker_rejected.fetch_add(1, std::memory_order_relaxed);
+          newest_base_sample_t_s = std::max(newest_base_sample_t_s, s.timestamp_s);
+        } else {
+          const Pose X_W_head = rig.X_W_is900() * X_T_S;
+          HeadState h;
+          h.known = true;
+          h.t_s = s.timestamp_s;
+          h.p_W_m = X_W_head.translation();
+          h.q_W = Eigen::Quaterniond(X_W_head.rotation());
+          head.set(h);
+        }
+      }
+      if (count < samples.size()) break;
+    }
+    if (tracker_failed) break;
+
+    if (base == nullptr) continue;
+    mhd_base_state base_state{};
+    auto br = base->instance.base_read(base_state);
+    if (check(br, *base) || deactivated(br.value(), *base, "base_read")) break;
+
+    // Command: the planner's newest, through the guard; stale tracking stops the base at
+    // once, otherwise commands go out at the base rate (and feed the base's watchdog).
+    const auto [sequence, twist] = planned_command.get();
+    const bool new_plan = sequence != command_sequence_seen;
+    if (new_plan) {
+      command_sequence_seen = sequence;
+      planned = twist;
+    }
+    const HeadState h = head.get();
+    const BasePose pose = status_base.get();
+    const Eigen::Vector2d user_xz = h.known ? Eigen::Vector2d(h.p_W_m.x(), h.p_W_m.z())
+                                            : Eigen::Vector2d::Constant(std::numeric_limits<double>::quiet_NaN());
+    const BaseGuardResult guarded = guard.apply(planned, pose, user_xz, t_s - newest_base_sample_t_s);
+    const bool is_zero = guarded.twist_B.vx_mps == 0.0 && guarded.twist_B.vz_mps == 0.0 && guarded.twist_B.omega_radps == 0.0;
+    const bool due = t_s - last_base_write_t_s >= base_period_s;
+    const bool must_stop_now = is_zero && !last_write_was_zero;
+    if (new_plan || due || must_stop_now) {
+      mhd_base_command cmd{};
+      cmd.timestamp_s = t_s;
+      cmd.vx_mps = guarded.twist_B.vx_mps;
+      cmd.vz_mps = guarded.twist_B.vz_mps;
+      cmd.omega_radps = guarded.twist_B.omega_radps;
+      auto bw = base->instance.base_write(cmd);
+      if (check(bw, *base) || deactivated(bw.value(), *base, "base_write")) break;
+      last_base_write_t_s = t_s;
+      last_write_was_zero = is_zero;
+      base_commands.fetch_add(1, std::memory_order_relaxed);
+      if (guarded.action == BaseGuardAction::Stopped) base_stops.fetch_add(1, std::memory_order_relaxed);
+      if (!commands_to_haptic.push({t_s, guarded.twist_B})) {
+        // The haptic thread drains this every tick; a full ring means it is stuck, and the
+        // predictor simply runs without this command.
+      }
+    }
+  }
+
+  // Safe state: the base stops, whatever ended the loop.
+  if (base == nullptr) {
+    base_stop_sent = true;
+  } else if (base->instance.state() == PluginState::Running) {
+    mhd_base_command zero{};
+    zero.timestamp_s = host.now_s();
+    base_stop_sent = base->instance.base_write(zero).ok();
+  }
+}
+
+// ---- planner thread ----------------------------------------------------------------
+
+void HapticServer::Impl::planner_thread() {
+  realtime::PeriodicTimer timer(1.0 / settings.base_rate_hz);
+  std::uint64_t sequence = 0;
+  // The user's walking velocity from the head track, low-passed (time constant 0.2 s):
+  // head bobbing and tracker noise are not walking.
+  HeadState previous_head;
+  Eigen::Vector2d user_velocity = Eigen::Vector2d::Zero();
+  while (!stop.load(std::memory_order_relaxed)) {
+    (void)timer.wait_next();
+    const HapticSnapshot snap = snapshot_for_planner.latest();
+    status_base.set(snap.base);
+    const HeadState h = head.get();
+    if (h.known && previous_head.known && h.t_s > previous_head.t_s) {
+      const double dt = h.t_s - previous_head.t_s;
+      const Eigen::Vector2d v((h.p_W_m.x() - previous_head.p_W_m.x()) / dt, (h.p_W_m.z() - previous_head.p_W_m.z()) / dt);
+      const double alpha = dt / (0.2 + dt);
+      user_velocity += alpha * (v - user_velocity);
+    }
+    if (h.known) previous_head = h;
+    if (!options.plan_base) continue;  // no planner: the base holds still (zero twist)
+    BasePlanInput in;
+    in.t_s = host.now_s();
+    in.base = snap.base;
+    in.hip_valid = snap.valid;
+    in.hip_W_m = snap.hip_W_m;
+    in.user_known = h.known;
+    in.user_xz_W_m = Eigen::Vector2d(h.p_W_m.x(), h.p_W_m.z());
+    in.user_heading_rad = planar_heading_of(h.q_W);
+    in.user_velocity_W_mps = user_velocity;
+    const BaseTwist twist = options.plan_base(in);
+    planned_command.set({++sequence, twist});
+  }
+}
+
+// ---- display thread ------------------------------------------------------------------
+
+void HapticServer::Impl::display_thread() {
+  realtime::PeriodicTimer timer(1.0 / settings.display_rate_hz);
+  while (!stop.load(std::memory_order_relaxed)) {
+    (void)timer.wait_next();
+    const HapticSnapshot snap = snapshot_for_display.latest();
+    const HeadState h = head.get();
+    mhd_display_frame frame{};
+    frame.timestamp_s = snap.t_s;
+    for (int i = 0; i < 3; ++i) {
+      frame.p_W_hip_m[i] = snap.hip_W_m[i];
+      frame.p_W_proxy_m[i] = snap.proxy_W_m[i];
+      frame.force_W_N[i] = snap.force_W_N[i];
+      frame.p_W_head_m[i] = h.p_W_m[i];
+    }
+    frame.in_contact = snap.in_contact ? 1 : 0;
+    frame.base_x_m = snap.base.x_m;
+    frame.base_z_m = snap.base.z_m;
+    frame.base_heading_rad = snap.base.heading_rad;
+    frame.q_W_head_wxyz[0] = h.q_W.w();
+    frame.q_W_head_wxyz[1] = h.q_W.x();
+    frame.q_W_head_wxyz[2] = h.q_W.y();
+    frame.q_W_head_wxyz[3] = h.q_W.z();
+    for (OpenedPlugin* d : displays) {
+      auto r = d->instance.display_write(frame);
+      if (check(r, *d) || deactivated(r.value(), *d, "display_write")) return;
+    }
+  }
+}
+
+// ---- recorder thread ---------------------------------------------------------------
+
+void HapticServer::Impl::recorder_thread() {
+  RecordingRow row;
+  auto drain = [&] {
+    while (recording_rows.pop(row)) {
+      const HeadState h = head.get();
+      if (h.known) {
+        row.user_x_m = h.p_W_m.x();
+        row.user_z_m = h.p_W_m.z();
+        row.user_heading_rad = planar_heading_of(h.q_W);
+      } else {
+        row.user_x_m = row.user_z_m = row.user_heading_rad = std::numeric_limits<double>::quiet_NaN();
+      }
+      recording->write(row);
+    }
+  };
+  try {
+    while (!recorder_stop.load(std::memory_order_acquire)) {
+      drain();
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    drain();  // what the haptic thread queued before it stopped
+    recording->flush();
+  } catch (const std::exception& e) {
+    fail(e.what());
+  }
+  recording_rows_written = recording->rows();
+}
+
+// ---- opening -------------------------------------------------------------------------
+
+HapticServer::HapticServer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+HapticServer::~HapticServer() = default;
+
+const ServerSettings& HapticServer::settings() const noexcept { return impl_->settings; }
+
+HapticServerBuild HapticServer::open(const SceneDescription& scene, const CompiledScene& compiled,
+                                     ServerOptions options) {
+  HapticServerBuild out;
+  const SourceLocation scene_where{scene.file.string(), 0};
+
+  ServerSettingsResult settings = server_settings_from(scene);
+  out.diagnostics.insert(out.diagnostics.end(), settings.diagnostics.begin(), settings.diagnostics.end());
+
+  RigBuildResult rig = Rig::from_scene(scene);
+  for (const RigError& e : rig.errors) out.diagnostics.push_back({e.where.file.empty() ? scene_where : e.where, e.message});
+
+  std::optional<simulation::SimulatedUserConfig> user_config;
+  if (scene.simulated_user) {
+    auto u = simulation::simulated_user_config_from(*scene.simulated_user);
+    out.diagnostics.insert(out.diagnostics.end(), u.diagnostics.begin(), u.diagnostics.end());
+    user_config = std::move(u.config);
+  }
+
+  // One device, one tracker, at most one base.
+  const PluginDescription* device = nullptr;
+  const PluginDescription* tracker = nullptr;
+  const PluginDescription* base = nullptr;
+  std::vector<const PluginDescription*> displays;
+  for (const PluginDescription& p : scene.plugins) {
+    const PluginDescription** slot = p.kind == PluginKind::Device    ? &device
+                                     : p.kind == PluginKind::Tracker ? &tracker
+                                     : p.kind == PluginKind::Base    ? &base
+                                                                     : nullptr;
+    if (slot == nullptr) {
+      displays.push_back(&p);
+    } else if (*slot != nullptr) {
+      out.diagnostics.push_back({p.where, "a second " + std::string(to_string(p.kind)) + " plugin '" + p.name +
+                                              "' (the server drives one; the first is at line " +
+                                              std::to_string((*slot)->where.line) + ")"});
+    } else {
+      *slot = &p;
+    }
+  }
+  ScenePlannerResult planner;
+  if (rig.rig && !options.plan_base) {
+    planner = scene_planner(scene, *rig.rig);
+    out.diagnostics.insert(out.diagnostics.end(), planner.diagnostics.begin(), planner.diagnostics.end());
+  }
+  if (device == nullptr) out.diagnostics.push_back({scene_where, "the scene names no device plugin (<plugin kind=\"device\">)"});
+  if (tracker == nullptr) out.diagnostics.push_back({scene_where, "the scene names no tracker plugin (<plugin kind=\"tracker\">)"});
+  if (!out.diagnostics.empty()) return out;
+
+  if (planner.plan) {
+    options.plan_base = std::move(planner.plan);
+    // The guard's keep-out is the planner's user cylinder unless <server> says otherwise.
+    if (!(scene.server && scene.server->params.count("keep_out_m") != 0)) {
+      settings.settings->base_guard.keep_out_m = planner.collision_radius_m;
+    }
+  }
+  auto impl = std::make_unique<Impl>(compiled, *settings.settings, std::move(options), std::move(*rig.rig));
+  impl->user_config = std::move(user_config);
+  impl->host.set_scene_file(scene.file);
+  const PluginSearchPath search = PluginSearchPath::standard(impl->options.plugin_path);
+
+  std::vector<const PluginDescription*> order = {device, tracker};
+  if (base != nullptr) order.push_back(base);
+  order.insert(order.end(), displays.begin(), displays.end());
+  impl->plugins.reserve(order.size());  // pointers into it stay valid
+  for (const PluginDescription* d : order) {
+    auto opened = open_plugin(search, *d, impl->host.abi());
+    if (!opened.ok()) {
+      out.diagnostics.push_back({d->where, opened.error().to_string()});
+      continue;
+    }
+    impl->plugins.push_back({*d, std::move(opened).value()});
+  }
+  if (!out.diagnostics.empty()) return out;  // the opened ones close with impl
+
+  impl->device = &impl->plugins[0];
+  impl->tracker = &impl->plugins[1];
+  std::size_t next = 2;
+  if (base != nullptr) impl->base = &impl->plugins[next++];
+  for (; next < impl->plugins.size(); ++next) impl->displays.push_back(&impl->plugins[next]);
+  out.server = std::unique_ptr<HapticServer>(new HapticServer(std::move(impl)));
+  return out;
+}
+
+// ---- running -------------------------------------------------------------------------
+
+ServerReport HapticServer::run() {
+  Impl& m = *impl_;
+  ServerReport report;
+
+  // Start: device last, so force starts only once the rest is running.
+  std::vector<OpenedPlugin*> start_order;
+  for (auto& p : m.plugins) {
+    if (&p != m.device) start_order.push_back(&p);
+  }
+  start_order.push_back(m.device);
+  for (OpenedPlugin* p : start_order) {
+    auto r = p->instance.start();
+    if (!r.ok()) {
+      m.fail(plugin_failure(p->description, r.error()));
+      break;
+    }
+  }
+
+  if (!m.options.recording.empty()) {
+    try {
+      m.recording.emplace(m.options.recording, m.settings.record_flush_s);
+    } catch (const std::exception& e) {
+      m.fail(e.what());
+    }
+  }
+
+  const double t0_s = m.host.now_s();
+  if (!m.stop.load()) {
+    std::vector<std::thread> threads;
+    threads.emplace_back([&] { m.io_thread(); });
+    threads.emplace_back([&] { m.haptic_thread(); });
+    threads.emplace_back([&] { m.planner_thread(); });
+    if (!m.displays.empty()) threads.emplace_back([&] { m.display_thread(); });
+    std::thread recorder;
+    if (m.recording) recorder = std::thread([&] { m.recorder_thread(); });
+
+    double last_status_t_s = t0_s;
+    std::uint64_t last_status_ticks = 0;
+    while (!m.stop.load()) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+      const double now_s = m.host.now_s();
+      if (stop_requested_.load(std::memory_order_relaxed)) m.stop.store(true);
+      if (m.options.duration_s > 0.0 && now_s - t0_s >= m.options.duration_s) m.stop.store(true);
+      if (m.options.on_status && now_s - last_status_t_s >= m.options.status_interval_s) {
+        ServerStatus s;
+        s.elapsed_s = now_s - t0_s;
+        s.ticks = m.ticks.load();
+        s.haptic_rate_hz = static_cast<double>(s.ticks - last_status_ticks) / (now_s - last_status_t_s);
+        s.overruns = m.overruns.load();
+        s.in_contact = m.in_contact.load();
+        s.force_N = m.force_N.load();
+        s.safety_gain = m.safety_gain.load();
+        s.tracker_age_s = m.tracker_age_s.load();
+        s.tracker_samples = m.tracker_samples.load();
+        s.tracker_rejected = m.tracker_rejected.load();
+        s.base = m.status_base.get();
+        m.options.on_status(s);
+        last_status_t_s = now_s;
+        last_status_ticks = s.ticks;
+      }
+    }
+    for (auto& t : threads) t.join();
+    m.recorder_stop.store(true, std::memory_order_release);
+    if (recorder.joinable()) recorder.join();
+  }
+
+  // Stop and close everything (device first: no force while the rest shuts down).
+  std::vector<OpenedPlugin*> stop_order(start_order.rbegin(), start_order.rend());
+  for (OpenedPlugin* p : stop_order) {
+    if (p->instance.state() == PluginState::Running) {
+      if (auto r = p->instance.stop(); !r.ok()) m.fail(plugin_failure(p->description, r.error()));
+    }
+    (void)p->instance.close();
+  }
+
+  const double elapsed_s = m.host.now_s() - t0_s;
+  report.status.elapsed_s = elapsed_s;
+  report.status.ticks = m.ticks.load();
+  report.status.haptic_rate_hz = elapsed_s > 0.0 ? static_cast<double>(report.status.ticks) / elapsed_s : 0.0;
+  report.status.overruns = m.overruns.load();
+  report.status.in_contact = m.in_contact.load();
+  report.status.force_N = m.force_N.load();
+  report.status.safety_gain = m.safety_gain.load();
+  report.status.tracker_age_s = m.tracker_age_s.load();
+  report.status.tracker_samples = m.tracker_samples.load();
+  report.status.tracker_rejected = m.tracker_rejected.load();
+  report.status.base = m.status_base.get();
+  report.missed_deadlines = m.missed.load();
+  report.tick_median_us = m.tick_histogram.quantile_us(0.5);
+  report.tick_p99_us = m.tick_histogram.quantile_us(0.99);
+  report.tick_p999_us = m.tick_histogram.quantile_us(0.999);
+  report.tick_max_us = m.tick_histogram.max_us();
+  report.contact_ticks = m.contact_ticks.load();
+  report.stale_ticks = m.safety_counters.stale_ticks;
+  report.fault_ticks = m.safety_counters.fault_ticks;
+  report.hip_jumps = m.safety_counters.jumps;
+  report.clamped_ticks = m.safety_counters.clamped_ticks;
+  report.base_commands = m.base_commands.load();
+  report.base_stops = m.base_stops.load();
+  report.recording_rows = m.recording_rows_written;
+  report.recording_dropped = m.recording_dropped.load();
+  report.zero_force_sent = m.zero_force_sent;
+  report.base_stop_sent = m.base_stop_sent;
+  {
+    const std::lock_guard lock(m.error_mutex);
+    report.error = m.error;
+  }
+  return report;
+}
+
+}  // namespace mhd

@@ -1,0 +1,125 @@
+#pragma once
+// The haptic server (thesis ch. 2.6, 7.1): runs a scene on the plugins it names.
+//
+// Threads, each driving only its own plugins (an instance is driven by one thread):
+//   haptic   1 kHz (the scene's rate), absolute deadlines: device read -> HapticTick
+//            (HIP, proxy, safety, torques) -> device write. Never locks, never allocates.
+//   io       tracker and base plugins, and the simulated user (io_rate_hz): tracker samples
+//            to the haptic thread; base commands from the planner, through the
+//            BaseCommandGuard (stale tracking or a fault stops the base), to the base.
+//   planner  10 Hz: the base motion planner (holds still until one is set).
+//   display  60 Hz: the newest state to every display plugin.
+//   recorder writes the CSV recording, flushed at least every record_flush_s.
+// Hand-offs into and out of the haptic thread are lock-free: SPSC rings for events
+// (tracker samples, commands, recording rows) and triple buffers for state. Other
+// threads share a few values behind a mutex.
+//
+// Any plugin error or a plugin asking to be stopped ends the run: the haptic thread
+// commands zero torque, the io thread commands a stopped base, every plugin is stopped
+// and closed, and the report carries the error naming the plugin and its scene line.
+
+#include "haptic_server/server_settings.h"
+#include "kinematics/base_pose.h"
+#include "scene/diagnostic.h"
+#include "scene/scene_description.h"
+#include "scene_compiler/compiled_scene.h"
+
+#include <Eigen/Core>
+
+#include <atomic>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace mhd {
+
+/// What the base planner sees each base period.
+struct BasePlanInput {
+  double t_s = 0.0;
+  BasePose base;  ///< predicted, as the haptic loop uses it
+  bool hip_valid = false;
+  Eigen::Vector3d hip_W_m = Eigen::Vector3d::Zero();
+  bool user_known = false;  ///< a head pose has arrived
+  Eigen::Vector2d user_xz_W_m = Eigen::Vector2d::Zero();
+  double user_heading_rad = 0.0;  ///< the head's line of sight, projected on the floor
+  Eigen::Vector2d user_velocity_W_mps = Eigen::Vector2d::Zero();  ///< smoothed, from the head track
+};
+
+/// The base twist to command (base frame). The server's guard limits it afterwards.
+using BasePlanFn = std::function<BaseTwist(const BasePlanInput&)>;
+
+/// A live summary, for the status line.
+struct ServerStatus {
+  double elapsed_s = 0.0;
+  std::uint64_t ticks = 0;
+  double haptic_rate_hz = 0.0;  ///< over the last status interval
+  std::uint64_t overruns = 0;
+  bool in_contact = false;
+  double force_N = 0.0;
+  double safety_gain = 0.0;
+  double tracker_age_s = 0.0;
+  std::uint64_t tracker_samples = 0;
+  std::uint64_t tracker_rejected = 0;  ///< dropped: wrong sensor, time from the future, sequence back
+  BasePose base;
+};
+
+struct ServerOptions {
+  double duration_s = 0.0;               ///< 0: until request_stop()
+  std::filesystem::path recording;       ///< empty: no recording
+  std::vector<std::filesystem::path> plugin_path;  ///< --plugin-path folders
+  BasePlanFn plan_base;  ///< empty: the scene's <planner>, or without one the base holds still
+  std::function<void(const ServerStatus&)> on_status;  ///< called from run()'s thread
+  double status_interval_s = 0.5;
+};
+
+struct ServerReport {
+  ServerStatus status;  ///< at the end
+  std::uint64_t missed_deadlines = 0;
+  double tick_median_us = 0.0, tick_p99_us = 0.0, tick_p999_us = 0.0, tick_max_us = 0.0;
+  std::uint64_t contact_ticks = 0;
+  std::uint64_t stale_ticks = 0, fault_ticks = 0, hip_jumps = 0, clamped_ticks = 0;
+  std::uint64_t base_commands = 0, base_stops = 0;
+  std::uint64_t recording_rows = 0, recording_dropped = 0;
+  bool zero_force_sent = false;  ///< the last device command was zero torque
+  bool base_stop_sent = false;   ///< the last base command was zero (or there is no base)
+  std::optional<std::string> error;  ///< why the run ended early
+};
+
+class HapticServer;
+
+struct HapticServerBuild {
+  std::unique_ptr<HapticServer> server;  ///< null when diagnostics has errors
+  Diagnostics diagnostics;
+};
+
+class HapticServer {
+ public:
+  /// Checks the scene (rig, <server>, <simulated_user>, one device and one tracker, at most
+  /// one base) and opens its plugins; every problem is a diagnostic at its scene line.
+  /// `compiled` must outlive the server.
+  [[nodiscard]] static HapticServerBuild open(const SceneDescription& scene, const CompiledScene& compiled,
+                                              ServerOptions options);
+  ~HapticServer();
+  HapticServer(const HapticServer&) = delete;
+  HapticServer& operator=(const HapticServer&) = delete;
+
+  /// Starts the plugins and threads, runs for the duration or until request_stop() or an
+  /// error, then leaves everything stopped and closed (safe state). Call once.
+  ServerReport run();
+  /// From any thread or a signal handler.
+  void request_stop() noexcept { stop_requested_.store(true, std::memory_order_relaxed); }
+
+  [[nodiscard]] const ServerSettings& settings() const noexcept;
+
+ private:
+  struct Impl;
+  explicit HapticServer(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+  std::atomic<bool> stop_requested_{false};
+};
+
+}  // namespace mhd

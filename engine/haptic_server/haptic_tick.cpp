@@ -1,0 +1,69 @@
+#include "haptic_server/haptic_tick.h"
+
+#include <cmath>
+#include <limits>
+
+namespace mhd {
+
+HapticTick::HapticTick(const CompiledScene& scene, const Rig& rig, const HapticTickSettings& settings)
+    : scene_(scene), rig_(rig), settings_(settings), predictor_(settings.prediction), safety_(settings.safety) {}
+
+BaseSampleStatus HapticTick::add_base_sensor_sample(double t_s, const Pose& X_is900_base_sensor) noexcept {
+  const BasePose pose = rig_.base_from_sensor(X_is900_base_sensor);
+  const BaseSampleStatus status = predictor_.add_measurement(t_s, pose);
+  if (status == BaseSampleStatus::Accepted || status == BaseSampleStatus::Reset) {
+    has_measurement_ = true;
+    last_measurement_t_s_ = t_s;
+    last_measurement_ = pose;
+  }
+  return status;
+}
+
+void HapticTick::add_base_command(double t_s, const BaseTwist& twist_B) noexcept {
+  (void)predictor_.add_command(t_s, twist_B);
+}
+
+HapticTickOutput HapticTick::tick(double t_s, double dt_s, const Eigen::Vector3d& q_rad) noexcept {
+  HapticTickOutput out;
+  out.t_s = t_s;
+  out.q_rad = q_rad;
+  out.tracker_age_s = predictor_.age_s(t_s);
+
+  ForceSafetyInput safety_in;
+  safety_in.dt_s = dt_s;
+  safety_in.tracker_age_s = out.tracker_age_s;
+
+  const bool can_render = has_measurement_ && q_rad.allFinite();
+  if (can_render) {
+    out.base = settings_.predict_base_pose ? predictor_.predict(t_s) : last_measurement_;
+    const Pose X_W_robot = rig_.X_W_robot_from_base(out.base);
+    out.hip_W_m = rig_.p_W_hip(X_W_robot, q_rad);
+    if (!proxy_.initialised) reset_proxy(proxy_, out.hip_W_m);
+    const ProxyOutput p = step_proxy(scene_.world, scene_.materials, scene_.proxy, proxy_, out.hip_W_m, dt_s);
+    out.proxy_W_m = p.proxy_W;
+    out.proxy_force_W_N = p.force_W;
+    out.in_contact = p.in_contact;
+    out.contact_object = p.contact_object;
+    safety_in.force_W_N = p.force_W;
+    safety_in.hip_W_m = out.hip_W_m;
+    const ForceSafetyOutput s = safety_.apply(safety_in);
+    out.force_W_N = s.force_W_N;
+    out.safety_gain = s.gain;
+    out.stale = s.stale;
+    out.jump = s.jump;
+    out.clamped = s.clamped;
+    out.torques_Nm = rig_.joint_torques_Nm(X_W_robot, q_rad, out.force_W_N);
+    if (!out.torques_Nm.allFinite()) out.torques_Nm.setZero();
+  } else {
+    // No base pose yet, or the device gave no angles: nothing is known, nothing is pushed.
+    safety_in.force_W_N.setConstant(std::numeric_limits<double>::quiet_NaN());
+    safety_in.hip_W_m.setConstant(std::numeric_limits<double>::quiet_NaN());
+    const ForceSafetyOutput s = safety_.apply(safety_in);
+    out.stale = s.stale;
+    out.hip_W_m.setConstant(std::numeric_limits<double>::quiet_NaN());
+    out.proxy_W_m = out.hip_W_m;
+  }
+  return out;
+}
+
+}  // namespace mhd

@@ -1,0 +1,79 @@
+#pragma once
+// One tick of the haptic loop, free of threads and plugins so that it can be tested and
+// benchmarked alone (the server's 1 kHz thread calls it):
+//   joint angles + predicted base pose -> HIP in the world (Rig) -> god-object proxy ->
+//   force -> safety (clamp, stale fade, jump fade) -> joint torques tau = J^T F.
+// Base poses arrive from the tracker (~100-190 Hz) as base-sensor measurements and the
+// commanded base twist from the planner (10 Hz); between them BasePosePredictor gives a
+// pose for every tick, so the HIP does not leap when a sample arrives.
+// tick() allocates nothing.
+
+#include "kinematics/base_pose.h"
+#include "kinematics/rig.h"
+#include "prediction/base_pose_predictor.h"
+#include "proxy/god_object.h"
+#include "safety/force_safety.h"
+#include "scene_compiler/compiled_scene.h"
+
+#include <Eigen/Core>
+
+#include <cstdint>
+
+namespace mhd {
+
+struct HapticTickSettings {
+  ForceSafetySettings safety;
+  BasePosePredictorSettings prediction;
+  /// false: use the newest measured base pose as is (what the thesis did; for comparison).
+  bool predict_base_pose = true;
+};
+
+struct HapticTickOutput {
+  double t_s = 0.0;
+  Eigen::Vector3d q_rad = Eigen::Vector3d::Zero();
+  Eigen::Vector3d hip_W_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d proxy_W_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d force_W_N = Eigen::Vector3d::Zero();  ///< after safety: what the device gets
+  Eigen::Vector3d proxy_force_W_N = Eigen::Vector3d::Zero();  ///< before safety
+  Eigen::Vector3d torques_Nm = Eigen::Vector3d::Zero();
+  BasePose base;  ///< the base pose this tick used
+  double tracker_age_s = 0.0;
+  double safety_gain = 0.0;
+  int contact_object = -1;
+  bool in_contact = false;
+  bool stale = false;
+  bool jump = false;
+  bool clamped = false;
+};
+
+class HapticTick {
+ public:
+  /// `scene` must outlive this object.
+  HapticTick(const CompiledScene& scene, const Rig& rig, const HapticTickSettings& settings);
+
+  /// A base-sensor pose from the tracker (X_is900_base_sensor), measured at t_s.
+  BaseSampleStatus add_base_sensor_sample(double t_s, const Pose& X_is900_base_sensor) noexcept;
+  /// The base twist the planner commanded at t_s.
+  void add_base_command(double t_s, const BaseTwist& twist_B) noexcept;
+
+  /// The tick at t_s with the device's joint angles; dt_s is the time since the last tick.
+  /// Non-finite angles give zero force (and count as a fault).
+  HapticTickOutput tick(double t_s, double dt_s, const Eigen::Vector3d& q_rad) noexcept;
+
+  [[nodiscard]] const ForceSafety& safety() const noexcept { return safety_; }
+  [[nodiscard]] const BasePosePredictor& predictor() const noexcept { return predictor_; }
+  [[nodiscard]] const ProxyState& proxy_state() const noexcept { return proxy_; }
+
+ private:
+  const CompiledScene& scene_;
+  Rig rig_;
+  HapticTickSettings settings_;
+  BasePosePredictor predictor_;
+  ForceSafety safety_;
+  ProxyState proxy_;
+  bool has_measurement_ = false;
+  double last_measurement_t_s_ = 0.0;
+  BasePose last_measurement_;
+};
+
+}  // namespace mhd

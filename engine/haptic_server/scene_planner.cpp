@@ -1,0 +1,47 @@
+#include "haptic_server/scene_planner.h"
+
+#include "planner/planner.h"
+#include "planner/planner_settings.h"
+
+#include <memory>
+
+namespace mhd {
+
+ScenePlannerResult scene_planner(const SceneDescription& scene, const Rig& rig) {
+  ScenePlannerResult out;
+  if (!scene.planner) return out;
+  const ParamBlock& block = *scene.planner;
+  PlannerKind kind = PlannerKind::Seed;
+  if (!parse_planner_kind(block.kind, kind)) {
+    out.diagnostics.push_back({block.where, "unknown planner kind '" + block.kind + "' (expected seed or predictive)"});
+  }
+  PlannerSettings defaults;
+  defaults.usable_B = usable_box_in_base(rig);
+  const PlannerSettingsParse parsed = planner_settings_from_map(block.params, defaults);
+  for (const std::string& e : parsed.errors) {
+    // The message names the setting; point at its line when it has one.
+    SourceLocation where = block.where;
+    for (const auto& [name, line] : block.param_where) {
+      if (e.find("'" + name + "'") != std::string::npos) where = line;
+    }
+    out.diagnostics.push_back({where, e});
+  }
+  if (!out.diagnostics.empty()) return out;
+
+  std::shared_ptr<Planner> planner = make_planner(kind, parsed.settings);
+  out.collision_radius_m = parsed.settings.collision_radius_m();
+  out.plan = [planner](const BasePlanInput& in) {
+    if (!in.hip_valid || !in.user_known) return BaseTwist{};  // nothing to follow: hold still
+    PlannerInput p;
+    p.time_s = in.t_s;
+    p.base = in.base;
+    p.user_W = in.user_xz_W_m;
+    p.user_heading_rad = in.user_heading_rad;
+    p.user_velocity_W = in.user_velocity_W_mps;
+    p.p_W_hip = in.hip_W_m;
+    return planner->update(p).twist_B;
+  };
+  return out;
+}
+
+}  // namespace mhd

@@ -1,0 +1,44 @@
+#pragma once
+// The haptic server's settings, from the scene: <haptics> (rate, force limit) and the
+// <server> block. <server> params (all optional):
+//   tracker_timeout_s (0.05)  force is zero and the base stops when the newest base pose
+//                             is this old; tracker_fade_s (0.02) the force fade before it
+//   hip_jump_m (0.01)         a HIP step per tick above this fades force (force_safety.h)
+//   fade_in_s (0.5)           force returns over this long after a fault
+//   predict_base_pose (true)  BasePosePredictor between tracker samples, else hold
+//   base_sensor_id (0), head_sensor_id (1)   tracker sensors on the robot and the head
+//   io_rate_hz (1000), base_rate_hz (10), display_rate_hz (60)
+//   base_max_speed_mps (0.5), base_max_omega_degps (40), keep_out_m (the planner's
+//                             robot + human radius, else 0.475): the base guard
+//   record_flush_s (0.05)     the recording reaches the disk at least this often
+
+#include "haptic_server/haptic_tick.h"
+#include "safety/base_command_guard.h"
+#include "scene/diagnostic.h"
+#include "scene/scene_description.h"
+
+#include <cstdint>
+#include <optional>
+
+namespace mhd {
+
+struct ServerSettings {
+  HapticTickSettings tick;
+  double haptic_rate_hz = 1000.0;
+  double io_rate_hz = 1000.0;
+  double base_rate_hz = 10.0;
+  double display_rate_hz = 60.0;
+  std::uint32_t base_sensor_id = 0;
+  std::uint32_t head_sensor_id = 1;
+  BaseCommandGuardSettings base_guard;
+  double record_flush_s = 0.05;
+};
+
+struct ServerSettingsResult {
+  std::optional<ServerSettings> settings;  ///< set when diagnostics is empty
+  Diagnostics diagnostics;
+};
+
+[[nodiscard]] ServerSettingsResult server_settings_from(const SceneDescription& scene);
+
+}  // namespace mhd

@@ -1,0 +1,65 @@
+#include "recording/csv_recording.h"
+
+#include <fmt/format.h>
+
+#include <cerrno>
+#include <cstring>
+#include <iterator>
+#include <stdexcept>
+
+namespace mhd {
+
+std::string_view recording_csv_header() noexcept {
+  return "t_s,q1_rad,q2_rad,q3_rad,hip_x_m,hip_y_m,hip_z_m,proxy_x_m,proxy_y_m,proxy_z_m,"
+         "force_x_N,force_y_N,force_z_N,cmd_force_x_N,cmd_force_y_N,cmd_force_z_N,"
+         "tau1_Nm,tau2_Nm,tau3_Nm,base_x_m,base_z_m,base_heading_rad,"
+         "user_x_m,user_z_m,user_heading_rad,tracker_age_s,safety_gain,contact,contact_object";
+}
+
+CsvRecording::CsvRecording(const std::filesystem::path& path, double flush_interval_s)
+    : path_(path), flush_interval_s_(flush_interval_s) {
+  file_ = std::fopen(path.c_str(), "w");
+  if (file_ == nullptr) {
+    throw std::runtime_error(fmt::format("cannot write recording {}: {}", path.string(), std::strerror(errno)));
+  }
+  const std::string_view header = recording_csv_header();
+  std::fwrite(header.data(), 1, header.size(), file_);
+  std::fputc('\n', file_);
+  flush();
+}
+
+CsvRecording::~CsvRecording() {
+  if (file_ != nullptr) std::fclose(file_);
+}
+
+void CsvRecording::write(const RecordingRow& r) {
+  fmt::memory_buffer line;
+  auto out = std::back_inserter(line);
+  fmt::format_to(out, "{:.6f}", r.t_s);
+  const auto put3 = [&](const std::array<double, 3>& v) { fmt::format_to(out, ",{:.9g},{:.9g},{:.9g}", v[0], v[1], v[2]); };
+  put3(r.q_rad);
+  put3(r.hip_W_m);
+  put3(r.proxy_W_m);
+  put3(r.force_W_N);
+  put3(r.cmd_force_W_N);
+  put3(r.torques_Nm);
+  fmt::format_to(out, ",{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.6g},{:.6g},{},{}\n", r.base_x_m, r.base_z_m,
+                 r.base_heading_rad, r.user_x_m, r.user_z_m, r.user_heading_rad, r.tracker_age_s, r.safety_gain,
+                 static_cast<int>(r.contact), r.contact_object);
+  if (std::fwrite(line.data(), 1, line.size(), file_) != line.size()) {
+    throw std::runtime_error(fmt::format("cannot write recording {}: {}", path_.string(), std::strerror(errno)));
+  }
+  ++rows_;
+  if (r.t_s - last_flush_t_s_ >= flush_interval_s_) {
+    flush();
+    last_flush_t_s_ = r.t_s;
+  }
+}
+
+void CsvRecording::flush() {
+  if (std::fflush(file_) != 0) {
+    throw std::runtime_error(fmt::format("cannot write recording {}: {}", path_.string(), std::strerror(errno)));
+  }
+}
+
+}  // namespace mhd

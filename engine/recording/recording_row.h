@@ -1,0 +1,26 @@
+#pragma once
+// One row of a haptic server recording: what one haptic tick saw and did, plus the user's
+// pose as the tracker last reported it. SI units, world frame.
+
+#include <array>
+#include <cstdint>
+
+namespace mhd {
+
+struct RecordingRow {
+  double t_s = 0.0;  ///< host clock
+  std::array<double, 3> q_rad{};
+  std::array<double, 3> hip_W_m{};
+  std::array<double, 3> proxy_W_m{};
+  std::array<double, 3> force_W_N{};      ///< rendered: what the device was told
+  std::array<double, 3> cmd_force_W_N{};  ///< the proxy's force before the safety stage
+  std::array<double, 3> torques_Nm{};
+  double base_x_m = 0.0, base_z_m = 0.0, base_heading_rad = 0.0;
+  double user_x_m = 0.0, user_z_m = 0.0, user_heading_rad = 0.0;
+  double tracker_age_s = 0.0;
+  double safety_gain = 0.0;
+  std::int32_t contact_object = -1;
+  std::uint8_t contact = 0;
+};
+
+}  // namespace mhd

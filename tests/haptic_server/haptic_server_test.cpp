@@ -1,0 +1,337 @@
+// The haptic server with real plugins through the real dlopen path: the simulated rig on
+// the dolphin scene, and test plugins that fail on cue (plugins/), each run ending in the
+// safe state with a message naming the plugin and its scene line.
+#include "haptic_server/haptic_server.h"
+
+#include "kinematics/rig.h"
+#include "recording/csv_recording.h"
+#include "scene_compiler/scene_compiler.h"
+#include "scene_xml/scene_reader.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <fmt/core.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace mhd;
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+fs::path temp_dir() {
+  const fs::path dir = fs::path(::testing::TempDir()) / "haptic_server_test" /
+                       ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  fs::create_directories(dir);
+  return dir;
+}
+
+struct Loaded {
+  std::optional<SceneDescription> description;
+  std::optional<CompiledScene> scene;
+};
+
+Loaded load(const fs::path& file) {
+  Loaded l;
+  auto read = read_scene_file(file);
+  for (const auto& d : read.diagnostics) ADD_FAILURE() << d.to_string();
+  if (!read.ok()) return l;
+  l.description = *read.scene;
+  auto compiled = compile_scene(*l.description);
+  for (const auto& d : compiled.diagnostics) ADD_FAILURE() << d.to_string();
+  if (compiled.ok()) l.scene = std::move(*compiled.scene);
+  return l;
+}
+
+ServerOptions options_for(double duration_s) {
+  ServerOptions o;
+  o.duration_s = duration_s;
+  o.plugin_path = {MHD_FAULT_PLUGIN_DIR};
+  return o;
+}
+
+/// A scene on the thesis rig with a floor, the given <plugins> content and extra XML.
+fs::path write_scene(const fs::path& dir, const std::string& plugins, const std::string& extra = "") {
+  const fs::path file = dir / "scene.xml";
+  std::ofstream(file) << fmt::format(R"(<?xml version="1.0"?>
+<scene version="1" unit="m">
+  <include file="{}/scenes/rigs/pomhi.xml"/>
+  <object name="floor">
+    <material stiffness_N_per_m="1000"/>
+    <box size="4 0.1 4"/>
+    <pose position="0 -0.05 0"/>
+  </object>
+  <plugins>
+{}
+  </plugins>
+{}
+</scene>
+)", MHD_SOURCE_DIR, plugins, extra);
+  return file;
+}
+
+/// "count a b c" from a fault plugin's command log.
+struct CommandLog {
+  unsigned long count = 0;
+  double a = 1, b = 1, c = 1;
+};
+
+CommandLog read_log(const fs::path& file) {
+  CommandLog log;
+  std::ifstream in(file);
+  in >> log.count >> log.a >> log.b >> log.c;
+  return log;
+}
+
+int scene_line_of(const fs::path& file, const std::string& text) {
+  std::ifstream in(file);
+  std::string line;
+  for (int n = 1; std::getline(in, line); ++n) {
+    if (line.find(text) != std::string::npos) return n;
+  }
+  return 0;
+}
+
+TEST(HapticServer, RunsTheDolphinSceneOnSimulatedHardwareAndRecordsEveryTick) {
+  const fs::path dir = temp_dir();
+  Loaded l = load(std::string(MHD_SOURCE_DIR) + "/scenes/dolphin.xml");
+  ASSERT_TRUE(l.scene);
+  ServerOptions o = options_for(1.5);
+  o.recording = dir / "dolphin.csv";
+  auto build = HapticServer::open(*l.description, *l.scene, o);
+  for (const auto& d : build.diagnostics) ADD_FAILURE() << d.to_string();
+  ASSERT_TRUE(build.server);
+  const ServerReport r = build.server->run();
+  EXPECT_FALSE(r.error) << *r.error;
+  EXPECT_GT(r.status.ticks, 100u);
+  EXPECT_GT(r.status.tracker_samples, 50u);
+  EXPECT_EQ(r.status.tracker_rejected, 0u);
+  EXPECT_TRUE(r.zero_force_sent);
+  EXPECT_TRUE(r.base_stop_sent);
+  EXPECT_EQ(r.recording_dropped, 0u);
+  EXPECT_EQ(r.recording_rows, r.status.ticks);
+
+  std::ifstream csv(o.recording);
+  std::string header;
+  ASSERT_TRUE(std::getline(csv, header));
+  EXPECT_EQ(header, recording_csv_header());
+  std::size_t rows = 0, rows_with_hip = 0;
+  for (std::string line; std::getline(csv, line); ++rows) {
+    if (line.find("nan") == std::string::npos) ++rows_with_hip;
+  }
+  EXPECT_EQ(rows, r.recording_rows);
+  EXPECT_GT(rows_with_hip, rows / 2);  // the HIP is known once the first base pose is in
+}
+
+TEST(HapticServer, DeviceReturningNanEndsTheRunWithZeroForceAndTheBaseStopped) {
+  const fs::path dir = temp_dir();
+  const fs::path device_log = dir / "device.log", base_log = dir / "base.log";
+  const fs::path file = write_scene(dir, fmt::format(R"(
+    <plugin kind="device" name="fault_device">
+      <param name="fail_after_reads" value="200"/>
+      <param name="fault" value="nan"/>
+      <param name="command_log" value="{}"/>
+    </plugin>
+    <plugin kind="tracker" name="sim_is900"/>
+    <plugin kind="base" name="fault_base">
+      <param name="command_log" value="{}"/>
+    </plugin>)", device_log.string(), base_log.string()));
+  Loaded l = load(file);
+  ASSERT_TRUE(l.scene);
+  auto build = HapticServer::open(*l.description, *l.scene, options_for(30.0));
+  ASSERT_TRUE(build.server);
+  const ServerReport r = build.server->run();
+  ASSERT_TRUE(r.error);
+  EXPECT_EQ(*r.error, fmt::format("{}:{}: error: plugin 'fault_device': device_read returned a non-finite "
+                                  "joint_angles_rad[1]",
+                                  file.string(), scene_line_of(file, "name=\"fault_device\"")));
+  EXPECT_LT(r.status.elapsed_s, 30.0);  // ended by the fault, not the duration
+  EXPECT_TRUE(r.zero_force_sent);
+  EXPECT_TRUE(r.base_stop_sent);
+  const CommandLog device = read_log(device_log);
+  EXPECT_GT(device.count, 1u);
+  EXPECT_EQ(device.a, 0.0);
+  EXPECT_EQ(device.b, 0.0);
+  EXPECT_EQ(device.c, 0.0);
+  const CommandLog base = read_log(base_log);
+  EXPECT_GT(base.count, 0u);
+  EXPECT_EQ(base.a, 0.0);
+  EXPECT_EQ(base.b, 0.0);
+  EXPECT_EQ(base.c, 0.0);
+}
+
+TEST(HapticServer, DeviceErrorAndDeactivateEndTheRunNamingThePlugin) {
+  for (const std::string fault : {"error", "deactivate"}) {
+    const fs::path dir = temp_dir() / fault;
+    fs::create_directories(dir);
+    const fs::path device_log = dir / "device.log";
+    const fs::path file = write_scene(dir, fmt::format(R"(
+    <plugin kind="device" name="fault_device">
+      <param name="fail_after_reads" value="100"/>
+      <param name="fault" value="{}"/>
+      <param name="command_log" value="{}"/>
+    </plugin>
+    <plugin kind="tracker" name="sim_is900"/>)", fault, device_log.string()));
+    Loaded l = load(file);
+    ASSERT_TRUE(l.scene);
+    auto build = HapticServer::open(*l.description, *l.scene, options_for(30.0));
+    ASSERT_TRUE(build.server);
+    const ServerReport r = build.server->run();
+    ASSERT_TRUE(r.error) << fault;
+    const std::string where = fmt::format("{}:{}: error: plugin 'fault_device'", file.string(),
+                                          scene_line_of(file, "name=\"fault_device\""));
+    EXPECT_THAT(*r.error, HasSubstr(where));
+    EXPECT_THAT(*r.error, HasSubstr(fault == "error" ? "injected fault: hardware not responding"
+                                                     : "device_read asked to be stopped"));
+    EXPECT_TRUE(r.zero_force_sent);
+    const CommandLog device = read_log(device_log);
+    EXPECT_EQ(device.a, 0.0);
+    EXPECT_EQ(device.b, 0.0);
+    EXPECT_EQ(device.c, 0.0);
+  }
+}
+
+TEST(HapticServer, BaseFailingMidRunStopsTheBaseAndZeroesTheForce) {
+  const fs::path dir = temp_dir();
+  const fs::path device_log = dir / "device.log", base_log = dir / "base.log";
+  const fs::path file = write_scene(dir, fmt::format(R"(
+    <plugin kind="device" name="fault_device">
+      <param name="command_log" value="{}"/>
+    </plugin>
+    <plugin kind="tracker" name="sim_is900"/>
+    <plugin kind="base" name="fault_base">
+      <param name="fail_after_reads" value="300"/>
+      <param name="fault" value="error"/>
+      <param name="command_log" value="{}"/>
+    </plugin>)", device_log.string(), base_log.string()));
+  Loaded l = load(file);
+  ASSERT_TRUE(l.scene);
+  auto build = HapticServer::open(*l.description, *l.scene, options_for(30.0));
+  ASSERT_TRUE(build.server);
+  const ServerReport r = build.server->run();
+  ASSERT_TRUE(r.error);
+  EXPECT_THAT(*r.error, HasSubstr(fmt::format("{}:{}: error: plugin 'fault_base': ", file.string(),
+                                              scene_line_of(file, "name=\"fault_base\""))));
+  EXPECT_THAT(*r.error, HasSubstr("injected fault: hardware not responding"));
+  EXPECT_TRUE(r.zero_force_sent);
+  EXPECT_TRUE(r.base_stop_sent);
+  EXPECT_EQ(read_log(device_log).b, 0.0);
+  const CommandLog base = read_log(base_log);
+  EXPECT_GT(base.count, 0u);
+  EXPECT_EQ(base.a, 0.0);
+  EXPECT_EQ(base.c, 0.0);
+}
+
+TEST(HapticServer, SilentTrackerFadesForceOutAndStopsTheBase) {
+  const fs::path dir = temp_dir();
+  // A replay log with the base sensor at its nominal pose for 0.4 s, then nothing.
+  const auto rig_read = read_scene_file(std::string(MHD_SOURCE_DIR) + "/scenes/rigs/pomhi.xml");
+  const Rig rig = *Rig::from_scene(*rig_read.scene).rig;
+  const Pose X = rig.X_is900_base_sensor_from_base({});
+  const Eigen::Quaterniond q(X.rotation());
+  const fs::path replay = dir / "tracker.csv";
+  {
+    std::ofstream out(replay);
+    out << "timestamp_s,sensor_id,sequence,px,py,pz,qw,qx,qy,qz\n";
+    for (int i = 0; i < 40; ++i) {
+      out << fmt::format("{:.3f},0,{},{:.9f},{:.9f},{:.9f},{:.12f},{:.12f},{:.12f},{:.12f}\n", 0.01 * i, i + 1,
+                         X.translation().x(), X.translation().y(), X.translation().z(), q.w(), q.x(), q.y(), q.z());
+    }
+  }
+  const fs::path base_log = dir / "base.log";
+  const fs::path file = write_scene(dir, fmt::format(R"(
+    <plugin kind="device" name="fault_device"/>
+    <plugin kind="tracker" name="replay">
+      <param name="file" value="{}"/>
+    </plugin>
+    <plugin kind="base" name="fault_base">
+      <param name="command_log" value="{}"/>
+    </plugin>)", replay.string(), base_log.string()), R"(
+  <server>
+    <param name="fade_in_s" value="0.1"/>
+  </server>)");
+  Loaded l = load(file);
+  ASSERT_TRUE(l.scene);
+  ServerOptions o = options_for(1.0);
+  o.recording = dir / "run.csv";
+  o.plan_base = [](const BasePlanInput&) { return BaseTwist{0.1, 0.0, 0.0}; };  // keeps asking to move
+  auto build = HapticServer::open(*l.description, *l.scene, o);
+  ASSERT_TRUE(build.server);
+  const ServerReport r = build.server->run();
+  EXPECT_FALSE(r.error) << *r.error;
+  EXPECT_GT(r.stale_ticks, 0u);
+  EXPECT_GT(r.base_stops, 0u);
+  const CommandLog base = read_log(base_log);
+  EXPECT_EQ(base.a, 0.0);  // the planner still asks for 0.1 m/s; the guard stopped the base
+
+  // In the recording: full gain while samples flow, zero force from the timeout on.
+  std::ifstream csv(o.recording);
+  std::string line;
+  std::getline(csv, line);
+  std::size_t rows_fresh_full = 0, rows_stale = 0, stale_with_force = 0;
+  while (std::getline(csv, line)) {
+    std::vector<std::string> cells;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');) cells.push_back(cell);
+    ASSERT_EQ(cells.size(), 29u);
+    const double age = std::stod(cells[25]), gain = std::stod(cells[26]);
+    const double fx = std::stod(cells[10]), fy = std::stod(cells[11]), fz = std::stod(cells[12]);
+    if (age >= 0.05) {
+      ++rows_stale;
+      if (fx != 0.0 || fy != 0.0 || fz != 0.0 || gain != 0.0) ++stale_with_force;
+    } else if (age >= 0.0 && age < 0.02 && gain == 1.0) {
+      ++rows_fresh_full;
+    }
+  }
+  EXPECT_GT(rows_fresh_full, 0u);
+  EXPECT_GT(rows_stale, 100u);
+  EXPECT_EQ(stale_with_force, 0u);
+}
+
+TEST(HapticServer, OpenReportsEveryProblemAtItsSceneLine) {
+  const fs::path dir = temp_dir();
+  const fs::path file = write_scene(dir, R"(
+    <plugin kind="device" name="no_such_device"/>
+    <plugin kind="base" name="fault_base"/>
+    <plugin kind="base" name="fault_base"/>)", R"(
+  <server>
+    <param name="tracker_timeout_ms" value="50"/>
+  </server>)");
+  Loaded l = load(file);
+  ASSERT_TRUE(l.scene);
+  auto build = HapticServer::open(*l.description, *l.scene, options_for(1.0));
+  EXPECT_FALSE(build.server);
+  std::vector<std::string> messages;
+  for (const auto& d : build.diagnostics) messages.push_back(d.to_string());
+  const std::string f = file.string();
+  EXPECT_THAT(messages, ::testing::Contains(HasSubstr(fmt::format(
+                            "{}:{}: error: unknown param 'tracker_timeout_ms' in <server>", f,
+                            scene_line_of(file, "tracker_timeout_ms")))));
+  EXPECT_THAT(messages, ::testing::Contains(HasSubstr(fmt::format(
+                            "{}:{}: error: a second base plugin 'fault_base'", f,
+                            scene_line_of(file, "name=\"fault_base\"") + 1))));
+  EXPECT_THAT(messages, ::testing::Contains(fmt::format(
+                            "{}: error: the scene names no tracker plugin (<plugin kind=\"tracker\">)", f)));
+}
+
+TEST(HapticServer, AMissingPluginIsAnErrorAtItsLineAndNothingRuns) {
+  const fs::path dir = temp_dir();
+  const fs::path file = write_scene(dir, R"(
+    <plugin kind="device" name="no_such_device"/>
+    <plugin kind="tracker" name="sim_is900"/>)");
+  Loaded l = load(file);
+  ASSERT_TRUE(l.scene);
+  auto build = HapticServer::open(*l.description, *l.scene, options_for(1.0));
+  EXPECT_FALSE(build.server);
+  ASSERT_EQ(build.diagnostics.size(), 1u);
+  EXPECT_THAT(build.diagnostics[0].to_string(),
+              HasSubstr(fmt::format("{}:{}: error: plugin 'no_such_device'", file.string(),
+                                    scene_line_of(file, "no_such_device"))));
+}
+
+}  // namespace

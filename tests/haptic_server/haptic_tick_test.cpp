@@ -1,0 +1,148 @@
+#include "haptic_server/haptic_tick.h"
+
+#include "scene_compiler/scene_compiler.h"
+#include "scene_xml/scene_reader.h"
+
+#include <gtest/gtest.h>
+#include <fmt/core.h>
+
+#include <filesystem>
+#include <fstream>
+#include <limits>
+
+namespace {
+
+using namespace mhd;
+
+const Eigen::Vector3d kQ(0.0, 0.3, 0.2);  // the PHANToM near mid-workspace
+
+struct Fixture {
+  std::optional<SceneDescription> description;
+  std::optional<CompiledScene> scene;
+  std::optional<Rig> rig;
+};
+
+/// The thesis rig and a 1 m box whose top face lies `gap_m` below the HIP at kQ with the
+/// base at the origin (stiffness 500 N/m, no friction).
+Fixture make_fixture(double gap_m) {
+  Fixture f;
+  const auto rig_read = read_scene_file(std::string(MHD_SOURCE_DIR) + "/scenes/rigs/pomhi.xml");
+  f.rig = Rig::from_scene(*rig_read.scene).rig;
+  const Eigen::Vector3d hip = f.rig->p_W_hip(f.rig->X_W_robot_from_base({}), kQ);
+  const auto dir = std::filesystem::path(::testing::TempDir()) / "haptic_tick_test";
+  std::filesystem::create_directories(dir);
+  const auto file = dir / "box.xml";
+  std::ofstream(file) << fmt::format(R"(<?xml version="1.0"?>
+<scene version="1" unit="m">
+  <include file="{}/scenes/rigs/pomhi.xml"/>
+  <object name="box">
+    <material stiffness_N_per_m="500" damping_Ns_per_m="0" static_friction="0" dynamic_friction="0"/>
+    <box size="1 1 1"/>
+    <pose position="{} {} {}"/>
+  </object>
+</scene>
+)", MHD_SOURCE_DIR, hip.x(), hip.y() - gap_m - 0.5, hip.z());
+  auto read = read_scene_file(file);
+  EXPECT_TRUE(read.ok());
+  f.description = *read.scene;
+  CompileOptions options;
+  options.use_cache = false;
+  auto compiled = compile_scene(*f.description, options);
+  EXPECT_TRUE(compiled.ok());
+  f.scene = std::move(*compiled.scene);
+  return f;
+}
+
+HapticTickSettings no_fade_in() {
+  HapticTickSettings s;
+  s.safety.fade_in_s = 0.0;
+  return s;
+}
+
+TEST(HapticTick, NoForceAndNoHipBeforeTheFirstBasePose) {
+  Fixture f = make_fixture(0.005);
+  HapticTick tick(*f.scene, *f.rig, no_fade_in());
+  const auto out = tick.tick(0.0, 0.001, kQ);
+  EXPECT_FALSE(out.hip_W_m.allFinite());
+  EXPECT_EQ(out.force_W_N, Eigen::Vector3d::Zero());
+  EXPECT_EQ(out.torques_Nm, Eigen::Vector3d::Zero());
+  EXPECT_TRUE(out.stale);
+}
+
+TEST(HapticTick, HipFollowsTheRigChainFromTheTrackedBasePose) {
+  Fixture f = make_fixture(0.05);
+  HapticTick tick(*f.scene, *f.rig, no_fade_in());
+  const BasePose base{0.0, 0.0, 0.0};
+  ASSERT_NE(tick.add_base_sensor_sample(0.0, f.rig->X_is900_base_sensor_from_base(base)), BaseSampleStatus::Invalid);
+  const auto out = tick.tick(0.001, 0.001, kQ);
+  const Eigen::Vector3d expected = f.rig->p_W_hip(f.rig->X_W_robot_from_base(base), kQ);
+  EXPECT_LT((out.hip_W_m - expected).norm(), 1e-9);
+  EXPECT_FALSE(out.in_contact);
+  EXPECT_EQ(out.force_W_N, Eigen::Vector3d::Zero());
+}
+
+TEST(HapticTick, PressingIntoTheBoxGivesTheSpringForceAndItsJointTorques) {
+  Fixture f = make_fixture(0.002);
+  HapticTick tick(*f.scene, *f.rig, no_fade_in());
+  ASSERT_NE(tick.add_base_sensor_sample(0.0, f.rig->X_is900_base_sensor_from_base({})), BaseSampleStatus::Invalid);
+  (void)tick.tick(0.001, 0.001, kQ);  // free, 2 mm above the top face
+  // Lower the arm (theta2 down) until the HIP is below the face.
+  Eigen::Vector3d q = kQ;
+  HapticTickOutput out;
+  const Pose sensor = f.rig->X_is900_base_sensor_from_base({});
+  double t = 0.001;
+  for (int i = 0; i < 40 && !out.in_contact; ++i) {
+    q.y() -= 0.001;
+    (void)tick.add_base_sensor_sample(t, sensor);  // fresh tracking throughout
+    out = tick.tick(t += 0.001, 0.001, q);
+  }
+  for (int i = 0; i < 20; ++i) {
+    q.y() -= 0.0005;
+    (void)tick.add_base_sensor_sample(t, sensor);
+    out = tick.tick(t += 0.001, 0.001, q);
+  }
+  ASSERT_TRUE(out.in_contact);
+  const double face_y = out.proxy_W_m.y();
+  const double depth = face_y - out.hip_W_m.y();
+  ASSERT_GT(depth, 0.001);
+  EXPECT_NEAR(out.force_W_N.y(), 500.0 * depth, 500.0 * 2e-6 + 1e-9);  // k * depth (skin 1 um)
+  EXPECT_NEAR(out.force_W_N.x(), 0.0, 1e-9);
+  EXPECT_NEAR(out.force_W_N.z(), 0.0, 1e-9);
+  const Eigen::Vector3d expected_torques =
+      f.rig->joint_torques_Nm(f.rig->X_W_robot_from_base({}), q, out.force_W_N);
+  EXPECT_LT((out.torques_Nm - expected_torques).norm(), 1e-12);
+  EXPECT_GT(out.torques_Nm.norm(), 0.0);
+}
+
+TEST(HapticTick, ForceFadesToZeroWhenTheBasePoseGoesStale) {
+  Fixture f = make_fixture(0.002);
+  HapticTick tick(*f.scene, *f.rig, no_fade_in());
+  const Pose sensor = f.rig->X_is900_base_sensor_from_base({});
+  Eigen::Vector3d q = kQ;
+  q.y() -= 0.03;  // into the box (the proxy starts above it and is caught on the way)
+  ASSERT_NE(tick.add_base_sensor_sample(0.0, sensor), BaseSampleStatus::Invalid);
+  (void)tick.tick(0.0005, 0.001, kQ);
+  HapticTickOutput out;
+  for (int i = 1; i <= 60; ++i) {
+    const double t = 0.001 * i;
+    out = tick.tick(t, 0.001, q);
+    if (t <= 0.03 + 1e-9) {
+      EXPECT_GT(out.force_W_N.norm(), 1.0) << "t = " << t;  // no samples since t = 0
+    }
+  }
+  EXPECT_TRUE(out.stale);
+  EXPECT_EQ(out.force_W_N, Eigen::Vector3d::Zero());
+  EXPECT_EQ(out.torques_Nm, Eigen::Vector3d::Zero());
+}
+
+TEST(HapticTick, NonFiniteJointAnglesGiveZeroForce) {
+  Fixture f = make_fixture(0.002);
+  HapticTick tick(*f.scene, *f.rig, no_fade_in());
+  ASSERT_NE(tick.add_base_sensor_sample(0.0, f.rig->X_is900_base_sensor_from_base({})), BaseSampleStatus::Invalid);
+  const Eigen::Vector3d nan_q(0.0, std::numeric_limits<double>::quiet_NaN(), 0.2);
+  const auto out = tick.tick(0.001, 0.001, nan_q);
+  EXPECT_EQ(out.force_W_N, Eigen::Vector3d::Zero());
+  EXPECT_EQ(out.torques_Nm, Eigen::Vector3d::Zero());
+}
+
+}  // namespace

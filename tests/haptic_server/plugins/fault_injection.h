@@ -1,0 +1,87 @@
+#pragma once
+// Shared by the haptic server's fault-injection test plugins: parameters
+//   fail_after_reads=<n>   reads that succeed before the fault (default: never fail)
+//   fault=nan|error|deactivate|none   what the read returns from then on
+//   command_log=<path>     on close, the last command received is written there as
+//                          "<count> <a> <b> <c>\n" (count of commands, then the values)
+// so a test can check, from the plugin's side, what the host left the hardware with.
+
+#include <mhd/plugin_abi.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+namespace fault_injection {
+
+enum class Fault { None, Nan, Error, Deactivate };
+
+struct Config {
+  unsigned long fail_after_reads = ~0ul;
+  Fault fault = Fault::None;
+  std::string command_log;
+  double last_command[3] = {0.0, 0.0, 0.0};
+  unsigned long commands = 0;
+  unsigned long reads = 0;
+};
+
+inline void fail(mhd_error* err, const std::string& text) {
+  std::snprintf(err->message, sizeof(err->message), "%s", text.c_str());
+}
+
+/// False (with err filled) for an unknown parameter or a bad value.
+inline bool parse(Config& c, const mhd_param* params, size_t count, mhd_error* err) {
+  for (size_t i = 0; i < count; ++i) {
+    const std::string name = params[i].name, value = params[i].value;
+    if (name == "fail_after_reads") {
+      c.fail_after_reads = std::strtoul(value.c_str(), nullptr, 10);
+    } else if (name == "fault") {
+      if (value == "nan") c.fault = Fault::Nan;
+      else if (value == "error") c.fault = Fault::Error;
+      else if (value == "deactivate") c.fault = Fault::Deactivate;
+      else if (value == "none") c.fault = Fault::None;
+      else {
+        fail(err, "bad fault '" + value + "'");
+        return false;
+      }
+    } else if (name == "command_log") {
+      c.command_log = value;
+    } else {
+      fail(err, "unknown parameter '" + name + "'");
+      return false;
+    }
+  }
+  return true;
+}
+
+/// What this read returns: MHD_OK, or the fault once fail_after_reads reads have passed.
+/// `nan_out` is set when the read must report NaN.
+inline mhd_status next_read(Config& c, bool& nan_out, mhd_error* err) {
+  nan_out = false;
+  if (++c.reads <= c.fail_after_reads || c.fault == Fault::None) return MHD_OK;
+  switch (c.fault) {
+    case Fault::Nan: nan_out = true; return MHD_OK;
+    case Fault::Error: fail(err, "injected fault: hardware not responding"); return MHD_ERROR;
+    case Fault::Deactivate: return MHD_DEACTIVATE;
+    case Fault::None: break;
+  }
+  return MHD_OK;
+}
+
+inline void record(Config& c, double a, double b, double d) {
+  c.last_command[0] = a;
+  c.last_command[1] = b;
+  c.last_command[2] = d;
+  ++c.commands;
+}
+
+inline void write_log(const Config& c) {
+  if (c.command_log.empty()) return;
+  if (std::FILE* f = std::fopen(c.command_log.c_str(), "w")) {
+    std::fprintf(f, "%lu %.17g %.17g %.17g\n", c.commands, c.last_command[0], c.last_command[1], c.last_command[2]);
+    std::fclose(f);
+  }
+}
+
+}  // namespace fault_injection

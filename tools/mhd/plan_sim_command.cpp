@@ -1,0 +1,136 @@
+#include "plan_sim_command.h"
+
+#include "command_exit.h"
+#include "plan_sim.h"
+#include "planner/planner_settings.h"
+
+#include <fmt/core.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <numbers>
+#include <string>
+#include <system_error>
+#include <vector>
+
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+struct PlanSimOptions {
+  std::string out = "plan_sim_out";
+  std::string planner = "both";
+  std::vector<double> v_mps{0.1, 0.2, 0.3, 0.4, 0.5};
+  std::vector<double> omega_degps{45.0, 60.0, 75.0, 90.0};
+  std::vector<double> facing_deg{0.0, 45.0, 90.0};
+  double cell_mm = 25.0;
+  double half_size_m = 1.5;
+  std::vector<std::string> sets;
+  bool no_png = false;
+};
+
+int fail(const std::string& message) {
+  fmt::print(stderr, "mhd plan-sim: error: {}\n", message);
+  return 1;
+}
+
+int run(const PlanSimOptions& o) {
+  std::map<std::string, std::string> values;
+  for (const std::string& s : o.sets) {
+    const auto eq = s.find('=');
+    if (eq == std::string::npos || eq == 0) return fail("--set expects NAME=VALUE, got '" + s + "'");
+    values[s.substr(0, eq)] = s.substr(eq + 1);
+  }
+  const mhd::PlannerSettingsParse parsed = mhd::planner_settings_from_map(values);
+  if (!parsed.ok()) {
+    for (const std::string& e : parsed.errors) fmt::print(stderr, "mhd plan-sim: error: {}\n", e);
+    return 1;
+  }
+  std::vector<mhd::PlannerKind> kinds;
+  if (o.planner == "both") {
+    kinds = {mhd::PlannerKind::Seed, mhd::PlannerKind::Predictive};
+  } else {
+    mhd::PlannerKind kind{};
+    if (!mhd::parse_planner_kind(o.planner, kind))
+      return fail("--planner must be seed, predictive or both, got '" + o.planner + "'");
+    kinds = {kind};
+  }
+  if (!(o.cell_mm > 0.0) || !(o.half_size_m > 0.0)) return fail("--cell-mm and --half-size-m must be > 0");
+  std::error_code ec;
+  std::filesystem::create_directories(o.out, ec);
+  if (ec) return fail("cannot create '" + o.out + "': " + ec.message());
+
+  std::vector<mhd::plan_sim::TableRow> rows;
+  double simulated_s = 0.0;
+  const auto start = std::chrono::steady_clock::now();
+  for (const mhd::PlannerKind kind : kinds) {
+    for (const double facing : o.facing_deg) {
+      std::vector<mhd::plan_sim::Image> tiles;
+      for (const double v : o.v_mps) {
+        for (const double w : o.omega_degps) {
+          mhd::PlannerSettings settings = parsed.settings;
+          settings.max_linear_speed_mps = v;
+          settings.max_angular_speed_radps = w * kDeg;
+          if (const auto errors = mhd::validate(settings); !errors.empty()) return fail(errors.front());
+          mhd::plan_sim::MapSpec spec;
+          spec.cell_m = o.cell_mm * 1e-3;
+          spec.half_size_m = o.half_size_m;
+          spec.facing_change_rad = facing * kDeg;
+          const mhd::plan_sim::FollowMap map = mhd::plan_sim::simulate_map(kind, settings, spec);
+          simulated_s += spec.horizon_s * map.cells_per_side * map.cells_per_side;
+          rows.push_back({kind, spec.facing_change_rad, v, w * kDeg, map.followed_area_m2(), map.followed_cells,
+                          map.base_entries});
+          if (o.no_png) continue;
+          tiles.push_back(mhd::plan_sim::render_map(map, settings));
+          const std::filesystem::path file =
+              std::filesystem::path(o.out) / fmt::format("planner_{}_f{:.0f}_v{:.1f}_w{:.0f}.png",
+                                                         mhd::to_string(kind), facing, v, w);
+          if (const std::string err = mhd::plan_sim::write_png(file, tiles.back()); !err.empty()) return fail(err);
+        }
+      }
+      if (!o.no_png) {
+        const std::filesystem::path file =
+            std::filesystem::path(o.out) / fmt::format("planner_{}_f{:.0f}.png", mhd::to_string(kind), facing);
+        const int columns = static_cast<int>(o.omega_degps.size());
+        if (const std::string err = mhd::plan_sim::write_png(file, mhd::plan_sim::tile(tiles, columns)); !err.empty())
+          return fail(err);
+      }
+    }
+  }
+  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  const std::filesystem::path csv = std::filesystem::path(o.out) / "plan_sim_areas.csv";
+  std::ofstream out(csv);
+  out << mhd::plan_sim::table_csv(rows);
+  if (!out) return fail("cannot write '" + csv.string() + "'");
+  fmt::print("{}", mhd::plan_sim::table_text(rows));
+  int entries = 0;
+  for (const auto& r : rows) entries += r.base_entries;
+  fmt::print("simulated {:.0f} s of planner time in {:.2f} s ({:.0f}x real time); base moved into the user: {}\n",
+             simulated_s, wall_s, simulated_s / wall_s, entries);
+  fmt::print("wrote {}{}\n", csv.string(), o.no_png ? "" : " and the PNG maps in " + o.out);
+  return 0;
+}
+
+}  // namespace
+
+void add_plan_sim_command(CLI::App& app) {
+  auto o = std::make_shared<PlanSimOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "plan-sim", "Planner simulator (thesis ch. 3.6): maps of user moves the base follows within 1 s");
+  cmd->add_option("--out", o->out, "Output folder for the CSV table and PNG maps")->capture_default_str();
+  cmd->add_option("--planner", o->planner, "seed, predictive or both")->capture_default_str();
+  cmd->add_option("--v-mps", o->v_mps, "Maximum linear speeds")->capture_default_str();
+  cmd->add_option("--omega-degps", o->omega_degps, "Maximum angular speeds")->capture_default_str();
+  cmd->add_option("--facing-deg", o->facing_deg, "Changes of the user's facing")->capture_default_str();
+  cmd->add_option("--cell-mm", o->cell_mm, "Grid cell size")->capture_default_str();
+  cmd->add_option("--half-size-m", o->half_size_m, "The grid covers +-this around the user's start")
+      ->capture_default_str();
+  cmd->add_option("--set", o->sets, "Planner setting NAME=VALUE (e.g. step_angle_deg=30)")->type_name("NAME=VALUE");
+  cmd->add_flag("--no-png", o->no_png, "Only the table");
+  cmd->callback([o] { mhd::cli::exit_with(run(*o)); });
+}

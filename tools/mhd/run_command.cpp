@@ -1,0 +1,140 @@
+// `mhd run SCENE [--duration S] [--record FILE]`: loads and compiles the scene, opens the
+// plugins it names and runs the haptic server (engine/haptic_server) until the duration
+// is over, Ctrl-C, or a fault. A status line shows the loop's rate, overruns, contact and
+// force; the summary at the end gives the tick timings and every safety count.
+// Exit status: 0 for a clean run, 1 when the scene or a plugin cannot be opened, 3 when a
+// fault ended the run (the message names the plugin and its scene line).
+
+#include "run_command.h"
+
+#include "command_exit.h"
+#include "haptic_server/haptic_server.h"
+#include "scene_compiler/scene_compiler.h"
+#include "scene_xml/scene_reader.h"
+
+#include <fmt/core.h>
+
+#include <unistd.h>
+
+#include <atomic>
+#include <cmath>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace {
+
+inline constexpr int kRunFault = 3;
+
+struct RunOptions {
+  std::string scene;
+  double duration_s = 0.0;
+  std::string record;
+  std::vector<std::string> plugin_path;
+  bool no_cache = false;
+  bool quiet = false;
+};
+
+std::atomic<mhd::HapticServer*> g_server{nullptr};
+
+extern "C" void on_stop_signal(int /*signal*/) {
+  if (mhd::HapticServer* s = g_server.load()) s->request_stop();
+}
+
+void print_status(const mhd::ServerStatus& s, bool tty) {
+  const std::string line = fmt::format(
+      "t {:6.1f} s | {:6.0f} Hz | overruns {} | {} {:4.2f} N (gain {:.2f}) | tracker {} ms, {} samples, {} dropped | "
+      "base ({:+.2f}, {:+.2f}) m {:+4.0f} deg",
+      s.elapsed_s, s.haptic_rate_hz, s.overruns, s.in_contact ? "CONTACT" : "free   ", s.force_N, s.safety_gain,
+      std::isfinite(s.tracker_age_s) ? fmt::format("{:.0f}", s.tracker_age_s * 1e3) : std::string("-"),
+      s.tracker_samples, s.tracker_rejected, s.base.x_m, s.base.z_m, s.base.heading_rad * 180.0 / 3.141592653589793);
+  if (tty) {
+    fmt::print(stderr, "\r{}\x1b[K", line);
+  } else {
+    fmt::print(stderr, "{}\n", line);
+  }
+  std::fflush(stderr);
+}
+
+int run(const RunOptions& opt) {
+  using Clock = std::chrono::steady_clock;
+  const auto t0 = Clock::now();
+  const mhd::SceneReadResult read = mhd::read_scene_file(opt.scene);
+  for (const auto& d : read.diagnostics) fmt::print(stderr, "{}\n", d.to_string());
+  if (!read.ok()) return 1;
+
+  mhd::CompileOptions compile_options;
+  compile_options.use_cache = !opt.no_cache;
+  const mhd::CompileResult compiled = mhd::compile_scene(*read.scene, compile_options);
+  for (const auto& d : compiled.diagnostics) fmt::print(stderr, "{}\n", d.to_string());
+  if (!compiled.ok()) return 1;
+  const mhd::CompiledScene& scene = *compiled.scene;
+
+  mhd::ServerOptions options;
+  options.duration_s = opt.duration_s;
+  options.recording = opt.record;
+  for (const auto& p : opt.plugin_path) options.plugin_path.emplace_back(p);
+  const bool tty = isatty(STDERR_FILENO) != 0;
+  if (!opt.quiet) {
+    options.on_status = [tty](const mhd::ServerStatus& s) { print_status(s, tty); };
+    options.status_interval_s = tty ? 0.2 : 1.0;
+  }
+
+  mhd::HapticServerBuild build = mhd::HapticServer::open(*read.scene, scene, std::move(options));
+  for (const auto& d : build.diagnostics) fmt::print(stderr, "{}\n", d.to_string());
+  if (!build.server) return 1;
+  const double load_s = std::chrono::duration<double>(Clock::now() - t0).count();
+  fmt::print("scene {}: {} objects, {} triangles, plugins open after {:.3f} s; haptic loop at {:.0f} Hz{}\n",
+             opt.scene, scene.world.object_count(), scene.triangle_count, load_s,
+             build.server->settings().haptic_rate_hz,
+             opt.duration_s > 0.0 ? fmt::format(" for {} s", opt.duration_s) : std::string(" until Ctrl-C"));
+  std::fflush(stdout);
+
+  g_server.store(build.server.get());
+  std::signal(SIGINT, on_stop_signal);
+  std::signal(SIGTERM, on_stop_signal);
+  const mhd::ServerReport r = build.server->run();
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+  g_server.store(nullptr);
+  if (!opt.quiet && tty) fmt::print(stderr, "\n");
+
+  const mhd::ServerStatus& s = r.status;
+  fmt::print("ran {:.2f} s: {} ticks ({:.1f} Hz), {} overruns, {} deadlines missed\n", s.elapsed_s, s.ticks,
+             s.haptic_rate_hz, s.overruns, r.missed_deadlines);
+  fmt::print("tick (device read to device write): median {:.1f} us, p99 {:.1f} us, p99.9 {:.1f} us, max {:.1f} us\n",
+             r.tick_median_us, r.tick_p99_us, r.tick_p999_us, r.tick_max_us);
+  fmt::print("contact ticks {}; safety: {} stale, {} fault, {} HIP jumps, {} clamped ticks\n", r.contact_ticks,
+             r.stale_ticks, r.fault_ticks, r.hip_jumps, r.clamped_ticks);
+  fmt::print("tracker: {} samples, {} dropped; base: {} commands ({} stops), ends at ({:.3f}, {:.3f}) m\n",
+             s.tracker_samples, s.tracker_rejected, r.base_commands, r.base_stops, s.base.x_m, s.base.z_m);
+  if (!opt.record.empty()) {
+    fmt::print("recording {}: {} rows, {} dropped\n", opt.record, r.recording_rows, r.recording_dropped);
+  }
+  fmt::print("safe state: {}, {}\n", r.zero_force_sent ? "zero force sent" : "ZERO FORCE NOT CONFIRMED",
+             r.base_stop_sent ? "base stopped" : "BASE STOP NOT CONFIRMED");
+  if (r.error) {
+    fmt::print(stderr, "mhd run: error: {}\n", *r.error);
+    return kRunFault;
+  }
+  return 0;
+}
+
+}  // namespace
+
+void add_run_command(CLI::App& app) {
+  auto opt = std::make_shared<RunOptions>();
+  CLI::App* cmd = app.add_subcommand("run", "Run the haptic server on the scene's plugins (simulated or real hardware)");
+  cmd->add_option("scene", opt->scene, "Scene XML file (with <rig>, <plugins> and optionally <simulated_user>)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--duration", opt->duration_s, "Seconds to run (default: until Ctrl-C)")->check(CLI::Range(0.0, 1e9));
+  cmd->add_option("--record", opt->record, "Write a CSV recording of every haptic tick to this file");
+  cmd->add_option("--plugin-path", opt->plugin_path, "Look for plugins in this folder first (repeatable)");
+  cmd->add_flag("--no-cache", opt->no_cache, "Build every BVH instead of using the on-disk cache");
+  cmd->add_flag("-q,--quiet", opt->quiet, "No status line");
+  cmd->callback([opt] { mhd::cli::exit_with(run(*opt)); });
+}
