@@ -10,6 +10,7 @@
 #include "plugin_host/plugin_search_path.h"
 #include "realtime/periodic_timer.h"
 #include "realtime/spsc_ring.h"
+#include "realtime/thread_priority.h"
 #include "realtime/triple_buffer.h"
 #include "recording/csv_recording.h"
 #include "safety/base_command_guard.h"
@@ -135,6 +136,7 @@ struct HapticServer::Impl {
   std::optional<CsvRecording> recording;  ///< opened by run(), written by the recorder thread
   bool zero_force_sent = false;
   bool base_stop_sent = false;
+  std::string scheduling;  ///< the haptic thread's, as obtained
   std::uint64_t recording_rows_written = 0;
 
   Impl(const CompiledScene& s, ServerSettings st, ServerOptions o, Rig r)
@@ -179,6 +181,7 @@ void HapticServer::Impl::haptic_thread() {
     tick_settings.safety.max_force_N = std::min(tick_settings.safety.max_force_N, limits.value().max_force_N);
   }
   HapticTick tick(scene, rig, tick_settings);
+  scheduling = realtime::make_current_thread_realtime(80).detail;
   realtime::PeriodicTimer timer(1.0 / settings.haptic_rate_hz);
   Eigen::Vector3d q_rad = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
   double last_t_s = host.now_s();
@@ -671,6 +674,7 @@ ServerReport HapticServer::run() {
   report.recording_rows = m.recording_rows_written;
   report.recording_dropped = m.recording_dropped.load();
   report.zero_force_sent = m.zero_force_sent;
+  report.haptic_scheduling = m.scheduling;
   report.base_stop_sent = m.base_stop_sent;
   {
     const std::lock_guard lock(m.error_mutex);

@@ -86,6 +86,7 @@ struct ServerReport {
   std::uint64_t recording_rows = 0, recording_dropped = 0;
   bool zero_force_sent = false;  ///< the last device command was zero torque
   bool base_stop_sent = false;   ///< the last base command was zero (or there is no base)
+  std::string haptic_scheduling;  ///< e.g. "SCHED_FIFO 80", or why real-time scheduling was refused
   std::optional<std::string> error;  ///< why the run ended early
 };
 

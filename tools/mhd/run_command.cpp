@@ -105,6 +105,7 @@ int run(const RunOptions& opt) {
   const mhd::ServerStatus& s = r.status;
   fmt::print("ran {:.2f} s: {} ticks ({:.1f} Hz), {} overruns, {} deadlines missed\n", s.elapsed_s, s.ticks,
              s.haptic_rate_hz, s.overruns, r.missed_deadlines);
+  fmt::print("haptic thread: {}\n", r.haptic_scheduling);
   fmt::print("tick (device read to device write): median {:.1f} us, p99 {:.1f} us, p99.9 {:.1f} us, max {:.1f} us\n",
              r.tick_median_us, r.tick_p99_us, r.tick_p999_us, r.tick_max_us);
   fmt::print("contact ticks {}; safety: {} stale, {} fault, {} HIP jumps, {} clamped ticks\n", r.contact_ticks,

@@ -1,0 +1,242 @@
+// mhd-server-bench: the haptic server's per-tick figures (docs/benchmarks.md).
+//
+//   tick  The whole haptic tick (predicted base pose -> rig chain -> proxy -> safety ->
+//         torques) on the 1M-triangle dolphin at 10 kHz: the arm strokes in and out of the
+//         dolphin's back along a smooth path (joint angles from the device's IK), a base
+//         pose arrives every 10 ms. Prints median, p99, p99.9 and max per tick; with
+//         --realtime it also paces the ticks at 10 kHz on absolute deadlines and counts
+//         overruns.
+//   leap  The HIP's leap per 1 kHz tick when a base pose arrives, the base driving at
+//         0.2 m/s: IS-900-like samples at 100 Hz (2.5 mm, 0.4 deg noise; 4 ms latency plus
+//         0-2 ms jitter), with prediction and with the newest sample held. The leap is the
+//         HIP's step minus the true step, |(h_i - h_i-1) - (t_i - t_i-1)|.
+
+#include "haptic_server/haptic_tick.h"
+#include "kinematics/phantom_kinematics.h"
+#include "realtime/periodic_timer.h"
+#include "realtime/thread_priority.h"
+#include "scene_compiler/scene_compiler.h"
+#include "scene_xml/scene_reader.h"
+
+#include <CLI/CLI.hpp>
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace mhd;
+
+struct Loaded {
+  std::optional<SceneDescription> description;
+  std::optional<CompiledScene> scene;
+  std::optional<Rig> rig;
+};
+
+Loaded load(const std::string& file) {
+  Loaded l;
+  auto read = read_scene_file(file);
+  for (const auto& d : read.diagnostics) fmt::print(stderr, "{}\n", d.to_string());
+  if (!read.ok()) return l;
+  auto compiled = compile_scene(*read.scene);
+  for (const auto& d : compiled.diagnostics) fmt::print(stderr, "{}\n", d.to_string());
+  if (!compiled.ok()) return l;
+  auto rig = Rig::from_scene(*read.scene);
+  for (const auto& e : rig.errors) fmt::print(stderr, "{}\n", e.to_string());
+  if (!rig.ok()) return l;
+  l.description = *read.scene;
+  l.scene = std::move(*compiled.scene);
+  l.rig = *rig.rig;
+  return l;
+}
+
+double quantile(std::vector<double> v, double q) {
+  if (v.empty()) return 0.0;
+  const auto k = static_cast<std::size_t>(std::min<double>(static_cast<double>(v.size() - 1), q * static_cast<double>(v.size())));
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
+  return v[k];
+}
+
+int run_tick(const std::string& scene_file, double seconds, bool realtime) {
+  Loaded l = load(scene_file);
+  if (!l.scene) return 1;
+  const Rig& rig = *l.rig;
+  constexpr double kRate = 10000.0, kDt = 1.0 / kRate;
+  HapticTick tick(*l.scene, rig, HapticTickSettings{});
+  const BasePose base{0.05, -0.926, 0.0};  // the arm's workspace over the dolphin's back
+  const Pose X_W_robot = rig.X_W_robot_from_base(base);
+  const Pose sensor = rig.X_is900_base_sensor_from_base(base);
+  const Eigen::Vector3d centre_W = rig.X_W_phantom(X_W_robot) * rig.device().usable_workspace().center_P_m();
+
+  // The stroke path in the world; joint angles from IK, outside the timed part.
+  const auto ticks = static_cast<std::size_t>(seconds * kRate);
+  std::vector<Eigen::Vector3d> q(ticks);
+  Eigen::Vector3d last_q(0, 0.5, 0.2);
+  for (std::size_t i = 0; i < ticks; ++i) {
+    const double t = static_cast<double>(i) * kDt;
+    const Eigen::Vector3d p = centre_W + Eigen::Vector3d(0.12 * std::sin(2.1 * t), -0.01 + 0.07 * std::sin(3.3 * t),
+                                                         0.05 * std::sin(1.7 * t + 0.5));
+    const PhantomIkResult ik = phantom_inverse_kinematics(rig.device(), rig.p_P_from_W(X_W_robot, p));
+    if (ik.status == PhantomIkStatus::Ok || ik.status == PhantomIkStatus::OutsideJointLimits) last_q = ik.q_rad;
+    q[i] = last_q;
+  }
+
+  std::vector<double> us;
+  us.reserve(ticks);
+  std::size_t contact = 0;
+  const std::string scheduling = realtime ? realtime::make_current_thread_realtime(80).detail : "";
+  realtime::PeriodicTimer timer(kDt);
+  double t = 0.0;
+  (void)tick.add_base_sensor_sample(t, sensor);
+  for (std::size_t i = 0; i < ticks; ++i) {
+    if (realtime) (void)timer.wait_next();
+    t += kDt;
+    const auto start = std::chrono::steady_clock::now();
+    if (i % 100 == 0) (void)tick.add_base_sensor_sample(t - 0.004, sensor);
+    const HapticTickOutput out = tick.tick(t, kDt, q[i]);
+    const auto end = std::chrono::steady_clock::now();
+    us.push_back(std::chrono::duration<double, std::micro>(end - start).count());
+    if (out.in_contact) ++contact;
+  }
+  fmt::print("tick on {} ({} triangles): {} ticks at 10 kHz{}, {:.1f} % in contact\n", scene_file,
+             l.scene->triangle_count, ticks, realtime ? " (paced)" : " (back to back)",
+             100.0 * static_cast<double>(contact) / static_cast<double>(ticks));
+  fmt::print("  per tick: median {:.2f} us, p99 {:.2f} us, p99.9 {:.2f} us, max {:.1f} us\n", quantile(us, 0.5),
+             quantile(us, 0.99), quantile(us, 0.999), *std::max_element(us.begin(), us.end()));
+  if (realtime) {
+    fmt::print("  paced at 10 kHz ({}): {} overruns, {} deadlines missed\n", scheduling, timer.stats().overruns,
+               timer.stats().missed_deadlines);
+  }
+  return 0;
+}
+
+struct LeapResult {
+  double max_at_arrival_mm = 0.0;
+  double max_any_mm = 0.0;
+  double rms_mm = 0.0;
+  double max_error_mm = 0.0;
+};
+
+LeapResult run_leap(const Loaded& l, bool predict, double noise_m, std::uint64_t seed, double seconds) {
+  const Rig& rig = *l.rig;
+  HapticTickSettings settings;
+  settings.predict_base_pose = predict;
+  HapticTick tick(*l.scene, rig, settings);
+  const BaseTwist twist{0.2, 0.0, 0.0};
+  const BasePose start{-1.0, 2.0, 0.3};  // far from the dolphin: the HIP stays free
+  const Eigen::Vector3d q(0.0, 0.5, 0.2);
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> position_noise(0.0, noise_m);
+  std::normal_distribution<double> heading_noise(0.0, noise_m > 0.0 ? 0.4 * std::numbers::pi / 180.0 : 0.0);
+  std::uniform_real_distribution<double> jitter(0.0, 0.002);
+
+  struct Pending {
+    double arrive_s, measured_s;
+    Pose sensor;
+  };
+  std::vector<Pending> pending;
+  const auto truth = [&](double t) { return integrate_twist(start, twist, t); };
+  const auto hip_true = [&](double t) { return rig.p_W_hip(rig.X_W_robot_from_base(truth(t)), q); };
+
+  LeapResult r;
+  double sum_sq = 0.0;
+  std::size_t scored = 0;
+  Eigen::Vector3d previous_hip = Eigen::Vector3d::Zero(), previous_true = Eigen::Vector3d::Zero();
+  bool has_previous = false;
+  double next_sample_s = 0.0, next_command_s = 0.0;
+  const auto ticks = static_cast<int>(seconds * 1000.0);
+  for (int i = 1; i <= ticks; ++i) {
+    const double t = 0.001 * i;
+    while (next_sample_s <= t) {
+      BasePose measured = truth(next_sample_s);
+      measured.x_m += position_noise(rng);
+      measured.z_m += position_noise(rng);
+      measured.heading_rad += heading_noise(rng);
+      pending.push_back({next_sample_s + 0.004 + jitter(rng), next_sample_s, rig.X_is900_base_sensor_from_base(measured)});
+      next_sample_s += 0.01;
+    }
+    if (next_command_s <= t) {
+      tick.add_base_command(t, twist);
+      next_command_s += 0.1;
+    }
+    bool arrived = false;
+    for (auto it = pending.begin(); it != pending.end();) {
+      if (it->arrive_s <= t) {
+        (void)tick.add_base_sensor_sample(it->measured_s, it->sensor);
+        arrived = true;
+        it = pending.erase(it);
+      } else {
+        ++it;
+      }
+    }
+    const HapticTickOutput out = tick.tick(t, 0.001, q);
+    const Eigen::Vector3d now_true = hip_true(t);
+    if (has_previous && t > 1.0 && out.hip_W_m.allFinite()) {  // after a 1 s warm-up
+      const double leap_mm = ((out.hip_W_m - previous_hip) - (now_true - previous_true)).norm() * 1e3;
+      r.max_any_mm = std::max(r.max_any_mm, leap_mm);
+      if (arrived) r.max_at_arrival_mm = std::max(r.max_at_arrival_mm, leap_mm);
+      sum_sq += leap_mm * leap_mm;
+      ++scored;
+      r.max_error_mm = std::max(r.max_error_mm, (out.hip_W_m - now_true).norm() * 1e3);
+    }
+    previous_hip = out.hip_W_m;
+    previous_true = now_true;
+    has_previous = out.hip_W_m.allFinite();
+  }
+  r.rms_mm = scored > 0 ? std::sqrt(sum_sq / static_cast<double>(scored)) : 0.0;
+  return r;
+}
+
+int run_leaps(const std::string& scene_file, double seconds, int seeds) {
+  Loaded l = load(scene_file);
+  if (!l.scene) return 1;
+  fmt::print("HIP leap per 1 kHz tick, base at 0.2 m/s, 100 Hz samples, {} s x {} seeds\n", seconds, seeds);
+  fmt::print("| tracker noise | base pose | max leap at a sample (mm) | max leap any tick (mm) | rms leap (mm) | max HIP error (mm) |\n");
+  fmt::print("|---|---|---|---|---|---|\n");
+  for (const double noise : {0.0, 0.0025}) {
+    for (const bool predict : {true, false}) {
+      LeapResult worst;
+      for (int s = 1; s <= seeds; ++s) {
+        const LeapResult r = run_leap(l, predict, noise, static_cast<std::uint64_t>(s), seconds);
+        worst.max_at_arrival_mm = std::max(worst.max_at_arrival_mm, r.max_at_arrival_mm);
+        worst.max_any_mm = std::max(worst.max_any_mm, r.max_any_mm);
+        worst.rms_mm = std::max(worst.rms_mm, r.rms_mm);
+        worst.max_error_mm = std::max(worst.max_error_mm, r.max_error_mm);
+      }
+      fmt::print("| {} | {} | {:.4f} | {:.4f} | {:.4f} | {:.2f} |\n", noise > 0 ? "2.5 mm, 0.4 deg" : "none",
+                 predict ? "predicted" : "newest sample held", worst.max_at_arrival_mm, worst.max_any_mm, worst.rms_mm,
+                 worst.max_error_mm);
+    }
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Haptic server benchmarks: whole tick at 10 kHz, HIP leap with and without prediction",
+               "mhd-server-bench"};
+  app.require_subcommand(1);
+  std::string scene = "scenes/benchmarks/server_dolphin_1m.xml";
+  double seconds = 10.0;
+  bool realtime = false;
+  int seeds = 5;
+  CLI::App* tick = app.add_subcommand("tick", "Whole haptic tick on the 1M dolphin at 10 kHz");
+  tick->add_option("--scene", scene, "Scene with a rig (default: the 1M dolphin server scene)");
+  tick->add_option("--seconds", seconds, "Simulated seconds (10 kHz ticks)");
+  tick->add_flag("--realtime", realtime, "Pace ticks at 10 kHz on absolute deadlines and count overruns");
+  CLI::App* leap = app.add_subcommand("leap", "HIP leap when base poses arrive, with and without prediction");
+  leap->add_option("--scene", scene, "Scene with a rig");
+  leap->add_option("--seconds", seconds, "Simulated seconds per run");
+  leap->add_option("--seeds", seeds, "Runs (noise seeds); the worst is reported");
+  CLI11_PARSE(app, argc, argv);
+  if (tick->parsed()) return run_tick(scene, seconds, realtime);
+  return run_leaps(scene, seconds, seeds);
+}
