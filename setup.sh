@@ -30,7 +30,7 @@ cmake --preset release >/dev/null
 cmake --build --preset release
 
 if [ "$mode" = demo ]; then
-  exec build/release/tools/mhd/mhd run scenes/dolphin.xml --touch dolphin
+  exec build/release/tools/mhd/mhd run scenes/dolphin.xml --duration 20 --record build/release/dolphin_run.csv
 else
   exec ctest --preset release
 fi
