@@ -7,6 +7,9 @@
 #include "plugins_command.h"
 #include "run_command.h"
 #include "strokes_command.h"
+#ifdef MHD_HAVE_DDS
+#include "tracker_server_command.h"
+#endif
 #include "validate_command.h"
 
 #include <CLI/CLI.hpp>
@@ -41,6 +44,9 @@ int main(int argc, char** argv) {
   add_run_command(app);
   add_plugins_command(app);
   add_plan_sim_command(app);
+#ifdef MHD_HAVE_DDS
+  add_tracker_server_command(app);
+#endif
   add_strokes_command(app);
 
   try {

@@ -1,0 +1,39 @@
+#pragma once
+// The haptic server's end of the tracker link: takes tracker samples from DDS without
+// blocking, validates them (sample_validation.h) and hands out the accepted ones as the
+// ABI's mhd_tracker_sample with host-clock timestamps. Used by the `dds` tracker plugin.
+
+#include "dds_common/dds_topics.h"
+#include "dds_common/sample_validation.h"
+
+#include <mhd/plugin_abi.h>
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+namespace mhd::dds {
+
+class TrackerSubscriber {
+ public:
+  /// `participant` must outlive this.
+  TrackerSubscriber(const Participant& participant, const TrackerValidationLimits& limits);
+
+  /// Takes what DDS has, validates it at `now_ns` and writes up to out.size() accepted
+  /// samples, oldest first, stamped on the host clock (`host_now_s` read with now_ns).
+  /// Accepted samples that do not fit wait for the next call (up to 256, then the
+  /// oldest are lost). Never blocks.
+  std::size_t poll(std::span<mhd_tracker_sample> out, double host_now_s, std::int64_t now_ns);
+  /// Blocks until samples arrive or timeout_ns passes (benchmarks, tools).
+  bool wait(dds_duration_t timeout_ns) { return subscriber_.reader().wait(timeout_ns); }
+
+  [[nodiscard]] const DropCounts& counts() const { return validator_.counts(); }
+  [[nodiscard]] std::uint32_t matched_writers() { return subscriber_.reader().matched_writers(); }
+
+ private:
+  Subscriber<mhd_dds_TrackerSample> subscriber_;
+  TrackerSampleValidator validator_;
+  std::vector<mhd_dds_TrackerSample> pending_;  ///< accepted, not yet handed out
+};
+
+}  // namespace mhd::dds

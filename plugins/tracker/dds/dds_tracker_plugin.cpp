@@ -1,0 +1,124 @@
+// The `dds` tracker plugin: subscribes to one rig's tracker samples on a DDS domain and
+// returns the valid ones from tracker_read (dds_common/tracker_subscriber.h). Invalid
+// samples are dropped and counted; the counts are printed to stderr when it stops.
+
+#include "dds_common/tracker_subscriber.h"
+#include "dds_common/dds_plugin_params.h"
+#include "sim_common/plugin_params.h"
+#include "sim_common/plugin_shell.h"
+
+#include <mhd/plugin_abi.h>
+
+#include <cstdio>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+
+namespace mhd::dds_tracker {
+namespace {
+
+using plugin_support::guarded_open;
+
+struct Config {
+  dds::DdsEndpoint endpoint;
+  dds::TrackerValidationLimits limits;
+};
+
+struct Instance {
+  Instance(const mhd_host& h, const Config& c)
+      : host(h), config(c), participant(c.endpoint.domain_id, c.endpoint.config), subscriber(participant, c.limits) {}
+
+  std::mutex mutex;
+  mhd_host host;
+  Config config;
+  dds::Participant participant;
+  dds::TrackerSubscriber subscriber;
+  bool started = false;
+};
+
+Config read_config(const mhd_param* params, std::size_t count, const char* scene_file) {
+  plugin_support::ParamReader reader(params, count);
+  Config c;
+  c.endpoint = dds::read_endpoint(reader, params, count, scene_file);
+  c.limits.rig_id = c.endpoint.rig_id;
+  c.limits.max_abs_position_m = reader.positive("max_position_m", c.limits.max_abs_position_m);
+  c.limits.max_age_s = reader.positive("max_age_s", c.limits.max_age_s);
+  c.limits.max_future_s = reader.non_negative("max_future_s", c.limits.max_future_s);
+  c.limits.restart_after_s = reader.positive("restart_after_s", c.limits.restart_after_s);
+  c.limits.quaternion_tolerance = reader.positive("quaternion_tolerance", c.limits.quaternion_tolerance);
+  reader.reject_unknown();
+  return c;
+}
+
+mhd_plugin_instance* open_instance(const mhd_host* host, const mhd_param* params, size_t param_count, mhd_error* err) {
+  return guarded_open(err, [&] {
+    plugin_support::check_host(host);
+    const Config config = read_config(params, param_count, host->scene_file);
+    return reinterpret_cast<mhd_plugin_instance*>(new Instance(*host, config));
+  });
+}
+
+template <class F>
+mhd_status call(mhd_plugin_instance* self, plugin_support::Need need, mhd_error* err, F&& f) {
+  return plugin_support::with_instance<Instance>(MHD_PLUGIN_NAME, self, need, err, std::forward<F>(f));
+}
+
+mhd_status start_instance(mhd_plugin_instance* self, mhd_error* err) {
+  return call(self, plugin_support::Need::Open, err, [&](Instance& s) {
+    s.started = true;
+    return MHD_OK;
+  });
+}
+
+mhd_status stop_instance(mhd_plugin_instance* self, mhd_error* err) {
+  return call(self, plugin_support::Need::Open, err, [&](Instance& s) {
+    if (s.started) {
+      std::fprintf(stderr, "dds tracker (rig %u): %s\n", static_cast<unsigned>(s.config.limits.rig_id),
+                   s.subscriber.counts().summary().c_str());
+    }
+    s.started = false;
+    return MHD_OK;
+  });
+}
+
+void close_instance(mhd_plugin_instance* self) { delete reinterpret_cast<Instance*>(self); }
+
+mhd_status tracker_read(mhd_plugin_instance* self, mhd_tracker_sample* out, size_t capacity, size_t* count,
+                        mhd_error* err) {
+  return call(self, plugin_support::Need::Running, err, [&](Instance& s) {
+    if (count == nullptr || (out == nullptr && capacity > 0)) throw std::invalid_argument("tracker_read: NULL output");
+    *count = s.subscriber.poll(std::span(out, capacity), plugin_support::host_now(s.host), dds::realtime_ns());
+    return *count > 0 ? MHD_OK : MHD_NO_DATA;
+  });
+}
+
+constexpr mhd_plugin_api kApi = {
+    MHD_PLUGIN_ABI_VERSION,
+    sizeof(mhd_plugin_api),
+    MHD_PLUGIN_KIND,
+    MHD_PLUGIN_NAME,
+    "1.0.0",
+    "Tracker samples of one rig over Cyclone DDS (from mhd tracker-server), validated",
+    open_instance,
+    start_instance,
+    stop_instance,
+    close_instance,
+    nullptr,  // device_limits
+    nullptr,  // device_read
+    nullptr,  // device_write
+    tracker_read,
+    nullptr,  // base_read
+    nullptr,  // base_write
+    nullptr,  // display_write
+    nullptr,  // simulate_until
+};
+
+}  // namespace
+}  // namespace mhd::dds_tracker
+
+extern "C" MHD_PLUGIN_EXPORT const mhd_plugin_api* mhd_plugin_entry(uint32_t host_abi_version) {
+  return host_abi_version == MHD_PLUGIN_ABI_VERSION ? &mhd::dds_tracker::kApi : nullptr;
+}

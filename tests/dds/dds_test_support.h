@@ -1,0 +1,43 @@
+#pragma once
+// What the DDS tests share: a domain id of their own (parallel ctest runs must not hear
+// each other), the loopback configuration, and child processes started with
+// posix_spawn and killed when the test ends.
+
+#include <sys/types.h>
+
+#include <chrono>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace mhd::dds::test {
+
+/// Points CYCLONEDDS_URI at config/cyclonedds-loopback.xml (before any participant) and
+/// returns a domain id in [1, 200] derived from the pid and `salt`, so concurrently
+/// running test processes use different domains.
+std::uint32_t use_loopback_and_unique_domain(std::uint32_t salt = 0);
+
+class ChildProcess {
+ public:
+  /// Starts argv[0] with argv, this process's environment; stdout and stderr go to
+  /// `output_file` (truncated) when given. Throws std::runtime_error.
+  explicit ChildProcess(const std::vector<std::string>& argv, const std::string& output_file = {});
+  ~ChildProcess();  ///< SIGKILL and reap if still running
+  ChildProcess(const ChildProcess&) = delete;
+  ChildProcess& operator=(const ChildProcess&) = delete;
+
+  /// Waits up to `timeout`; the exit status, or nullopt when it is still running.
+  std::optional<int> wait_for(std::chrono::milliseconds timeout);
+  void kill_now();  ///< SIGKILL and reap
+  void terminate();  ///< SIGTERM (does not wait)
+
+ private:
+  pid_t pid_ = -1;
+  bool reaped_ = false;
+};
+
+/// The whole content of a file ("" when it cannot be read).
+std::string read_file(const std::string& path);
+
+}  // namespace mhd::dds::test
