@@ -2,6 +2,7 @@
 // registered here by its add_*_command(app); a subcommand's callback does the work
 // and reports failure through mhd::cli::exit_with (command_exit.h).
 
+#include "calibrate_command.h"
 #include "command_exit.h"
 #include "plan_sim_command.h"
 #include "plugins_command.h"
@@ -44,6 +45,7 @@ int main(int argc, char** argv) {
   add_run_command(app);
   add_plugins_command(app);
   add_plan_sim_command(app);
+  add_calibrate_command(app);
 #ifdef MHD_HAVE_DDS
   add_tracker_server_command(app);
 #endif
