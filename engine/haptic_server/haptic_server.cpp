@@ -234,6 +234,7 @@ void HapticServer::Impl::haptic_thread() {
     if (!options.recording.empty()) {
       RecordingRow row;
       row.t_s = t_s;
+      row.dt_s = dt_s;
       for (int i = 0; i < 3; ++i) {
         row.q_rad[static_cast<std::size_t>(i)] = out.q_rad[i];
         row.hip_W_m[static_cast<std::size_t>(i)] = out.hip_W_m[i];

@@ -24,18 +24,25 @@ void HapticTick::add_base_command(double t_s, const BaseTwist& twist_B) noexcept
 }
 
 HapticTickOutput HapticTick::tick(double t_s, double dt_s, const Eigen::Vector3d& q_rad) noexcept {
+  std::optional<BasePose> base;
+  if (has_measurement_) base = settings_.predict_base_pose ? predictor_.predict(t_s) : last_measurement_;
+  return render(t_s, dt_s, q_rad, base, predictor_.age_s(t_s));
+}
+
+HapticTickOutput HapticTick::render(double t_s, double dt_s, const Eigen::Vector3d& q_rad,
+                                    const std::optional<BasePose>& base, double tracker_age_s) noexcept {
   HapticTickOutput out;
   out.t_s = t_s;
   out.q_rad = q_rad;
-  out.tracker_age_s = predictor_.age_s(t_s);
+  out.tracker_age_s = tracker_age_s;
 
   ForceSafetyInput safety_in;
   safety_in.dt_s = dt_s;
   safety_in.tracker_age_s = out.tracker_age_s;
 
-  const bool can_render = has_measurement_ && q_rad.allFinite();
+  const bool can_render = base.has_value() && q_rad.allFinite();
   if (can_render) {
-    out.base = settings_.predict_base_pose ? predictor_.predict(t_s) : last_measurement_;
+    out.base = *base;
     const Pose X_W_robot = rig_.X_W_robot_from_base(out.base);
     out.hip_W_m = rig_.p_W_hip(X_W_robot, q_rad);
     if (!proxy_.initialised) reset_proxy(proxy_, out.hip_W_m);

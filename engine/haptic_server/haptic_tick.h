@@ -18,6 +18,7 @@
 #include <Eigen/Core>
 
 #include <cstdint>
+#include <optional>
 
 namespace mhd {
 
@@ -59,6 +60,12 @@ class HapticTick {
   /// The tick at t_s with the device's joint angles; dt_s is the time since the last tick.
   /// Non-finite angles give zero force (and count as a fault).
   HapticTickOutput tick(double t_s, double dt_s, const Eigen::Vector3d& q_rad) noexcept;
+
+  /// The tick's second half, with the base pose and tracker age given instead of
+  /// predicted: HIP, proxy, safety and torques. tick() is render() with the predictor's
+  /// pose; replay calls it with a recording's. `base` empty: no base pose known yet.
+  HapticTickOutput render(double t_s, double dt_s, const Eigen::Vector3d& q_rad, const std::optional<BasePose>& base,
+                          double tracker_age_s) noexcept;
 
   [[nodiscard]] const ForceSafety& safety() const noexcept { return safety_; }
   [[nodiscard]] const BasePosePredictor& predictor() const noexcept { return predictor_; }

@@ -8,7 +8,8 @@
 namespace mhd {
 
 struct RecordingRow {
-  double t_s = 0.0;  ///< host clock
+  double t_s = 0.0;   ///< host clock
+  double dt_s = 0.0;  ///< time since the previous tick, as the tick used it
   std::array<double, 3> q_rad{};
   std::array<double, 3> hip_W_m{};
   std::array<double, 3> proxy_W_m{};

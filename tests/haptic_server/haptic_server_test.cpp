@@ -278,9 +278,9 @@ TEST(HapticServer, SilentTrackerFadesForceOutAndStopsTheBase) {
     std::vector<std::string> cells;
     std::stringstream ss(line);
     for (std::string cell; std::getline(ss, cell, ',');) cells.push_back(cell);
-    ASSERT_EQ(cells.size(), 29u);
-    const double age = std::stod(cells[25]), gain = std::stod(cells[26]);
-    const double fx = std::stod(cells[10]), fy = std::stod(cells[11]), fz = std::stod(cells[12]);
+    ASSERT_EQ(cells.size(), 30u);
+    const double age = std::stod(cells[26]), gain = std::stod(cells[27]);
+    const double fx = std::stod(cells[11]), fy = std::stod(cells[12]), fz = std::stod(cells[13]);
     if (age >= 0.05) {
       ++rows_stale;
       if (fx != 0.0 || fy != 0.0 || fz != 0.0 || gain != 0.0) ++stale_with_force;

@@ -6,6 +6,7 @@
 #include "command_exit.h"
 #include "plan_sim_command.h"
 #include "plugins_command.h"
+#include "replay_command.h"
 #include "run_command.h"
 #include "strokes_command.h"
 #ifdef MHD_HAVE_DDS
@@ -46,6 +47,7 @@ int main(int argc, char** argv) {
   add_plugins_command(app);
   add_plan_sim_command(app);
   add_calibrate_command(app);
+  add_replay_command(app);
 #ifdef MHD_HAVE_DDS
   add_tracker_server_command(app);
 #endif

@@ -21,6 +21,8 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <memory>
 #include <string>
 #include <vector>
@@ -93,6 +95,11 @@ int run(const RunOptions& opt) {
              opt.duration_s > 0.0 ? fmt::format(" for {} s", opt.duration_s) : std::string(" until Ctrl-C"));
   std::fflush(stdout);
 
+  if (!opt.record.empty()) {
+    // For `mhd replay`: which scene this recording ran.
+    std::ofstream meta(opt.record + ".meta");
+    meta << "scene=" << std::filesystem::absolute(opt.scene).lexically_normal().string() << "\n";
+  }
   g_server.store(build.server.get());
   std::signal(SIGINT, on_stop_signal);
   std::signal(SIGTERM, on_stop_signal);

@@ -1,0 +1,142 @@
+#include "recording/csv_recording_reader.h"
+
+#include "recording/csv_recording.h"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <utility>
+
+namespace mhd {
+namespace {
+
+std::vector<std::string_view> split(std::string_view line) {
+  std::vector<std::string_view> cells;
+  std::size_t start = 0;
+  for (std::size_t i = 0; i <= line.size(); ++i) {
+    if (i == line.size() || line[i] == ',') {
+      cells.push_back(line.substr(start, i - start));
+      start = i + 1;
+    }
+  }
+  return cells;
+}
+
+bool parse_number(std::string_view text, double& out) {
+  if (text == "nan" || text == "-nan") {
+    out = std::nan("");
+    return true;
+  }
+  if (text == "inf" || text == "-inf") {
+    out = text[0] == '-' ? -HUGE_VAL : HUGE_VAL;
+    return true;
+  }
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), out);
+  return ec == std::errc() && end == text.data() + text.size();
+}
+
+/// A diagnostic at file:line (built member by member: GCC 12 misreads the nested braces).
+Diagnostic at(const std::string& file, int line, std::string message) {
+  Diagnostic d;
+  d.where.file = file;
+  d.where.line = line;
+  d.message = std::move(message);
+  return d;
+}
+
+}  // namespace
+
+RecordingReadResult read_recording(const std::filesystem::path& file) {
+  RecordingReadResult out;
+  const std::string name = file.string();
+  std::ifstream in(file, std::ios::binary);
+  if (!in) {
+    out.diagnostics.push_back(at(name, 0, "cannot read the recording"));
+    return out;
+  }
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const std::string text = buffer.str();
+
+  std::map<std::string, std::size_t, std::less<>> column;
+  const std::vector<std::string_view> expected = split(recording_csv_header());
+  std::size_t line_start = 0;
+  int line_number = 0;
+  while (line_start < text.size()) {
+    const std::size_t newline = text.find('\n', line_start);
+    if (newline == std::string::npos) break;  // a line cut short by a crash: not read
+    const std::string_view line(text.data() + line_start, newline - line_start);
+    line_start = newline + 1;
+    ++line_number;
+    const std::vector<std::string_view> cells = split(line);
+    if (line_number == 1) {
+      for (std::size_t i = 0; i < cells.size(); ++i) column.emplace(std::string(cells[i]), i);
+      for (const std::string_view name_expected : expected) {
+        if (column.find(name_expected) == column.end()) {
+          out.diagnostics.push_back(at(name, 1, "missing column '" + std::string(name_expected) + "'"));
+        }
+      }
+      if (!out.diagnostics.empty()) return out;
+      continue;
+    }
+    if (cells.size() != column.size()) {
+      out.diagnostics.push_back(at(name, line_number, "expected " + std::to_string(column.size()) + " fields, found " +
+                                                          std::to_string(cells.size())));
+      out.rows.clear();
+      return out;
+    }
+    RecordingRow row;
+    bool ok = true;
+    const auto get = [&](std::string_view col, double& value) {
+      if (!ok) return;
+      const std::string_view cell = cells[column.find(col)->second];
+      if (!parse_number(cell, value)) {
+        out.diagnostics.push_back(
+            at(name, line_number, "column '" + std::string(col) + "' is not a number: '" + std::string(cell) + "'"));
+        ok = false;
+      }
+    };
+    const auto get3 = [&](const char* prefix, const char* suffix, std::array<double, 3>& v) {
+      const char* axes[3] = {"x", "y", "z"};
+      for (int i = 0; i < 3; ++i) get(std::string(prefix) + axes[i] + suffix, v[static_cast<std::size_t>(i)]);
+    };
+    get("t_s", row.t_s);
+    get("dt_s", row.dt_s);
+    get("q1_rad", row.q_rad[0]);
+    get("q2_rad", row.q_rad[1]);
+    get("q3_rad", row.q_rad[2]);
+    get3("hip_", "_m", row.hip_W_m);
+    get3("proxy_", "_m", row.proxy_W_m);
+    get3("force_", "_N", row.force_W_N);
+    get3("cmd_force_", "_N", row.cmd_force_W_N);
+    get("tau1_Nm", row.torques_Nm[0]);
+    get("tau2_Nm", row.torques_Nm[1]);
+    get("tau3_Nm", row.torques_Nm[2]);
+    get("base_x_m", row.base_x_m);
+    get("base_z_m", row.base_z_m);
+    get("base_heading_rad", row.base_heading_rad);
+    get("user_x_m", row.user_x_m);
+    get("user_z_m", row.user_z_m);
+    get("user_heading_rad", row.user_heading_rad);
+    get("tracker_age_s", row.tracker_age_s);
+    get("safety_gain", row.safety_gain);
+    double contact = 0.0, contact_object = -1.0;
+    get("contact", contact);
+    get("contact_object", contact_object);
+    if (!ok) {
+      out.rows.clear();
+      return out;
+    }
+    row.contact = contact != 0.0 ? 1 : 0;
+    row.contact_object = static_cast<std::int32_t>(contact_object);
+    out.rows.push_back(row);
+  }
+  if (line_number == 0) out.diagnostics.push_back(at(name, 0, "the recording has no header line"));
+  return out;
+}
+
+}  // namespace mhd

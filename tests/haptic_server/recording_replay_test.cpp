@@ -1,0 +1,140 @@
+// A recording replays bit for bit, a changed input shows where it diverges, and a bad
+// recording file is refused with its line.
+#include "haptic_server/haptic_server.h"
+#include "haptic_server/recording_replay.h"
+#include "haptic_server/server_settings.h"
+#include "recording/csv_recording_reader.h"
+#include "scene_compiler/scene_compiler.h"
+#include "scene_xml/scene_reader.h"
+
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace {
+
+using namespace mhd;
+namespace fs = std::filesystem;
+
+fs::path temp_file(const std::string& name) {
+  const fs::path dir = fs::path(::testing::TempDir()) / "recording_replay_test";
+  fs::create_directories(dir);
+  return dir / name;
+}
+
+class RecordingReplay : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    auto read = read_scene_file(std::string(MHD_SOURCE_DIR) + "/tests/data/server/touch_box.xml");
+    ASSERT_TRUE(read.ok());
+    description_ = new SceneDescription(*read.scene);
+    auto compiled = compile_scene(*description_);
+    ASSERT_TRUE(compiled.ok());
+    scene_ = new CompiledScene(std::move(*compiled.scene));
+    // ctest runs each case as its own process, perhaps at once: one file per process.
+    recording_ = new fs::path(temp_file("touch_box_" + std::to_string(::getpid()) + ".csv"));
+    ServerOptions options;
+    options.duration_s = 2.5;
+    options.recording = *recording_;
+    auto build = HapticServer::open(*description_, *scene_, options);
+    ASSERT_TRUE(build.server);
+    report_ = new ServerReport(build.server->run());
+  }
+  static void TearDownTestSuite() {
+    delete report_;
+    delete recording_;
+    delete scene_;
+    delete description_;
+  }
+
+  static ReplayResult replay(const std::vector<RecordingRow>& rows) {
+    const Rig rig = *Rig::from_scene(*description_).rig;
+    return replay_recording(*scene_, rig, server_settings_from(*description_).settings->tick, rows);
+  }
+
+  static inline SceneDescription* description_ = nullptr;
+  static inline CompiledScene* scene_ = nullptr;
+  static inline fs::path* recording_ = nullptr;
+  static inline ServerReport* report_ = nullptr;
+};
+
+TEST_F(RecordingReplay, TheSameInputsGiveTheSameForcesBitForBit) {
+  ASSERT_FALSE(report_->error) << *report_->error;
+  ASSERT_EQ(report_->recording_dropped, 0u);
+  const RecordingReadResult read = read_recording(*recording_);
+  ASSERT_TRUE(read.ok());
+  ASSERT_EQ(read.rows.size(), report_->recording_rows);
+  std::size_t contact = 0;
+  for (const auto& r : read.rows) contact += r.contact;
+  ASSERT_GT(contact, 50u) << "the hand should stroke the box";
+
+  const ReplayResult r = replay(read.rows);
+  EXPECT_EQ(r.rows, read.rows.size());
+  EXPECT_EQ(r.differing_rows, 0u);
+  EXPECT_EQ(r.max_force_difference_N, 0.0);
+  EXPECT_EQ(r.max_proxy_difference_m, 0.0);
+  EXPECT_EQ(r.max_torque_difference_Nm, 0.0);
+}
+
+TEST_F(RecordingReplay, AChangedInputIsFoundAtItsRow) {
+  RecordingReadResult read = read_recording(*recording_);
+  ASSERT_TRUE(read.ok());
+  // Move the arm 1 mrad in the middle of a contact stretch.
+  std::size_t k = 0;
+  for (std::size_t i = read.rows.size() / 3; i < read.rows.size(); ++i) {
+    if (read.rows[i].contact != 0) {
+      k = i;
+      break;
+    }
+  }
+  ASSERT_GT(k, 0u);
+  read.rows[k].q_rad[1] += 1e-3;
+  const ReplayResult r = replay(read.rows);
+  EXPECT_GT(r.differing_rows, 0u);
+  EXPECT_EQ(r.first_differing_row, k);
+  EXPECT_GT(r.max_force_difference_N, 0.0);
+}
+
+TEST(RecordingReader, RefusesAMissingColumnAndABadNumberAtTheirLines) {
+  const fs::path missing = temp_file("missing.csv");
+  std::ofstream(missing) << "t_s,dt_s\n0,0.001\n";
+  const auto a = read_recording(missing);
+  ASSERT_FALSE(a.ok());
+  EXPECT_EQ(a.diagnostics.front().to_string(), missing.string() + ":1: error: missing column 'q1_rad'");
+
+  // A good recording with one number spoiled on its third data line (file line 4).
+  const RecordingReadResult good = read_recording(std::string(MHD_SOURCE_DIR) + "/tests/data/server/recording_head.csv");
+  ASSERT_TRUE(good.ok());
+  ASSERT_GE(good.rows.size(), 3u);
+  std::ifstream in(std::string(MHD_SOURCE_DIR) + "/tests/data/server/recording_head.csv");
+  std::string text, line;
+  for (int n = 1; std::getline(in, line); ++n) {
+    if (n == 4) line.replace(line.find(','), 1, ",x");
+    text += line + "\n";
+  }
+  const fs::path bad = temp_file("bad.csv");
+  std::ofstream(bad) << text;
+  const auto b = read_recording(bad);
+  ASSERT_FALSE(b.ok());
+  EXPECT_EQ(b.diagnostics.front().to_string().rfind(bad.string() + ":4: error: column 'dt_s' is not a number: 'x", 0), 0u)
+      << b.diagnostics.front().to_string();
+}
+
+TEST(RecordingReader, ALineCutShortByACrashIsLeftOutAndTheRestIsRead) {
+  std::ifstream in(std::string(MHD_SOURCE_DIR) + "/tests/data/server/recording_head.csv");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const std::string text = buffer.str();
+  const fs::path cut = temp_file("cut.csv");
+  std::ofstream(cut) << text << "0.5,0.001,0.1,0.2";  // a partial last line, no newline
+  const auto r = read_recording(cut);
+  ASSERT_TRUE(r.ok());
+  const auto full = read_recording(std::string(MHD_SOURCE_DIR) + "/tests/data/server/recording_head.csv");
+  EXPECT_EQ(r.rows.size(), full.rows.size());
+}
+
+}  // namespace
