@@ -1,5 +1,7 @@
 #include "haptic_server/haptic_tick.h"
 
+#include "collision/point_containment.h"
+
 #include <cmath>
 #include <limits>
 
@@ -45,7 +47,18 @@ HapticTickOutput HapticTick::render(double t_s, double dt_s, const Eigen::Vector
     out.base = *base;
     const Pose X_W_robot = rig_.X_W_robot_from_base(out.base);
     out.hip_W_m = rig_.p_W_hip(X_W_robot, q_rad);
-    if (!proxy_.initialised) reset_proxy(proxy_, out.hip_W_m);
+    if (!proxy_.initialised) {
+      // The proxy starts only with the hand in free space: started inside an object it
+      // would render the object inside out and pull the hand in. Until then, no force.
+      if (point_inside_surface(scene_.world, out.hip_W_m)) {
+        out.hip_inside_object = true;
+        out.proxy_W_m = out.hip_W_m;
+        safety_in.force_W_N.setConstant(std::numeric_limits<double>::quiet_NaN());  // no force known
+        (void)safety_.apply(safety_in);  // zero force; the fade-in starts once the proxy does
+        return out;
+      }
+      reset_proxy(proxy_, out.hip_W_m);
+    }
     const ProxyOutput p = step_proxy(scene_.world, scene_.materials, scene_.proxy, proxy_, out.hip_W_m, dt_s);
     out.proxy_W_m = p.proxy_W;
     out.proxy_force_W_N = p.force_W;

@@ -45,6 +45,7 @@ struct HapticTickOutput {
   bool stale = false;
   bool jump = false;
   bool clamped = false;
+  bool hip_inside_object = false;  ///< the proxy waits (no force) for the HIP to leave an object
 };
 
 class HapticTick {

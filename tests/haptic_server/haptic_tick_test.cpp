@@ -135,6 +135,37 @@ TEST(HapticTick, ForceFadesToZeroWhenTheBasePoseGoesStale) {
   EXPECT_EQ(out.torques_Nm, Eigen::Vector3d::Zero());
 }
 
+TEST(HapticTick, AHandStartingInsideAnObjectGetsNoForceUntilItLeaves) {
+  Fixture f = make_fixture(-0.01);  // the box's top face 1 cm above the HIP: the HIP is inside
+  HapticTick tick(*f.scene, *f.rig, no_fade_in());
+  const Pose sensor = f.rig->X_is900_base_sensor_from_base({});
+  Eigen::Vector3d q = kQ;
+  double t = 0.0;
+  HapticTickOutput out;
+  for (int i = 0; i < 20; ++i) {
+    (void)tick.add_base_sensor_sample(t, sensor);
+    out = tick.tick(t += 0.001, 0.001, q);
+    EXPECT_TRUE(out.hip_inside_object);
+    EXPECT_EQ(out.force_W_N, Eigen::Vector3d::Zero());  // never pulled further in
+  }
+  // Raise the arm out through the top face: the proxy starts above it, in free space.
+  for (int i = 0; i < 200 && out.hip_inside_object; ++i) {
+    q.y() += 0.001;
+    (void)tick.add_base_sensor_sample(t, sensor);
+    out = tick.tick(t += 0.001, 0.001, q);
+  }
+  ASSERT_FALSE(out.hip_inside_object);
+  EXPECT_FALSE(out.in_contact);
+  // Pressing back down now meets the top face from outside: the force pushes up.
+  for (int i = 0; i < 60; ++i) {
+    q.y() -= 0.0005;
+    (void)tick.add_base_sensor_sample(t, sensor);
+    out = tick.tick(t += 0.001, 0.001, q);
+  }
+  ASSERT_TRUE(out.in_contact);
+  EXPECT_GT(out.force_W_N.y(), 0.0);
+}
+
 TEST(HapticTick, NonFiniteJointAnglesGiveZeroForce) {
   Fixture f = make_fixture(0.002);
   HapticTick tick(*f.scene, *f.rig, no_fade_in());
