@@ -1,0 +1,107 @@
+#include "viewer_command.h"
+
+#include "command_exit.h"
+#include "viewer/demo_state.h"
+#include "viewer/stereo_viewer.h"
+
+#include <fmt/core.h>
+#include <spdlog/spdlog.h>
+
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace {
+
+struct ViewerCommandOptions {
+  std::string scene;
+  std::string rig;
+  mhd::viewer::ViewerOptions view;
+  bool mono = false;
+  bool no_grid = false;
+  bool observer = false;
+  bool demo_state = false;
+  std::vector<double> demo_base;
+  std::vector<double> head_m;
+  std::vector<double> look_at_m;
+};
+
+std::optional<Eigen::Vector3d> vector3(const std::vector<double>& v) {
+  if (v.size() != 3) return std::nullopt;
+  return Eigen::Vector3d(v[0], v[1], v[2]);
+}
+
+void run_viewer(ViewerCommandOptions& o) {
+  namespace v = mhd::viewer;
+  const v::ViewerSceneResult loaded =
+      v::load_viewer_scene(o.scene, o.rig.empty() ? std::nullopt : std::optional<std::filesystem::path>(o.rig));
+  for (const std::string& e : loaded.errors) fmt::print(stderr, "mhd viewer: {}\n", e);
+  if (!loaded.scene) mhd::cli::exit_with(1);
+  for (const std::string& n : loaded.notes) spdlog::info("{}: {}", o.scene, n);
+
+  v::ViewerOptions& view = o.view;
+  view.stereo = !o.mono;
+  view.show_grid = !o.no_grid;
+  view.view_point = o.observer ? v::ViewPoint::Observer : v::ViewPoint::Head;
+  view.default_head_m = vector3(o.head_m);
+  view.look_at_m = vector3(o.look_at_m);
+  if (!view.screenshot_png.empty()) {
+    view.offscreen = true;
+    if (view.frames == 0) view.frames = 10;
+  }
+  // The state source: a still demo state, or none (scene only). A network source (the
+  // haptic server's rig state over DDS) plugs in here as another StateSource.
+  std::shared_ptr<v::StateSource> source;
+  if (o.demo_state) {
+    std::optional<mhd::BasePose> base;
+    if (o.demo_base.size() == 3) base = mhd::BasePose{o.demo_base[0], o.demo_base[1], o.demo_base[2] * M_PI / 180.0};
+    source = std::make_shared<v::FixedStateSource>(v::demo_rig_state(*loaded.scene, base));
+  }
+
+  v::StereoViewer::OpenResult opened = v::StereoViewer::open(*loaded.scene, view, source);
+  if (!opened.viewer) {
+    fmt::print(stderr, "mhd viewer: error: {}\n", opened.error);
+    mhd::cli::exit_with(1);
+  }
+  const std::atomic<bool> stop{false};
+  if (const std::string e = opened.viewer->run(stop); !e.empty()) {
+    fmt::print(stderr, "mhd viewer: error: {}\n", e);
+    mhd::cli::exit_with(1);
+  }
+  if (!view.screenshot_png.empty()) {
+    fmt::print("{}: {} frames, {}x{} {} image written to {}\n", o.scene, opened.viewer->frames_drawn(), view.width,
+               view.height, view.stereo ? "stereo" : "mono", view.screenshot_png);
+  }
+}
+
+}  // namespace
+
+void add_viewer_command(CLI::App& app) {
+  auto options = std::make_shared<ViewerCommandOptions>();
+  CLI::App* cmd = app.add_subcommand("viewer", "Draw a scene and the rig in stereo (side by side) or mono");
+  cmd->add_option("scene", options->scene, "Scene XML file")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--screenshot", options->view.screenshot_png,
+                  "Render offscreen and write the last frame to this PNG (needs an X display, e.g. xvfb-run -a)");
+  cmd->add_option("--frames", options->view.frames, "Frames to draw before the screenshot / exit (0: until closed)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--mono", options->mono, "One view over the whole window instead of two eyes");
+  cmd->add_option("--ipd-m", options->view.ipd_m, "Interpupillary distance, metres")->capture_default_str();
+  cmd->add_option("--fov-deg", options->view.fov_deg, "Vertical field of view per eye, degrees")->capture_default_str();
+  cmd->add_option("--width", options->view.width, "Window or image width, pixels (both eyes)")->capture_default_str();
+  cmd->add_option("--height", options->view.height, "Window or image height, pixels")->capture_default_str();
+  cmd->add_option("--rig", options->rig, "Take the rig frames from this file (e.g. scenes/rigs/pomhi.xml)")
+      ->check(CLI::ExistingFile);
+  cmd->add_flag("--no-grid", options->no_grid, "Leave out the floor grid");
+  cmd->add_flag("--observer", options->observer, "View from a fixed observer pose that shows the user's head");
+  cmd->add_flag("--demo-state", options->demo_state,
+                "Draw a still rig state (base from the scene's sim_omni3, HIP at the workspace centre)");
+  cmd->add_option("--demo-base", options->demo_base, "With --demo-state: the base at x_m z_m heading_deg")
+      ->expected(3);
+  cmd->add_option("--head-m", options->head_m, "Eye position while no state arrives: x y z (metres)")->expected(3);
+  cmd->add_option("--look-at-m", options->look_at_m, "Point that default head looks at: x y z (metres)")->expected(3);
+  cmd->callback([options] { run_viewer(*options); });
+}

@@ -1,0 +1,37 @@
+#pragma once
+// Internal to mhd_viewer (includes OSG): the scene's objects as an OSG graph, and the
+// floor grid. Meshes load through engine/mesh_io, primitives tessellate through
+// engine/geometry, exactly as the haptic side sees them.
+
+#include "geometry/triangle_mesh.h"
+#include "scene/scene_description.h"
+
+#include <Eigen/Geometry>
+#include <osg/Geometry>
+#include <osg/Group>
+#include <osg/ref_ptr>
+
+#include <string>
+#include <vector>
+
+namespace mhd::viewer {
+
+struct SceneGraphResult {
+  osg::ref_ptr<osg::Group> root;
+  std::vector<std::string> errors;  ///< "object 'x': mesh file '...': file not found"
+  /// Bounds of the non-plane objects in the world (empty when there are none).
+  Eigen::AlignedBox3d objects_bounds_W;
+  [[nodiscard]] bool ok() const { return errors.empty(); }
+};
+
+[[nodiscard]] SceneGraphResult build_scene_graph(const SceneDescription& scene);
+
+/// A triangle mesh as OSG geometry in one colour; empty reason on success, else why OSG
+/// cannot draw it ("it has no triangles", "vertex 12 is not finite", ...).
+[[nodiscard]] osg::ref_ptr<osg::Geometry> mesh_geometry(const TriangleMesh& mesh, const Eigen::Vector4f& rgba,
+                                                        std::string& reason);
+
+/// Lines on the floor (y = 0) every `minor_m`, brighter every `major_m`, over +-half_size_m.
+[[nodiscard]] osg::ref_ptr<osg::Node> floor_grid(double half_size_m, double major_m, double minor_m);
+
+}  // namespace mhd::viewer
