@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
+
 #include <string>
 #include <variant>
 #include <vector>
@@ -346,6 +348,46 @@ TEST_F(SceneXmlReader, StringIncludeRigAndPluginErrors) {
                    at(4, "duplicate param 'p' in plugin 'd' (the first is at line 4)"),
                    at(5, "missing required attribute 'name' on <param>"),
                    at(5, "unknown element <frame> in <plugins>")}));
+}
+
+TEST_F(SceneXmlReader, ParamBlocksForTheUserThePlannerAndTheServer) {
+  const SceneReadResult r = read_scene_string(R"(<scene version="1">
+  <simulated_user>
+    <param name="seed" value="7"/>
+  </simulated_user>
+  <planner kind="predictive">
+    <param name="max_linear_speed_mps" value="0.3"/>
+    <param name="step_angle_deg" value="20"/>
+  </planner>
+  <server/>
+</scene>)", "mem/scene.xml");
+  ASSERT_TRUE(r.ok()) << ::testing::PrintToString(to_strings(r.diagnostics));
+  const SceneDescription& s = *r.scene;
+  ASSERT_TRUE(s.simulated_user);
+  EXPECT_EQ(s.simulated_user->params, (std::map<std::string, std::string>{{"seed", "7"}}));
+  EXPECT_EQ(s.simulated_user->param_where.at("seed").line, 3);
+  EXPECT_EQ(s.simulated_user->where.line, 2);
+  ASSERT_TRUE(s.planner);
+  EXPECT_EQ(s.planner->kind, "predictive");
+  EXPECT_EQ(s.planner->params.size(), 2u);
+  EXPECT_EQ(s.planner->param_where.at("step_angle_deg").line, 7);
+  ASSERT_TRUE(s.server);
+  EXPECT_TRUE(s.server->params.empty());
+}
+
+TEST_F(SceneXmlReader, ParamBlockErrors) {
+  EXPECT_EQ(errors_of(R"(<scene version="1">
+  <planner>
+    <param name="a" value="1"/>
+    <param name="a" value="2"/>
+  </planner>
+  <server colour="red"/>
+  <server/>
+</scene>)"),
+            (Lines{at(2, "missing required attribute 'kind' on <planner>"),
+                   at(4, "duplicate param 'a' in <planner> (the first is at line 3)"),
+                   at(6, "unknown attribute 'colour' on <server>"),
+                   at(7, "second <server> (the first is at mem/scene.xml:6)")}));
 }
 
 TEST_F(SceneXmlReader, MissingRootFile) {
