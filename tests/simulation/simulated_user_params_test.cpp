@@ -1,0 +1,62 @@
+// <simulated_user> params into a SimulatedUserConfig, each problem at its line.
+#include "simulation/simulated_user_params.h"
+
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+namespace mhd::simulation {
+namespace {
+
+ParamBlock block(std::initializer_list<std::pair<const char*, const char*>> params) {
+  ParamBlock b;
+  b.where = {"u.xml", 5};
+  int line = 6;
+  for (const auto& [name, value] : params) {
+    b.params.emplace(name, value);
+    b.param_where.emplace(name, SourceLocation{"u.xml", line++});
+  }
+  return b;
+}
+
+TEST(SimulatedUserParams, FillsTheConfiguration) {
+  const auto r = simulated_user_config_from(block({{"path", "0 1 0.5; 2 1 0.5"}, {"loop_path", "true"}, {"seed", "9"},
+                                                   {"start_heading_deg", "90"}, {"hand_height_m", "0.95"},
+                                                   {"gaze_target_m", "1 1.5 -2"}}));
+  ASSERT_TRUE(r.config) << (r.diagnostics.empty() ? "" : r.diagnostics.front().to_string());
+  const SimulatedUserConfig& c = *r.config;
+  ASSERT_EQ(c.path.size(), 2u);
+  EXPECT_DOUBLE_EQ(c.path[1].x_m, 2.0);
+  EXPECT_TRUE(c.loop_path);
+  EXPECT_EQ(c.seed, 9u);
+  EXPECT_NEAR(c.start.heading_rad, std::numbers::pi / 2.0, 1e-15);
+  EXPECT_DOUBLE_EQ(c.hand_height_m, 0.95);
+  ASSERT_TRUE(c.gaze_target_W);
+  EXPECT_DOUBLE_EQ(c.gaze_target_W->z(), -2.0);
+}
+
+TEST(SimulatedUserParams, NamesEachBadParamAtItsLine) {
+  const auto r = simulated_user_config_from(block({{"path", "0 1"}, {"hand_reach_m", "-1"}, {"walk_speed", "1"}}));
+  EXPECT_FALSE(r.config);
+  std::vector<std::string> messages;
+  for (const auto& d : r.diagnostics) messages.push_back(d.to_string());
+  EXPECT_EQ(messages, (std::vector<std::string>{
+                          "u.xml:6: error: param 'path' in <simulated_user>: waypoint 1: expected 'x z speed_mps', got '0 1'",
+                          "u.xml:7: error: param 'hand_reach_m' in <simulated_user> must be a non-negative number, got '-1'",
+                          "u.xml:8: error: unknown param 'walk_speed' in <simulated_user> (known: area_half_size_m, "
+                          "eye_height_m, gaze_target_m, hand_height_m, hand_motion_amplitude_m, hand_reach_m, loop_path, "
+                          "max_speed_mps, path, seed, side_step_probability, side_step_speed_max_mps, stand_probability, "
+                          "start_heading_deg, start_x_m, start_z_m, walk_speed_max_mps, walk_speed_min_mps)"}));
+}
+
+TEST(SimulatedUserParams, AConfigurationTheUserRefusesIsAnErrorAtTheBlock) {
+  // Each value is fine alone; a path faster than the maximum speed is not.
+  const auto r = simulated_user_config_from(block({{"path", "0 0 1; 1 0 2"}, {"max_speed_mps", "1.5"}}));
+  EXPECT_FALSE(r.config);
+  ASSERT_EQ(r.diagnostics.size(), 1u);
+  EXPECT_EQ(r.diagnostics[0].where.line, 5);
+  EXPECT_NE(r.diagnostics[0].message.find("<simulated_user>: "), std::string::npos);
+}
+
+}  // namespace
+}  // namespace mhd::simulation
