@@ -278,6 +278,9 @@ void HapticServer::Impl::io_thread() {
   std::optional<simulation::SimulatedUser> user;
   if (user_config) user.emplace(*user_config);
   BaseCommandGuard guard(settings.base_guard);
+  // Tracker input is on the force's critical path (stale poses fade the force out), so it
+  // runs real-time too, below the haptic thread.
+  (void)realtime::make_current_thread_realtime(70);
   realtime::PeriodicTimer timer(1.0 / settings.io_rate_hz);
   std::array<mhd_tracker_sample, 64> samples{};
   std::map<std::uint32_t, std::uint64_t> last_sequence;
