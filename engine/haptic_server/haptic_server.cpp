@@ -283,7 +283,13 @@ void HapticServer::Impl::io_thread() {
   (void)realtime::make_current_thread_realtime(70);
   realtime::PeriodicTimer timer(1.0 / settings.io_rate_hz);
   std::array<mhd_tracker_sample, 64> samples{};
-  std::map<std::uint32_t, std::uint64_t> last_sequence;
+  struct SensorTrack {
+    std::uint64_t sequence = 0;
+    double accepted_at_s = 0.0;  ///< host time of the last accepted sample
+  };
+  std::map<std::uint32_t, SensorTrack> sensors;
+  // A sensor silent this long may start its sequence again (a restarted tracker server).
+  constexpr double kSequenceRestartAfter_s = 0.25;
   double newest_base_sample_t_s = -std::numeric_limits<double>::infinity();
   std::uint64_t command_sequence_seen = 0;
   BaseTwist planned;
@@ -307,17 +313,19 @@ void HapticServer::Impl::io_thread() {
         tracker_failed = true;
         break;
       }
+      const double read_at_s = host.now_s();  // after the read: a sample is never newer than this
       for (std::size_t i = 0; i < count; ++i) {
         const mhd_tracker_sample& s = samples[i];
-        auto [it, first] = last_sequence.emplace(s.sensor_id, s.sequence);
-        const bool backwards = !first && s.sequence <= it->second;
-        const bool future = s.timestamp_s > t_s + 0.01;  // clocks agree; 10 ms of slack
+        auto [it, first] = sensors.emplace(s.sensor_id, SensorTrack{s.sequence, read_at_s});
+        const bool restarted = read_at_s - it->second.accepted_at_s > kSequenceRestartAfter_s;
+        const bool backwards = !first && !restarted && s.sequence <= it->second.sequence;
+        const bool future = s.timestamp_s > read_at_s + 0.01;  // clocks agree; 10 ms of slack
         const bool known = s.sensor_id == settings.base_sensor_id || s.sensor_id == settings.head_sensor_id;
         if (backwards || future || !known) {
           tracker_rejected.fetch_add(1, std::memory_order_relaxed);
           continue;
         }
-        it->second = s.sequence;
+        it->second = {s.sequence, read_at_s};
         tracker_samples.fetch_add(1, std::memory_order_relaxed);
         const Pose X_T_S = pose_from_xyz_quaternion(Eigen::Vector3d(s.p_T_m[0], s.p_T_m[1], s.p_T_m[2]),
                                                     Eigen::Quaterniond(s.q_T_wxyz[0], s.q_T_wxyz[1], s.q_T_wxyz[2], s.q_T_wxyz[3]));

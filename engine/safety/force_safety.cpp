@@ -48,7 +48,9 @@ ForceSafetyOutput ForceSafety::apply(const ForceSafetyInput& in) noexcept {
     ++counters_.clamped_ticks;
   }
 
-  out.jump = has_hip_ && (in.hip_W_m - last_hip_W_m_).norm() > settings_.hip_jump_m;
+  // The threshold is per millisecond: a late tick (dt > 1 ms) lets the hand move further.
+  const double jump_threshold_m = settings_.hip_jump_m * std::max(1.0, dt_s / 0.001);
+  out.jump = has_hip_ && (in.hip_W_m - last_hip_W_m_).norm() > jump_threshold_m;
   if (out.jump) {
     ++counters_.jumps;
     // Keep the previous tick's force magnitude; the ramp brings the rest back.

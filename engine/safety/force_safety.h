@@ -6,7 +6,7 @@
 //    tracker_timeout_s (stale tracking: the HIP in the world is no longer known);
 //  * drops to 0 on a fault (non-finite force or HIP, no base pose yet) and, once the fault
 //    clears, rises back to 1 over fade_in_s (never a step);
-//  * on a HIP jump (the HIP moved more than hip_jump_m in one tick, e.g. a tracker glitch
+//  * on a HIP jump (the HIP moved more than hip_jump_m per millisecond of the tick, e.g. a tracker glitch
 //    or a pose reset), is lowered so that the output force keeps the magnitude it had
 //    the tick before, then rises back over fade_in_s: the jump's force step is faded in,
 //    not cut (a cut would itself be a jolt) and not passed on.
@@ -22,7 +22,7 @@ struct ForceSafetySettings {
   double max_force_N = 8.5;        ///< the device's limit (the smaller of scene and device)
   double tracker_timeout_s = 0.05;  ///< force is zero when the newest base pose is this old
   double tracker_fade_s = 0.02;     ///< the fade before the timeout
-  double hip_jump_m = 0.01;         ///< per tick; 10 m/s at 1 kHz, far above a hand's speed
+  double hip_jump_m = 0.01;         ///< per millisecond (10 m/s), far above a hand's speed
   double fade_in_s = 0.5;           ///< from zero gain back to full force
 };
 

@@ -109,6 +109,18 @@ TEST(ForceSafety, AHipJumpKeepsThePreviousForceMagnitudeInsteadOfStepping) {
   EXPECT_EQ(safety.counters().jumps, 1u);
 }
 
+TEST(ForceSafety, ALateTickMayCarryTheHandFurtherWithoutCountingAJump) {
+  ForceSafety safety(settings());
+  const Eigen::Vector3d hip(0, 1, 0);
+  for (int i = 0; i < 200; ++i) (void)safety.apply(input(Eigen::Vector3d(0, 2, 0), 0.005, hip));
+  // 12 mm in a tick that came 12 ms late: 1 m/s, a hand's speed, not a glitch.
+  ForceSafetyInput late = input(Eigen::Vector3d(0, 2, 0), 0.005, hip + Eigen::Vector3d(0.012, 0, 0));
+  late.dt_s = 0.012;
+  EXPECT_FALSE(safety.apply(late).jump);
+  // The same step in a 1 ms tick is 12 m/s: a jump.
+  EXPECT_TRUE(safety.apply(input(Eigen::Vector3d(0, 2, 0), 0.005, hip + Eigen::Vector3d(0.024, 0, 0))).jump);
+}
+
 TEST(ForceSafety, SmallHipMotionIsNotAJump) {
   ForceSafety safety(settings());
   Eigen::Vector3d hip(0, 1, 0);
