@@ -3,6 +3,9 @@
 #include "command_exit.h"
 #include "viewer/demo_state.h"
 #include "viewer/stereo_viewer.h"
+#ifdef MHD_HAVE_VIEWER_DDS
+#include "viewer_dds/dds_state_source.h"
+#endif
 
 #include <fmt/core.h>
 #include <spdlog/spdlog.h>
@@ -28,6 +31,12 @@ struct ViewerCommandOptions {
   std::vector<double> demo_base;
   std::vector<double> head_m;
   std::vector<double> look_at_m;
+  // Network mode: the rig state of rig `rig_id` over DDS.
+  std::uint32_t rig_id = 0;
+  std::uint32_t domain_id = 0;
+  double stale_after_s = 1.0;
+  CLI::Option* rig_id_option = nullptr;
+  CLI::Option* domain_id_option = nullptr;
 };
 
 std::optional<Eigen::Vector3d> vector3(const std::vector<double>& v) {
@@ -53,10 +62,30 @@ void run_viewer(ViewerCommandOptions& o) {
     view.offscreen = true;
     if (view.frames == 0) view.frames = 10;
   }
-  // The state source: a still demo state, or none (scene only). A network source (the
-  // haptic server's rig state over DDS) plugs in here as another StateSource.
+  // The state source: the haptic server's rig state over DDS (network mode), a still
+  // demo state, or none (scene only).
   std::shared_ptr<v::StateSource> source;
-  if (o.demo_state) {
+  if (o.rig_id_option->count() > 0) {
+#ifdef MHD_HAVE_VIEWER_DDS
+    v::DdsStateSourceOptions dds;
+    dds.rig_id = o.rig_id;
+    if (o.domain_id_option->count() > 0) dds.domain_id = o.domain_id;
+    dds.stale_after_s = o.stale_after_s;
+    const std::string domain =
+        dds.domain_id ? "domain " + std::to_string(*dds.domain_id) : std::string("the default domain");
+    try {
+      source = std::make_shared<v::DdsStateSource>(dds);
+    } catch (const std::exception& e) {
+      fmt::print(stderr, "mhd viewer: error: cannot subscribe to the rig state of rig {} on {}: {}\n", o.rig_id,
+                 domain, e.what());
+      mhd::cli::exit_with(1);
+    }
+    spdlog::info("drawing the rig state of rig {} from DDS ({})", o.rig_id, domain);
+#else
+    fmt::print(stderr, "mhd viewer: error: --rig-id needs DDS, and this mhd was built without Cyclone DDS\n");
+    mhd::cli::exit_with(1);
+#endif
+  } else if (o.demo_state) {
     std::optional<mhd::BasePose> base;
     if (o.demo_base.size() == 3) base = mhd::BasePose{o.demo_base[0], o.demo_base[1], o.demo_base[2] * M_PI / 180.0};
     source = std::make_shared<v::FixedStateSource>(v::demo_rig_state(*loaded.scene, base));
@@ -101,6 +130,20 @@ void add_viewer_command(CLI::App& app) {
                 "Draw a still rig state (base from the scene's sim_omni3, HIP at the workspace centre)");
   cmd->add_option("--demo-base", options->demo_base, "With --demo-state: the base at x_m z_m heading_deg")
       ->expected(3);
+  options->rig_id_option =
+      cmd->add_option("--rig-id", options->rig_id,
+                      "Network mode: draw this rig's state, read over DDS (topic mhd_rig_state, e.g. from the "
+                      "haptic server's dds_state display plugin)")
+          ->excludes("--demo-state");
+  options->domain_id_option = cmd->add_option("--domain-id", options->domain_id,
+                                              "With --rig-id: the DDS domain (default: $CYCLONEDDS_URI's)")
+                                  ->check(CLI::Range(0, 232))
+                                  ->needs(options->rig_id_option);
+  cmd->add_option("--stale-after-s", options->stale_after_s,
+                  "With --rig-id: seconds without a state before the publisher is reported gone")
+      ->check(CLI::PositiveNumber)
+      ->needs(options->rig_id_option)
+      ->capture_default_str();
   cmd->add_option("--head-m", options->head_m, "Eye position while no state arrives: x y z (metres)")->expected(3);
   cmd->add_option("--look-at-m", options->look_at_m, "Point that default head looks at: x y z (metres)")->expected(3);
   cmd->callback([options] { run_viewer(*options); });
