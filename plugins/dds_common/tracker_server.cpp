@@ -7,6 +7,7 @@
 #include "plugin_host/plugin_search_path.h"
 #include "scene_xml/scene_reader.h"
 #include "simulation/simulated_user.h"
+#include "simulation/simulated_user_params.h"
 #include "simulation/simulated_world.h"
 
 #include <fmt/format.h>
@@ -64,8 +65,15 @@ TrackerServerReport run_tracker_server(const TrackerServerOptions& options, cons
   const PluginDescription description = tracker_of(scene, options.scene_file, options);
 
   simulation::SimulatedWorld world;
+  // The scene's <simulated_user> when it has one (the same walker the haptic server's
+  // scene names), else a random walk seeded by --seed.
   simulation::SimulatedUserConfig user_config;
   user_config.seed = options.user_seed;
+  if (scene.simulated_user) {
+    auto parsed = simulation::simulated_user_config_from(*scene.simulated_user);
+    if (!parsed.config) throw TrackerServerError(parsed.diagnostics.front().to_string());
+    user_config = std::move(*parsed.config);
+  }
   simulation::SimulatedUser user(user_config);
   HostServices host(&world.table());
   host.set_scene_file(std::filesystem::absolute(options.scene_file));
