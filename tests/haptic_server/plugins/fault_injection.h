@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <new>
 #include <string>
 
 namespace fault_injection {
@@ -82,6 +83,50 @@ inline void write_log(const Config& c) {
     std::fprintf(f, "%lu %.17g %.17g %.17g\n", c.commands, c.last_command[0], c.last_command[1], c.last_command[2]);
     std::fclose(f);
   }
+}
+
+/// One opened fault plugin: its host and configuration (both plugins are this).
+struct Instance {
+  const mhd_host* host = nullptr;
+  Config config;
+};
+
+inline Instance* of(mhd_plugin_instance* self) { return reinterpret_cast<Instance*>(self); }
+
+inline mhd_plugin_instance* open_instance(const mhd_host* host, const mhd_param* params, size_t count,
+                                          mhd_error* err) {
+  auto* instance = new (std::nothrow) Instance;
+  if (instance == nullptr) return nullptr;
+  instance->host = host;
+  if (!parse(instance->config, params, count, err)) {
+    delete instance;
+    return nullptr;
+  }
+  return reinterpret_cast<mhd_plugin_instance*>(instance);
+}
+
+inline mhd_status no_op(mhd_plugin_instance*, mhd_error*) { return MHD_OK; }
+
+/// Writes the command log, then frees the instance.
+inline void close_instance(mhd_plugin_instance* self) {
+  write_log(of(self)->config);
+  delete of(self);
+}
+
+/// The table both plugins start from: lifecycle filled, the kind's calls left to them.
+inline mhd_plugin_api base_table(mhd_plugin_kind kind, const char* name) {
+  mhd_plugin_api a{};
+  a.abi_version = MHD_PLUGIN_ABI_VERSION;
+  a.struct_size = sizeof(mhd_plugin_api);
+  a.kind = kind;
+  a.name = name;
+  a.version = "1.0.0";
+  a.description = "test plugin that fails on cue";
+  a.open = open_instance;
+  a.start = no_op;
+  a.stop = no_op;
+  a.close = close_instance;
+  return a;
 }
 
 }  // namespace fault_injection
