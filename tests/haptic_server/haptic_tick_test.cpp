@@ -6,6 +6,9 @@
 #include <gtest/gtest.h>
 #include <fmt/core.h>
 
+#include <unistd.h>
+
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -31,7 +34,8 @@ Fixture make_fixture(double gap_m) {
   const Eigen::Vector3d hip = f.rig->p_W_hip(f.rig->X_W_robot_from_base({}), kQ);
   const auto dir = std::filesystem::path(::testing::TempDir()) / "haptic_tick_test";
   std::filesystem::create_directories(dir);
-  const auto file = dir / "box.xml";
+  // ctest runs each case as its own process, perhaps at once: a file per process and gap.
+  const auto file = dir / fmt::format("box_{}_{}.xml", ::getpid(), gap_m);
   std::ofstream(file) << fmt::format(R"(<?xml version="1.0"?>
 <scene version="1" unit="m">
   <include file="{}/scenes/rigs/pomhi.xml"/>
@@ -43,12 +47,18 @@ Fixture make_fixture(double gap_m) {
 </scene>
 )", MHD_SOURCE_DIR, hip.x(), hip.y() - gap_m - 0.5, hip.z());
   auto read = read_scene_file(file);
-  EXPECT_TRUE(read.ok());
+  if (!read.ok()) {
+    ADD_FAILURE() << "cannot read " << file;
+    std::abort();  // every test needs the scene
+  }
   f.description = *read.scene;
   CompileOptions options;
   options.use_cache = false;
   auto compiled = compile_scene(*f.description, options);
-  EXPECT_TRUE(compiled.ok());
+  if (!compiled.ok()) {
+    ADD_FAILURE() << "cannot compile " << file;
+    std::abort();
+  }
   f.scene = std::move(*compiled.scene);
   return f;
 }
