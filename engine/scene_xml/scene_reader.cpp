@@ -11,6 +11,7 @@
 
 #include <tinyxml2.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
@@ -74,6 +75,20 @@ struct FileContext {
   double unit_to_m = 1.0;
 };
 
+/// XML forbids "--" inside a comment (and a comment ending in "-"); tinyxml2 reads such a
+/// comment anyway, so a file that other XML tools (and the schema check) refuse would pass.
+void check_comment(const tinyxml2::XMLNode& n, const DiagnosticSink& sink) {
+  const tinyxml2::XMLComment* c = n.ToComment();
+  if (c == nullptr || c->Value() == nullptr) return;
+  const std::string_view text = c->Value();
+  const std::size_t at = text.find("--");
+  if (at == std::string_view::npos && (text.empty() || text.back() != '-')) return;
+  const std::size_t where = at == std::string_view::npos ? text.size() - 1 : at;
+  const auto newlines = std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(where), '\n');
+  sink.error(c->GetLineNum() + static_cast<int>(newlines),
+             "malformed XML: '--' inside a comment (XML forbids it; write '-' or reword)");
+}
+
 /// Calls `visit` for each child element; reports non-blank text inside `parent`.
 void for_each_child(const tinyxml2::XMLElement& parent, const DiagnosticSink& sink,
                     const std::function<void(const tinyxml2::XMLElement&)>& visit) {
@@ -85,6 +100,7 @@ void for_each_child(const tinyxml2::XMLElement& parent, const DiagnosticSink& si
         sink.error(t->GetLineNum(), concat("unexpected text in ", tag(parent)));
       }
     }
+    check_comment(*n, sink);
     // Comments, declarations and other markup carry nothing and are skipped.
   }
 }
@@ -189,6 +205,7 @@ class SceneReader {
           ctx.sink.error(t->GetLineNum(), "unexpected text outside the root element");
         }
       }
+      check_comment(*n, ctx.sink);
     }
     if (root == nullptr) {
       ctx.sink.error(0, "malformed XML: no root element");

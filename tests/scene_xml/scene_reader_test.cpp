@@ -375,6 +375,19 @@ TEST_F(SceneXmlReader, ParamBlocksForTheUserThePlannerAndTheServer) {
   EXPECT_TRUE(s.server->params.empty());
 }
 
+TEST_F(SceneXmlReader, DoubleHyphenInsideACommentIsRefusedAsXmlDoes) {
+  EXPECT_EQ(errors_of(R"(<!-- top level -- here -->
+<scene version="1">
+  <!-- run it with
+       mhd run --duration 5 -->
+  <!-- fine - single hyphens -->
+  <!-- ends in a hyphen--->
+</scene>)"),
+            (Lines{at(1, "malformed XML: '--' inside a comment (XML forbids it; write '-' or reword)"),
+                   at(4, "malformed XML: '--' inside a comment (XML forbids it; write '-' or reword)"),
+                   at(6, "malformed XML: '--' inside a comment (XML forbids it; write '-' or reword)")}));
+}
+
 TEST_F(SceneXmlReader, ParamBlockErrors) {
   EXPECT_EQ(errors_of(R"(<scene version="1">
   <planner>
