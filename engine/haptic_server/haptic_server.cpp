@@ -625,8 +625,13 @@ ServerReport HapticServer::run() {
     while (!m.stop.load()) {
       std::this_thread::sleep_for(std::chrono::milliseconds(10));
       const double now_s = m.host.now_s();
-      if (stop_requested_.load(std::memory_order_relaxed)) m.stop.store(true);
-      if (m.options.duration_s > 0.0 && now_s - t0_s >= m.options.duration_s) m.stop.store(true);
+      if (stop_requested_.load(std::memory_order_relaxed)) {
+        report.ended_by = RunEnd::StopRequested;
+        m.stop.store(true);
+      } else if (m.options.duration_s > 0.0 && now_s - t0_s >= m.options.duration_s) {
+        report.ended_by = RunEnd::Duration;
+        m.stop.store(true);
+      }
       if (m.options.on_status && now_s - last_status_t_s >= m.options.status_interval_s) {
         ServerStatus s;
         s.elapsed_s = now_s - t0_s;
@@ -692,6 +697,7 @@ ServerReport HapticServer::run() {
     const std::lock_guard lock(m.error_mutex);
     report.error = m.error;
   }
+  if (report.error) report.ended_by = RunEnd::Fault;  // a fault wins over a stop at the same moment
   return report;
 }
 

@@ -76,8 +76,16 @@ struct ServerOptions {
   double status_interval_s = 0.5;
 };
 
+/// Why a run ended.
+enum class RunEnd {
+  Duration,       ///< ServerOptions::duration_s passed
+  StopRequested,  ///< request_stop() (Ctrl-C)
+  Fault,          ///< a plugin failed, refused to start, or the recording could not be written
+};
+
 struct ServerReport {
   ServerStatus status;  ///< at the end
+  RunEnd ended_by = RunEnd::Fault;
   std::uint64_t missed_deadlines = 0;
   double tick_median_us = 0.0, tick_p99_us = 0.0, tick_p999_us = 0.0, tick_max_us = 0.0;
   std::uint64_t contact_ticks = 0;

@@ -108,6 +108,7 @@ TEST(HapticServer, RunsTheDolphinSceneOnSimulatedHardwareAndRecordsEveryTick) {
   ASSERT_TRUE(build.server);
   const ServerReport r = build.server->run();
   EXPECT_FALSE(r.error) << *r.error;
+  EXPECT_EQ(r.ended_by, RunEnd::Duration);
   EXPECT_GT(r.status.ticks, 100u);
   EXPECT_GT(r.status.tracker_samples, 50u);
   EXPECT_EQ(r.status.tracker_rejected, 0u);
@@ -150,7 +151,7 @@ TEST(HapticServer, DeviceReturningNanEndsTheRunWithZeroForceAndTheBaseStopped) {
   EXPECT_EQ(*r.error, fmt::format("{}:{}: error: plugin 'fault_device': device_read returned a non-finite "
                                   "joint_angles_rad[1]",
                                   file.string(), scene_line_of(file, "name=\"fault_device\"")));
-  EXPECT_LT(r.status.elapsed_s, 30.0);  // ended by the fault, not the duration
+  EXPECT_EQ(r.ended_by, RunEnd::Fault);  // not by the 30 s duration
   EXPECT_TRUE(r.zero_force_sent);
   EXPECT_TRUE(r.base_stop_sent);
   const CommandLog device = read_log(device_log);
