@@ -12,11 +12,14 @@
 #include "realtime/spsc_ring.h"
 #include "realtime/thread_priority.h"
 #include "realtime/triple_buffer.h"
+#include "realtime/wake_event.h"
 #include "recording/csv_recording.h"
 #include "safety/base_command_guard.h"
 #include "simulation/simulated_user.h"
 #include "simulation/simulated_user_params.h"
 #include "simulation/simulated_world.h"
+
+#include <fmt/core.h>
 
 #include <algorithm>
 #include <array>
@@ -24,6 +27,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <thread>
 #include <utility>
@@ -77,9 +81,35 @@ class Shared {
   T value_{};
 };
 
+/// Which call a plugin is inside and since when (host seconds; 0: none), for the
+/// watchdog in run(). Written by the thread making the call, read by run()'s thread.
+struct CallWatch {
+  std::atomic<double> since_s{0.0};
+  std::atomic<const char*> call{nullptr};
+};
+
 struct OpenedPlugin {
   PluginDescription description;
   PluginInstance instance;
+  std::unique_ptr<CallWatch> watch = std::make_unique<CallWatch>();
+  /// Held around every call to this plugin from a server thread, so run()'s thread can
+  /// send the base its stop while the io thread is stuck inside another plugin.
+  std::unique_ptr<std::timed_mutex> call_mutex = std::make_unique<std::timed_mutex>();
+};
+
+/// Marks `plugin` as inside `call` for as long as it lives.
+class InCall {
+ public:
+  InCall(OpenedPlugin& plugin, const char* call, double now_s) noexcept : watch_(*plugin.watch) {
+    watch_.call.store(call, std::memory_order_relaxed);
+    watch_.since_s.store(now_s, std::memory_order_release);
+  }
+  ~InCall() { watch_.since_s.store(0.0, std::memory_order_release); }
+  InCall(const InCall&) = delete;
+  InCall& operator=(const InCall&) = delete;
+
+ private:
+  CallWatch& watch_;
 };
 
 std::string plugin_failure(const PluginDescription& d, const PluginError& e) {
@@ -116,6 +146,8 @@ struct HapticServer::Impl {
   realtime::TripleBuffer<HapticSnapshot> snapshot_for_display;
   Shared<HeadState> head;
   Shared<std::pair<std::uint64_t, BaseTwist>> planned_command;  // sequence, twist
+  realtime::WakeEvent base_sample_arrived;  ///< io -> haptic: start the tick now
+  bool tick_on_tracker_sample = false;      ///< set by run(): the tracker can wake the io thread
 
   // Status, written by the haptic and io threads, read by run().
   std::atomic<std::uint64_t> ticks{0}, overruns{0}, missed{0}, contact_ticks{0};
@@ -123,10 +155,16 @@ struct HapticServer::Impl {
   std::atomic<bool> in_contact{false};
   std::atomic<std::uint64_t> tracker_samples{0}, tracker_rejected{0}, recording_dropped{0};
   std::atomic<std::uint64_t> base_commands{0}, base_stops{0};
+  std::atomic<std::uint64_t> early_ticks{0};
   Shared<BasePose> status_base;
+  Shared<std::vector<PluginCounter>> tracker_counters;
 
   std::atomic<bool> stop{false};
   std::atomic<bool> recorder_stop{false};  ///< set after the haptic thread has ended
+  std::atomic<int> running_threads{0};     ///< server threads not yet ended (not the recorder)
+  /// A thread never came back from a plugin call: this Impl (and the plugin's library)
+  /// must outlive it, so it is never destroyed.
+  bool abandoned = false;
   std::mutex error_mutex;
   std::optional<std::string> error;
 
@@ -135,7 +173,7 @@ struct HapticServer::Impl {
   ForceSafetyCounters safety_counters;
   std::optional<CsvRecording> recording;  ///< opened by run(), written by the recorder thread
   bool zero_force_sent = false;
-  bool base_stop_sent = false;
+  std::atomic<bool> base_stop_sent{false};  ///< by the io thread, or run()'s when the io thread is stuck
   std::string scheduling;  ///< the haptic thread's, as obtained
   std::uint64_t recording_rows_written = 0;
 
@@ -166,6 +204,11 @@ struct HapticServer::Impl {
     return true;
   }
 
+  /// Sends the base a zero twist (under its call mutex) and notes whether it took it.
+  void stop_base();
+  /// The first plugin inside one call for longer than plugin_call_timeout_s, if any.
+  [[nodiscard]] OpenedPlugin* stuck_plugin(double now_s) const;
+
   void haptic_thread();
   void io_thread();
   void planner_thread();
@@ -187,7 +230,11 @@ void HapticServer::Impl::haptic_thread() {
   double last_t_s = host.now_s();
 
   while (!stop.load(std::memory_order_relaxed)) {
-    (void)timer.wait_next();
+    if (tick_on_tracker_sample) {
+      (void)timer.wait_next_or(base_sample_arrived, settings.min_tick_interval_s);
+    } else {
+      (void)timer.wait_next();
+    }
     const double t_s = host.now_s();
     const double dt_s = std::max(0.0, t_s - last_t_s);
     last_t_s = t_s;
@@ -198,11 +245,15 @@ void HapticServer::Impl::haptic_thread() {
     while (commands_to_haptic.pop(command)) tick.add_base_command(command.t_s, command.twist_B);
 
     if (device->instance.simulates()) {
+      const InCall in_call(*device, "simulate_until", t_s);
       auto r = device->instance.simulate_until(t_s);
       if (check(r, *device)) break;
     }
     mhd_device_state state{};
-    auto read = device->instance.device_read(state);
+    auto read = [&] {
+      const InCall in_call(*device, "device_read", t_s);
+      return device->instance.device_read(state);
+    }();
     if (check(read, *device) || deactivated(read.value(), *device, "device_read")) break;
     if (read.value() == PluginCallStatus::Ok) {
       q_rad = Eigen::Vector3d(state.joint_angles_rad[0], state.joint_angles_rad[1], state.joint_angles_rad[2]);
@@ -213,7 +264,10 @@ void HapticServer::Impl::haptic_thread() {
     mhd_device_command cmd{};
     cmd.timestamp_s = t_s;
     for (int j = 0; j < 3; ++j) cmd.joint_torques_Nm[j] = out.torques_Nm[j];
-    auto write = device->instance.device_write(cmd);
+    auto write = [&] {
+      const InCall in_call(*device, "device_write", t_s);
+      return device->instance.device_write(cmd);
+    }();
     if (check(write, *device) || deactivated(write.value(), *device, "device_write")) break;
 
     tick_histogram.add(host.now_s() - t_s);
@@ -257,6 +311,7 @@ void HapticServer::Impl::haptic_thread() {
     if (out.in_contact) contact_ticks.fetch_add(1, std::memory_order_relaxed);
     overruns.store(timer.stats().overruns, std::memory_order_relaxed);
     missed.store(timer.stats().missed_deadlines, std::memory_order_relaxed);
+    early_ticks.store(timer.stats().early_wakes, std::memory_order_relaxed);
     force_N.store(out.force_W_N.norm(), std::memory_order_relaxed);
     safety_gain.store(out.safety_gain, std::memory_order_relaxed);
     tracker_age_s.store(out.tracker_age_s, std::memory_order_relaxed);
@@ -297,22 +352,20 @@ void HapticServer::Impl::io_thread() {
   bool last_write_was_zero = false;
   const double base_period_s = 1.0 / settings.base_rate_hz;
 
-  while (!stop.load(std::memory_order_relaxed)) {
-    (void)timer.wait_next();
-    const double t_s = host.now_s();
-    if (user) user->update(t_s, world);
-    if (base != nullptr && base->instance.simulates() && check(base->instance.simulate_until(t_s), *base)) break;
-    if (tracker->instance.simulates() && check(tracker->instance.simulate_until(t_s), *tracker)) break;
-
-    // Tracker: everything received since the last read.
-    bool tracker_failed = false;
+  // Everything the tracker has received since the last read: checked, then base-sensor
+  // samples to the haptic thread (woken for them) and head samples to the planner.
+  // Returns the number of samples taken, or nullopt when the tracker failed.
+  auto read_tracker = [&]() -> std::optional<std::size_t> {
+    std::size_t taken = 0;
+    bool base_sample = false;
     for (;;) {
       std::size_t count = 0;
-      auto r = tracker->instance.tracker_read(samples, count);
-      if (check(r, *tracker) || deactivated(r.value(), *tracker, "tracker_read")) {
-        tracker_failed = true;
-        break;
-      }
+      auto r = [&] {
+        const InCall in_call(*tracker, "tracker_read", host.now_s());
+        return tracker->instance.tracker_read(samples, count);
+      }();
+      if (check(r, *tracker) || deactivated(r.value(), *tracker, "tracker_read")) return std::nullopt;
+      taken += count;
       const double read_at_s = host.now_s();  // after the read: a sample is never newer than this
       for (std::size_t i = 0; i < count; ++i) {
         const mhd_tracker_sample& s = samples[i];
@@ -332,6 +385,7 @@ void HapticServer::Impl::io_thread() {
         if (s.sensor_id == settings.base_sensor_id) {
           if (!base_samples.push({s.timestamp_s, X_T_S})) tracker_rejected.fetch_add(1, std::memory_order_relaxed);
           newest_base_sample_t_s = std::max(newest_base_sample_t_s, s.timestamp_s);
+          base_sample = true;
         } else {
           const Pose X_W_head = rig.X_W_is900() * X_T_S;
           HeadState h;
@@ -344,11 +398,79 @@ void HapticServer::Impl::io_thread() {
       }
       if (count < samples.size()) break;
     }
-    if (tracker_failed) break;
+    if (base_sample && tick_on_tracker_sample) base_sample_arrived.signal();
+    return taken;
+  };
+
+  // The plugin's own counts (samples it dropped, and why), for the status line.
+  std::array<mhd_counter, 32> counter_buffer{};
+  double next_counters_t_s = host.now_s();
+  constexpr double kCountersInterval_s = 0.25;
+  auto read_counters = [&](double t_s) -> bool {
+    if (!tracker->instance.counts() || t_s < next_counters_t_s) return true;
+    next_counters_t_s = t_s + kCountersInterval_s;
+    auto n = [&] {
+      const InCall in_call(*tracker, "counters", t_s);
+      return tracker->instance.counters(counter_buffer);
+    }();
+    if (check(n, *tracker)) return false;
+    std::vector<PluginCounter> out;
+    out.reserve(n.value());
+    for (std::size_t i = 0; i < n.value(); ++i) out.push_back({counter_buffer[i].name, counter_buffer[i].value});
+    tracker_counters.set(out);
+    return true;
+  };
+
+  // Between deadlines, a tracker that can wait wakes this thread the moment a sample
+  // arrives; the last moments before a deadline are slept precisely by the timer.
+  constexpr double kWakeMargin_s = 100e-6;
+  while (!stop.load(std::memory_order_relaxed)) {
+    bool tracker_failed = false;
+    if (tick_on_tracker_sample) {
+      for (;;) {
+        const double remaining_s = timer.next_deadline_s() - realtime::PeriodicTimer::monotonic_now_s() - kWakeMargin_s;
+        if (remaining_s <= 0.0 || stop.load(std::memory_order_relaxed)) break;
+        auto w = [&] {
+          const InCall in_call(*tracker, "tracker_wait", host.now_s());
+          return tracker->instance.tracker_wait(remaining_s);
+        }();
+        if (check(w, *tracker) || deactivated(w.value(), *tracker, "tracker_wait")) {
+          tracker_failed = true;
+          break;
+        }
+        if (w.value() != PluginCallStatus::Ok) break;  // timed out
+        const std::optional<std::size_t> taken = read_tracker();
+        if (!taken) {
+          tracker_failed = true;
+          break;
+        }
+        // Woken with nothing to read: a plugin that keeps saying so would spin this
+        // real-time thread, so sleep to the deadline instead.
+        if (*taken == 0) break;
+      }
+      if (tracker_failed) break;
+    }
+    (void)timer.wait_next();
+    const double t_s = host.now_s();
+    if (user) user->update(t_s, world);
+    if (base != nullptr && base->instance.simulates()) {
+      const std::lock_guard lock(*base->call_mutex);
+      const InCall in_call(*base, "simulate_until", t_s);
+      if (check(base->instance.simulate_until(t_s), *base)) break;
+    }
+    if (tracker->instance.simulates()) {
+      const InCall in_call(*tracker, "simulate_until", t_s);
+      if (check(tracker->instance.simulate_until(t_s), *tracker)) break;
+    }
+    if (!read_tracker() || !read_counters(t_s)) break;
 
     if (base == nullptr) continue;
     mhd_base_state base_state{};
-    auto br = base->instance.base_read(base_state);
+    auto br = [&] {
+      const std::lock_guard lock(*base->call_mutex);
+      const InCall in_call(*base, "base_read", t_s);
+      return base->instance.base_read(base_state);
+    }();
     if (check(br, *base) || deactivated(br.value(), *base, "base_read")) break;
 
     // Command: the planner's newest, through the guard; stale tracking stops the base at
@@ -373,7 +495,11 @@ void HapticServer::Impl::io_thread() {
       cmd.vx_mps = guarded.twist_B.vx_mps;
       cmd.vz_mps = guarded.twist_B.vz_mps;
       cmd.omega_radps = guarded.twist_B.omega_radps;
-      auto bw = base->instance.base_write(cmd);
+      auto bw = [&] {
+        const std::lock_guard lock(*base->call_mutex);
+        const InCall in_call(*base, "base_write", t_s);
+        return base->instance.base_write(cmd);
+      }();
       if (check(bw, *base) || deactivated(bw.value(), *base, "base_write")) break;
       last_base_write_t_s = t_s;
       last_write_was_zero = is_zero;
@@ -387,13 +513,32 @@ void HapticServer::Impl::io_thread() {
   }
 
   // Safe state: the base stops, whatever ended the loop.
+  stop_base();
+}
+
+void HapticServer::Impl::stop_base() {
   if (base == nullptr) {
-    base_stop_sent = true;
-  } else if (base->instance.state() == PluginState::Running) {
+    base_stop_sent.store(true);
+    return;
+  }
+  // Bounded: the io thread may itself be stuck inside the base.
+  const std::unique_lock lock(*base->call_mutex, std::chrono::milliseconds(200));
+  if (!lock.owns_lock()) return;
+  if (base->instance.state() == PluginState::Running) {
     mhd_base_command zero{};
     zero.timestamp_s = host.now_s();
-    base_stop_sent = base->instance.base_write(zero).ok();
+    const InCall in_call(*base, "base_write", zero.timestamp_s);
+    base_stop_sent.store(base->instance.base_write(zero).ok());
   }
+}
+
+OpenedPlugin* HapticServer::Impl::stuck_plugin(double now_s) const {
+  for (OpenedPlugin* p : {device, tracker, base}) {
+    if (p == nullptr) continue;
+    const double since_s = p->watch->since_s.load(std::memory_order_acquire);
+    if (since_s > 0.0 && now_s - since_s > settings.plugin_call_timeout_s) return p;
+  }
+  return nullptr;
 }
 
 // ---- planner thread ----------------------------------------------------------------
@@ -496,7 +641,10 @@ void HapticServer::Impl::recorder_thread() {
 // ---- opening -------------------------------------------------------------------------
 
 HapticServer::HapticServer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
-HapticServer::~HapticServer() = default;
+HapticServer::~HapticServer() {
+  // A thread still inside a plugin call uses the Impl and the plugin's code: keep both.
+  if (impl_ && impl_->abandoned) (void)impl_.release();
+}
 
 const ServerSettings& HapticServer::settings() const noexcept { return impl_->settings; }
 
@@ -610,21 +758,47 @@ ServerReport HapticServer::run() {
     }
   }
 
+  m.tick_on_tracker_sample = m.settings.tick_on_tracker_sample && m.tracker->instance.waits();
   const double t0_s = m.host.now_s();
   if (!m.stop.load()) {
     std::vector<std::thread> threads;
-    threads.emplace_back([&] { m.io_thread(); });
-    threads.emplace_back([&] { m.haptic_thread(); });
-    threads.emplace_back([&] { m.planner_thread(); });
-    if (!m.displays.empty()) threads.emplace_back([&] { m.display_thread(); });
+    auto spawn = [&](void (Impl::*body)()) {
+      m.running_threads.fetch_add(1);
+      threads.emplace_back([&m, body] {
+        (m.*body)();
+        m.running_threads.fetch_sub(1);
+      });
+    };
+    spawn(&Impl::io_thread);
+    spawn(&Impl::haptic_thread);
+    spawn(&Impl::planner_thread);
+    if (!m.displays.empty()) spawn(&Impl::display_thread);
     std::thread recorder;
     if (m.recording) recorder = std::thread([&] { m.recorder_thread(); });
 
     double last_status_t_s = t0_s;
     std::uint64_t last_status_ticks = 0;
+    // A plugin call that does not come back within plugin_call_timeout_s ends the run.
+    // The other threads then reach their safe state; the base gets its stop from here
+    // when its own (io) thread is the one stuck, inside the tracker.
+    OpenedPlugin* stuck = nullptr;
+    auto watch_calls = [&](double now_s) {
+      if (stuck != nullptr) return;
+      stuck = m.stuck_plugin(now_s);
+      if (stuck == nullptr) return;
+      const char* call = stuck->watch->call.load(std::memory_order_relaxed);
+      m.fail(Diagnostic{stuck->description.where,
+                        fmt::format("plugin '{}': {} has not returned after {:.0f} ms (plugin_call_timeout_s); "
+                                    "the run ends",
+                                    stuck->description.name, call == nullptr ? "a call" : call,
+                                    (now_s - stuck->watch->since_s.load()) * 1e3)}
+                 .to_string());
+      if (stuck == m.tracker) m.stop_base();
+    };
     while (!m.stop.load()) {
       std::this_thread::sleep_for(std::chrono::milliseconds(10));
       const double now_s = m.host.now_s();
+      watch_calls(now_s);
       if (stop_requested_.load(std::memory_order_relaxed)) {
         report.ended_by = RunEnd::StopRequested;
         m.stop.store(true);
@@ -644,19 +818,44 @@ ServerReport HapticServer::run() {
         s.tracker_age_s = m.tracker_age_s.load();
         s.tracker_samples = m.tracker_samples.load();
         s.tracker_rejected = m.tracker_rejected.load();
+        s.tracker_plugin_counters = m.tracker_counters.get();
+        s.early_ticks = m.early_ticks.load();
         s.base = m.status_base.get();
         m.options.on_status(s);
         last_status_t_s = now_s;
         last_status_ticks = s.ticks;
       }
     }
-    for (auto& t : threads) t.join();
+    // Wait for the threads, watching calls still; one that never leaves a plugin call is
+    // left behind (and the plugins with it: nothing may unload code a thread is in).
+    const double give_up_s = m.host.now_s() + m.settings.plugin_call_timeout_s + 2.0;
+    while (m.running_threads.load() > 0 && m.host.now_s() < give_up_s) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      watch_calls(m.host.now_s());
+    }
+    if (m.running_threads.load() > 0) {
+      m.abandoned = true;
+      for (auto& t : threads) t.detach();
+    } else {
+      for (auto& t : threads) t.join();
+    }
     m.recorder_stop.store(true, std::memory_order_release);
     if (recorder.joinable()) recorder.join();
   }
 
+  // The tracker's final counts (its thread has ended, so this thread may call it).
+  if (!m.abandoned && m.tracker->instance.counts() && m.tracker->instance.state() != PluginState::Loaded) {
+    std::array<mhd_counter, 32> buffer{};
+    if (auto n = m.tracker->instance.counters(buffer); n.ok()) {
+      std::vector<PluginCounter> out;
+      for (std::size_t i = 0; i < n.value(); ++i) out.push_back({buffer[i].name, buffer[i].value});
+      m.tracker_counters.set(out);
+    }
+  }
+
   // Stop and close everything (device first: no force while the rest shuts down).
   std::vector<OpenedPlugin*> stop_order(start_order.rbegin(), start_order.rend());
+  if (m.abandoned) stop_order.clear();
   for (OpenedPlugin* p : stop_order) {
     if (p->instance.state() == PluginState::Running) {
       if (auto r = p->instance.stop(); !r.ok()) m.fail(plugin_failure(p->description, r.error()));
@@ -675,6 +874,8 @@ ServerReport HapticServer::run() {
   report.status.tracker_age_s = m.tracker_age_s.load();
   report.status.tracker_samples = m.tracker_samples.load();
   report.status.tracker_rejected = m.tracker_rejected.load();
+  report.status.tracker_plugin_counters = m.tracker_counters.get();
+  report.status.early_ticks = m.early_ticks.load();
   report.status.base = m.status_base.get();
   report.missed_deadlines = m.missed.load();
   report.tick_median_us = m.tick_histogram.quantile_us(0.5);
@@ -692,7 +893,7 @@ ServerReport HapticServer::run() {
   report.recording_dropped = m.recording_dropped.load();
   report.zero_force_sent = m.zero_force_sent;
   report.haptic_scheduling = m.scheduling;
-  report.base_stop_sent = m.base_stop_sent;
+  report.base_stop_sent = m.base_stop_sent.load();
   {
     const std::lock_guard lock(m.error_mutex);
     report.error = m.error;

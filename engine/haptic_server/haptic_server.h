@@ -18,6 +18,7 @@
 // commands zero torque, the io thread commands a stopped base, every plugin is stopped
 // and closed, and the report carries the error naming the plugin and its scene line.
 
+#include "haptic_server/plugin_counter.h"
 #include "haptic_server/server_settings.h"
 #include "kinematics/base_pose.h"
 #include "scene/diagnostic.h"
@@ -64,6 +65,8 @@ struct ServerStatus {
   double tracker_age_s = 0.0;
   std::uint64_t tracker_samples = 0;
   std::uint64_t tracker_rejected = 0;  ///< dropped: wrong sensor, time from the future, sequence back
+  std::vector<PluginCounter> tracker_plugin_counters;  ///< the tracker plugin's own (e.g. its drops)
+  std::uint64_t early_ticks = 0;  ///< haptic ticks started at once by a new base-sensor sample
   BasePose base;
 };
 

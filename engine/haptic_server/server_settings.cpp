@@ -30,6 +30,12 @@ ServerSettingsResult server_settings_from(const SceneDescription& scene) {
       r.positive("base_max_omega_degps", s.base_guard.max_omega_radps / kDegToRad) * kDegToRad;
   s.base_guard.keep_out_m = r.non_negative("keep_out_m", s.base_guard.keep_out_m);
   s.record_flush_s = r.positive("record_flush_s", s.record_flush_s);
+  s.tick_on_tracker_sample = r.boolean("tick_on_tracker_sample", s.tick_on_tracker_sample);
+  s.min_tick_interval_s = r.non_negative("min_tick_interval_s", s.min_tick_interval_s);
+  s.plugin_call_timeout_s = r.positive("plugin_call_timeout_s", s.plugin_call_timeout_s);
+  if (s.min_tick_interval_s > 1.0 / s.haptic_rate_hz) {
+    r.error("min_tick_interval_s", "param 'min_tick_interval_s' in <server> must not exceed the haptic period (1 / rate)");
+  }
   if (s.tick.safety.tracker_fade_s > s.tick.safety.tracker_timeout_s) {
     r.error("tracker_fade_s", "param 'tracker_fade_s' in <server> must not exceed tracker_timeout_s");
   }

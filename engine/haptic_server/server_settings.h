@@ -11,6 +11,13 @@
 //   base_max_speed_mps (0.5), base_max_omega_degps (40), keep_out_m (the planner's
 //                             robot + human radius, else 0.475): the base guard
 //   record_flush_s (0.05)     the recording reaches the disk at least this often
+//   tick_on_tracker_sample (true)   with a tracker that can wake the host (tracker_wait),
+//                             a new base-sensor sample starts an extra haptic tick at
+//                             once, between the 1 ms deadlines; min_tick_interval_s
+//                             (0.0002) is the least time between any two ticks
+//   plugin_call_timeout_s (0.1)  a device, tracker or base call that has not returned
+//                             after this long ends the run (the others reach their
+//                             safe state; a stuck device must rely on its own watchdog)
 
 #include "haptic_server/haptic_tick.h"
 #include "safety/base_command_guard.h"
@@ -32,6 +39,9 @@ struct ServerSettings {
   std::uint32_t head_sensor_id = 1;
   BaseCommandGuardSettings base_guard;
   double record_flush_s = 0.05;
+  bool tick_on_tracker_sample = true;
+  double min_tick_interval_s = 0.0002;
+  double plugin_call_timeout_s = 0.1;
 };
 
 struct ServerSettingsResult {

@@ -153,6 +153,12 @@ PluginKind PluginInstance::kind() const noexcept { return library_ ? library_->k
 
 bool PluginInstance::simulates() const noexcept { return library_ && library_->api().simulate_until != nullptr; }
 
+bool PluginInstance::waits() const noexcept {
+  return library_ && library_->info().kind == PluginKind::Tracker && library_->api().tracker_wait != nullptr;
+}
+
+bool PluginInstance::counts() const noexcept { return library_ && library_->api().counters != nullptr; }
+
 PluginError PluginInstance::error(PluginErrorKind kind, std::string message) const {
   return PluginError{kind, name(), {}, std::move(message)};
 }
@@ -403,6 +409,44 @@ PluginResult<PluginCallStatus> PluginInstance::simulate_until(double t_s) {
   }
   mhd_error err{};
   return call_outcome(name(), "simulate_until", static_cast<StatusCode>(library_->api().simulate_until(handle_, t_s, &err)), err);
+}
+
+PluginResult<PluginCallStatus> PluginInstance::tracker_wait(double timeout_s) {
+  if (library_ && !waits()) return error(PluginErrorKind::WrongKind, "tracker_wait called on a plugin that does not wait");
+  if (PluginStatus s = check_running("tracker_wait"); !s) return s.error();
+  if (!std::isfinite(timeout_s)) {
+    return error(PluginErrorKind::InvalidData, "refused to send a non-finite timeout_s to tracker_wait");
+  }
+  mhd_error err{};
+  return call_outcome(name(), "tracker_wait",
+                      static_cast<StatusCode>(library_->api().tracker_wait(handle_, std::clamp(timeout_s, 0.0, 1.0), &err)),
+                      err);
+}
+
+PluginResult<std::size_t> PluginInstance::counters(std::span<mhd_counter> out) {
+  if (library_ && !counts()) return error(PluginErrorKind::WrongKind, "counters called on a plugin that keeps none");
+  if (state_ != PluginState::Open && state_ != PluginState::Running && state_ != PluginState::Stopped) {
+    return error(PluginErrorKind::WrongState,
+                 fmt::format("counters called while the plugin is {}; it must be open, running or stopped", to_string(state_)));
+  }
+  mhd_error err{};
+  std::size_t count = 0;
+  PluginResult<PluginCallStatus> outcome = call_outcome(
+      name(), "counters", static_cast<StatusCode>(library_->api().counters(handle_, out.data(), out.size(), &count, &err)), err);
+  if (!outcome) return outcome.error();
+  if (outcome.value() != PluginCallStatus::Ok) return std::size_t{0};
+  const std::size_t written = std::min(count, out.size());
+  for (std::size_t i = 0; i < written; ++i) {
+    const char* n = out[i].name;
+    constexpr std::size_t kMaxName = 64;
+    const std::size_t length = n == nullptr ? 0 : strnlen(n, kMaxName + 1);
+    const bool printable = std::all_of(n, n + length, [](char c) { return c > ' ' && c < 127; });
+    if (length == 0 || length > kMaxName || !printable) {
+      return error(PluginErrorKind::InvalidData,
+                   fmt::format("counters returned counters[{}].name that is missing, empty, too long or not printable", i));
+    }
+  }
+  return written;
 }
 
 }  // namespace mhd

@@ -67,6 +67,10 @@ class PluginInstance {
   [[nodiscard]] const std::shared_ptr<const PluginLibrary>& library() const noexcept { return library_; }
   /// True when the plugin provides simulate_until.
   [[nodiscard]] bool simulates() const noexcept;
+  /// True when the plugin is a tracker that provides tracker_wait.
+  [[nodiscard]] bool waits() const noexcept;
+  /// True when the plugin provides counters.
+  [[nodiscard]] bool counts() const noexcept;
 
   /// Device: the limits read at open (Open, Running or Stopped).
   [[nodiscard]] PluginResult<mhd_device_limits> device_limits() const;
@@ -80,6 +84,13 @@ class PluginInstance {
   [[nodiscard]] PluginResult<PluginCallStatus> display_write(const mhd_display_frame& frame);
   /// Simulated backends: advance to host time t_s (WrongKind when the plugin does not simulate).
   [[nodiscard]] PluginResult<PluginCallStatus> simulate_until(double t_s);
+  /// Tracker with tracker_wait (WrongKind otherwise): blocks up to timeout_s (clamped to
+  /// 0..1 s) until tracker_read has data; Ok when it has, NoData on timeout.
+  [[nodiscard]] PluginResult<PluginCallStatus> tracker_wait(double timeout_s);
+  /// The plugin's counters (WrongKind when it keeps none): writes up to out.size() and
+  /// returns how many were written. Every name is checked (present, printable, at most
+  /// 64 characters) before it is handed on.
+  [[nodiscard]] PluginResult<std::size_t> counters(std::span<mhd_counter> out);
 
  private:
   [[nodiscard]] PluginError error(PluginErrorKind kind, std::string message) const;

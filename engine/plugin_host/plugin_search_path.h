@@ -28,7 +28,7 @@ struct PluginFolder {
   PluginFolderSource source = PluginFolderSource::Given;
 };
 
-/// "mhd/plugins-abi1": the versioned folder under a lib folder.
+/// "mhd/plugins-abi<MHD_PLUGIN_ABI_VERSION>": the versioned folder under a lib folder.
 [[nodiscard]] std::filesystem::path versioned_plugin_subdir();
 
 /// The build tree's plugin folder (where mhd_add_plugin puts plugins).

@@ -138,7 +138,12 @@ bool BasePosePredictor::add_command(double t_s, const BaseTwist& twist_B) noexce
 
 BasePose BasePosePredictor::model_at(double t_s) const noexcept {
   const double horizon = settings_.max_extrapolation_s;
-  return integrate_twist(pose_, twist_B_, std::clamp(t_s - t_estimate_s_, -horizon, horizon));
+  // While the start-up fit still rests on a few noisy samples and no command says how
+  // the base moves, its twist is mostly noise (a heading rate from two samples 5 ms
+  // apart): projected a metre out to the HIP it made 2-3 cm leaps. Hold the pose then.
+  const bool guessing = expanding_ && !command_fresh(t_s) &&
+                        samples_since_restart_ <= static_cast<std::uint64_t>(std::max(settings_.startup_samples, 0));
+  return integrate_twist(pose_, guessing ? BaseTwist{} : twist_B_, std::clamp(t_s - t_estimate_s_, -horizon, horizon));
 }
 
 BasePose BasePosePredictor::predict(double t_s) noexcept {

@@ -9,6 +9,7 @@ ForceSafety::ForceSafety(const ForceSafetySettings& settings) noexcept : setting
 
 void ForceSafety::reset() noexcept {
   recovery_ = 0.0;
+  stale_gain_ = 1.0;
   has_hip_ = false;
   last_output_N_ = 0.0;
 }
@@ -21,6 +22,7 @@ ForceSafetyOutput ForceSafety::apply(const ForceSafetyInput& in) noexcept {
   out.stale = !(in.tracker_age_s < settings_.tracker_timeout_s);
   if (out.fault || out.stale) {
     recovery_ = 0.0;
+    stale_gain_ = 1.0;  // from zero, the fade-in ramp brings the force back
     if (out.fault) ++counters_.fault_ticks;
     if (out.stale) ++counters_.stale_ticks;
     if (in.hip_W_m.allFinite()) {
@@ -34,9 +36,14 @@ ForceSafetyOutput ForceSafety::apply(const ForceSafetyInput& in) noexcept {
   recovery_ = settings_.fade_in_s > 0.0 ? std::min(1.0, recovery_ + dt_s / settings_.fade_in_s) : 1.0;
   double gain = recovery_;
 
-  // Stale fade: 1 until timeout - fade, 0 at the timeout.
+  // Stale fade: 1 until timeout - fade, 0 at the timeout. A late sample brings the
+  // pose back at once, but the gain rises only as fast as it fell: a tracker arriving
+  // 20 +- 20 ms late would otherwise step the force by up to its full size in one tick.
   if (settings_.tracker_fade_s > 0.0) {
-    gain *= std::clamp((settings_.tracker_timeout_s - in.tracker_age_s) / settings_.tracker_fade_s, 0.0, 1.0);
+    const double target =
+        std::clamp((settings_.tracker_timeout_s - in.tracker_age_s) / settings_.tracker_fade_s, 0.0, 1.0);
+    stale_gain_ = target <= stale_gain_ ? target : std::min(target, stale_gain_ + dt_s / settings_.tracker_fade_s);
+    gain *= stale_gain_;
   }
 
   Eigen::Vector3d force = in.force_W_N;

@@ -3,7 +3,9 @@
 // finite and clamped to the device's limit, and scaled by a gain in [0, 1] that
 //  * fades out as the newest base pose ages: 1 while it is younger than
 //    tracker_timeout_s - tracker_fade_s, falling linearly to exactly 0 at
-//    tracker_timeout_s (stale tracking: the HIP in the world is no longer known);
+//    tracker_timeout_s (stale tracking: the HIP in the world is no longer known); when a
+//    late sample makes the pose young again, this factor rises back no faster than it
+//    fell (1 / tracker_fade_s per second), so late tracking never steps the force up;
 //  * drops to 0 on a fault (non-finite force or HIP, no base pose yet) and, once the fault
 //    clears, rises back to 1 over fade_in_s (never a step);
 //  * on a HIP jump (the HIP moved more than hip_jump_m per millisecond of the tick, e.g. a tracker glitch
@@ -64,6 +66,7 @@ class ForceSafety {
   ForceSafetySettings settings_;
   ForceSafetyCounters counters_;
   double recovery_ = 0.0;  ///< the fade-in ramp, 0..1
+  double stale_gain_ = 1.0;  ///< the stale fade's factor, rising no faster than it falls
   bool has_hip_ = false;
   Eigen::Vector3d last_hip_W_m_ = Eigen::Vector3d::Zero();
   double last_output_N_ = 0.0;

@@ -24,8 +24,9 @@ class TrackerSubscriber {
   /// Accepted samples that do not fit wait for the next call (up to 256, then the
   /// oldest are lost). Never blocks.
   std::size_t poll(std::span<mhd_tracker_sample> out, double host_now_s, std::int64_t now_ns);
-  /// Blocks until samples arrive or timeout_ns passes (benchmarks, tools).
-  bool wait(dds_duration_t timeout_ns) { return subscriber_.reader().wait(timeout_ns); }
+  /// Blocks until samples arrive or timeout_ns passes; true at once when accepted
+  /// samples still wait for poll().
+  bool wait(dds_duration_t timeout_ns) { return !pending_.empty() || subscriber_.reader().wait(timeout_ns); }
 
   [[nodiscard]] const DropCounts& counts() const { return validator_.counts(); }
   [[nodiscard]] std::uint32_t matched_writers() { return subscriber_.reader().matched_writers(); }

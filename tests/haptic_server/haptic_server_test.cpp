@@ -294,6 +294,87 @@ TEST(HapticServer, SilentTrackerFadesForceOutAndStopsTheBase) {
   EXPECT_EQ(stale_with_force, 0u);
 }
 
+/// fault_tracker's pose param: the base sensor where the rig puts it with the base at the origin.
+std::string nominal_base_sensor_pose() {
+  const auto rig_read = read_scene_file(std::string(MHD_SOURCE_DIR) + "/scenes/rigs/pomhi.xml");
+  const Rig rig = *Rig::from_scene(*rig_read.scene).rig;
+  const Pose X = rig.X_is900_base_sensor_from_base({});
+  const Eigen::Quaterniond q(X.rotation());
+  return fmt::format("{:.12f} {:.12f} {:.12f} {:.15f} {:.15f} {:.15f} {:.15f}", X.translation().x(),
+                     X.translation().y(), X.translation().z(), q.w(), q.x(), q.y(), q.z());
+}
+
+TEST(HapticServer, ADeviceCallThatBlocksTooLongEndsTheRunAndStopsTheBase) {
+  const fs::path dir = temp_dir();
+  const fs::path device_log = dir / "device.log", base_log = dir / "base.log";
+  const fs::path file = write_scene(dir, fmt::format(R"(
+    <plugin kind="device" name="fault_device">
+      <param name="fail_after_reads" value="300"/>
+      <param name="fault" value="block"/>
+      <param name="block_s" value="0.5"/>
+      <param name="command_log" value="{}"/>
+    </plugin>
+    <plugin kind="tracker" name="sim_is900"/>
+    <plugin kind="base" name="fault_base">
+      <param name="command_log" value="{}"/>
+    </plugin>)", device_log.string(), base_log.string()));
+  Loaded l = load(file);
+  ASSERT_TRUE(l.scene);
+  ServerOptions o = options_for(30.0);
+  o.plan_base = [](const BasePlanInput&) { return BaseTwist{0.1, 0.0, 0.0}; };  // keeps asking to move
+  auto build = HapticServer::open(*l.description, *l.scene, o);
+  ASSERT_TRUE(build.server);
+  const ServerReport r = build.server->run();
+  ASSERT_TRUE(r.error);
+  EXPECT_EQ(r.ended_by, RunEnd::Fault);
+  EXPECT_THAT(*r.error, HasSubstr(fmt::format("{}:{}: error: plugin 'fault_device': device_read has not returned after ",
+                                              file.string(), scene_line_of(file, "name=\"fault_device\""))));
+  EXPECT_THAT(*r.error, HasSubstr("ms (plugin_call_timeout_s); the run ends"));
+  EXPECT_TRUE(r.base_stop_sent);
+  const CommandLog base = read_log(base_log);
+  EXPECT_GT(base.count, 0u);
+  EXPECT_EQ(base.a, 0.0);
+  // Once the call came back, the haptic thread left the device with zero torque.
+  EXPECT_TRUE(r.zero_force_sent);
+  const CommandLog device = read_log(device_log);
+  EXPECT_EQ(device.a, 0.0);
+  EXPECT_EQ(device.b, 0.0);
+  EXPECT_EQ(device.c, 0.0);
+}
+
+TEST(HapticServer, ATrackerStuckInACallEndsTheRunWithTheBaseStopped) {
+  const fs::path dir = temp_dir();
+  const fs::path device_log = dir / "device.log", base_log = dir / "base.log";
+  const fs::path file = write_scene(dir, fmt::format(R"(
+    <plugin kind="device" name="fault_device">
+      <param name="command_log" value="{}"/>
+    </plugin>
+    <plugin kind="tracker" name="fault_tracker">
+      <param name="pose" value="{}"/>
+      <param name="fail_after_reads" value="300"/>
+      <param name="fault" value="block"/>
+      <param name="block_s" value="0.6"/>
+    </plugin>
+    <plugin kind="base" name="fault_base">
+      <param name="command_log" value="{}"/>
+    </plugin>)", device_log.string(), nominal_base_sensor_pose(), base_log.string()));
+  Loaded l = load(file);
+  ASSERT_TRUE(l.scene);
+  ServerOptions o = options_for(30.0);
+  o.plan_base = [](const BasePlanInput&) { return BaseTwist{0.1, 0.0, 0.0}; };
+  auto build = HapticServer::open(*l.description, *l.scene, o);
+  ASSERT_TRUE(build.server);
+  const ServerReport r = build.server->run();
+  ASSERT_TRUE(r.error);
+  EXPECT_THAT(*r.error, HasSubstr(fmt::format("{}:{}: error: plugin 'fault_tracker': tracker_read has not returned after ",
+                                              file.string(), scene_line_of(file, "name=\"fault_tracker\""))));
+  EXPECT_TRUE(r.base_stop_sent);
+  EXPECT_EQ(read_log(base_log).a, 0.0);
+  EXPECT_TRUE(r.zero_force_sent);
+  EXPECT_EQ(read_log(device_log).b, 0.0);
+  EXPECT_GT(r.base_commands, 0u);  // it was moving before
+}
+
 TEST(HapticServer, OpenReportsEveryProblemAtItsSceneLine) {
   const fs::path dir = temp_dir();
   const fs::path file = write_scene(dir, R"(

@@ -333,6 +333,53 @@ TEST_F(PluginInstanceTest, TrackerNoData) {
   EXPECT_EQ(count, 0u);
 }
 
+TEST_F(PluginInstanceTest, TrackerWaitSaysWhetherDataIsThere) {
+  PluginInstance tracker = running("good_tracker");
+  EXPECT_TRUE(tracker.waits());
+  auto ready = tracker.tracker_wait(0.01);
+  ASSERT_TRUE(ready.ok()) << ready.error().to_string();
+  EXPECT_EQ(ready.value(), PluginCallStatus::Ok);
+  PluginInstance silent = running("good_tracker", {{"mode", "no_data"}});
+  auto timed_out = silent.tracker_wait(0.01);
+  ASSERT_TRUE(timed_out.ok());
+  EXPECT_EQ(timed_out.value(), PluginCallStatus::NoData);
+  expect_error(silent.tracker_wait(std::numeric_limits<double>::quiet_NaN()).error(), PluginErrorKind::InvalidData,
+               "plugin 'good_tracker': refused to send a non-finite timeout_s to tracker_wait");
+  PluginInstance device = running("good_device");
+  EXPECT_FALSE(device.waits());
+  expect_error(device.tracker_wait(0.01).error(), PluginErrorKind::WrongKind,
+               "plugin 'good_device': tracker_wait called on a plugin that does not wait");
+}
+
+TEST_F(PluginInstanceTest, CountersAreReadAndTheirNamesChecked) {
+  PluginInstance tracker = running("good_tracker");
+  std::array<mhd_tracker_sample, 4> samples{};
+  std::size_t count = 0;
+  ASSERT_TRUE(tracker.tracker_read(samples, count).ok());
+  ASSERT_TRUE(tracker.tracker_read(samples, count).ok());
+  ASSERT_TRUE(tracker.counts());
+  std::array<mhd_counter, 4> counters{};
+  auto n = tracker.counters(counters);
+  ASSERT_TRUE(n.ok()) << n.error().to_string();
+  ASSERT_EQ(n.value(), 2u);
+  EXPECT_STREQ(counters[0].name, "reads");
+  EXPECT_EQ(counters[0].value, 2u);
+  EXPECT_STREQ(counters[1].name, "dropped_test");
+  EXPECT_EQ(counters[1].value, 7u);
+  std::array<mhd_counter, 1> one{};
+  auto first_only = tracker.counters(one);  // the plugin keeps 2: only the first fits
+  ASSERT_TRUE(first_only.ok());
+  EXPECT_EQ(first_only.value(), 1u);
+
+  PluginInstance bad = running("good_tracker", {{"mode", "bad_counter"}});
+  expect_error(bad.counters(counters).error(), PluginErrorKind::InvalidData,
+               "plugin 'good_tracker': counters returned counters[1].name that is missing, empty, too long or not printable");
+  PluginInstance device = running("good_device");
+  EXPECT_FALSE(device.counts());
+  expect_error(device.counters(counters).error(), PluginErrorKind::WrongKind,
+               "plugin 'good_device': counters called on a plugin that keeps none");
+}
+
 TEST_F(PluginInstanceTest, BadTrackerSamplesAreInvalidData) {
   std::array<mhd_tracker_sample, 4> samples{};
   std::size_t count = 99;

@@ -79,14 +79,16 @@ TEST(PluginLibrary, LibraryWithoutEntryPoint) {
 TEST(PluginLibrary, EntryThatRefusesTheHost) {
   const PluginError e = load_error("entry_returns_null");
   EXPECT_EQ(e.kind, PluginErrorKind::EntryReturnedNull);
-  EXPECT_EQ(e.to_string(), where("entry_returns_null") + "refused this host (mhd_plugin_entry(1) returned NULL)");
+  EXPECT_EQ(e.to_string(), where("entry_returns_null") + "refused this host (mhd_plugin_entry(" +
+                               std::to_string(MHD_PLUGIN_ABI_VERSION) + ") returned NULL)");
   EXPECT_FALSE(is_loaded(test_plugin("entry_returns_null")));
 }
 
 TEST(PluginLibrary, WrongAbiVersion) {
   const PluginError e = load_error("wrong_abi_version");
   EXPECT_EQ(e.kind, PluginErrorKind::AbiVersionMismatch);
-  EXPECT_EQ(e.to_string(), where("wrong_abi_version") + "ABI version 2, this host speaks 1");
+  EXPECT_EQ(e.to_string(), where("wrong_abi_version") + "ABI version " + std::to_string(MHD_PLUGIN_ABI_VERSION + 1) +
+                               ", this host speaks " + std::to_string(MHD_PLUGIN_ABI_VERSION));
   EXPECT_FALSE(is_loaded(test_plugin("wrong_abi_version")));
 }
 

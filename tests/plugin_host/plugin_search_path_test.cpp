@@ -56,7 +56,7 @@ TEST(PluginFolders, CommandLineThenEnvironmentThenInstalledThenBuildTree) {
   const auto folders = plugin_folders({"/cmd/a", "/cmd/b"}, "/env/c::/env/d", "/opt/mhd/bin/mhd");
   ASSERT_EQ(folders.size(), 6u);
   EXPECT_EQ(dirs_of(folders), (std::vector<fs::path>{"/cmd/a", "/cmd/b", "/env/c", "/env/d",
-                                                     "/opt/mhd/lib/mhd/plugins-abi1", build_tree_plugin_dir()}));
+                                                     "/opt/mhd/lib/mhd/plugins-abi" + std::to_string(MHD_PLUGIN_ABI_VERSION), build_tree_plugin_dir()}));
   EXPECT_EQ(folders[0].source, PluginFolderSource::CommandLine);
   EXPECT_EQ(folders[2].source, PluginFolderSource::Environment);
   EXPECT_EQ(folders[4].source, PluginFolderSource::Executable);
@@ -69,8 +69,8 @@ TEST(PluginFolders, AFolderNamedTwiceKeepsItsFirstPlace) {
 }
 
 TEST(PluginFolders, VersionedFolders) {
-  EXPECT_EQ(versioned_plugin_subdir(), fs::path("mhd/plugins-abi1"));
-  EXPECT_EQ(build_tree_plugin_dir().filename(), "plugins-abi1");
+  EXPECT_EQ(versioned_plugin_subdir(), fs::path("mhd/plugins-abi" + std::to_string(MHD_PLUGIN_ABI_VERSION)));
+  EXPECT_EQ(build_tree_plugin_dir().filename(), "plugins-abi" + std::to_string(MHD_PLUGIN_ABI_VERSION));
   EXPECT_EQ(build_tree_plugin_dir().parent_path().filename(), "mhd");
 }
 
@@ -81,7 +81,7 @@ TEST(PluginFolders, StandardReadsTheEnvironmentAndTheExecutable) {
   const fs::path executable = fs::read_symlink("/proc/self/exe");
   EXPECT_EQ(dirs_of(search.folders()),
             (std::vector<fs::path>{"/cmd", "/env/one", "/env/two",
-                                   (executable.parent_path() / "../lib/mhd/plugins-abi1").lexically_normal(),
+                                   (executable.parent_path() / ("../lib/mhd/plugins-abi" + std::to_string(MHD_PLUGIN_ABI_VERSION))).lexically_normal(),
                                    build_tree_plugin_dir()}));
 }
 

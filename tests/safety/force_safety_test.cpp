@@ -94,6 +94,25 @@ TEST(ForceSafety, StaleTrackingFadesToExactlyZeroAtTheTimeout) {
   EXPECT_NEAR(safety.apply(input(f)).gain, kDt / 0.1, 1e-12);
 }
 
+TEST(ForceSafety, ALateSampleBringsTheFadedForceBackNoFasterThanItFaded) {
+  ForceSafety safety(settings());
+  const Eigen::Vector3d f(0, 5, 0);
+  settle(safety, f);
+  EXPECT_NEAR(safety.apply(input(f, 0.045)).gain, 0.25, 1e-9);  // tracking 45 ms old
+  // A late sample makes the pose young again: the gain climbs at 1 / tracker_fade_s
+  // (0.05 per 1 ms tick), not back to 1 in one tick.
+  double previous = 0.25;
+  for (int i = 1; i <= 15; ++i) {
+    const double gain = safety.apply(input(f, 0.001)).gain;
+    EXPECT_NEAR(gain, 0.25 + 0.05 * i, 1e-9) << "tick " << i;
+    EXPECT_LE(gain - previous, 0.05 + 1e-12);
+    previous = gain;
+  }
+  EXPECT_DOUBLE_EQ(safety.apply(input(f, 0.001)).gain, 1.0);
+  // Falling is never held back: an older pose lowers the gain at once.
+  EXPECT_NEAR(safety.apply(input(f, 0.048)).gain, 0.1, 1e-9);
+}
+
 TEST(ForceSafety, AHipJumpKeepsThePreviousForceMagnitudeInsteadOfStepping) {
   ForceSafety safety(settings());
   const Eigen::Vector3d hip(0, 1, 0);

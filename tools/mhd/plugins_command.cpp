@@ -83,9 +83,10 @@ void add_plugins_command(CLI::App& app) {
   plugins->add_option("--plugin-path", options->plugin_paths, "Search this folder first (repeatable, in order)")
       ->type_name("DIR")
       ->allow_extra_args(false);
+  const std::string versioned = mhd::versioned_plugin_subdir().string();
   plugins->footer(
       "Folders are searched in this order: --plugin-path, $MHD_PLUGIN_PATH (colon-separated),\n"
-      "<mhd's folder>/../lib/mhd/plugins-abi1, then the build tree's lib/mhd/plugins-abi1.\n"
+      "<mhd's folder>/../lib/" + versioned + ", then the build tree's lib/" + versioned + ".\n"
       "Plugin NAME is the file libmhd_NAME.so; the first folder holding it wins.\n"
       "Exit status 0 if every plugin file loads, 1 if any is broken (errors on stderr).");
   plugins->callback([options] {

@@ -46,13 +46,20 @@ extern "C" void on_stop_signal(int /*signal*/) {
   if (mhd::HapticServer* s = g_server.load()) s->request_stop();
 }
 
+/// " (plugin: stale 3, non_finite 1)" when the tracker plugin dropped samples itself.
+std::string plugin_drops(const mhd::ServerStatus& s) {
+  const std::string text = mhd::dropped_counts_text(s.tracker_plugin_counters);
+  return text.empty() ? std::string() : " (plugin: " + text + ")";
+}
+
 void print_status(const mhd::ServerStatus& s, bool tty) {
   const std::string line = fmt::format(
-      "t {:6.1f} s | {:6.0f} Hz | overruns {} | {} {:4.2f} N (gain {:.2f}) | tracker {} ms, {} samples, {} dropped | "
+      "t {:6.1f} s | {:6.0f} Hz | overruns {} | {} {:4.2f} N (gain {:.2f}) | tracker {} ms, {} samples, {} dropped{} | "
       "base ({:+.2f}, {:+.2f}) m {:+4.0f} deg",
       s.elapsed_s, s.haptic_rate_hz, s.overruns, s.in_contact ? "CONTACT" : "free   ", s.force_N, s.safety_gain,
       std::isfinite(s.tracker_age_s) ? fmt::format("{:.0f}", s.tracker_age_s * 1e3) : std::string("-"),
-      s.tracker_samples, s.tracker_rejected, s.base.x_m, s.base.z_m, s.base.heading_rad * 180.0 / 3.141592653589793);
+      s.tracker_samples, s.tracker_rejected, plugin_drops(s), s.base.x_m, s.base.z_m,
+      s.base.heading_rad * 180.0 / 3.141592653589793);
   if (tty) {
     fmt::print(stderr, "\r{}\x1b[K", line);
   } else {
@@ -117,8 +124,10 @@ int run(const RunOptions& opt) {
              r.tick_median_us, r.tick_p99_us, r.tick_p999_us, r.tick_max_us);
   fmt::print("contact ticks {}; safety: {} stale, {} fault, {} HIP jumps, {} clamped ticks\n", r.contact_ticks,
              r.stale_ticks, r.fault_ticks, r.hip_jumps, r.clamped_ticks);
-  fmt::print("tracker: {} samples, {} dropped; base: {} commands ({} stops), ends at ({:.3f}, {:.3f}) m\n",
-             s.tracker_samples, s.tracker_rejected, r.base_commands, r.base_stops, s.base.x_m, s.base.z_m);
+  fmt::print("tracker: {} samples, {} dropped{}; {} ticks started by a new sample; base: {} commands ({} stops), "
+             "ends at ({:.3f}, {:.3f}) m\n",
+             s.tracker_samples, s.tracker_rejected, plugin_drops(s), s.early_ticks, r.base_commands, r.base_stops,
+             s.base.x_m, s.base.z_m);
   if (!opt.record.empty()) {
     fmt::print("recording {}: {} rows, {} dropped\n", opt.record, r.recording_rows, r.recording_dropped);
   }

@@ -145,6 +145,8 @@ constexpr mhd_plugin_api kApi = {
     base_write,
     nullptr,  // display_write
     simulate_until,
+    nullptr,  // tracker_wait
+    nullptr,  // counters
 };
 
 }  // namespace

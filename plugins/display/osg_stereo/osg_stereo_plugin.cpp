@@ -222,6 +222,8 @@ constexpr mhd_plugin_api kApi = {
     nullptr,  // base_write
     display_write,
     nullptr,  // simulate_until
+    nullptr,  // tracker_wait
+    nullptr,  // counters
 };
 
 }  // namespace

@@ -1,10 +1,13 @@
-/* MHD plugin ABI, version 1. The only header a plugin includes.
+/* MHD plugin ABI, version 2. The only header a plugin includes.
  *
  * A plugin is a shared library exporting one C function, mhd_plugin_entry, that returns
  * a table of function pointers (mhd_plugin_api). The host checks the table's ABI
  * version and struct size before calling anything else, then drives the lifecycle
  *   open(params) -> start -> [read/write ...] -> stop -> close.
- * read/write never block: they return MHD_NO_DATA when nothing new is there.
+ * read/write never block: they return MHD_NO_DATA when nothing new is there. The one
+ * call allowed to block is the optional tracker_wait, which the host calls only from a
+ * thread that may wait (never the haptic thread).
+ * Version 2 added the optional calls tracker_wait and counters at the end of the table.
  * All quantities are SI (metres, radians, seconds, newtons); device-native units
  * (millimetres, encoder counts) stay inside the plugin. Frames follow the engine's
  * X_AB naming: a pose of B given in A.
@@ -21,7 +24,7 @@
 extern "C" {
 #endif
 
-#define MHD_PLUGIN_ABI_VERSION 1u
+#define MHD_PLUGIN_ABI_VERSION 2u
 #define MHD_PLUGIN_ENTRY_SYMBOL "mhd_plugin_entry"
 #define MHD_ERROR_MESSAGE_SIZE 256
 
@@ -55,6 +58,12 @@ typedef struct mhd_param {
   const char* name;
   const char* value;
 } mhd_param;
+
+/* One counter a plugin keeps, e.g. samples it dropped and why. */
+typedef struct mhd_counter {
+  const char* name; /* e.g. "dropped_stale"; a static string, valid while the library is loaded */
+  uint64_t value;
+} mhd_counter;
 
 /* ---- data exchanged with each kind -------------------------------------------- */
 
@@ -176,6 +185,17 @@ typedef struct mhd_plugin_api {
   mhd_status (*display_write)(mhd_plugin_instance* self, const mhd_display_frame* frame, mhd_error* err);
   /* Simulated backends only (may be NULL): advance the simulation to host time t_s. */
   mhd_status (*simulate_until)(mhd_plugin_instance* self, double t_s, mhd_error* err);
+
+  /* Optional (may be NULL), trackers only: blocks until tracker_read has data or
+   * timeout_s passes; MHD_OK when there is data, MHD_NO_DATA on timeout. Lets the host
+   * take a sample the moment it arrives instead of at its next poll. */
+  mhd_status (*tracker_wait)(mhd_plugin_instance* self, double timeout_s, mhd_error* err);
+  /* Optional (may be NULL), any kind: writes up to capacity counters into out and the
+   * number the plugin keeps into *count (names and order fixed while it is open). The
+   * host calls it from the thread that makes the plugin's other calls, a few times a
+   * second, and shows the counts in its status. */
+  mhd_status (*counters)(mhd_plugin_instance* self, mhd_counter* out, size_t capacity, size_t* count,
+                         mhd_error* err);
 } mhd_plugin_api;
 
 /* The one exported entry point. host_abi_version lets a plugin refuse a host it cannot

@@ -1,6 +1,8 @@
 // The `dds` tracker plugin: subscribes to one rig's tracker samples on a DDS domain and
-// returns the valid ones from tracker_read (dds_common/tracker_subscriber.h). Invalid
-// samples are dropped and counted; the counts are printed to stderr when it stops.
+// returns the valid ones from tracker_read (dds_common/tracker_subscriber.h). tracker_wait
+// blocks on a DDS waitset, so the host takes a sample as soon as it arrives. Invalid
+// samples are dropped and counted; the host reads the counts through counters (its
+// status line shows them) and they are printed to stderr when the plugin stops.
 
 #include "dds_common/tracker_subscriber.h"
 #include "dds_common/dds_plugin_params.h"
@@ -9,6 +11,8 @@
 
 #include <mhd/plugin_abi.h>
 
+#include <algorithm>
+#include <array>
 #include <cstdio>
 #include <memory>
 #include <mutex>
@@ -95,6 +99,30 @@ mhd_status tracker_read(mhd_plugin_instance* self, mhd_tracker_sample* out, size
   });
 }
 
+mhd_status tracker_wait(mhd_plugin_instance* self, double timeout_s, mhd_error* err) {
+  return call(self, plugin_support::Need::Running, err, [&](Instance& s) {
+    const auto timeout_ns = static_cast<dds_duration_t>(std::clamp(timeout_s, 0.0, 1.0) * 1e9);
+    return s.subscriber.wait(timeout_ns) ? MHD_OK : MHD_NO_DATA;
+  });
+}
+
+// Counter names in DropReason order, after "accepted"; static strings, as the ABI asks.
+constexpr std::array<const char*, 1 + dds::kDropReasonCount> kCounterNames = {
+    "accepted",        "dropped_unknown_rig", "dropped_non_finite",       "dropped_out_of_range",
+    "dropped_bad_quaternion", "dropped_stale", "dropped_future", "dropped_sequence_backwards"};
+
+mhd_status counters(mhd_plugin_instance* self, mhd_counter* out, size_t capacity, size_t* count, mhd_error* err) {
+  return call(self, plugin_support::Need::Open, err, [&](Instance& s) {
+    if (count == nullptr || (out == nullptr && capacity > 0)) throw std::invalid_argument("counters: NULL output");
+    const dds::DropCounts& c = s.subscriber.counts();
+    for (std::size_t i = 0; i < kCounterNames.size() && i < capacity; ++i) {
+      out[i] = {kCounterNames[i], i == 0 ? c.accepted : c.dropped[i - 1]};
+    }
+    *count = kCounterNames.size();
+    return MHD_OK;
+  });
+}
+
 constexpr mhd_plugin_api kApi = {
     MHD_PLUGIN_ABI_VERSION,
     sizeof(mhd_plugin_api),
@@ -114,6 +142,8 @@ constexpr mhd_plugin_api kApi = {
     nullptr,  // base_write
     nullptr,  // display_write
     nullptr,  // simulate_until
+    tracker_wait,
+    counters,
 };
 
 }  // namespace

@@ -88,6 +88,8 @@ constexpr mhd_plugin_api kApi = {
     nullptr,  // base_write
     nullptr,  // display_write
     nullptr,  // simulate_until: plays on the host clock
+    nullptr,  // tracker_wait
+    nullptr,  // counters
 };
 
 }  // namespace

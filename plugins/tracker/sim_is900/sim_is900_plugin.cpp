@@ -161,6 +161,8 @@ constexpr mhd_plugin_api kApi = {
     nullptr,  // base_write
     nullptr,  // display_write
     simulate_until,
+    nullptr,  // tracker_wait
+    nullptr,  // counters
 };
 
 }  // namespace

@@ -1,22 +1,26 @@
 #pragma once
 // Shared by the haptic server's fault-injection test plugins: parameters
 //   fail_after_reads=<n>   reads that succeed before the fault (default: never fail)
-//   fault=nan|error|deactivate|none   what the read returns from then on
+//   fault=nan|error|deactivate|block|none   what the read returns from then on (block:
+//                          the first faulty read sleeps block_s, then succeeds)
+//   block_s=<seconds>      how long a blocking read blocks (default 1)
 //   command_log=<path>     on close, the last command received is written there as
 //                          "<count> <a> <b> <c>\n" (count of commands, then the values)
 // so a test can check, from the plugin's side, what the host left the hardware with.
 
 #include <mhd/plugin_abi.h>
 
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <new>
 #include <string>
+#include <thread>
 
 namespace fault_injection {
 
-enum class Fault { None, Nan, Error, Deactivate };
+enum class Fault { None, Nan, Error, Deactivate, Block };
 
 struct Config {
   unsigned long fail_after_reads = ~0ul;
@@ -25,6 +29,8 @@ struct Config {
   double last_command[3] = {0.0, 0.0, 0.0};
   unsigned long commands = 0;
   unsigned long reads = 0;
+  double block_s = 1.0;
+  bool blocked = false;
 };
 
 inline void fail(mhd_error* err, const std::string& text) {
@@ -41,11 +47,14 @@ inline bool parse(Config& c, const mhd_param* params, size_t count, mhd_error* e
       if (value == "nan") c.fault = Fault::Nan;
       else if (value == "error") c.fault = Fault::Error;
       else if (value == "deactivate") c.fault = Fault::Deactivate;
+      else if (value == "block") c.fault = Fault::Block;
       else if (value == "none") c.fault = Fault::None;
       else {
         fail(err, "bad fault '" + value + "'");
         return false;
       }
+    } else if (name == "block_s") {
+      c.block_s = std::strtod(value.c_str(), nullptr);
     } else if (name == "command_log") {
       c.command_log = value;
     } else {
@@ -65,6 +74,12 @@ inline mhd_status next_read(Config& c, bool& nan_out, mhd_error* err) {
     case Fault::Nan: nan_out = true; return MHD_OK;
     case Fault::Error: fail(err, "injected fault: hardware not responding"); return MHD_ERROR;
     case Fault::Deactivate: return MHD_DEACTIVATE;
+    case Fault::Block:
+      if (!c.blocked) {
+        c.blocked = true;
+        std::this_thread::sleep_for(std::chrono::duration<double>(c.block_s));
+      }
+      return MHD_OK;
     case Fault::None: break;
   }
   return MHD_OK;

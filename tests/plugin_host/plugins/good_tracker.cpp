@@ -1,5 +1,6 @@
-// A tracker returning two samples per read. Param mode=ok|no_data|too_many|bad_quat|nan
-// breaks the read in one way.
+// A tracker returning two samples per read, with tracker_wait (data is always there, or
+// never with no_data) and two counters (reads so far, a fixed 7). Param
+// mode=ok|no_data|too_many|bad_quat|nan|bad_counter breaks one call in one way.
 #include <mhd/plugin_abi.h>
 
 #include <cstdio>
@@ -9,11 +10,12 @@
 
 namespace {
 
-enum class Mode { Ok, NoData, TooMany, BadQuat, Nan };
+enum class Mode { Ok, NoData, TooMany, BadQuat, Nan, BadCounter };
 
 struct Tracker {
   Mode mode = Mode::Ok;
   uint64_t sequence = 0;
+  uint64_t reads = 0;
 };
 
 Tracker* tracker_of(mhd_plugin_instance* self) { return reinterpret_cast<Tracker*>(self); }
@@ -30,6 +32,7 @@ mhd_plugin_instance* tracker_open(const mhd_host*, const mhd_param* params, size
     else if (std::strcmp(v, "too_many") == 0) t.mode = Mode::TooMany;
     else if (std::strcmp(v, "bad_quat") == 0) t.mode = Mode::BadQuat;
     else if (std::strcmp(v, "nan") == 0) t.mode = Mode::Nan;
+    else if (std::strcmp(v, "bad_counter") == 0) t.mode = Mode::BadCounter;
   }
   return reinterpret_cast<mhd_plugin_instance*>(new (std::nothrow) Tracker(t));
 }
@@ -41,6 +44,7 @@ void tracker_close(mhd_plugin_instance* self) { delete tracker_of(self); }
 mhd_status tracker_read(mhd_plugin_instance* self, mhd_tracker_sample* out, size_t capacity, size_t* count,
                         mhd_error*) {
   Tracker* t = tracker_of(self);
+  ++t->reads;
   if (t->mode == Mode::NoData) {
     *count = 0;
     return MHD_NO_DATA;
@@ -61,6 +65,18 @@ mhd_status tracker_read(mhd_plugin_instance* self, mhd_tracker_sample* out, size
   return MHD_OK;
 }
 
+mhd_status tracker_wait(mhd_plugin_instance* self, double /*timeout_s*/, mhd_error*) {
+  return tracker_of(self)->mode == Mode::NoData ? MHD_NO_DATA : MHD_OK;
+}
+
+mhd_status counters(mhd_plugin_instance* self, mhd_counter* out, size_t capacity, size_t* count, mhd_error*) {
+  const Tracker* t = tracker_of(self);
+  const mhd_counter all[2] = {{"reads", t->reads}, {t->mode == Mode::BadCounter ? "has space" : "dropped_test", 7}};
+  for (size_t i = 0; i < 2 && i < capacity; ++i) out[i] = all[i];
+  *count = 2;
+  return MHD_OK;
+}
+
 mhd_plugin_api make_api() {
   mhd_plugin_api api{};
   api.abi_version = MHD_PLUGIN_ABI_VERSION;
@@ -73,6 +89,8 @@ mhd_plugin_api make_api() {
   api.stop = tracker_stop;
   api.close = tracker_close;
   api.tracker_read = tracker_read;
+  api.tracker_wait = tracker_wait;
+  api.counters = counters;
   return api;
 }
 

@@ -1,4 +1,4 @@
-// Claims ABI version 2.
+// Claims the ABI version after this host's.
 #include "test_device.h"
 
 extern "C" const mhd_plugin_api* mhd_plugin_entry(uint32_t /*host_abi_version*/) {

@@ -1,0 +1,65 @@
+// <server> params: defaults, the event-driven tick and watchdog settings and their
+// bounds, and the status line's text for a plugin's drop counters.
+#include "haptic_server/plugin_counter.h"
+#include "haptic_server/server_settings.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+namespace {
+
+using namespace mhd;
+using ::testing::HasSubstr;
+
+SceneDescription scene_with_server(std::map<std::string, std::string> params) {
+  SceneDescription scene;
+  scene.file = "scene.xml";
+  ParamBlock server;
+  for (const auto& [name, value] : params) {
+    server.params[name] = value;
+    server.param_where[name] = SourceLocation{"scene.xml", 7};
+  }
+  scene.server = server;
+  return scene;
+}
+
+TEST(ServerSettings, TickOnTrackerSampleAndTheWatchdogHaveDefaults) {
+  const ServerSettingsResult r = server_settings_from(SceneDescription{});
+  ASSERT_TRUE(r.settings);
+  EXPECT_TRUE(r.settings->tick_on_tracker_sample);
+  EXPECT_DOUBLE_EQ(r.settings->min_tick_interval_s, 0.0002);
+  EXPECT_DOUBLE_EQ(r.settings->plugin_call_timeout_s, 0.1);
+}
+
+TEST(ServerSettings, TickOnTrackerSampleAndTheWatchdogAreRead) {
+  const ServerSettingsResult r = server_settings_from(scene_with_server(
+      {{"tick_on_tracker_sample", "false"}, {"min_tick_interval_s", "0.0003"}, {"plugin_call_timeout_s", "0.25"}}));
+  ASSERT_TRUE(r.settings);
+  EXPECT_FALSE(r.settings->tick_on_tracker_sample);
+  EXPECT_DOUBLE_EQ(r.settings->min_tick_interval_s, 0.0003);
+  EXPECT_DOUBLE_EQ(r.settings->plugin_call_timeout_s, 0.25);
+}
+
+TEST(ServerSettings, AMinimumTickIntervalLongerThanThePeriodIsRefusedAtItsLine) {
+  const ServerSettingsResult r = server_settings_from(scene_with_server({{"min_tick_interval_s", "0.002"}}));
+  EXPECT_FALSE(r.settings);
+  ASSERT_EQ(r.diagnostics.size(), 1u);
+  EXPECT_EQ(r.diagnostics[0].where.line, 7);
+  EXPECT_THAT(r.diagnostics[0].message, HasSubstr("'min_tick_interval_s' in <server> must not exceed the haptic period"));
+}
+
+TEST(ServerSettings, AZeroWatchdogTimeoutIsRefused) {
+  const ServerSettingsResult r = server_settings_from(scene_with_server({{"plugin_call_timeout_s", "0"}}));
+  EXPECT_FALSE(r.settings);
+  ASSERT_EQ(r.diagnostics.size(), 1u);
+  EXPECT_THAT(r.diagnostics[0].message, HasSubstr("plugin_call_timeout_s"));
+}
+
+TEST(PluginCounters, OnlyNonZeroDropsAreShownWithoutTheirPrefix) {
+  EXPECT_EQ(dropped_counts_text({}), "");
+  EXPECT_EQ(dropped_counts_text({{"accepted", 120}, {"dropped_stale", 0}}), "");
+  EXPECT_EQ(dropped_counts_text({{"accepted", 120}, {"dropped_stale", 3}, {"dropped_unknown_rig", 12}, {"reads", 9}}),
+            "stale 3, unknown_rig 12");
+}
+
+}  // namespace
