@@ -1,5 +1,7 @@
 #include "geometry/pose.h"
 
+#include <cmath>
+
 namespace mhd {
 
 Eigen::Matrix3d rotation_from_rpy(const Eigen::Vector3d& rpy_rad) {
@@ -17,8 +19,14 @@ Pose pose_from_xyz_rpy(const Eigen::Vector3d& p_m, const Eigen::Vector3d& rpy_ra
 }
 
 Pose pose_from_xyz_quaternion(const Eigen::Vector3d& p_m, const Eigen::Quaterniond& q) {
+  // Divide by the largest component before normalising: the squared norm of components
+  // beyond ~1e154 overflows (normalized() then gives zeros, read as the identity) and of
+  // components below ~1e-154 is subnormal (the result is off unit by up to 1e-5).
+  const double largest = q.coeffs().cwiseAbs().maxCoeff();
+  const Eigen::Quaterniond scaled(largest > 0.0 && std::isfinite(largest) ? Eigen::Vector4d(q.coeffs() / largest)
+                                                                          : Eigen::Vector4d(q.coeffs()));
   Pose X = Pose::Identity();
-  X.linear() = q.normalized().toRotationMatrix();
+  X.linear() = scaled.normalized().toRotationMatrix();
   X.translation() = p_m;
   return X;
 }

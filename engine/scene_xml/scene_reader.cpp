@@ -129,7 +129,7 @@ Pose read_pose_attributes(AttributeParser& a, const FileContext& ctx) {
     const auto q = a.numbers("quaternion_wxyz", Presence::Optional, 4, Bound::Any);
     if (!q) return pose_from_xyz_rpy(p_m, Eigen::Vector3d::Zero());
     const Eigen::Quaterniond quaternion((*q)[0], (*q)[1], (*q)[2], (*q)[3]);
-    if (quaternion.coeffs().squaredNorm() == 0.0) {
+    if (quaternion.coeffs().cwiseAbs().maxCoeff() == 0.0) {  // squaredNorm() is 0 for 1e-170 too
       ctx.sink.error(a.line_of("quaternion_wxyz"),
                      concat("attribute 'quaternion_wxyz' on ", a.tag(), " must not be all zeros"));
       return pose_from_xyz_rpy(p_m, Eigen::Vector3d::Zero());
@@ -139,6 +139,24 @@ Pose read_pose_attributes(AttributeParser& a, const FileContext& ctx) {
   const Eigen::Vector3d rpy_deg =
       a.vector3("rpy_deg", Presence::Optional, Bound::Any).value_or(Eigen::Vector3d::Zero());
   return pose_from_xyz_rpy(p_m, rpy_deg * (std::numbers::pi / 180.0));
+}
+
+/// XML 1.0 section 2.11: a lone CR ends a line, like LF and CR LF. tinyxml2 turns it into LF
+/// in text but counts only LF in line numbers, so a file with CR line ends (classic Mac)
+/// would report every problem on line 1. Normalising lone CRs first keeps the lines right;
+/// `storage` holds the copy when one is needed.
+std::string_view normalize_lone_cr(std::string_view xml, std::string& storage) {
+  const auto lone_cr = [](std::string_view text, std::size_t i) {
+    return text[i] == '\r' && (i + 1 == text.size() || text[i + 1] != '\n');
+  };
+  std::size_t i = 0;
+  while (i < xml.size() && !lone_cr(xml, i)) ++i;
+  if (i == xml.size()) return xml;
+  storage.assign(xml);
+  for (; i < storage.size(); ++i) {
+    if (lone_cr(storage, i)) storage[i] = '\n';
+  }
+  return storage;
 }
 
 class SceneReader {
@@ -186,6 +204,8 @@ class SceneReader {
   void read_document(std::string_view xml, const std::string& display, fs::path identity,
                      bool is_root) {
     FileContext ctx{DiagnosticSink(display, diagnostics_), 1.0};
+    std::string normalized;
+    xml = normalize_lone_cr(xml, normalized);
     tinyxml2::XMLDocument document;
     if (document.Parse(xml.data(), xml.size()) != tinyxml2::XML_SUCCESS) {
       ctx.sink.error(document.ErrorLineNum(), scene_xml::describe_xml_error(document));
@@ -493,19 +513,29 @@ class SceneReader {
       }
       return mesh;
     }
+    // A primitive's dimensions, in metres, within what a haptic scene can mean: the
+    // proxy's 1 um skin below, 10 km above (1e300 would overflow the BVH's quantiser).
+    const auto extent = [&](const AttributeParser& a, std::string_view attribute, double value_m) {
+      constexpr double kMin_m = 1e-6, kMax_m = 1e4;
+      if (value_m > 0.0 && !(value_m >= kMin_m && value_m <= kMax_m)) {
+        ctx.sink.error(a.line_of(attribute), concat("attribute '", attribute, "' on <", name,
+                                                    "> must be between 1e-6 m and 1e4 m (is ", scene_xml::format_g(value_m), " m)"));
+      }
+      return value_m;
+    };
     if (name == "plane") {
       AttributeParser a(e, ctx.sink, {"size"});
       PlaneSource plane;
       if (const auto size = a.numbers("size", Presence::Required, 2, Bound::Positive)) {
-        plane.size_x_m = (*size)[0] * u;
-        plane.size_y_m = (*size)[1] * u;
+        plane.size_x_m = extent(a, "size", (*size)[0] * u);
+        plane.size_y_m = extent(a, "size", (*size)[1] * u);
       }
       return plane;
     }
     if (name == "sphere") {
       AttributeParser a(e, ctx.sink, {"radius", "subdivisions"});
       SphereSource sphere;
-      sphere.radius_m = a.number("radius", Presence::Required, Bound::Positive).value_or(0.0) * u;
+      sphere.radius_m = extent(a, "radius", a.number("radius", Presence::Required, Bound::Positive).value_or(0.0) * u);
       sphere.subdivisions =
           a.integer("subdivisions", Presence::Optional, 0, 7).value_or(sphere.subdivisions);
       return sphere;
@@ -515,12 +545,13 @@ class SceneReader {
       BoxSource box;
       box.size_m = a.vector3("size", Presence::Required, Bound::Positive)
                        .value_or(Eigen::Vector3d::Zero()) * u;
+      for (int i = 0; i < 3; ++i) (void)extent(a, "size", box.size_m[i]);
       return box;
     }
     AttributeParser a(e, ctx.sink, {"radius", "height", "segments"});  // cylinder
     CylinderSource cylinder;
-    cylinder.radius_m = a.number("radius", Presence::Required, Bound::Positive).value_or(0.0) * u;
-    cylinder.height_m = a.number("height", Presence::Required, Bound::Positive).value_or(0.0) * u;
+    cylinder.radius_m = extent(a, "radius", a.number("radius", Presence::Required, Bound::Positive).value_or(0.0) * u);
+    cylinder.height_m = extent(a, "height", a.number("height", Presence::Required, Bound::Positive).value_or(0.0) * u);
     cylinder.segments = a.integer("segments", Presence::Optional, 3, 4096).value_or(cylinder.segments);
     return cylinder;
   }

@@ -64,7 +64,13 @@ std::optional<DropReason> TrackerSampleValidator::reason(const mhd_dds_TrackerSa
   const double norm = std::sqrt(s.q_T_wxyz[0] * s.q_T_wxyz[0] + s.q_T_wxyz[1] * s.q_T_wxyz[1] +
                                 s.q_T_wxyz[2] * s.q_T_wxyz[2] + s.q_T_wxyz[3] * s.q_T_wxyz[3]);
   if (!(std::abs(norm - 1.0) <= limits_.quaternion_tolerance)) return DropReason::BadQuaternion;
-  const double age_s = static_cast<double>(now_ns - s.timestamp_ns) / kNsPerS;
+  // now_ns - timestamp_ns would overflow for a timestamp more than ~292 years from now
+  // (the peer sends any 64-bit value): such a sample is stale or from the future.
+  std::int64_t age_ns = 0;
+  if (__builtin_sub_overflow(now_ns, s.timestamp_ns, &age_ns)) {
+    return s.timestamp_ns < 0 ? DropReason::Stale : DropReason::Future;
+  }
+  const double age_s = static_cast<double>(age_ns) / kNsPerS;
   if (age_s > limits_.max_age_s) return DropReason::Stale;
   if (-age_s > limits_.max_future_s) return DropReason::Future;
   for (const SensorState& sensor : sensors_) {

@@ -75,6 +75,15 @@ TEST(TrackerSampleValidator, DropsEachKindOfBadSampleByItsReason) {
             "accepted 0, dropped 8 (unknown_rig 1, non_finite 2, out_of_range 2, bad_quaternion 1, stale 1, future 1)");
 }
 
+TEST(TrackerSampleValidator, TimestampsAtTheEndsOfTheRangeAreStaleOrFutureWithoutOverflow) {
+  // A peer may send any 64-bit stamp; now - stamp must not overflow (found by fuzzing).
+  TrackerSampleValidator v(rig3());
+  EXPECT_EQ(v.check(good(0, std::numeric_limits<std::int64_t>::min()), kNow), DropReason::Stale);
+  EXPECT_EQ(v.check(good(0, std::numeric_limits<std::int64_t>::max()), -kNow), DropReason::Future);
+  EXPECT_EQ(v.check(good(0, std::numeric_limits<std::int64_t>::max()), kNow), DropReason::Future);
+  EXPECT_EQ(v.counts().dropped_total(), 3u);
+}
+
 TEST(TrackerSampleValidator, WithinTheLimitsIsAccepted) {
   TrackerSampleValidator v(rig3());
   auto edge = good(0, kNow - 99 * kMs);

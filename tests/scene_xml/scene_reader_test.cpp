@@ -197,6 +197,41 @@ TEST_F(SceneXmlReader, RotationMatchesPoseFromXyzRpy) {
   EXPECT_TRUE(r.scene->objects[0].X_WO.isApprox(expected, 1e-12));
 }
 
+TEST_F(SceneXmlReader, LinesEndedByALoneCarriageReturnAreCountedAsLines) {
+  // XML 1.0 2.11: CR, LF and CR LF all end a line. tinyxml2 counts only LF, so a file
+  // with CR line ends put every error on line 1 (found by fuzzing).
+  const SceneReadResult r = read_scene_string(
+      "<scene version=\"1\">\r<object name=\"a\"><material stiffness_N_per_m=\"-1\"/><sphere radius=\"1\"/></object>\r"
+      "<object name=\"b\"><material stiffness_N_per_m=\"1\"/><sphere radius=\"-1\"/></object>\r</scene>\r",
+      "cr.xml");
+  ASSERT_EQ(r.diagnostics.size(), 2u);
+  EXPECT_EQ(r.diagnostics[0].where.line, 2);
+  EXPECT_EQ(r.diagnostics[1].where.line, 3);
+}
+
+TEST_F(SceneXmlReader, PrimitiveDimensionsOutsideOneMicrometreToTenKilometresAreRefused) {
+  const SceneReadResult r = read_scene_string(R"(<scene version="1">
+    <object name="a"><material stiffness_N_per_m="1"/><box size="1e300 1 1"/></object>
+    <object name="b"><material stiffness_N_per_m="1"/><sphere radius="1e-300"/></object>
+    <object name="c"><material stiffness_N_per_m="1"/><cylinder radius="0.1" height="2e4"/></object>
+    <object name="d"><material stiffness_N_per_m="1"/><plane size="1e4 1e-6"/></object></scene>)", "x.xml");
+  const std::vector<std::string> errors = to_strings(r.diagnostics);
+  ASSERT_EQ(errors.size(), 3u);
+  EXPECT_EQ(errors[0], "x.xml:2: error: attribute 'size' on <box> must be between 1e-6 m and 1e4 m (is 1e+300 m)");
+  EXPECT_EQ(errors[1], "x.xml:3: error: attribute 'radius' on <sphere> must be between 1e-6 m and 1e4 m (is 1e-300 m)");
+  EXPECT_EQ(errors[2], "x.xml:4: error: attribute 'height' on <cylinder> must be between 1e-6 m and 1e4 m (is 20000 m)");
+}
+
+TEST_F(SceneXmlReader, AQuaternionOfTinyComponentsIsNotAllZeros) {
+  const SceneReadResult r = read_scene_string(R"(<scene version="1">
+    <object name="o"><material stiffness_N_per_m="1"/><sphere radius="1"/>
+      <pose quaternion_wxyz="1e-170 1e-170 0 0"/></object></scene>)", "x.xml");
+  ASSERT_TRUE(r.ok()) << to_strings(r.diagnostics).front();
+  const Eigen::Matrix3d R = r.scene->objects[0].X_WO.linear();
+  EXPECT_TRUE((R.transpose() * R).isApprox(Eigen::Matrix3d::Identity(), 1e-12));
+  EXPECT_TRUE((R * Eigen::Vector3d::UnitY()).isApprox(Eigen::Vector3d::UnitZ(), 1e-12));
+}
+
 TEST_F(SceneXmlReader, StringDefaultsAndSceneNameFromStem) {
   const SceneReadResult r = read_scene_string(R"(<?xml version="1.0"?>
 <!-- comments are fine -->

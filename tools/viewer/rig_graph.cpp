@@ -80,7 +80,7 @@ RigGraph::RigGraph(std::optional<Rig> rig, double force_scale_m_per_N)
                       osg::Vec4(0.3f, 0.6f, 1.0f, 0.18f));
     osg::StateSet* s = workspace_->getOrCreateStateSet();
     s->setMode(GL_BLEND, osg::StateAttribute::ON);
-    s->setAttributeAndModes(make_ref<osg::BlendFunc>(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA).get());
+    s->setAttributeAndModes(make_ref<osg::BlendFunc>(static_cast<GLenum>(GL_SRC_ALPHA), static_cast<GLenum>(GL_ONE_MINUS_SRC_ALPHA)).get());
     s->setAttributeAndModes(make_ref<osg::Depth>(osg::Depth::LESS, 0.0, 1.0, false).get());
     s->setRenderingHint(osg::StateSet::TRANSPARENT_BIN);
   }

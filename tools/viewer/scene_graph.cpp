@@ -76,7 +76,7 @@ osg::ref_ptr<osg::Geometry> mesh_geometry(const TriangleMesh& mesh, const Eigen:
   auto normals = make_ref<osg::Vec3Array>();
   vertices->reserve(m->vertices_m.size());
   normals->reserve(m->vertices_m.size());
-  constexpr double kFloatMax = std::numeric_limits<float>::max();
+  constexpr double kFloatMax = static_cast<double>(std::numeric_limits<float>::max());
   for (std::size_t i = 0; i < m->vertices_m.size(); ++i) {
     const Eigen::Vector3d& v = m->vertices_m[i];
     if (!v.allFinite() || v.cwiseAbs().maxCoeff() > kFloatMax) {
@@ -86,7 +86,7 @@ osg::ref_ptr<osg::Geometry> mesh_geometry(const TriangleMesh& mesh, const Eigen:
     vertices->push_back(to_osg(v));
     normals->push_back(to_osg(m->vertex_normals[i]));
   }
-  auto indices = make_ref<osg::DrawElementsUInt>(GL_TRIANGLES);
+  auto indices = make_ref<osg::DrawElementsUInt>(static_cast<GLenum>(GL_TRIANGLES));
   indices->reserve(m->triangles.size() * 3);
   for (const TriangleIndices& t : m->triangles) {
     for (const std::uint32_t index : t) indices->push_back(index);
