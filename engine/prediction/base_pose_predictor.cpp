@@ -140,10 +140,18 @@ BasePose BasePosePredictor::model_at(double t_s) const noexcept {
   const double horizon = settings_.max_extrapolation_s;
   // While the start-up fit still rests on a few noisy samples and no command says how
   // the base moves, its twist is mostly noise (a heading rate from two samples 5 ms
-  // apart): projected a metre out to the HIP it made 2-3 cm leaps. Hold the pose then.
+  // apart): projected a metre out to the HIP it made 2-3 cm leaps. Hold the pose then,
+  // and never extrapolate faster than a base can move.
   const bool guessing = expanding_ && !command_fresh(t_s) &&
                         samples_since_restart_ <= static_cast<std::uint64_t>(std::max(settings_.startup_samples, 0));
-  return integrate_twist(pose_, guessing ? BaseTwist{} : twist_B_, std::clamp(t_s - t_estimate_s_, -horizon, horizon));
+  BaseTwist twist = guessing ? BaseTwist{} : twist_B_;
+  const double speed_mps = std::hypot(twist.vx_mps, twist.vz_mps);
+  if (speed_mps > settings_.max_speed_mps) {
+    twist.vx_mps *= settings_.max_speed_mps / speed_mps;
+    twist.vz_mps *= settings_.max_speed_mps / speed_mps;
+  }
+  twist.omega_radps = std::clamp(twist.omega_radps, -settings_.max_yaw_rate_radps, settings_.max_yaw_rate_radps);
+  return integrate_twist(pose_, twist, std::clamp(t_s - t_estimate_s_, -horizon, horizon));
 }
 
 BasePose BasePosePredictor::predict(double t_s) noexcept {

@@ -47,6 +47,11 @@ struct BasePosePredictorSettings {
   double smoothing_time_constant_s = 0.1;
   double max_correction_speed_mps = 0.02;
   double max_correction_rate_radps = 0.03;
+  /// The twist a prediction extrapolates with is clamped to what a base can do (twice
+  /// the planner's default limits): a start-up fit on a few noisy samples can estimate
+  /// metres per second and radians per second, projected a metre out to the HIP.
+  double max_speed_mps = 1.0;
+  double max_yaw_rate_radps = 1.4;
   /// Predictions run at most this far past the last sample, then the pose is held.
   double max_extrapolation_s = 0.1;
   /// A sample this far from the prediction, or after this long a gap, restarts the estimate.

@@ -27,10 +27,11 @@ fs::path dir_of(const ::testing::TestInfo& info) {
          fmt::format("fault_injection_{}_{}_{}", static_cast<long>(::getpid()), info.test_suite_name(), info.name());
 }
 
-/// A passed case's folder is removed; a failed one's stays for a look.
+/// A passed case's folder is removed; a failed one's stays for a look (every one stays
+/// with MHD_KEEP_TEST_SCRATCH=1 in the environment).
 class RemoveScratchOfPassedTests : public ::testing::EmptyTestEventListener {
   void OnTestEnd(const ::testing::TestInfo& info) override {
-    if (!info.result()->Passed()) return;
+    if (!info.result()->Passed() || std::getenv("MHD_KEEP_TEST_SCRATCH") != nullptr) return;
     std::error_code ignored;
     fs::remove_all(dir_of(info), ignored);
   }
