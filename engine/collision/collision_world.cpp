@@ -12,6 +12,8 @@ namespace {
 // Lateral growth of every triangle in the sweep test, relative to the skin. It only has
 // to exceed double rounding at scene scale; a multiple of the skin keeps both in step.
 constexpr double kInflatePerSkin = 1.0;
+// Sweeps longer than this go in pieces (see sweep()).
+constexpr double kFirstPiece_m = 0.01;
 
 bool is_ignored(std::span<const TriangleRef> ignore, int object, std::uint32_t triangle) {
   return std::any_of(ignore.begin(), ignore.end(),
@@ -33,6 +35,9 @@ void CollisionWorld::set_pose(int object, const Pose& X_WO) {
 
 std::optional<SweepHit> CollisionWorld::sweep(const Eigen::Vector3d& a_W, const Eigen::Vector3d& b_W,
                                               double skin_m, std::span<const TriangleRef> ignore) const {
+  // One piece of the segment, swept against every object.
+  auto sweep_piece = [&](const Eigen::Vector3d& piece_a_W, const Eigen::Vector3d& piece_b_W) -> std::optional<SweepHit> {
+
   const double inflate_m = kInflatePerSkin * skin_m;
   const double margin_m = skin_m + inflate_m;
   std::optional<SweepHit> best;
@@ -41,8 +46,8 @@ std::optional<SweepHit> CollisionWorld::sweep(const Eigen::Vector3d& a_W, const 
 
   for (std::size_t oi = 0; oi < objects_.size(); ++oi) {
     const Object& o = objects_[oi];
-    const Eigen::Vector3d a_O = o.X_OW * a_W;
-    const Eigen::Vector3d b_O = o.X_OW * b_W;
+    const Eigen::Vector3d a_O = o.X_OW * piece_a_W;
+    const Eigen::Vector3d b_O = o.X_OW * piece_b_W;
     const Eigen::Vector3d margin = Eigen::Vector3d::Constant(margin_m);
     const Eigen::AlignedBox3d box_O(a_O.cwiseMin(b_O) - margin, a_O.cwiseMax(b_O) + margin);
     if (!box_O.intersects(o.shape->bounds())) continue;
@@ -75,6 +80,27 @@ std::optional<SweepHit> CollisionWorld::sweep(const Eigen::Vector3d& a_W, const 
     });
   }
   return best;
+  };
+  // A long sweep (a deep HIP, the containment ray) would query one box covering much of a
+  // large mesh. Sweep it in pieces that double in length from kFirstPiece_m, nearest
+  // first: each box stays small, and the first piece that hits holds the first hit.
+  const Eigen::Vector3d ab = b_W - a_W;
+  const double length = ab.norm();
+  if (!(length > kFirstPiece_m)) return sweep_piece(a_W, b_W);
+  double s = 0.0;
+  double piece = kFirstPiece_m;
+  while (s < length) {
+    const double e = std::min(length, s + piece);
+    const Eigen::Vector3d p = s == 0.0 ? a_W : Eigen::Vector3d(a_W + (s / length) * ab);
+    const Eigen::Vector3d q = e == length ? b_W : Eigen::Vector3d(a_W + (e / length) * ab);
+    if (std::optional<SweepHit> hit = sweep_piece(p, q)) {
+      hit->t_stop = (s + hit->t_stop * (e - s)) / length;
+      return hit;
+    }
+    s = e;
+    piece *= 2.0;
+  }
+  return std::nullopt;
 }
 
 std::array<Eigen::Vector3d, 3> CollisionWorld::triangle_W(const TriangleRef& ref) const {

@@ -1,15 +1,38 @@
 #include "collision/point_containment.h"
 
+#include <array>
+#include <cmath>
+
 namespace mhd {
 
 bool point_inside_surface(const CollisionWorld& world, const Eigen::Vector3d& p_W) {
   if (!p_W.allFinite()) return false;
-  static const Eigen::Vector3d kDirection = Eigen::Vector3d(0.1234, 1.0, 0.0567).normalized();
+  // Skewed directions, so a ray rarely runs along an edge or a face of a modelled shape.
+  static const std::array<Eigen::Vector3d, 6> kDirections{
+      Eigen::Vector3d(0.1234, 1.0, 0.0567).normalized(),  Eigen::Vector3d(-0.0711, -1.0, 0.1033).normalized(),
+      Eigen::Vector3d(1.0, 0.0913, -0.1471).normalized(), Eigen::Vector3d(-1.0, 0.1627, 0.0389).normalized(),
+      Eigen::Vector3d(0.0841, -0.1317, 1.0).normalized(), Eigen::Vector3d(0.1553, 0.0473, -1.0).normalized()};
   constexpr double kRayLength_m = 1000.0;
   constexpr double kSkin_m = 1e-9;
-  const auto hit = world.sweep(p_W, p_W + kRayLength_m * kDirection, kSkin_m);
-  if (!hit) return false;
-  return world.face_normal_W(hit->where).dot(kDirection) > 0.0;
+  // The first hit decides only when it is clean: a ray grazing the face it meets, or
+  // meeting it next to an edge, may have slipped past the neighbour that really is
+  // first (found by the pop-through stress: a point 1 um outside the dolphin was called
+  // inside). Then the next direction is asked; with none clean, the answer is "inside",
+  // the side on which the proxy waits instead of starting inside an object.
+  constexpr double kMinCosine = 0.05;
+  constexpr double kEdgeClearance_m = 1e-7;
+  for (const Eigen::Vector3d& d : kDirections) {
+    const auto hit = world.sweep(p_W, p_W + kRayLength_m * d, kSkin_m);
+    if (!hit) return false;
+    const Eigen::Vector3d n = world.face_normal_W(hit->where);
+    const double cosine = n.dot(d);
+    if (std::abs(cosine) < kMinCosine) continue;
+    const auto v = world.triangle_W(hit->where);
+    const Eigen::Vector3d x = p_W + (n.dot(v[0] - p_W) / cosine) * d;  // where the ray meets the plane
+    if (!world.projects_onto_triangle(hit->where, x, -kEdgeClearance_m)) continue;
+    return cosine > 0.0;
+  }
+  return true;
 }
 
 }  // namespace mhd
