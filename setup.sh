@@ -2,7 +2,9 @@
 # One-step set-up for a fresh Debian 12 machine (run as root, or with sudo available):
 # installs the missing Debian packages, configures and builds with CMake, then
 #   ./setup.sh demo   runs the main job on simulated hardware (the default dolphin scene)
-#   ./setup.sh test   runs every test with ctest
+#   ./setup.sh test   runs every test with ctest, then the suite under ASan+UBSan and the
+#                     threaded tests under TSan (tools/ci/sanitizers.sh), then each fuzz
+#                     target briefly (tools/fuzz/run_fuzzers.sh); docs/reliability.md
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -32,5 +34,8 @@ cmake --build --preset release
 if [ "$mode" = demo ]; then
   exec build/release/tools/mhd/mhd run scenes/dolphin.xml --duration 20 --record build/release/dolphin_run.csv
 else
-  exec ctest --preset release
+  ctest --preset release
+  # MHD_SANITIZERS=0 / MHD_FUZZ_SECONDS=0 skip these (for a quick local run).
+  if [ "${MHD_SANITIZERS:-1}" != 0 ]; then tools/ci/sanitizers.sh all; fi
+  if [ "${MHD_FUZZ_SECONDS:-20}" != 0 ]; then tools/fuzz/run_fuzzers.sh --seconds "${MHD_FUZZ_SECONDS:-20}"; fi
 fi

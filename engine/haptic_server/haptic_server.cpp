@@ -94,7 +94,7 @@ struct OpenedPlugin {
   std::unique_ptr<CallWatch> watch = std::make_unique<CallWatch>();
   /// Held around every call to this plugin from a server thread, so run()'s thread can
   /// send the base its stop while the io thread is stuck inside another plugin.
-  std::unique_ptr<std::timed_mutex> call_mutex = std::make_unique<std::timed_mutex>();
+  std::unique_ptr<std::mutex> call_mutex = std::make_unique<std::mutex>();
 };
 
 /// Marks `plugin` as inside `call` for as long as it lives.
@@ -521,9 +521,14 @@ void HapticServer::Impl::stop_base() {
     base_stop_sent.store(true);
     return;
   }
-  // Bounded: the io thread may itself be stuck inside the base.
-  const std::unique_lock lock(*base->call_mutex, std::chrono::milliseconds(200));
-  if (!lock.owns_lock()) return;
+  // Bounded: the io thread may itself be stuck inside the base. (A try_lock loop rather
+  // than a timed mutex: TSan does not see pthread_mutex_clocklock and reports races.)
+  std::unique_lock lock(*base->call_mutex, std::defer_lock);
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::milliseconds(200);
+  while (!lock.try_lock()) {
+    if (std::chrono::steady_clock::now() >= give_up) return;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
   if (base->instance.state() == PluginState::Running) {
     mhd_base_command zero{};
     zero.timestamp_s = host.now_s();
