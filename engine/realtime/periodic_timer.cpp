@@ -45,14 +45,18 @@ void PeriodicTimer::skip_missed_deadlines() noexcept {
   }
 }
 
-double PeriodicTimer::wait_next() noexcept {
-  skip_missed_deadlines();
+double PeriodicTimer::start_deadline_tick() noexcept {
   sleep_until_ns(next_ns_);
   const std::int64_t woke_for = next_ns_;
   next_ns_ += period_ns_;
   last_tick_ns_ = woke_for;
   ++stats_.ticks;
   return static_cast<double>(woke_for) * 1e-9;
+}
+
+double PeriodicTimer::wait_next() noexcept {
+  skip_missed_deadlines();
+  return start_deadline_tick();
 }
 
 double PeriodicTimer::wait_next_or(WakeEvent& event, double min_interval_s) noexcept {
@@ -70,13 +74,8 @@ double PeriodicTimer::wait_next_or(WakeEvent& event, double min_interval_s) noex
       ++stats_.ticks;
       return static_cast<double>(start) * 1e-9;
     }
-    sleep_until_ns(next_ns_);
   }
-  const std::int64_t woke_for = next_ns_;
-  next_ns_ += period_ns_;
-  last_tick_ns_ = woke_for;
-  ++stats_.ticks;
-  return static_cast<double>(woke_for) * 1e-9;
+  return start_deadline_tick();
 }
 
 double PeriodicTimer::monotonic_now_s() noexcept { return static_cast<double>(now_ns()) * 1e-9; }

@@ -47,6 +47,8 @@ class PeriodicTimer {
 
  private:
   void skip_missed_deadlines() noexcept;
+  /// Sleeps to the next deadline (if still ahead), starts its tick and moves the schedule on.
+  double start_deadline_tick() noexcept;
 
   double period_s_;
   std::int64_t period_ns_;
