@@ -16,6 +16,8 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <map>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -278,6 +280,16 @@ TEST(DdsHapticServer, LossyTrackerStreamNeverMakesTheHipLeap) {
   ASSERT_EQ(rc, 0) << dds::test::read_file((dir / "publisher.log").string());
   EXPECT_FALSE(report.error) << *report.error;
   EXPECT_GT(report.status.tracker_samples, 200u);
+  // The plugin's own drops reach the server's status through the ABI's counters call:
+  // every kind of bad sample the stream sends (deterministically, several of each).
+  std::map<std::string, std::uint64_t> counters;
+  for (const PluginCounter& c : report.status.tracker_plugin_counters) counters[c.name] = c.value;
+  EXPECT_GT(counters["accepted"], 200u);
+  for (const char* reason : {"dropped_non_finite", "dropped_out_of_range", "dropped_bad_quaternion", "dropped_future",
+                             "dropped_unknown_rig"}) {
+    EXPECT_GT(counters[reason], 0u) << reason;
+  }
+  EXPECT_NE(dropped_counts_text(report.status.tracker_plugin_counters).find("non_finite "), std::string::npos);
 
   const std::vector<Row> rows = read_recording(options.recording);
   const auto first = std::find_if(rows.begin(), rows.end(), [](const Row& r) { return r.hip_W_m.allFinite(); });
