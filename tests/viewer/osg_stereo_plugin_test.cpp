@@ -13,8 +13,11 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <chrono>
 #include <filesystem>
+#include <string>
 #include <thread>
 
 namespace mhd {
@@ -52,7 +55,8 @@ TEST_F(OsgStereoPlugin, OpenRefusesUnknownParametersAndAHostWithoutScene) {
 
 TEST_F(OsgStereoPlugin, DrawsTheFramesItIsGivenInItsOwnThread) {
   if (const std::string e = viewer::check_display(); !e.empty()) GTEST_SKIP() << e;
-  const std::filesystem::path out = std::filesystem::temp_directory_path() / "mhd_viewer_tests" / "plugin.png";
+  const std::filesystem::path out =
+      std::filesystem::temp_directory_path() / "mhd_viewer_tests" / std::to_string(::getpid()) / "plugin.png";
   std::filesystem::create_directories(out.parent_path());
   std::filesystem::remove(out);
   host_.set_scene_file(kSource / "scenes/dolphin.xml");
@@ -69,16 +73,18 @@ TEST_F(OsgStereoPlugin, DrawsTheFramesItIsGivenInItsOwnThread) {
   s.p_W_proxy_m = Eigen::Vector3d(0.1, 1.7, -0.2);
   s.base = BasePose{0.0, -2.0, 0.0};  // behind the HIP: the arm does not hide it
   const mhd_display_frame frame = viewer::display_frame_from_rig_state(s);
-  // Frames at about 1 kHz while it draws; every write returns at once.
+  // Frames at about 1 kHz while it draws its 20 frames (at most 200 Hz, so at least
+  // 100 ms) and writes the screenshot; every write returns at once. How long the drawing
+  // takes depends on the machine (software GL, sanitizers, load): wait for the file.
   int written = 0;
-  const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(400);
-  while (std::chrono::steady_clock::now() < until) {
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!std::filesystem::exists(out) && std::chrono::steady_clock::now() < give_up) {
     auto status = display.display_write(frame);
     ASSERT_TRUE(status.ok()) << status.error().to_string();
     ++written;
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
-  EXPECT_GT(written, 100);
+  EXPECT_GT(written, 50);
   ASSERT_TRUE(display.stop().ok());
   ASSERT_TRUE(display.close().ok());
   viewer::RgbaImage image;
