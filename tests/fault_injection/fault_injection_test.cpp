@@ -458,7 +458,6 @@ InContactRun run_fault_in_contact(const std::string& device_params, const std::s
 void expect_safe_end(const InContactRun& f, double fault_s, const std::string& what) {
   const ServerReport& r = f.run.report;
   EXPECT_EQ(r.ended_by, RunEnd::Fault);
-  EXPECT_LT(r.status.elapsed_s, 5.0);  // ended by the fault, not the 10 s duration
   // Pushing when the fault struck.
   std::size_t before = 0, pushing = 0;
   for (const RecordingRow& row : f.rows) {
