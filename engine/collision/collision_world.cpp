@@ -34,7 +34,8 @@ void CollisionWorld::set_pose(int object, const Pose& X_WO) {
 }
 
 std::optional<SweepHit> CollisionWorld::sweep(const Eigen::Vector3d& a_W, const Eigen::Vector3d& b_W,
-                                              double skin_m, std::span<const TriangleRef> ignore) const {
+                                              double skin_m, std::span<const TriangleRef> ignore,
+                                              SweepWork* work) const {
   // One piece of the segment, swept against every object.
   auto sweep_piece = [&](const Eigen::Vector3d& piece_a_W, const Eigen::Vector3d& piece_b_W) -> std::optional<SweepHit> {
 
@@ -56,6 +57,13 @@ std::optional<SweepHit> CollisionWorld::sweep(const Eigen::Vector3d& a_W, const 
     const int object = static_cast<int>(oi);
     o.shape->for_each_triangle_overlapping(box_O, [&](std::uint32_t ti) {
       if (!ignore.empty() && is_ignored(ignore, object, ti)) return;
+      if (work != nullptr) {
+        if (work->triangle_tests >= work->max_triangle_tests) {
+          work->exhausted = true;
+          return;
+        }
+        ++work->triangle_tests;
+      }
       const TriangleIndices& t = mesh.triangles[ti];
       const auto hit = sweep_point_triangle(a_O, b_O, mesh.vertices_m[t[0]], mesh.vertices_m[t[1]],
                                             mesh.vertices_m[t[2]], skin_m, inflate_m);
@@ -93,7 +101,9 @@ std::optional<SweepHit> CollisionWorld::sweep(const Eigen::Vector3d& a_W, const 
     const double e = std::min(length, s + piece);
     const Eigen::Vector3d p = s == 0.0 ? a_W : Eigen::Vector3d(a_W + (s / length) * ab);
     const Eigen::Vector3d q = e == length ? b_W : Eigen::Vector3d(a_W + (e / length) * ab);
-    if (std::optional<SweepHit> hit = sweep_piece(p, q)) {
+    std::optional<SweepHit> hit = sweep_piece(p, q);
+    if (work != nullptr && work->exhausted) return std::nullopt;
+    if (hit) {
       hit->t_stop = (s + hit->t_stop * (e - s)) / length;
       return hit;
     }

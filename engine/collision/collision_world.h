@@ -7,6 +7,7 @@
 #include "geometry/pose.h"
 
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <span>
@@ -33,6 +34,15 @@ struct SweepHit {
   double plane_offset_m = 0.0;
 };
 
+/// What sweeps cost, and the limit a caller puts on it (the proxy's per-tick budget).
+/// A sweep that reaches the limit stops testing triangles and sets `exhausted`; its
+/// answer is then incomplete and must not be used.
+struct SweepWork {
+  int triangle_tests = 0;
+  int max_triangle_tests = std::numeric_limits<int>::max();
+  bool exhausted = false;
+};
+
 class CollisionWorld {
  public:
   /// Adds an object; returns its index (0, 1, ...).
@@ -49,9 +59,11 @@ class CollisionWorld {
   /// first, where "reaches" means coming within `skin_m` of the triangle's plane over
   /// the triangle (inflated by a tolerance) while moving towards it. A segment that
   /// crosses any triangle always yields a hit. Triangles in `ignore` are skipped.
+  /// With `work`, counts the triangles tested there and stops at its limit (see SweepWork).
   /// Precondition: skin_m > 0, a_W and b_W finite.
   [[nodiscard]] std::optional<SweepHit> sweep(const Eigen::Vector3d& a_W, const Eigen::Vector3d& b_W,
-                                              double skin_m, std::span<const TriangleRef> ignore = {}) const;
+                                              double skin_m, std::span<const TriangleRef> ignore = {},
+                                              SweepWork* work = nullptr) const;
 
   /// True if p_W's projection onto the triangle's plane lies inside the triangle grown
   /// by margin_m on every edge (the proxy is "over" this triangle).

@@ -1,6 +1,6 @@
 #include "proxy/god_object.h"
 
-#include "proxy/constraint_projection.h"
+#include "proxy/proxy_motion.h"
 
 #include <Eigen/Geometry>
 
@@ -11,175 +11,12 @@
 namespace mhd {
 namespace {
 
-// Triangles a pass may set aside (collected planes plus coplanar twins at shared edges).
-constexpr int kMaxIgnored = 16;
-// Moves shorter than this fraction of the skin are skipped: they cannot matter to force
-// and a zero-length sweep has no direction.
-constexpr double kMinStepPerSkin = 1e-3;
+using proxy_detail::Motion;
+using proxy_detail::TickWork;
+
 // A constraint counts as active when the proxy is this close (fraction of the skin) to
-// its offset plane, and the projection may violate a plane by this much.
+// its offset plane.
 constexpr double kActivePerSkin = 1e-2;
-constexpr double kFeasibleTolerancePerSkin = 1e-3;
-// A constraint is released once the proxy's projection leaves its triangle by more
-// than this (fraction of the skin). It exceeds the sweep's own inflation (one skin),
-// so a triangle just hit is never released at once.
-constexpr double kReleaseMarginPerSkin = 2.0;
-
-// A triangle set aside by the sweeps of a pass, and the constraint plane it belongs
-// to: its own, or that of a coplanar neighbour (a twin) it duplicates.
-struct IgnoredTriangle {
-  TriangleRef triangle;
-  int plane = 0;
-};
-
-// One pass of constrained motion: the proxy moving from a start towards a goal.
-struct Motion {
-  Eigen::Vector3d p = Eigen::Vector3d::Zero();
-  std::array<HalfSpace, kMaxHalfSpaces> planes{};
-  std::array<TriangleRef, kMaxHalfSpaces> plane_triangles{};
-  int plane_count = 0;
-  std::array<IgnoredTriangle, kMaxIgnored> ignored{};
-  std::array<TriangleRef, kMaxIgnored> ignored_refs{};  // the same triangles, as sweep() takes them
-  int ignored_count = 0;
-
-  void remove_ignored(int index) {
-    --ignored_count;
-    ignored[static_cast<std::size_t>(index)] = ignored[static_cast<std::size_t>(ignored_count)];
-    ignored_refs[static_cast<std::size_t>(index)] = ignored_refs[static_cast<std::size_t>(ignored_count)];
-  }
-};
-
-void append_path(ProxyState& state, const Eigen::Vector3d& p) {
-  // solve_motion appends at most one point per iteration, so this never overflows.
-  state.path_W[static_cast<std::size_t>(state.path_points)] = p;
-  ++state.path_points;
-}
-
-// Drops the constraints whose triangles (own and twins) the proxy has slid off, past
-// a convex edge: such a plane no longer bounds free space around the proxy. Their
-// triangles stop being ignored, so later sweeps test them again. Returns true if any went.
-bool release_passed_constraints(const CollisionWorld& world, Motion& m, double skin_m) {
-  bool released = false;
-  for (int i = 0; i < m.plane_count;) {
-    bool supported = false;
-    for (int j = 0; j < m.ignored_count && !supported; ++j) {
-      const IgnoredTriangle& t = m.ignored[static_cast<std::size_t>(j)];
-      supported = t.plane == i && world.projects_onto_triangle(t.triangle, m.p, kReleaseMarginPerSkin * skin_m);
-    }
-    if (supported) {
-      ++i;
-      continue;
-    }
-    released = true;
-    for (int j = 0; j < m.ignored_count;) {
-      if (m.ignored[static_cast<std::size_t>(j)].plane == i) {
-        m.remove_ignored(j);
-      } else {
-        ++j;
-      }
-    }
-    // Move the last plane into slot i and renumber its triangles.
-    const int last = --m.plane_count;
-    m.planes[static_cast<std::size_t>(i)] = m.planes[static_cast<std::size_t>(last)];
-    m.plane_triangles[static_cast<std::size_t>(i)] = m.plane_triangles[static_cast<std::size_t>(last)];
-    for (int j = 0; j < m.ignored_count; ++j) {
-      if (m.ignored[static_cast<std::size_t>(j)].plane == last) m.ignored[static_cast<std::size_t>(j)].plane = i;
-    }
-  }
-  return released;
-}
-
-// Records a surface the proxy ran into. Returns false when the pass has no room left,
-// which ends the pass with the proxy where it is.
-bool add_constraint(Motion& m, const SweepHit& hit, double skin_m) {
-  if (m.ignored_count == kMaxIgnored) return false;
-  const double offset = hit.plane_offset_m + skin_m;
-  int plane = -1;
-  for (int i = 0; i < m.plane_count && plane < 0; ++i) {
-    const HalfSpace& h = m.planes[static_cast<std::size_t>(i)];
-    // A coplanar neighbour (flat region, shared edge) adds no new constraint.
-    if (h.normal.dot(hit.normal_W) > 1.0 - 1e-12 && std::abs(h.offset - offset) < kFeasibleTolerancePerSkin * skin_m) {
-      plane = i;
-    }
-  }
-  if (plane < 0) {
-    if (m.plane_count == kMaxHalfSpaces) return false;
-    plane = m.plane_count++;
-    m.planes[static_cast<std::size_t>(plane)] = HalfSpace{hit.normal_W, offset};
-    m.plane_triangles[static_cast<std::size_t>(plane)] = hit.where;
-  }
-  m.ignored[static_cast<std::size_t>(m.ignored_count)] = IgnoredTriangle{hit.where, plane};
-  m.ignored_refs[static_cast<std::size_t>(m.ignored_count)] = hit.where;
-  ++m.ignored_count;
-  return true;
-}
-
-// Starts a pass with the planes the proxy rested on last tick, so a contact tick does
-// not first sweep just to find the same triangle again. Each plane is rebuilt from its
-// triangle's current pose (an object may have moved) and kept only while the proxy is
-// on its free side; the pass then keeps every move inside it, so the triangle, now
-// ignored by the sweeps, still cannot be crossed.
-void seed_constraints(const CollisionWorld& world, std::span<const ConstraintPlane> previous,
-                      const Eigen::Vector3d& p, double skin_m, Motion& m) {
-  for (const ConstraintPlane& plane : previous) {
-    const auto v = world.triangle_W(plane.triangle);
-    const Eigen::Vector3d area_normal = (v[1] - v[0]).cross(v[2] - v[0]);
-    const double twice_area = area_normal.norm();
-    if (!(twice_area > 0.0)) continue;
-    Eigen::Vector3d n = area_normal / twice_area;
-    if (n.dot(plane.normal_W) < 0.0) n = -n;
-    const double surface_offset = n.dot(v[0]);
-    if (n.dot(p) - (surface_offset + skin_m) < -kActivePerSkin * skin_m) continue;
-    SweepHit seed;
-    seed.where = plane.triangle;
-    seed.normal_W = n;
-    seed.plane_offset_m = surface_offset;
-    if (!add_constraint(m, seed, skin_m)) return;
-  }
-}
-
-// Moves the proxy from `start` towards `goal`: project the goal onto the collected
-// constraints, sweep there, and on each hit stop short by the skin and add the hit
-// plane. A move that carries the proxy off a triangle (past a convex edge) releases
-// that triangle's plane. Once a move completes, probe the straight line to the goal for a surface not
-// yet collected (a convex edge seen from the far face) and go on until nothing new is
-// found. Every leg is swept, and legs inside collected half-spaces cannot cross the
-// triangles that made them, so the proxy never crosses the surface.
-void solve_motion(const CollisionWorld& world, const ProxySettings& settings, const Eigen::Vector3d& start,
-                  const Eigen::Vector3d& goal, std::span<const ConstraintPlane> previous_planes, Motion& m,
-                  ProxyState& state) {
-  const double skin = settings.skin_m;
-  const double min_step_sq = (kMinStepPerSkin * skin) * (kMinStepPerSkin * skin);
-  m.p = start;
-  seed_constraints(world, previous_planes, start, skin, m);
-  state.path_points = 0;
-  append_path(state, start);
-  for (int iteration = 0; iteration < kMaxProxyIterations; ++iteration) {
-    const std::span<const HalfSpace> planes(m.planes.data(), static_cast<std::size_t>(m.plane_count));
-    const auto target = project_onto_half_spaces(goal, planes, kFeasibleTolerancePerSkin * skin);
-    if (!target) return;
-    const std::span<const TriangleRef> ignored(m.ignored_refs.data(), static_cast<std::size_t>(m.ignored_count));
-    const Eigen::Vector3d step = *target - m.p;
-    if (step.squaredNorm() > min_step_sq) {
-      if (const auto hit = world.sweep(m.p, *target, skin, ignored)) {
-        if (hit->t_stop > 0.0) {
-          m.p += hit->t_stop * step;
-          append_path(state, m.p);
-        }
-        if (!add_constraint(m, *hit, skin)) return;
-        continue;
-      }
-      m.p = *target;
-      append_path(state, m.p);
-      if (release_passed_constraints(world, m, skin)) continue;
-    }
-    if (m.plane_count == 0) return;  // free motion reached the goal
-    if ((goal - m.p).squaredNorm() <= min_step_sq) return;
-    const auto probe = world.sweep(m.p, goal, skin, ignored);
-    if (!probe) return;
-    if (!add_constraint(m, *probe, skin)) return;
-  }
-}
 
 // Copies the constraints the proxy rests on (up to three, nearest first) into state.
 void store_active_planes(const Motion& m, double skin_m, ProxyState& state) {
@@ -250,13 +87,15 @@ ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMateri
 
   const Eigen::Vector3d start = state.proxy_W;
   const bool was_in_contact = state.plane_count > 0;
-  // Last tick's contact planes seed both passes (store_active_planes overwrites state).
+  // Kept for a tick that runs out of work before it moves (its contact goes on).
   const std::array<ConstraintPlane, kMaxConstraintPlanes> previous_planes = state.planes;
-  const std::span<const ConstraintPlane> previous(previous_planes.data(),
-                                                  static_cast<std::size_t>(state.plane_count));
+  const int previous_plane_count = state.plane_count;
 
+  TickWork work;
+  work.max_sweeps = std::clamp(settings.max_sweeps_per_tick, 1, kMaxProxySweeps);
+  work.sweep.max_triangle_tests = std::max(settings.max_triangle_tests_per_tick, 1);
   Motion motion;
-  solve_motion(world, settings, start, hip_W, previous, motion, state);
+  proxy_detail::solve_motion(world, settings.skin_m, start, hip_W, motion, state, work);
   store_active_planes(motion, settings.skin_m, state);
 
   bool sticking = false;
@@ -280,13 +119,22 @@ ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMateri
       } else if (mat.dynamic_friction > 0.0 && slip > 0.0) {
         const Eigen::Vector3d goal = hip_W + tangential * (mat.dynamic_friction * depth / slip);
         Motion sliding;
-        solve_motion(world, settings, start, goal, previous, sliding, state);
+        proxy_detail::solve_motion(world, settings.skin_m, start, goal, sliding, state, work);
         motion = sliding;
         store_active_planes(motion, settings.skin_m, state);
       }
     }
   }
 
+  if (work.exhausted && motion.p == start && state.plane_count == 0) {
+    // Out of work before the proxy moved: it stays, and so does last tick's contact, so
+    // the force goes on as a spring to the HIP instead of dropping to zero.
+    state.planes = previous_planes;
+    state.plane_count = previous_plane_count;
+  }
+  out.sweeps = work.sweeps;
+  out.triangle_tests = work.sweep.triangle_tests;
+  out.budget_exhausted = work.exhausted;
   state.proxy_W = motion.p;
   state.sticking = sticking;
   out.proxy_W = motion.p;

@@ -1,10 +1,11 @@
 #pragma once
 // God-object / virtual proxy haptic rendering (Zilles & Salisbury 1995, Ruspini et al.
-// 1997). The proxy is a point that never crosses a surface: each tick it moves towards
-// the haptic interface point (HIP) by swept, conservative queries, gathering up to three
-// constraint planes (faces, edges, concave corners), and the force is a spring-damper
-// between proxy and HIP. The scene is read-only; all mutable state is in ProxyState.
-// step_proxy() allocates nothing.
+// 1997). The proxy is a point that never crosses a surface and otherwise goes to the
+// hand: each tick it moves from where it was towards the haptic interface point (HIP)
+// by swept, conservative queries and ends at a local minimum of its distance to the HIP
+// over the free space it can reach (docs/proxy.md has the whole contract). The force is
+// a spring-damper between proxy and HIP. The scene is read-only; all mutable state is in
+// ProxyState. step_proxy() allocates nothing and its work per tick is bounded.
 
 #include "collision/collision_world.h"
 #include "material/haptic_material.h"
@@ -21,14 +22,17 @@ struct ProxySettings {
   double skin_m = 1e-6;
   /// Cut-off of the low-pass filter on the HIP velocity used for damping.
   double velocity_cutoff_Hz = 100.0;
+  /// Work budget of one tick (docs/proxy.md): sweeps, and triangles tested by them.
+  /// A tick that would exceed either stops where it is (crossing-free) and says so.
+  int max_sweeps_per_tick = 64;
+  int max_triangle_tests_per_tick = 20000;
 };
 
 inline constexpr int kMaxConstraintPlanes = 3;
-/// Waypoints a proxy can pass in one tick (one per sweep of the last pass, plus start).
-inline constexpr int kMaxProxyPath = 24;
-/// Sweeps one pass of the proxy may make before it stops where it is (safe).
-inline constexpr int kMaxProxyIterations = 16;
-static_assert(kMaxProxyPath > kMaxProxyIterations, "every pass must fit its path");
+/// Most sweeps one tick may make, whatever ProxySettings::max_sweeps_per_tick says.
+inline constexpr int kMaxProxySweeps = 64;
+/// Waypoints a proxy can pass in one tick: its start, then at most one per sweep.
+inline constexpr int kMaxProxyPath = kMaxProxySweeps + 2;
 
 struct ConstraintPlane {
   Eigen::Vector3d normal_W = Eigen::Vector3d::Zero();  ///< points to free space
@@ -58,12 +62,20 @@ struct ProxyOutput {
   int contact_object = -1;  ///< object of the first plane, -1 without contact
   bool force_clamped = false;
   bool sticking = false;
+  int sweeps = 0;               ///< sweeps this tick made
+  int triangle_tests = 0;       ///< triangles those sweeps tested
+  bool budget_exhausted = false;  ///< the tick hit its work budget and stopped early
 };
 
 /// Places the proxy at the HIP with no contact. Precondition: the HIP is in free space.
 void reset_proxy(ProxyState& state, const Eigen::Vector3d& hip_W);
 
 /// One haptic tick: moves the proxy towards hip_W and computes the force.
+/// Promises (docs/proxy.md): every leg of the proxy's path (ProxyState::path_W) is
+/// crossing-free; if the straight segment from the last proxy to hip_W is, the proxy
+/// ends at hip_W with zero force; otherwise it ends where no small crossing-free move
+/// brings it nearer the HIP, unless the work budget ran out (ProxyOutput says so), in
+/// which case it ends at the last crossing-free point it reached and keeps its contact.
 /// `materials[i]` is object i's material. A non-finite HIP leaves the proxy where it was
 /// and returns zero force.
 ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMaterial> materials,

@@ -1,0 +1,274 @@
+#include "proxy/proxy_motion.h"
+
+#include <cmath>
+#include <optional>
+#include <span>
+
+namespace mhd::proxy_detail {
+namespace {
+
+// Moves shorter than this fraction of the skin are skipped: they cannot matter to force
+// and a zero-length sweep has no direction.
+constexpr double kMinStepPerSkin = 1e-3;
+// The projection may violate a plane by this much (fraction of the skin), and a proxy
+// further than this on a plane's wrong side has left it (the plane goes).
+constexpr double kFeasibleTolerancePerSkin = 1e-3;
+// A constraint is released once the proxy's projection leaves its triangle by more
+// than this (fraction of the skin). It exceeds the sweep's own inflation (one skin),
+// so a triangle just hit is never released at once.
+constexpr double kReleaseMarginPerSkin = 2.0;
+
+std::size_t at(int i) { return static_cast<std::size_t>(i); }
+
+void append_path(ProxyState& state, const Eigen::Vector3d& p) {
+  // At most one point per sweep after the start, and sweeps are capped below the size.
+  if (state.path_points < kMaxProxyPath) state.path_W[at(state.path_points++)] = p;
+}
+
+// One sweep within the tick's budget. False when the budget is spent (before or during
+// the sweep): `hit` is then meaningless and the motion must stop where it is.
+bool budgeted_sweep(const CollisionWorld& world, TickWork& work, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                    double skin_m, std::span<const TriangleRef> ignore, std::optional<SweepHit>& hit) {
+  if (work.sweeps >= work.max_sweeps) {
+    work.exhausted = true;
+    return false;
+  }
+  ++work.sweeps;
+  hit = world.sweep(a, b, skin_m, ignore, &work.sweep);
+  if (work.sweep.exhausted) {
+    work.exhausted = true;
+    return false;
+  }
+  return true;
+}
+
+std::span<const TriangleRef> ignored_of(const Motion& m) {
+  return {m.ignored_refs.data(), at(m.ignored_count)};
+}
+
+bool is_collected(const Motion& m, const TriangleRef& t) {
+  for (int j = 0; j < m.ignored_count; ++j) {
+    if (m.ignored[at(j)].triangle == t) return true;
+  }
+  return false;
+}
+
+void remove_ignored(Motion& m, int index) {
+  --m.ignored_count;
+  m.ignored[at(index)] = m.ignored[at(m.ignored_count)];
+  m.ignored_refs[at(index)] = m.ignored_refs[at(m.ignored_count)];
+}
+
+// Drops plane i and its triangles (they are swept again from now on).
+void drop_plane(Motion& m, int i) {
+  for (int j = 0; j < m.ignored_count;) {
+    if (m.ignored[at(j)].plane == i) {
+      remove_ignored(m, j);
+    } else {
+      ++j;
+    }
+  }
+  // Move the last plane into slot i and renumber its triangles.
+  const int last = --m.plane_count;
+  m.planes[at(i)] = m.planes[at(last)];
+  m.plane_triangles[at(i)] = m.plane_triangles[at(last)];
+  for (int j = 0; j < m.ignored_count; ++j) {
+    if (m.ignored[at(j)].plane == last) m.ignored[at(j)].plane = i;
+  }
+}
+
+// Drops the constraints whose triangles (own and twins) the proxy has slid off, past a
+// convex edge: such a plane no longer bounds free space around the proxy. Returns true
+// if any went.
+bool release_passed_constraints(const CollisionWorld& world, Motion& m, double skin_m) {
+  bool released = false;
+  for (int i = 0; i < m.plane_count;) {
+    bool supported = false;
+    for (int j = 0; j < m.ignored_count && !supported; ++j) {
+      const IgnoredTriangle& t = m.ignored[at(j)];
+      supported = t.plane == i && world.projects_onto_triangle(t.triangle, m.p, kReleaseMarginPerSkin * skin_m);
+    }
+    if (supported) {
+      ++i;
+    } else {
+      drop_plane(m, i);
+      released = true;
+    }
+  }
+  return released;
+}
+
+// After a move that the planes did not constrain (towards the goal itself, or with a
+// plane set aside), drops the planes the proxy is now on the wrong side of: the move was
+// swept against their triangles, so they do not bound the free space around it, and
+// keeping them would let later moves ignore triangles they could cross.
+void drop_violated_planes(Motion& m, double skin_m) {
+  for (int i = 0; i < m.plane_count;) {
+    const HalfSpace& h = m.planes[at(i)];
+    if (h.normal.dot(m.p) < h.offset - kFeasibleTolerancePerSkin * skin_m) {
+      drop_plane(m, i);
+    } else {
+      ++i;
+    }
+  }
+}
+
+// Records a surface the proxy ran into. Returns false when the store is full, which
+// ends the motion with the proxy where it is.
+bool add_constraint(Motion& m, const SweepHit& hit, double skin_m) {
+  if (m.ignored_count == kMaxIgnored) return false;
+  const double offset = hit.plane_offset_m + skin_m;
+  int plane = -1;
+  for (int i = 0; i < m.plane_count && plane < 0; ++i) {
+    const HalfSpace& h = m.planes[at(i)];
+    // A coplanar neighbour (flat region, shared edge) adds no new constraint.
+    if (h.normal.dot(hit.normal_W) > 1.0 - 1e-12 && std::abs(h.offset - offset) < kFeasibleTolerancePerSkin * skin_m) {
+      plane = i;
+    }
+  }
+  if (plane < 0) {
+    if (m.plane_count == kMaxHalfSpaces) return false;
+    plane = m.plane_count++;
+    m.planes[at(plane)] = HalfSpace{hit.normal_W, offset};
+    m.plane_triangles[at(plane)] = hit.where;
+  }
+  m.ignored[at(m.ignored_count)] = IgnoredTriangle{hit.where, plane};
+  m.ignored_refs[at(m.ignored_count)] = hit.where;
+  ++m.ignored_count;
+  return true;
+}
+
+// True when the only plane's triangle (or a twin) lies straight under the proxy: the
+// proxy is then the foot of the goal on that plane, so the segment to the goal crosses
+// the triangle and no move brings it nearer.
+bool single_face_under(const CollisionWorld& world, const Motion& m) {
+  if (m.plane_count != 1) return false;
+  for (int j = 0; j < m.ignored_count; ++j) {
+    if (world.projects_onto_triangle(m.ignored[at(j)].triangle, m.p, 0.0)) return true;
+  }
+  return false;
+}
+
+// Moves the proxy along a swept leg that stopped at `hit` (or reached `to`).
+void advance(Motion& m, const Eigen::Vector3d& to, const std::optional<SweepHit>& hit, ProxyState& state) {
+  const Eigen::Vector3d next = hit ? Eigen::Vector3d(m.p + hit->t_stop * (to - m.p)) : to;
+  if (next != m.p) {
+    m.p = next;
+    append_path(state, m.p);
+  }
+}
+
+enum class Release { None, Moved, OutOfWork };
+
+// The active-set step at a corner of the collected planes: a plane whose own triangle
+// does not stop a move towards the projection of the goal on the other planes holds the
+// proxy only as an infinite plane (a saddle, a convex edge seen from the side) and goes.
+// The move is swept against that plane's triangles and stays inside the others, so it
+// crosses nothing.
+Release release_one_plane(const CollisionWorld& world, double skin_m, const Eigen::Vector3d& goal, Motion& m,
+                          ProxyState& state, TickWork& work) {
+  const double min_step = kMinStepPerSkin * skin_m;
+  for (int i = 0; i < m.plane_count; ++i) {
+    std::array<HalfSpace, kMaxHalfSpaces> others{};
+    int n = 0;
+    for (int j = 0; j < m.plane_count; ++j) {
+      if (j != i) others[at(n++)] = m.planes[at(j)];
+    }
+    const auto target = project_onto_half_spaces(goal, std::span<const HalfSpace>(others.data(), at(n)),
+                                                 kFeasibleTolerancePerSkin * skin_m);
+    if (!target || (*target - m.p).norm() <= min_step) continue;
+    // Triangles of the other planes stay ignored; plane i's are tested.
+    std::array<TriangleRef, kMaxIgnored> keep{};
+    int k = 0;
+    for (int j = 0; j < m.ignored_count; ++j) {
+      if (m.ignored[at(j)].plane != i) keep[at(k++)] = m.ignored[at(j)].triangle;
+    }
+    std::optional<SweepHit> hit;
+    if (!budgeted_sweep(world, work, m.p, *target, skin_m, std::span<const TriangleRef>(keep.data(), at(k)), hit)) {
+      return Release::OutOfWork;
+    }
+    if (hit && hit->t_stop * (*target - m.p).norm() <= min_step) continue;  // plane i really holds
+    drop_plane(m, i);
+    advance(m, *target, hit, state);
+    drop_violated_planes(m, skin_m);
+    if (hit && !add_constraint(m, *hit, skin_m)) {
+      work.exhausted = true;
+      return Release::OutOfWork;
+    }
+    return Release::Moved;
+  }
+  return Release::None;
+}
+
+}  // namespace
+
+// Zilles-Salisbury with a checked active set. Each step either moves the proxy nearer
+// the goal along a swept leg or changes the constraint set, and every leg is either
+// swept against every triangle it could cross or stays inside the collected half-spaces
+// (whose triangles are then the only ones it skips), so the proxy never crosses the
+// surface. Planes are never carried over from the last tick: they are found again by
+// the first sweep, so a plane that no longer blocks cannot hold the proxy.
+void solve_motion(const CollisionWorld& world, double skin_m, const Eigen::Vector3d& start,
+                  const Eigen::Vector3d& goal, Motion& m, ProxyState& state, TickWork& work) {
+  const double min_step = kMinStepPerSkin * skin_m;
+  m.p = start;
+  state.path_points = 0;
+  append_path(state, start);
+  std::optional<SweepHit> hit;
+  // The straight segment first, nothing ignored: if it is free the proxy is at the goal.
+  if (!budgeted_sweep(world, work, m.p, goal, skin_m, {}, hit)) return;
+  advance(m, goal, hit, state);
+  if (!hit) return;
+  if (!add_constraint(m, *hit, skin_m)) {
+    work.exhausted = true;
+    return;
+  }
+  for (;;) {
+    const auto target = project_onto_half_spaces(goal, std::span<const HalfSpace>(m.planes.data(), at(m.plane_count)),
+                                                 kFeasibleTolerancePerSkin * skin_m);
+    if (!target) return;  // numerically empty: stay (crossing-free) where we are
+    if ((*target - m.p).norm() > min_step) {
+      if (!budgeted_sweep(world, work, m.p, *target, skin_m, ignored_of(m), hit)) return;
+      advance(m, *target, hit, state);
+      if (hit) {
+        if (!add_constraint(m, *hit, skin_m)) {
+          work.exhausted = true;
+          return;
+        }
+        continue;
+      }
+      if (release_passed_constraints(world, m, skin_m)) continue;
+    }
+    if (m.plane_count == 0 || (goal - m.p).norm() <= min_step) return;  // at the goal
+    if (single_face_under(world, m)) return;  // pressed onto one face: a minimum
+    // At the minimum over the collected planes. Check it against the surface itself:
+    // the straight segment to the goal, nothing ignored.
+    if (!budgeted_sweep(world, work, m.p, goal, skin_m, {}, hit)) return;
+    if (!hit) {
+      advance(m, goal, hit, state);
+      m.plane_count = 0;
+      m.ignored_count = 0;
+      return;
+    }
+    const bool moved = hit->t_stop * (goal - m.p).norm() > min_step;
+    if (moved) {
+      advance(m, goal, hit, state);
+      drop_violated_planes(m, skin_m);
+    }
+    if (!is_collected(m, hit->where)) {
+      if (!add_constraint(m, *hit, skin_m)) {
+        work.exhausted = true;
+        return;
+      }
+      continue;
+    }
+    if (moved) continue;
+    // Blocked straight ahead by a collected triangle: a true corner, unless one of its
+    // planes holds only as an infinite plane.
+    if (m.plane_count < 2) return;
+    const Release r = release_one_plane(world, skin_m, goal, m, state, work);
+    if (r != Release::Moved) return;
+  }
+}
+
+}  // namespace mhd::proxy_detail

@@ -1,0 +1,50 @@
+#pragma once
+// The proxy's motion in one tick: from where it was towards a goal (the HIP, or the
+// friction cone's rim), through free space only, to a local minimum of the distance to
+// the goal (docs/proxy.md). Internal to the proxy library; step_proxy() is the API.
+
+#include "collision/collision_world.h"
+#include "proxy/constraint_projection.h"
+#include "proxy/god_object.h"
+
+#include <array>
+
+namespace mhd::proxy_detail {
+
+// Triangles one motion may set aside (collected planes plus coplanar twins).
+inline constexpr int kMaxIgnored = 16;
+
+// A triangle set aside by the sweeps, and the constraint plane it belongs to: its
+// own, or that of a coplanar neighbour (a twin) it duplicates.
+struct IgnoredTriangle {
+  TriangleRef triangle;
+  int plane = 0;
+};
+
+// The work one tick may still do; shared by the passes of a tick.
+struct TickWork {
+  int sweeps = 0;
+  int max_sweeps = kMaxProxySweeps;
+  SweepWork sweep;
+  bool exhausted = false;  // the budget (or the constraint store) ran out
+};
+
+// One motion's state: where the proxy is and the constraints it has met.
+struct Motion {
+  Eigen::Vector3d p = Eigen::Vector3d::Zero();
+  std::array<HalfSpace, kMaxHalfSpaces> planes{};
+  std::array<TriangleRef, kMaxHalfSpaces> plane_triangles{};
+  int plane_count = 0;
+  std::array<IgnoredTriangle, kMaxIgnored> ignored{};
+  std::array<TriangleRef, kMaxIgnored> ignored_refs{};  // the same triangles, as sweep() takes them
+  int ignored_count = 0;
+};
+
+// Moves the proxy from `start` towards `goal` and records its path in state.path_W.
+// Every leg is swept; on return m.p is crossing-free-reachable from start and either
+// the goal, a local minimum of the distance to it, or (work.exhausted) where the
+// budget ran out.
+void solve_motion(const CollisionWorld& world, double skin_m, const Eigen::Vector3d& start,
+                  const Eigen::Vector3d& goal, Motion& m, ProxyState& state, TickWork& work);
+
+}  // namespace mhd::proxy_detail
