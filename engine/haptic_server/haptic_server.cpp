@@ -150,7 +150,7 @@ struct HapticServer::Impl {
   bool tick_on_tracker_sample = false;      ///< set by run(): the tracker can wake the io thread
 
   // Status, written by the haptic and io threads, read by run().
-  std::atomic<std::uint64_t> ticks{0}, overruns{0}, missed{0}, contact_ticks{0};
+  std::atomic<std::uint64_t> ticks{0}, overruns{0}, missed{0}, contact_ticks{0}, proxy_budget_exhausted_ticks{0};
   std::atomic<double> force_N{0.0}, safety_gain{0.0}, tracker_age_s{std::numeric_limits<double>::infinity()};
   std::atomic<bool> in_contact{false};
   std::atomic<std::uint64_t> tracker_samples{0}, tracker_rejected{0}, recording_dropped{0};
@@ -309,6 +309,7 @@ void HapticServer::Impl::haptic_thread() {
 
     ticks.fetch_add(1, std::memory_order_relaxed);
     if (out.in_contact) contact_ticks.fetch_add(1, std::memory_order_relaxed);
+    if (out.proxy_budget_exhausted) proxy_budget_exhausted_ticks.fetch_add(1, std::memory_order_relaxed);
     overruns.store(timer.stats().overruns, std::memory_order_relaxed);
     missed.store(timer.stats().missed_deadlines, std::memory_order_relaxed);
     early_ticks.store(timer.stats().early_wakes, std::memory_order_relaxed);
@@ -888,6 +889,7 @@ ServerReport HapticServer::run() {
   report.tick_p999_us = m.tick_histogram.quantile_us(0.999);
   report.tick_max_us = m.tick_histogram.max_us();
   report.contact_ticks = m.contact_ticks.load();
+  report.proxy_budget_exhausted_ticks = m.proxy_budget_exhausted_ticks.load();
   report.stale_ticks = m.safety_counters.stale_ticks;
   report.fault_ticks = m.safety_counters.fault_ticks;
   report.hip_jumps = m.safety_counters.jumps;

@@ -92,6 +92,7 @@ struct ServerReport {
   std::uint64_t missed_deadlines = 0;
   double tick_median_us = 0.0, tick_p99_us = 0.0, tick_p999_us = 0.0, tick_max_us = 0.0;
   std::uint64_t contact_ticks = 0;
+  std::uint64_t proxy_budget_exhausted_ticks = 0;  ///< ticks whose proxy ran out of its work budget
   std::uint64_t stale_ticks = 0, fault_ticks = 0, hip_jumps = 0, clamped_ticks = 0;
   std::uint64_t base_commands = 0, base_stops = 0;
   std::uint64_t recording_rows = 0, recording_dropped = 0;

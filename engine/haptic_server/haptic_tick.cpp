@@ -64,6 +64,7 @@ HapticTickOutput HapticTick::render(double t_s, double dt_s, const Eigen::Vector
     out.proxy_force_W_N = p.force_W;
     out.in_contact = p.in_contact;
     out.contact_object = p.contact_object;
+    out.proxy_budget_exhausted = p.budget_exhausted;
     safety_in.force_W_N = p.force_W;
     safety_in.hip_W_m = out.hip_W_m;
     const ForceSafetyOutput s = safety_.apply(safety_in);

@@ -46,6 +46,7 @@ struct HapticTickOutput {
   bool jump = false;
   bool clamped = false;
   bool hip_inside_object = false;  ///< the proxy waits (no force) for the HIP to leave an object
+  bool proxy_budget_exhausted = false;  ///< the proxy hit its per-tick work budget (ProxyOutput)
 };
 
 class HapticTick {

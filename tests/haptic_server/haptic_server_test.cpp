@@ -116,6 +116,7 @@ TEST(HapticServer, RunsTheDolphinSceneOnSimulatedHardwareAndRecordsEveryTick) {
   EXPECT_TRUE(r.base_stop_sent);
   EXPECT_EQ(r.recording_dropped, 0u);
   EXPECT_EQ(r.recording_rows, r.status.ticks);
+  EXPECT_EQ(r.proxy_budget_exhausted_ticks, 0u);  // an ordinary run stays within the proxy's budget
 
   std::ifstream csv(o.recording);
   std::string header;
@@ -127,6 +128,20 @@ TEST(HapticServer, RunsTheDolphinSceneOnSimulatedHardwareAndRecordsEveryTick) {
   }
   EXPECT_EQ(rows, r.recording_rows);
   EXPECT_GT(rows_with_hip, rows / 2);  // the HIP is known once the first base pose is in
+}
+
+TEST(HapticServer, CountsTheTicksWhoseProxyRanOutOfItsWorkBudget) {
+  // One sweep a tick is too few for a hand stroking in and out of the box's top face.
+  Loaded l = load(std::string(MHD_SOURCE_DIR) + "/tests/data/server/touch_box.xml");
+  ASSERT_TRUE(l.scene);
+  l.scene->proxy.max_sweeps_per_tick = 1;
+  auto build = HapticServer::open(*l.description, *l.scene, options_for(1.5));
+  for (const auto& d : build.diagnostics) ADD_FAILURE() << d.to_string();
+  ASSERT_TRUE(build.server);
+  const ServerReport r = build.server->run();
+  EXPECT_FALSE(r.error) << *r.error;
+  EXPECT_GT(r.proxy_budget_exhausted_ticks, 0u);
+  EXPECT_LE(r.proxy_budget_exhausted_ticks, r.status.ticks);
 }
 
 TEST(HapticServer, DeviceReturningNanEndsTheRunWithZeroForceAndTheBaseStopped) {

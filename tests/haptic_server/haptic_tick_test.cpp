@@ -176,6 +176,33 @@ TEST(HapticTick, AHandStartingInsideAnObjectGetsNoForceUntilItLeaves) {
   EXPECT_GT(out.force_W_N.y(), 0.0);
 }
 
+TEST(HapticTick, CarriesTheProxyWorkBudgetFlagOfEveryTick) {
+  // A budget of one sweep a tick: pressing into the box needs more, so ticks run out.
+  // The tick must pass on what step_proxy says: a twin proxy stepped directly with the
+  // same HIP and dt gives the flag to compare against.
+  Fixture f = make_fixture(0.002);
+  f.scene->proxy.max_sweeps_per_tick = 1;
+  HapticTick tick(*f.scene, *f.rig, no_fade_in());
+  const Pose sensor = f.rig->X_is900_base_sensor_from_base({});
+  ProxyState twin;
+  Eigen::Vector3d q = kQ;
+  double t = 0.0;
+  int exhausted_ticks = 0;
+  for (int i = 0; i < 120; ++i) {
+    q.y() -= 0.0005;
+    (void)tick.add_base_sensor_sample(t, sensor);
+    const auto out = tick.tick(t += 0.001, 0.001, q);
+    ASSERT_TRUE(out.hip_W_m.allFinite());
+    if (!twin.initialised) reset_proxy(twin, out.hip_W_m);
+    const ProxyOutput direct =
+        step_proxy(f.scene->world, f.scene->materials, f.scene->proxy, twin, out.hip_W_m, 0.001);
+    ASSERT_EQ(out.proxy_W_m, direct.proxy_W) << "tick " << i;
+    EXPECT_EQ(out.proxy_budget_exhausted, direct.budget_exhausted) << "tick " << i;
+    if (out.proxy_budget_exhausted) ++exhausted_ticks;
+  }
+  EXPECT_GT(exhausted_ticks, 0);
+}
+
 TEST(HapticTick, NonFiniteJointAnglesGiveZeroForce) {
   Fixture f = make_fixture(0.002);
   HapticTick tick(*f.scene, *f.rig, no_fade_in());

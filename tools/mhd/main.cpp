@@ -6,6 +6,7 @@
 #include "command_exit.h"
 #include "plan_sim_command.h"
 #include "plugins_command.h"
+#include "proxy_replay_command.h"
 #include "replay_command.h"
 #include "run_command.h"
 #include "strokes_command.h"
@@ -54,6 +55,7 @@ int main(int argc, char** argv) {
   add_tracker_server_command(app);
 #endif
   add_strokes_command(app);
+  add_proxy_replay_command(app);
 
   try {
     app.parse(argc, argv);

@@ -124,6 +124,9 @@ int run(const RunOptions& opt) {
              r.tick_median_us, r.tick_p99_us, r.tick_p999_us, r.tick_max_us);
   fmt::print("contact ticks {}; safety: {} stale, {} fault, {} HIP jumps, {} clamped ticks\n", r.contact_ticks,
              r.stale_ticks, r.fault_ticks, r.hip_jumps, r.clamped_ticks);
+  fmt::print("proxy work budget ({} sweeps, {} triangle tests per tick): exhausted on {} ticks\n",
+             scene.proxy.max_sweeps_per_tick, scene.proxy.max_triangle_tests_per_tick,
+             r.proxy_budget_exhausted_ticks);
   fmt::print("tracker: {} samples, {} dropped{}; {} ticks started by a new sample; base: {} commands ({} stops), "
              "ends at ({:.3f}, {:.3f}) m\n",
              s.tracker_samples, s.tracker_rejected, plugin_drops(s), s.early_ticks, r.base_commands, r.base_stops,

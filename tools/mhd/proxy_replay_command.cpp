@@ -1,0 +1,168 @@
+// `mhd proxy-replay SCENE.xml --hip-csv HIP.csv --out TICKS.csv`: replays a HIP path
+// (engine/recording/hip_path_csv.h) through the scene's god-object proxy and materials,
+// without plugins, safety or threads, and writes one row per tick (docs/proxy_replay.md).
+// "What would this hand path feel like on that mesh", and how checks from outside drive
+// the proxy. Deterministic: two runs differ only in step_us. Bad input is an error at
+// file:line and leaves no output file.
+
+#include "proxy_replay_command.h"
+
+#include "command_exit.h"
+#include "staged_output_file.h"
+
+#include "collision/point_containment.h"
+#include "recording/hip_path_csv.h"
+#include "scene_compiler/scene_compiler.h"
+#include "scene_xml/scene_reader.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace {
+
+constexpr const char* kTicksHeader =
+    "t_s,hip_x_m,hip_y_m,hip_z_m,proxy_x_m,proxy_y_m,proxy_z_m,force_x_N,force_y_N,force_z_N,contact,planes,"
+    "step_us,budget_exhausted";
+/// dt of the first tick when the path has a single row.
+constexpr double kSingleRowDt_s = 1e-3;
+
+struct ProxyReplayOptions {
+  std::string scene;
+  std::string hip_csv;
+  std::string out;
+  bool no_cache = false;
+};
+
+void print_error(const mhd::Diagnostic& d) {
+  if (d.where.line > 0) {
+    fmt::print(stderr, "mhd proxy-replay: error: {}:{}: {}\n", d.where.file, d.where.line, d.message);
+  } else {
+    fmt::print(stderr, "mhd proxy-replay: error: {}: {}\n", d.where.file, d.message);
+  }
+}
+
+/// Why the proxy cannot start at p_W (inside a closed object, or within the skin of a
+/// surface), or nullopt when p_W is in free space. The skin test sweeps a skin's length
+/// along each axis: a sweep that must stop at once started within the skin.
+std::optional<std::string> not_free_space(const mhd::CollisionWorld& world, const Eigen::Vector3d& p_W,
+                                          double skin_m) {
+  if (mhd::point_inside_surface(world, p_W)) return std::string("is inside an object");
+  for (int axis = 0; axis < 3; ++axis) {
+    for (const double sign : {1.0, -1.0}) {
+      const Eigen::Vector3d step = sign * skin_m * Eigen::Vector3d::Unit(axis);
+      const auto hit = world.sweep(p_W, p_W + step, skin_m);
+      if (hit && hit->t_stop == 0.0) return fmt::format("touches a surface (closer than skin_m = {} m)", skin_m);
+    }
+  }
+  return std::nullopt;
+}
+
+struct ReplayTotals {
+  long ticks = 0;
+  long contact_ticks = 0;
+  long budget_exhausted_ticks = 0;
+  double max_force_N = 0.0;
+  double max_step_us = 0.0;
+};
+
+/// Steps the proxy once and writes the tick's row.
+void replay_tick(const mhd::CompiledScene& scene, mhd::ProxyState& state, const mhd::HipPathSample& hip,
+                 double dt_s, std::FILE* out, ReplayTotals& totals) {
+  using Clock = std::chrono::steady_clock;
+  const auto t0 = Clock::now();
+  const mhd::ProxyOutput p = mhd::step_proxy(scene.world, scene.materials, scene.proxy, state, hip.p_W_hip_m, dt_s);
+  const double step_us = std::chrono::duration<double, std::micro>(Clock::now() - t0).count();
+  const Eigen::Vector3d& h = hip.p_W_hip_m;
+  fmt::print(out, "{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{},{},{:.3f},{}\n",
+             hip.t_s, h.x(), h.y(), h.z(), p.proxy_W.x(), p.proxy_W.y(), p.proxy_W.z(), p.force_W.x(), p.force_W.y(),
+             p.force_W.z(), p.in_contact ? 1 : 0, p.plane_count, step_us, p.budget_exhausted ? 1 : 0);
+  ++totals.ticks;
+  if (p.in_contact) ++totals.contact_ticks;
+  if (p.budget_exhausted) ++totals.budget_exhausted_ticks;
+  totals.max_force_N = std::max(totals.max_force_N, p.force_W.norm());
+  totals.max_step_us = std::max(totals.max_step_us, step_us);
+}
+
+int proxy_replay(const ProxyReplayOptions& opt) {
+  // The path's header and first row first: a bad file fails before the scene compiles.
+  mhd::HipPathCsvReader reader{std::filesystem::path(opt.hip_csv)};
+  std::optional<mhd::HipPathSample> previous = reader.next();
+  if (!previous) {
+    print_error(*reader.error());
+    return 1;
+  }
+
+  const mhd::SceneReadResult read = mhd::read_scene_file(opt.scene);
+  for (const auto& d : read.diagnostics) fmt::print(stderr, "{}\n", d.to_string());
+  if (!read.ok()) return 1;
+  mhd::CompileOptions compile_options;
+  compile_options.use_cache = !opt.no_cache;
+  const mhd::CompileResult compiled = mhd::compile_scene(*read.scene, compile_options);
+  for (const auto& d : compiled.diagnostics) fmt::print(stderr, "{}\n", d.to_string());
+  if (!compiled.ok()) return 1;
+  const mhd::CompiledScene& scene = *compiled.scene;
+
+  if (const auto why = not_free_space(scene.world, previous->p_W_hip_m, scene.proxy.skin_m)) {
+    const Eigen::Vector3d& p = previous->p_W_hip_m;
+    fmt::print(stderr, "mhd proxy-replay: error: {}:{}: the first HIP ({}, {}, {}) m {} in {}; the proxy must start in "
+               "free space\n", opt.hip_csv, previous->line, p.x(), p.y(), p.z(), *why, opt.scene);
+    return 1;
+  }
+
+  mhd::cli::StagedOutputFile out(opt.out);
+  if (!out.ok()) {
+    fmt::print(stderr, "mhd proxy-replay: error: {}\n", out.error());
+    return 1;
+  }
+  fmt::print(out.stream(), "{}\n", kTicksHeader);
+
+  mhd::ProxyState state;
+  mhd::reset_proxy(state, previous->p_W_hip_m);
+  ReplayTotals totals;
+  // The first tick takes the second row's dt; every later one its own. One row of lookahead.
+  std::optional<mhd::HipPathSample> current = reader.next();
+  replay_tick(scene, state, *previous, current ? current->t_s - previous->t_s : kSingleRowDt_s, out.stream(), totals);
+  while (current) {
+    replay_tick(scene, state, *current, current->t_s - previous->t_s, out.stream(), totals);
+    previous = current;
+    current = reader.next();
+  }
+  if (reader.error()) {
+    print_error(*reader.error());
+    return 1;  // `out` removes its temporary file
+  }
+  if (!out.commit()) {
+    fmt::print(stderr, "mhd proxy-replay: error: {}\n", out.error());
+    return 1;
+  }
+  fmt::print("replayed {} ticks of {} on {}: {} in contact, max force {:.3f} N, {} out of work budget, "
+             "slowest step {:.1f} us\n",
+             totals.ticks, opt.hip_csv, opt.scene, totals.contact_ticks, totals.max_force_N,
+             totals.budget_exhausted_ticks, totals.max_step_us);
+  fmt::print("wrote {}\n", opt.out);
+  return 0;
+}
+
+}  // namespace
+
+void add_proxy_replay_command(CLI::App& app) {
+  auto opt = std::make_shared<ProxyReplayOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "proxy-replay",
+      "Replay a HIP path (CSV t_s,x_m,y_m,z_m, world frame) through the scene's proxy; write a row per tick");
+  cmd->add_option("scene", opt->scene, "Scene XML file")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--hip-csv", opt->hip_csv, "HIP path: header t_s,x_m,y_m,z_m, one row per tick, time increasing")
+      ->required();
+  cmd->add_option("--out", opt->out,
+                  "Ticks CSV to write (t_s, HIP, proxy, force, contact, planes, step_us, budget_exhausted)")
+      ->required();
+  cmd->add_flag("--no-cache", opt->no_cache, "Build every BVH instead of using the on-disk cache");
+  cmd->callback([opt] { mhd::cli::exit_with(proxy_replay(*opt)); });
+}
