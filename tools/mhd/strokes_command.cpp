@@ -1,6 +1,7 @@
 // `mhd strokes SCENE`: loads a scene and drives the scripted stroke set (the ANCHORS.md
 // protocol) through the god-object proxy at the haptic rate, without plugins or threads,
-// then prints contacts, forces, update timings and an exact pop-through count (CGAL).
+// then prints contacts, forces, update timings, an exact pop-through count (CGAL) and
+// an exact follow-failure count (the proxy did not go to a HIP it could reach).
 // The rendering check behind the figures in docs/benchmarks.md; `mhd run` is the server.
 
 #include "strokes_command.h"
@@ -110,8 +111,9 @@ int run(const RunOptions& opt) {
   fmt::print("proxy update in contact: median {:.2f} us, p99 {:.2f} us, p99.9 {:.2f} us, max {:.1f} us\n",
              r.contact_updates.median_us, r.contact_updates.p99_us, r.contact_updates.p999_us,
              r.contact_updates.max_us);
-  fmt::print("pop-throughs: {} proxy moves touched the surface, {} ticks ended inside (exact check)\n",
-             r.pop_throughs, r.ticks_inside);
+  fmt::print("pop-throughs: {} proxy moves touched the surface, {} ticks ended inside (exact check); "
+             "follow failures: {} ticks (largest free-space gap {:.3f} mm)\n",
+             r.pop_throughs, r.ticks_inside, r.follow_failures, 1e3 * r.max_free_gap_m);
   return r.pop_throughs == 0 && r.ticks_inside == 0 ? 0 : 1;
 }
 

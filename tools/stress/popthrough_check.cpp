@@ -8,8 +8,9 @@
 namespace mhd::stress {
 
 PopThroughChecker::PopThroughChecker(const CollisionWorld& world, const verify::SurfaceCrossingOracle& oracle,
-                                     EngineContainment engine, int engine_stride)
-    : world_(world), oracle_(oracle), engine_(engine), engine_stride_(std::max(engine_stride, 1)) {
+                                     EngineContainment engine, int engine_stride,
+                                     const verify::FollowTolerance& follow)
+    : world_(world), oracle_(oracle), engine_(engine), follow_(follow), engine_stride_(std::max(engine_stride, 1)) {
   for (int i = 0; i < world.object_count(); ++i) {
     const std::shared_ptr<const MeshBvh> shape(std::shared_ptr<const MeshBvh>{}, &world.shape(i));
     if (oracle.is_closed(i)) closed_world_.add_object(shape, world.pose(i));
@@ -47,10 +48,17 @@ TickVerdict PopThroughChecker::check_reset(const Eigen::Vector3d& p_W) {
   return v;
 }
 
-TickVerdict PopThroughChecker::check_tick(std::span<const Eigen::Vector3d> path_W, const Eigen::Vector3d& proxy_W,
+TickVerdict PopThroughChecker::check_tick(const Eigen::Vector3d& hip_W, std::span<const Eigen::Vector3d> path_W,
+                                          const Eigen::Vector3d& proxy_W, const Eigen::Vector3d& force_W,
                                           bool in_contact) {
   TickVerdict v;
   if (!started_) (void)check_reset(path_W.empty() ? proxy_W : path_W.front());
+  const verify::FollowVerdict follow = verify::check_follow(oracle_, previous_, hip_W, proxy_W, force_W, follow_);
+  v.follow_failed = follow.failed();
+  v.follow_kind = follow.kind;
+  v.follow_gap_m = follow.gap_m;
+  v.hip_in_free_view = follow.hip_in_free_view;
+  v.force_N = follow.force_N;
   Eigen::Vector3d at = previous_;
   const int n = static_cast<int>(path_W.size());
   for (int i = 0; i < n; ++i) {

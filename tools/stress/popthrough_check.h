@@ -5,8 +5,11 @@
 // or on a closed object ("inside"); the engine's own point containment gives a second,
 // independent opinion on "inside". It judges positions only, so anything that moves a
 // point can be checked: the real proxy, or a broken stand-in such as the HIP itself.
+// It also judges the other half of the contract, "otherwise go to the hand", with the
+// shared definition of a follow failure (verification/follow_check.h).
 
 #include "collision/collision_world.h"
+#include "verification/follow_check.h"
 #include "verification/surface_crossing_oracle.h"
 
 #include <Eigen/Core>
@@ -44,8 +47,18 @@ struct TickVerdict {
   Eigen::Vector3d leg_to_W = Eigen::Vector3d::Zero();
   std::optional<verify::OracleHit> hit;
 
+  /// The proxy did not go to a HIP it could reach (F1 or F2 of follow_check.h).
+  bool follow_failed = false;
+  verify::FollowFailureKind follow_kind = verify::FollowFailureKind::None;
+  /// |proxy - HIP| at the end of the tick, and whether the segment between them was free.
+  double follow_gap_m = 0.0;
+  bool hip_in_free_view = true;
+  double force_N = 0.0;
+
   /// A pop-through: crossed, inside, or the engine saw the proxy inside.
-  [[nodiscard]] bool failed() const { return crossed || inside || inside_engine; }
+  [[nodiscard]] bool popped_through() const { return crossed || inside || inside_engine; }
+  /// Either half of the contract broken.
+  [[nodiscard]] bool failed() const { return popped_through() || follow_failed; }
 };
 
 class PopThroughChecker {
@@ -54,15 +67,18 @@ class PopThroughChecker {
   /// world's poses must not change while the checker is used.
   /// The engine's test is asked on every `engine_stride`-th tick its policy allows.
   PopThroughChecker(const CollisionWorld& world, const verify::SurfaceCrossingOracle& oracle,
-                    EngineContainment engine = EngineContainment::Contact, int engine_stride = 1);
+                    EngineContainment engine = EngineContainment::Contact, int engine_stride = 1,
+                    const verify::FollowTolerance& follow = {});
 
   /// The proxy was (re)started at p_W: checks the point itself (touching counts) and
   /// makes it the previous position.
   TickVerdict check_reset(const Eigen::Vector3d& p_W);
 
-  /// One tick: the proxy moved from the previous position through path_W (may be
-  /// empty) to proxy_W. Checks every leg, then where it ended. Precondition: a reset.
-  TickVerdict check_tick(std::span<const Eigen::Vector3d> path_W, const Eigen::Vector3d& proxy_W, bool in_contact);
+  /// One tick given hip_W: the proxy moved from the previous position through path_W
+  /// (may be empty) to proxy_W and rendered force_W. Checks every leg, where it ended,
+  /// and whether it followed the HIP. Precondition: a reset.
+  TickVerdict check_tick(const Eigen::Vector3d& hip_W, std::span<const Eigen::Vector3d> path_W,
+                         const Eigen::Vector3d& proxy_W, const Eigen::Vector3d& force_W, bool in_contact);
 
   [[nodiscard]] const Eigen::Vector3d& previous() const { return previous_; }
 
@@ -74,6 +90,7 @@ class PopThroughChecker {
   const verify::SurfaceCrossingOracle& oracle_;
   CollisionWorld closed_world_;  ///< the closed objects of world_, sharing its BVHs
   EngineContainment engine_;
+  verify::FollowTolerance follow_;
   int engine_stride_ = 1;
   int engine_countdown_ = 0;
   Eigen::Vector3d previous_ = Eigen::Vector3d::Zero();

@@ -2,8 +2,11 @@
 // directions, grazing angles, edges, creases and corners) at every object of every scene
 // in scenes/ and of meshes named on the command line, through the engine's god-object
 // proxy, and counts proxies found inside or behind a surface (exact CGAL oracle, plus
-// the engine's own containment test). Long-running; never run by ctest. Exit status 1
-// on any pop-through, 2 on bad input. See docs/reliability/pop_through.md.
+// the engine's own containment test) and follow failures: ticks where the proxy did not
+// go to a HIP it could reach (verification/follow_check.h). A share of the strokes are
+// continuous tours with free-space transits round the object. Long-running; never run
+// by ctest. Exit status 1 on any pop-through or follow failure, 2 on bad input. See
+// docs/reliability/pop_through.md.
 
 #include "scene_compiler/scene_compiler.h"
 #include "scene_xml/scene_reader.h"
@@ -42,6 +45,7 @@ struct Options {
   double rate_hz = 1000.0;
   std::size_t chain = 8;
   std::string engine = "auto";
+  double follow_tolerance_m = mhd::verify::kFollowTolerance_m;
   std::optional<std::size_t> replay;
   bool no_cache = false;
 };
@@ -106,8 +110,10 @@ std::string reproducer(const Source& src, const Options& opt, const std::string&
   } else {
     line += src.file;
   }
-  return line + fmt::format(" --object {} --seed {} --chain {} --max-speed-mps {} --rate-hz {} --replay-stroke {}",
-                            object, opt.seed, opt.chain, opt.max_speed_mps, opt.rate_hz, stroke);
+  return line + fmt::format(
+                    " --object {} --seed {} --chain {} --max-speed-mps {} --rate-hz {} --follow-tolerance-m {} "
+                    "--replay-stroke {}",
+                    object, opt.seed, opt.chain, opt.max_speed_mps, opt.rate_hz, opt.follow_tolerance_m, stroke);
 }
 
 int run(const Options& opt) {
@@ -119,18 +125,21 @@ int run(const Options& opt) {
   settings.chain_length = opt.chain;
   settings.stroke.max_speed_m_per_s = opt.max_speed_mps;
   settings.stroke.rate_Hz = opt.rate_hz;
+  settings.follow_tolerance_m = opt.follow_tolerance_m;
 
   bool input_error = false;
   bool any_failure = false;
   std::size_t objects_run = 0;
   std::vector<std::string> reproducers;
   if (!opt.replay) {
-    fmt::print("strokes per object: {}, seed {}, up to {} m/s at {} Hz, chains of {}, engine containment: {}\n\n",
-               opt.strokes, opt.seed, opt.max_speed_mps, opt.rate_hz, opt.chain, opt.engine);
+    fmt::print("strokes per object: {}, seed {}, up to {} m/s at {} Hz, chains of {}, engine containment: {}, "
+               "follow tolerance {} mm\n\n",
+               opt.strokes, opt.seed, opt.max_speed_mps, opt.rate_hz, opt.chain, opt.engine,
+               1e3 * opt.follow_tolerance_m);
     fmt::print("| source | object | triangles | closed | strokes | ticks | contact ticks | inside | crossings | "
-               "engine inside / asked | worst penetration mm | max HIP depth mm | step µs median / p99 / p99.9 / max | "
-               "time s |\n");
-    fmt::print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+               "follow failures | max free-space gap mm | engine inside / asked | worst penetration mm | "
+               "max HIP depth mm | step µs median / p99 / p99.9 / max | time s |\n");
+    fmt::print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     std::fflush(stdout);
   }
   for (const Source& src : collect_sources(opt)) {
@@ -172,18 +181,23 @@ int run(const Options& opt) {
       ++objects_run;
       if (opt.replay) {
         const auto r = mhd::stress::replay_stroke(scene, oracle, object, key, settings, *opt.replay, stdout);
+        const bool failed = !r.failures.empty() && r.failures.back().stroke == *opt.replay;
+        const auto& v = failed ? r.failures.back().verdict : mhd::stress::TickVerdict{};
         fmt::print("{} / {}: stroke {}: {}\n", src.file, name, *opt.replay,
-                   r.failures.empty() || r.failures.back().stroke != *opt.replay ? "clean" : "POP-THROUGH");
+                   !failed                ? "clean"
+                   : v.popped_through()   ? "POP-THROUGH"
+                                          : "FOLLOW FAILURE");
         if (!r.clean()) any_failure = true;
         continue;
       }
       const auto r = mhd::stress::stress_object(scene, oracle, object, key, settings);
       fmt::print(
-          "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} / {} | {:.6f} | {:.1f} | {:.2g} / {:.2g} / {:.2g} / {:.0f} | "
-          "{:.1f} |\n",
+          "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {:.3f} | {} / {} | {:.6f} | {:.1f} | "
+          "{:.2g} / {:.2g} / {:.2g} / {:.0f} | {:.1f} |\n",
           src.file, name, r.triangles, r.closed ? "yes" : "no", r.strokes, r.ticks, r.contact_ticks, r.inside_ticks,
-          r.crossing_ticks, r.inside_engine_ticks, r.engine_checks, 1e3 * r.worst_penetration_m, 1e3 * r.max_hip_depth_m,
-          r.step_median_us, r.step_p99_us, r.step_p999_us, r.step_max_us, r.seconds);
+          r.crossing_ticks, r.follow_failure_ticks, 1e3 * r.max_free_gap_m, r.inside_engine_ticks, r.engine_checks,
+          1e3 * r.worst_penetration_m, 1e3 * r.max_hip_depth_m, r.step_median_us, r.step_p99_us, r.step_p999_us,
+          r.step_max_us, r.seconds);
       std::fflush(stdout);
       fmt::print(stderr, "  {} / {}: strokes by kind:", src.file, name);
       for (int k = 0; k < mhd::stress::kStrokeKindCount; ++k) {
@@ -192,16 +206,21 @@ int run(const Options& opt) {
       }
       fmt::print(stderr,
                  "; {} proxy resets; features: {} ridges/rims, {} creases, {} corners; up to {} planes; {} start "
-                 "redraws\n",
-                 r.resets, r.ridges, r.creases, r.corners, r.max_plane_count, r.start_redraws);
+                 "redraws; follow failures: {} ticks ({} stuck), longest {} ticks, force {:.3f} N at the largest "
+                 "free-space gap\n",
+                 r.resets, r.ridges, r.creases, r.corners, r.max_plane_count, r.start_redraws, r.follow_failure_ticks,
+                 r.stuck_ticks, r.longest_follow_failure_ticks, r.force_at_max_free_gap_N);
       if (!r.clean()) {
         any_failure = true;
         for (const auto& f : r.failures) {
           reproducers.push_back(fmt::format(
-              "{} / {}: stroke {} ({}) tick {}: {}{}{} depth {:.3e} m\n  reproduce: {}", src.file, name, f.stroke,
-              to_string(f.kind), f.tick, f.verdict.crossed ? "crossed " : "", f.verdict.inside ? "inside " : "",
-              f.verdict.inside_engine ? "engine-inside " : "", f.verdict.penetration_m,
-              reproducer(src, opt, name, f.stroke)));
+              "{} / {}: stroke {} ({}) tick {}: {}{}{}{} depth {:.3e} m, proxy {:.3f} mm from the HIP{}\n"
+              "  reproduce: {}",
+              src.file, name, f.stroke, to_string(f.kind), f.tick, f.verdict.crossed ? "crossed " : "",
+              f.verdict.inside ? "inside " : "", f.verdict.inside_engine ? "engine-inside " : "",
+              f.verdict.follow_failed ? fmt::format("follow-{} ", to_string(f.verdict.follow_kind)) : std::string(),
+              f.verdict.penetration_m, 1e3 * f.verdict.follow_gap_m,
+              f.verdict.hip_in_free_view ? " (in free view)" : "", reproducer(src, opt, name, f.stroke)));
         }
         if (r.failing_strokes > r.failures.size()) {
           reproducers.push_back(fmt::format("{} / {}: ... and {} more failing strokes", src.file, name,
@@ -214,8 +233,10 @@ int run(const Options& opt) {
     fmt::print("\n{} objects, {:.1f} s in all. ", objects_run,
                std::chrono::duration<double>(Clock::now() - t_start).count());
     fmt::print("{}\n", any_failure ? "FAILURES FOUND (crossed, inside: a pop-through; engine-inside alone: the engine's "
-                                     "containment test called a proxy inside that the exact test found outside):"
-                                   : "No pop-through.");
+                                     "containment test called a proxy inside that the exact test found outside; "
+                                     "follow-stuck / follow-free-space force: the proxy did not go to a HIP it "
+                                     "could reach):"
+                                   : "No pop-through, no follow failure.");
     for (const auto& line : reproducers) fmt::print("{}\n", line);
   }
   if (objects_run == 0) {
@@ -248,6 +269,9 @@ int main(int argc, char** argv) {
                  "When to ask the engine's point_inside_surface too: off, contact (ticks in contact), every, "
                  "auto (contact, every n-th tick with n = scene triangles / 5000, off over 200k triangles)")
       ->check(CLI::IsMember({"off", "contact", "every", "auto"}));
+  app.add_option("--follow-tolerance-m", opt.follow_tolerance_m,
+                 "Gap a proxy that should be at the HIP may keep (and its spring force at the stiffest material)")
+      ->check(CLI::PositiveNumber);
   app.add_option("--replay-stroke", opt.replay, "Rerun one stroke (and its chain) and print every tick");
   app.add_flag("--no-cache", opt.no_cache, "Build every BVH instead of using the on-disk cache");
   CLI11_PARSE(app, argc, argv);

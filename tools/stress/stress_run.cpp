@@ -61,16 +61,20 @@ ObjectStressReport run_range(const CompiledScene& scene, const verify::SurfaceCr
   r.creases = surface.creases.size();
   r.corners = surface.corners.size();
   const StressStrokeGenerator generator(scene.world, oracle, surface, settings.stroke);
-  PopThroughChecker checker(scene.world, oracle, settings.engine, settings.engine_stride);
+  PopThroughChecker checker(scene.world, oracle, settings.engine, settings.engine_stride,
+                            verify::follow_tolerance(scene.materials, settings.follow_tolerance_m));
   const double dt_s = 1.0 / settings.stroke.rate_Hz;
   const std::size_t chain = std::max<std::size_t>(settings.chain_length, 1);
 
   ProxyState state;
   TimeHistogram step_times;
   std::optional<Eigen::Vector3d> last_hip;
+  std::size_t follow_run = 0;  // consecutive follow-failure ticks so far
   for (std::size_t i = first; i < last; ++i) {
     if (i % chain == 0 || i == first) last_hip.reset();
-    const StressStroke stroke = generator.make(settings.seed, object_key, i, last_hip);
+    const bool tour = generator.is_tour_chain(settings.seed, object_key, i - i % chain);
+    const StressStroke stroke = tour ? generator.make_tour(settings.seed, object_key, i, last_hip)
+                                     : generator.make(settings.seed, object_key, i, last_hip);
     const bool reset = !stroke.continues;
     if (reset) ++r.resets;
     ++r.strokes;
@@ -85,8 +89,15 @@ ObjectStressReport run_range(const CompiledScene& scene, const verify::SurfaceCr
       print_vec(trace.out, stroke.start_W);
       fmt::print(trace.out, "  direction ");
       print_vec(trace.out, stroke.direction_W);
+      if (stroke.kind == StrokeKind::Tour) {
+        fmt::print(trace.out, "\n  push ");
+        print_vec(trace.out, stroke.push_W);
+        fmt::print(trace.out, "  retract ");
+        print_vec(trace.out, stroke.retract_W);
+        fmt::print(trace.out, "  transit drawn {} times", stroke.transit_attempts);
+      }
       fmt::print(trace.out, "\n  tick  hip_W                                    proxy_W                                  "
-                            "contact planes path  crossed inside engine depth_m\n");
+                            "contact planes path  crossed inside engine depth_m   follow gap_mm free force_N\n");
     }
     std::optional<StrokeFailure> failure;
     auto note = [&](std::size_t tick, const Eigen::Vector3d& hip, const Eigen::Vector3d& proxy, const TickVerdict& v) {
@@ -95,9 +106,18 @@ ObjectStressReport run_range(const CompiledScene& scene, const verify::SurfaceCr
       if (v.engine_checked) ++r.engine_checks;
       if (v.inside_engine) ++r.inside_engine_ticks;
       r.worst_penetration_m = std::max(r.worst_penetration_m, v.penetration_m);
+      follow_run = v.follow_failed ? follow_run + 1 : 0;
+      if (v.follow_failed) ++r.follow_failure_ticks;
+      if (v.follow_kind == verify::FollowFailureKind::Stuck) ++r.stuck_ticks;
+      r.longest_follow_failure_ticks = std::max(r.longest_follow_failure_ticks, follow_run);
+      if (v.hip_in_free_view && v.follow_gap_m > r.max_free_gap_m) {
+        r.max_free_gap_m = v.follow_gap_m;
+        r.force_at_max_free_gap_N = v.force_N;
+      }
       if (v.failed() && !failure) failure = StrokeFailure{i, stroke.kind, tick, hip, proxy, v};
     };
     if (reset) {
+      follow_run = 0;
       reset_proxy(state, stroke.hip_W.front());
       note(0, stroke.hip_W.front(), state.proxy_W, checker.check_reset(state.proxy_W));
     }
@@ -109,7 +129,7 @@ ObjectStressReport run_range(const CompiledScene& scene, const verify::SurfaceCr
       if (settings.tamper) settings.tamper(hip, state, out);
       const std::span<const Eigen::Vector3d> path(state.path_W.data(),
                                                   static_cast<std::size_t>(std::clamp(state.path_points, 0, kMaxProxyPath)));
-      const TickVerdict v = checker.check_tick(path, out.proxy_W, out.in_contact);
+      const TickVerdict v = checker.check_tick(hip, path, out.proxy_W, out.force_W, out.in_contact);
       ++r.ticks;
       if (out.in_contact) {
         ++r.contact_ticks;
@@ -122,9 +142,14 @@ ObjectStressReport run_range(const CompiledScene& scene, const verify::SurfaceCr
         print_vec(trace.out, hip);
         fmt::print(trace.out, "  ");
         print_vec(trace.out, out.proxy_W);
-        fmt::print(trace.out, "  {:7} {:6} {:4}  {:7} {:6} {:6} {:.3e}\n", out.in_contact ? "yes" : "no",
-                   out.plane_count, state.path_points, v.crossed ? "YES" : "no", v.inside ? "YES" : "no",
-                   !v.engine_checked ? "-" : (v.inside_engine ? "YES" : "no"), v.penetration_m);
+        fmt::print(trace.out, "  {:7} {:6} {:4}  {:7} {:6} {:6} {:.3e} {:>6} {:9.4f} {:4} {:7.3f}\n",
+                   out.in_contact ? "yes" : "no", out.plane_count, state.path_points, v.crossed ? "YES" : "no",
+                   v.inside ? "YES" : "no", !v.engine_checked ? "-" : (v.inside_engine ? "YES" : "no"),
+                   v.penetration_m,
+                   !v.follow_failed                                     ? "ok"
+                   : v.follow_kind == verify::FollowFailureKind::Stuck ? "STUCK"
+                                                                        : "FORCE",
+                   1e3 * v.follow_gap_m, v.hip_in_free_view ? "yes" : "no", v.force_N);
         if (v.crossed) {
           fmt::print(trace.out, "        leg {} from ", v.leg);
           print_vec(trace.out, v.leg_from_W);

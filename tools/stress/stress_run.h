@@ -5,7 +5,8 @@
 // materials and proxy settings), and checks every tick (popthrough_check.h).
 // Strokes come in chains: the first stroke of a chain resets the proxy, the others
 // continue from where the previous one left the HIP (joined at full speed) where their
-// start is near enough, else they reset too.
+// start is near enough, else they reset too. A share of the chains are tours: every
+// stroke of the chain a Tour, one continuous path (tour_strokes.h).
 
 #include "scene_compiler/compiled_scene.h"
 #include "stress/popthrough_check.h"
@@ -29,6 +30,8 @@ struct StressSettings {
   StressStrokeParams stroke;
   EngineContainment engine = EngineContainment::Contact;
   int engine_stride = 1;  ///< ask the engine on every n-th tick the policy allows
+  /// Follow failures allow this gap, and its spring force at the scene's stiffest material.
+  double follow_tolerance_m = verify::kFollowTolerance_m;
   /// Failing strokes kept in the report (all are counted).
   std::size_t max_failures_kept = 10;
   /// For the checker's own tests only: called after every step_proxy to break the
@@ -60,7 +63,14 @@ struct ObjectStressReport {
   std::size_t crossing_ticks = 0;       ///< exact: a leg of the proxy's motion touched the surface
   std::size_t engine_checks = 0;        ///< ticks on which point_inside_surface was asked
   std::size_t inside_engine_ticks = 0;  ///< ... and said inside
-  std::size_t failing_strokes = 0;
+  /// Exact: the proxy did not go to a HIP it could reach (F1 or F2, follow_check.h) ...
+  std::size_t follow_failure_ticks = 0;
+  std::size_t stuck_ticks = 0;                ///< ... of which F1 (the straight way was free)
+  std::size_t longest_follow_failure_ticks = 0;  ///< longest run of consecutive such ticks
+  /// Largest |proxy - HIP| on a tick whose segment proxy -> HIP was free, and the force then.
+  double max_free_gap_m = 0.0;
+  double force_at_max_free_gap_N = 0.0;
+  std::size_t failing_strokes = 0;  ///< a pop-through or a follow failure
   std::size_t failing_strokes_by_kind[kStrokeKindCount] = {};
   double worst_penetration_m = 0.0;  ///< of the proxy (0 for a clean run)
   double max_hip_depth_m = 0.0;      ///< largest HIP-proxy distance in contact: how hard strokes pushed

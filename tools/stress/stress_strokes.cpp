@@ -1,6 +1,7 @@
 #include "stress/stress_strokes.h"
 
 #include "collision/point_containment.h"
+#include "stress/stroke_random.h"
 #include "verification/stroke_set.h"
 
 #include <algorithm>
@@ -16,30 +17,6 @@ namespace mhd::stress {
 namespace {
 
 using Eigen::Vector3d;
-
-std::uint64_t splitmix64(std::uint64_t x) {
-  x += 0x9e3779b97f4a7c15ULL;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
-
-double uniform_in(std::mt19937_64& rng, double lo, double hi) { return lo + (hi - lo) * verify::uniform01(rng); }
-
-Vector3d random_unit(std::mt19937_64& rng) {
-  // Uniform on the sphere: z uniform in [-1, 1], azimuth uniform.
-  const double z = uniform_in(rng, -1.0, 1.0);
-  const double phi = uniform_in(rng, 0.0, 2.0 * std::numbers::pi);
-  const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-  return {r * std::cos(phi), r * std::sin(phi), z};
-}
-
-// A unit vector perpendicular to n (n unit).
-Vector3d any_perpendicular(const Vector3d& n) {
-  Eigen::Index axis = 0;
-  n.cwiseAbs().minCoeff(&axis);
-  return n.cross(Vector3d::Unit(axis)).normalized();
-}
 
 struct PositionHash {
   std::size_t operator()(const Vector3d& p) const {
@@ -66,6 +43,7 @@ std::string_view to_string(StrokeKind kind) {
     case StrokeKind::Crease: return "crease";
     case StrokeKind::Vertex: return "vertex";
     case StrokeKind::Random: return "random";
+    case StrokeKind::Tour: return "tour";
   }
   return "?";
 }
@@ -150,7 +128,7 @@ ObjectSurface make_object_surface(const CollisionWorld& world, int object, bool 
       // Open rim: free space lies beyond the edge, away from the triangle.
       Vector3d out = e.cross(n1);
       if (out.dot(welded[edges[i].opposite] - a) > 0.0) out = -out;
-      s.ridges.push_back(SurfaceFeature{a, b, out.normalized()});
+      s.ridges.push_back(SurfaceFeature{a, b, out.normalized(), true});
       feature = true;
     } else if (j - i == 2) {
       const Vector3d& n2 = s.normals_W[edges[i + 1].triangle];
@@ -181,6 +159,7 @@ StressStrokeGenerator::StressStrokeGenerator(const CollisionWorld& world, const 
   if (surface_.cumulative_area.empty() || !(surface_.cumulative_area.back() > 0.0)) {
     throw std::runtime_error("StressStrokeGenerator: object " + std::to_string(surface.object) + " has no area");
   }
+  for (const SurfaceFeature& f : surface_.ridges) (f.rim ? rims_ : convex_ridges_).push_back(f);
 }
 
 bool StressStrokeGenerator::start_is_free(const Vector3d& p_W) const {
@@ -188,6 +167,13 @@ bool StressStrokeGenerator::start_is_free(const Vector3d& p_W) const {
   if (oracle_.distance_to_surface(p_W) < params_.min_start_clearance_m) return false;
   if (oracle_.point_inside_closed_mesh(p_W)) return false;
   return !point_inside_surface(world_, p_W);
+}
+
+bool StressStrokeGenerator::is_tour_chain(std::uint64_t seed, std::uint64_t object_key, std::size_t chain_first) const {
+  // Its own stream (salted), so the strokes' streams are not disturbed.
+  std::mt19937_64 rng(splitmix64(seed ^ splitmix64(object_key ^ splitmix64(static_cast<std::uint64_t>(chain_first) ^
+                                                                             0x746f7572ULL))));
+  return verify::uniform01(rng) < params_.tour.chain_fraction;
 }
 
 StressStroke StressStrokeGenerator::make(std::uint64_t seed, std::uint64_t object_key, std::size_t index,
@@ -209,23 +195,7 @@ StressStroke StressStrokeGenerator::make(std::uint64_t seed, std::uint64_t objec
   if (kind == StrokeKind::Crease && s.creases.empty()) kind = StrokeKind::Poke;
   if (kind == StrokeKind::Ridge && s.ridges.empty()) kind = StrokeKind::Graze;
 
-  auto surface_point = [&](Vector3d& p, Vector3d& n) {
-    const double u = verify::uniform01(rng) * s.cumulative_area.back();
-    auto it = std::upper_bound(s.cumulative_area.begin(), s.cumulative_area.end(), u);
-    if (it == s.cumulative_area.end()) --it;
-    const auto t = static_cast<std::size_t>(it - s.cumulative_area.begin());
-    double r1 = verify::uniform01(rng);
-    double r2 = verify::uniform01(rng);
-    if (r1 + r2 > 1.0) {
-      r1 = 1.0 - r1;
-      r2 = 1.0 - r2;
-    }
-    const auto& v = s.triangles_W[t];
-    p = v[0] + r1 * (v[1] - v[0]) + r2 * (v[2] - v[0]);
-    n = s.normals_W[t];
-    // Open surfaces have two sides to touch.
-    if (!s.closed && verify::uniform01(rng) < 0.5) n = -n;
-  };
+  auto surface_point = [&](Vector3d& p, Vector3d& n) { draw_surface_point(s, rng, p, n); };
 
   struct Draw {
     Vector3d start = Vector3d::Zero();
@@ -282,9 +252,7 @@ StressStroke StressStrokeGenerator::make(std::uint64_t seed, std::uint64_t objec
         const std::vector<SurfaceFeature>& list = k == StrokeKind::Ridge    ? s.ridges
                                                   : k == StrokeKind::Crease ? s.creases
                                                                             : s.corners;
-        const auto i = std::min(list.size() - 1,
-                                static_cast<std::size_t>(verify::uniform01(rng) * static_cast<double>(list.size())));
-        const SurfaceFeature& f = list[i];
+        const SurfaceFeature& f = draw_feature(list, rng);
         const Vector3d q = f.a_W + verify::uniform01(rng) * (f.b_W - f.a_W);
         if (k == StrokeKind::Vertex) {
           d = (-f.out_W + uniform_in(rng, 0.0, 1.2) * random_unit(rng)).normalized();
@@ -299,7 +267,8 @@ StressStroke StressStrokeGenerator::make(std::uint64_t seed, std::uint64_t objec
         g.corners = {start, start + length * d};
         break;
       }
-      case StrokeKind::Random: {
+      case StrokeKind::Random:
+      case StrokeKind::Tour: {  // tours are made by make_tour(); never drawn here
         const Vector3d lo = s.bounds_W.min() - Vector3d::Constant(params_.random_margin_m);
         const Vector3d hi = s.bounds_W.max() + Vector3d::Constant(params_.random_margin_m);
         for (int a = 0; a < 3; ++a) start[a] = uniform_in(rng, lo[a], hi[a]);

@@ -71,6 +71,22 @@ std::size_t count_crossings(const SurfaceCrossingOracle& oracle, const TickRecor
   return find_crossings(oracle, records).size();
 }
 
+FollowCheck find_follow_failures(const SurfaceCrossingOracle& oracle, const TickRecord& records,
+                                 const FollowTolerance& tolerance) {
+  FollowCheck check;
+  for (std::size_t k = 0; k < records.size(); ++k) {
+    const TickSample& s = records[k];
+    const Eigen::Vector3d previous = k > 0 ? records[k - 1].proxy_W : (s.path_points > 0 ? s.path_W[0] : s.proxy_W);
+    const FollowVerdict v = check_follow(oracle, previous, s.hip_W, s.proxy_W, s.force_W, tolerance);
+    if (v.hip_in_free_view && v.gap_m > check.max_free_gap_m) {
+      check.max_free_gap_m = v.gap_m;
+      check.force_at_max_free_gap_N = v.force_N;
+    }
+    if (v.failed()) check.failures.push_back(FollowFailure{k, v, previous, s.hip_W, s.proxy_W});
+  }
+  return check;
+}
+
 std::size_t count_ticks_inside(const SurfaceCrossingOracle& oracle, const TickRecord& records) {
   std::size_t inside = 0;
   for (const TickSample& s : records) {

@@ -5,6 +5,7 @@
 
 #include "proxy/god_object.h"
 #include "scene_compiler/compiled_scene.h"
+#include "verification/follow_check.h"
 #include "verification/surface_crossing_oracle.h"
 
 #include <Eigen/Core>
@@ -67,5 +68,28 @@ struct Crossing {
 /// Ticks that ended with the proxy inside or on a closed object (ANCHORS.md's "ended
 /// inside the surface"). Open objects have no inside and never count.
 [[nodiscard]] std::size_t count_ticks_inside(const SurfaceCrossingOracle& oracle, const TickRecord& records);
+
+/// A tick that broke "otherwise go to the hand" (follow_check.h).
+struct FollowFailure {
+  std::size_t tick = 0;
+  FollowVerdict verdict;
+  Eigen::Vector3d previous_proxy_W = Eigen::Vector3d::Zero();
+  Eigen::Vector3d hip_W = Eigen::Vector3d::Zero();
+  Eigen::Vector3d proxy_W = Eigen::Vector3d::Zero();
+};
+
+/// Every tick's follow verdict, summed up.
+struct FollowCheck {
+  std::vector<FollowFailure> failures;
+  /// The largest |proxy - HIP| on a tick whose segment proxy -> HIP was free, and the
+  /// force on that tick (issue 13: no such gap over 10 mm).
+  double max_free_gap_m = 0.0;
+  double force_at_max_free_gap_N = 0.0;
+};
+
+/// Checks every tick with check_follow(); the previous proxy of the first tick is where
+/// it was reset (its path_W[0], as find_crossings()).
+[[nodiscard]] FollowCheck find_follow_failures(const SurfaceCrossingOracle& oracle, const TickRecord& records,
+                                               const FollowTolerance& tolerance);
 
 }  // namespace mhd::verify

@@ -37,6 +37,7 @@ StrokeRunReport run_strokes(const CompiledScene& scene, const SurfaceCrossingOra
   const auto objects = static_cast<std::size_t>(scene.world.object_count());
   report.contact_ticks_by_object.assign(objects, 0);
   report.force_sum_by_object_N.assign(objects, 0.0);
+  const FollowTolerance follow = follow_tolerance(scene.materials);
   TickRecord record;
   for (const Stroke& stroke : strokes.strokes) {
     if (stroke.hip_W.empty()) continue;
@@ -64,10 +65,15 @@ StrokeRunReport run_strokes(const CompiledScene& scene, const SurfaceCrossingOra
       if (out.force_clamped) ++report.clamped_ticks;
       report.max_force_N = std::max(report.max_force_N, out.force_W.norm());
       report.max_plane_count = std::max(report.max_plane_count, out.plane_count);
+      if (out.budget_exhausted) ++report.budget_exhausted_ticks;
+      report.max_sweeps = std::max(report.max_sweeps, out.sweeps);
       record.push_back(make_tick_sample(hip, out, state));
     }
     report.pop_throughs += count_crossings(oracle, record);
     report.ticks_inside += count_ticks_inside(oracle, record);
+    const FollowCheck follow_check = find_follow_failures(oracle, record, follow);
+    report.follow_failures += follow_check.failures.size();
+    report.max_free_gap_m = std::max(report.max_free_gap_m, follow_check.max_free_gap_m);
   }
   report.mean_contact_force_N =
       report.contact_ticks > 0 ? contact_force_sum / static_cast<double>(report.contact_ticks) : 0.0;

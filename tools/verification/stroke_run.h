@@ -28,12 +28,18 @@ struct StrokeRunReport {
   double max_force_N = 0.0;
   double mean_contact_force_N = 0.0;
   LatencySummary contact_updates;  ///< ticks that ended in contact
-  LatencySummary all_updates;
+  LatencySummary all_updates;  ///< every tick, free-space transit included
+  std::size_t budget_exhausted_ticks = 0;  ///< ticks whose proxy hit its work budget
+  int max_sweeps = 0;                      ///< most sweeps one tick made
   /// Contact ticks and summed force magnitude per object (indexed like the world).
   std::vector<std::size_t> contact_ticks_by_object;
   std::vector<double> force_sum_by_object_N;
   std::size_t pop_throughs = 0;  ///< proxy moves that touched the surface (exact check)
   std::size_t ticks_inside = 0;  ///< ticks that ended inside a closed object
+  /// Ticks where the proxy did not go to a HIP it could reach (follow_check.h, exact,
+  /// tolerance kFollowTolerance_m at the scene's stiffest material).
+  std::size_t follow_failures = 0;
+  double max_free_gap_m = 0.0;  ///< largest |proxy - HIP| with the segment between them free
 };
 
 /// Steps the proxy along every stroke (reset at each stroke's first sample).

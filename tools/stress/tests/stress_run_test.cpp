@@ -1,7 +1,10 @@
-// The stress run end to end on small compiled scenes: the real proxy comes out clean,
-// the same run with the proxy replaced by the HIP does not, and its reproducer replays
-// the failure. Plus the stroke generator's promises (free starts, speed, determinism)
-// and feature finding.
+// The stress run end to end on small compiled scenes: the real proxy does not pop
+// through, the same run with the proxy replaced by the HIP does, and its reproducer
+// replays the failure; a proxy frozen while the HIP moves away in free space is counted
+// as follow failures, one on the HIP never. Plus the stroke generator's promises (free
+// starts, speed, determinism, tours: continuous, free transits, deep pushes) and feature
+// finding. Follow failures of the real proxy are not asserted here: the proxy is being
+// fixed for them (issue 13); the stress tool reports them.
 
 #include "stress/stress_run.h"
 
@@ -10,7 +13,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <optional>
 #include <memory>
 #include <string>
 
@@ -44,6 +50,17 @@ std::unique_ptr<CompiledScene> box_and_sheet() {
   return std::move(r.scene);
 }
 
+// Breaks the proxy on purpose: puts it at proxy_W (no planes, a one-point path) with the
+// spring force towards it from hip_W.
+void place_proxy(const Vector3d& proxy_W, const Vector3d& hip_W, ProxyState& state, ProxyOutput& out) {
+  state.proxy_W = proxy_W;
+  state.path_points = 1;
+  state.path_W[0] = proxy_W;
+  state.plane_count = 0;
+  out.proxy_W = proxy_W;
+  out.force_W = 1000.0 * (proxy_W - hip_W);
+}
+
 StressSettings small_run(std::size_t strokes) {
   StressSettings s;
   s.strokes = strokes;
@@ -62,7 +79,6 @@ TEST(StressRun, RealProxyOnABoxIsCleanAndStrokesReachEveryKind) {
   EXPECT_EQ(r.ridges, 12U);
   EXPECT_EQ(r.corners, 8U);
   EXPECT_EQ(r.creases, 0U);
-  EXPECT_TRUE(r.clean()) << r.failing_strokes << " failing strokes";
   EXPECT_EQ(r.inside_ticks, 0U);
   EXPECT_EQ(r.crossing_ticks, 0U);
   EXPECT_EQ(r.inside_engine_ticks, 0U);
@@ -72,7 +88,7 @@ TEST(StressRun, RealProxyOnABoxIsCleanAndStrokesReachEveryKind) {
   EXPECT_GT(r.max_hip_depth_m, 0.05);  // through strokes push the HIP deep
   EXPECT_GE(r.max_plane_count, 2);     // edges and corners were pressed
   for (StrokeKind k : {StrokeKind::Through, StrokeKind::Poke, StrokeKind::Graze, StrokeKind::Ridge, StrokeKind::Vertex,
-                       StrokeKind::Random}) {
+                       StrokeKind::Random, StrokeKind::Tour}) {
     EXPECT_GT(r.strokes_by_kind[static_cast<std::size_t>(k)], 0U) << to_string(k);
   }
   EXPECT_EQ(r.strokes_by_kind[static_cast<std::size_t>(StrokeKind::Crease)], 0U);  // the box has none
@@ -85,7 +101,7 @@ TEST(StressRun, RealProxyOnAnOpenSheetIsClean) {
   const ObjectStressReport r = stress_object(*scene, oracle, 1, name_key("stress_test/sheet"), small_run(200));
   EXPECT_FALSE(r.closed);
   EXPECT_EQ(r.ridges, 4U);  // the rims
-  EXPECT_TRUE(r.clean()) << r.failing_strokes << " failing strokes";
+  EXPECT_EQ(r.crossing_ticks, 0U);
   EXPECT_GT(r.contact_ticks, 0U);
 }
 
@@ -95,15 +111,14 @@ TEST(StressRun, HipUsedAsProxyFailsAndItsReproducerReplaysIt) {
   const verify::SurfaceCrossingOracle oracle(scene->world);
   StressSettings settings = small_run(40);
   settings.tamper = [](const Vector3d& hip_W, ProxyState& state, ProxyOutput& out) {
-    state.proxy_W = hip_W;
-    state.path_points = 1;
-    state.path_W[0] = hip_W;
-    state.plane_count = 0;
-    out.proxy_W = hip_W;
+    place_proxy(hip_W, hip_W, state, out);
   };
   const std::uint64_t key = name_key("stress_test/box");
   const ObjectStressReport r = stress_object(*scene, oracle, 0, key, settings);
   EXPECT_FALSE(r.clean());
+  // On the HIP with no force it always follows: a pop-through, never a follow failure.
+  EXPECT_EQ(r.follow_failure_ticks, 0U);
+  EXPECT_EQ(r.max_free_gap_m, 0.0);
   EXPECT_GT(r.failing_strokes, 10U);
   EXPECT_GT(r.inside_ticks, 0U);
   EXPECT_GT(r.crossing_ticks, 0U);
@@ -127,6 +142,112 @@ TEST(StressRun, HipUsedAsProxyFailsAndItsReproducerReplaysIt) {
   EXPECT_EQ(again.hip_W, first.hip_W);
   EXPECT_NE(text.find("stroke " + std::to_string(first.stroke) + ":"), std::string::npos);
   EXPECT_NE(text.find("YES"), std::string::npos);
+}
+
+TEST(StressRun, ProxyFrozenWhileTheHipMovesAwayInFreeSpaceIsAFollowFailure) {
+  const auto scene = box_and_sheet();
+  ASSERT_TRUE(scene);
+  const verify::SurfaceCrossingOracle oracle(scene->world);
+  // The proxy rides on the HIP (always following), except that on about one in 100 ticks
+  // where the HIP is 5 mm clear in free space (chosen by the HIP's position, so a replay
+  // freezes at the same ticks) it freezes there for 60 ticks, or until a proxy reset
+  // (seen as a HIP jump).
+  std::optional<Vector3d> frozen, last_hip;
+  int frozen_left = 0;
+  std::size_t expected = 0, frozen_ticks = 0;
+  StressSettings settings = small_run(24);
+  const double max_step = settings.stroke.max_speed_m_per_s / settings.stroke.rate_Hz * (1.0 + 1e-9);
+  settings.tamper = [&](const Vector3d& hip_W, ProxyState& state, ProxyOutput& out) {
+    if (last_hip && (hip_W - *last_hip).norm() > max_step) frozen.reset();
+    last_hip = hip_W;
+    if (!frozen && static_cast<long long>(std::floor(hip_W.norm() * 1e6)) % 100 == 0 &&
+        oracle.distance_to_surface(hip_W) > 0.005 && !oracle.point_inside_closed_mesh(hip_W)) {
+      frozen = hip_W;
+      frozen_left = 60;
+    }
+    if (!frozen) return place_proxy(hip_W, hip_W, state, out);
+    place_proxy(*frozen, hip_W, state, out);
+    ++frozen_ticks;
+    // The definition, spelled out: the straight way from the proxy to the HIP is free.
+    if ((hip_W - *frozen).norm() > verify::kFollowTolerance_m && !oracle.segment_touches_surface(*frozen, hip_W)) {
+      ++expected;
+    }
+    if (--frozen_left == 0) frozen.reset();
+  };
+  const std::uint64_t key = name_key("stress_test/box");
+  const ObjectStressReport r = stress_object(*scene, oracle, 0, key, settings);
+  EXPECT_GT(frozen_ticks, 300U);
+  EXPECT_GT(expected, 200U);
+  EXPECT_EQ(r.follow_failure_ticks, expected);
+  EXPECT_EQ(r.stuck_ticks, expected);  // the proxy did not move: the way from it was the way from its last place
+  EXPECT_GE(r.longest_follow_failure_ticks, 30U);
+  EXPECT_GT(r.max_free_gap_m, 0.01);
+  EXPECT_GT(r.force_at_max_free_gap_N, 10.0);
+  EXPECT_GT(r.failing_strokes, 0U);
+  // (The proxy riding on the HIP pops through the box, too: find a stroke that failed to follow first.)
+  const auto first_stuck = std::find_if(r.failures.begin(), r.failures.end(),
+                                        [](const StrokeFailure& f) { return f.verdict.follow_failed; });
+  ASSERT_NE(first_stuck, r.failures.end());
+  const StrokeFailure& first = *first_stuck;
+  EXPECT_EQ(first.verdict.follow_kind, verify::FollowFailureKind::Stuck);
+
+  // Its reproducer prints the follow verdict of every tick.
+  frozen.reset();
+  last_hip.reset();
+  std::FILE* log = std::tmpfile();
+  ASSERT_NE(log, nullptr);
+  (void)replay_stroke(*scene, oracle, 0, key, settings, first.stroke, log);
+  std::rewind(log);
+  std::string text;
+  char buffer[4096];
+  while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, log)) text.append(buffer, n);
+  std::fclose(log);
+  EXPECT_NE(text.find("STUCK"), std::string::npos);
+}
+
+TEST(StressStrokes, ToursAreContinuousWithFreeTransitsAndDeepPushes) {
+  const auto scene = box_and_sheet();
+  ASSERT_TRUE(scene);
+  const verify::SurfaceCrossingOracle oracle(scene->world);
+  const StressStrokeParams params;
+  const double max_step = params.max_speed_m_per_s / params.rate_Hz * (1.0 + 1e-9);
+  for (const int object : {0, 1}) {
+    const ObjectSurface surface = make_object_surface(scene->world, object, object == 0);
+    const StressStrokeGenerator gen(scene->world, oracle, surface, params);
+    std::optional<Vector3d> last;
+    int continued = 0;
+    for (std::size_t i = 0; i < 12; ++i) {
+      const StressStroke s = gen.make_tour(5, 42, i, last);
+      EXPECT_EQ(s.kind, StrokeKind::Tour);
+      EXPECT_TRUE(gen.start_is_free(s.start_W));
+      EXPECT_TRUE(gen.start_is_free(s.retract_W));
+      EXPECT_EQ(s.hip_W[s.connector_samples], s.start_W);
+      EXPECT_EQ(s.hip_W.back(), s.retract_W);
+      EXPECT_EQ(s.continues, last.has_value());  // a free transit was found every time
+      if (s.continues) {
+        ++continued;
+        EXPECT_LE((s.hip_W.front() - *last).norm(), max_step);
+        // The transit never touches a surface, and stays clear of it.
+        Vector3d at = *last;
+        for (std::size_t k = 0; k <= s.connector_samples; ++k) {
+          ASSERT_FALSE(oracle.segment_touches_surface(at, s.hip_W[k])) << "stroke " << i << " sample " << k;
+          at = s.hip_W[k];
+        }
+      }
+      for (std::size_t k = 1; k < s.hip_W.size(); ++k) ASSERT_LE((s.hip_W[k] - s.hip_W[k - 1]).norm(), max_step);
+      // 20-50 mm below the surface it approached (inside the box; behind the sheet).
+      const double depth = oracle.distance_to_surface(s.push_W);
+      EXPECT_LE(depth, params.tour.max_depth_m + 1e-9);
+      if (object == 0) {
+        EXPECT_TRUE(oracle.point_inside_closed_mesh(s.push_W));
+      } else {
+        EXPECT_TRUE(oracle.segment_touches_surface(s.start_W, s.push_W));
+      }
+      EXPECT_EQ(gen.make_tour(5, 42, i, last).hip_W, s.hip_W);
+      last = s.hip_W.back();
+    }
+    EXPECT_EQ(continued, 11);
+  }
 }
 
 TEST(StressStrokes, FreeStartsBoundedSpeedAndDeterminism) {
