@@ -139,6 +139,11 @@ std::string ParamReader::required_text(const char* name) {
   return *value;
 }
 
+std::optional<std::string> ParamReader::optional_text(const char* name) {
+  if (find(name) == nullptr) return std::nullopt;
+  return required_text(name);
+}
+
 void ParamReader::reject_unknown() const {
   for (const Entry& e : entries_) {
     if (std::find(known_.begin(), known_.end(), e.name) != known_.end()) continue;

@@ -44,6 +44,8 @@ class ParamReader {
   [[nodiscard]] std::optional<Eigen::Quaterniond> optional_quaternion(const char* name);
   /// A non-empty string.
   [[nodiscard]] std::string required_text(const char* name);
+  /// A non-empty string, when given.
+  [[nodiscard]] std::optional<std::string> optional_text(const char* name);
 
   /// Throws ParamError "unknown parameter 'x' (known: a, b)" for the first parameter
   /// (in the order given) that no getter asked for. Call after every getter.

@@ -4,8 +4,10 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numbers>
+#include <stdexcept>
 #include <vector>
 
 namespace mhd::sim_is900 {
@@ -69,6 +71,24 @@ TEST(Is900Model, SamplesBothSensorsAt180HzWithSequenceNumbers) {
     }
   }
   EXPECT_EQ(m.buffered(), 2u);  // k = 180, still in flight
+}
+
+TEST(Is900Model, ADropoutSilencesOneSensorForItsWindowOnly) {
+  Is900Config c = noiseless();
+  c.buffer_capacity = 1024;
+  c.dropout_sensor_id = c.head_sensor_id;
+  c.dropout_start_s = 0.25;
+  c.dropout_duration_s = 0.5;
+  Is900Model m(c);
+  m.start(5.0, truth_at(1.0));
+  m.simulate_until(6.0, truth_at(1.0));
+  std::vector<double> head_t_s, base_t_s;
+  for (const auto& s : read_all(m)) (s.sensor_id == c.head_sensor_id ? head_t_s : base_t_s).push_back(s.timestamp_s - 5.0);
+  EXPECT_EQ(base_t_s.size(), 180u);  // the other sensor keeps its rate
+  ASSERT_FALSE(head_t_s.empty());
+  for (const double t : head_t_s) EXPECT_TRUE(t < 0.25 - 1e-9 || t >= 0.75 - 1e-9) << t;
+  // 0.25 s before and 0.25 s after the window (k = 0..44 and 135..179).
+  EXPECT_EQ(head_t_s.size(), 45u + 45u);
 }
 
 TEST(Is900Model, ASampleBecomesReadableFourMillisecondsAfterItsMeasurement) {
@@ -211,6 +231,15 @@ TEST(Is900Model, TheSameSeedGivesTheSameSamples) {
     EXPECT_EQ(rotation(a[i]).coeffs(), rotation(b[i]).coeffs());
   }
   EXPECT_NE(position(a[0]), position(other[0]));
+}
+
+TEST(Is900Model, RejectsABadDropoutWindow) {
+  Is900Config c = noiseless();
+  c.dropout_start_s = -1.0;
+  EXPECT_THROW(Is900Model{c}, std::invalid_argument);
+  c.dropout_start_s = 0.0;
+  c.dropout_duration_s = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(Is900Model{c}, std::invalid_argument);
 }
 
 TEST(Is900Model, RejectsBadSettings) {

@@ -43,6 +43,10 @@ TEST(SimIs900Plugin, OpenNeedsTheSimulatedWorldAndValidParameters) {
             "tracker_position_m, tracker_rpy_deg, ...)");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"tracker_rpy_deg", "0 0 90"}, {"tracker_quaternion_wxyz", "1 0 0 0"}}).error,
             "parameters 'tracker_rpy_deg' and 'tracker_quaternion_wxyz' exclude each other");
+  EXPECT_EQ(open_plugin(file.api(), h.host, {{"dropout_sensor", "hand"}}).error,
+            "parameter 'dropout_sensor' must be 'head' or 'base', got 'hand'");
+  EXPECT_EQ(open_plugin(file.api(), h.host, {{"dropout_duration_s", "-1"}}).error,
+            "parameter 'dropout_duration_s' must be a non-negative number, got '-1'");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"base_sensor_quaternion_wxyz", "0 0 0 0"}}).error,
             "parameter 'base_sensor_quaternion_wxyz' must be a quaternion 'w x y z' of non-zero norm, got '0 0 0 0'");
 }

@@ -50,6 +50,10 @@ Is900Model::Is900Model(const Is900Config& config)
           "angle_sigma must be a non-negative number");
   require(config.base_sensor_id != config.head_sensor_id, "the base and head sensors need different ids");
   require(config.buffer_capacity > 0, "buffer_capacity must be at least 1");
+  require(config.dropout_start_s >= 0.0 && std::isfinite(config.dropout_start_s),
+          "dropout_start_s must be a non-negative number");
+  require(config.dropout_duration_s >= 0.0 && std::isfinite(config.dropout_duration_s),
+          "dropout_duration_s must be a non-negative number");
   require(config.X_BS.matrix().allFinite() && config.X_WT.matrix().allFinite(), "sensor and tracker poses must be finite");
   ring_.resize(config.buffer_capacity);
 }
@@ -91,8 +95,15 @@ void Is900Model::measure(double t_s, const WorldTruth& truth) {
   Eigen::Isometry3d X_WH = Eigen::Isometry3d::Identity();
   X_WH.linear() = truth.q_W_head.toRotationMatrix();
   X_WH.translation() = truth.p_W_head;
-  push(config_.base_sensor_id, base_sequence_, t_s, X_TW_ * X_WS);
-  push(config_.head_sensor_id, head_sequence_, t_s, X_TW_ * X_WH);
+  if (!dropped_out(config_.base_sensor_id, t_s)) push(config_.base_sensor_id, base_sequence_, t_s, X_TW_ * X_WS);
+  if (!dropped_out(config_.head_sensor_id, t_s)) push(config_.head_sensor_id, head_sequence_, t_s, X_TW_ * X_WH);
+}
+
+bool Is900Model::dropped_out(std::uint32_t sensor_id, double t_s) const {
+  if (config_.dropout_sensor_id != sensor_id) return false;
+  const double since_start_s = t_s - t0_s_;
+  return since_start_s >= config_.dropout_start_s - kTimeTolerance_s &&
+         since_start_s < config_.dropout_start_s + config_.dropout_duration_s - kTimeTolerance_s;
 }
 
 void Is900Model::push(std::uint32_t sensor_id, std::uint64_t& sequence, double t_s, const Eigen::Isometry3d& X_TS) {

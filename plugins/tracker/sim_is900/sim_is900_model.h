@@ -19,6 +19,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <random>
 #include <span>
 #include <vector>
@@ -49,6 +50,11 @@ struct Is900Config {
   Eigen::Isometry3d X_WT = Eigen::Translation3d(0.0, 2.624, 0.0) * Eigen::Quaterniond(0.5, 0.5, 0.5, -0.5);
   /// Samples held until read; when full, the oldest is dropped (and counted).
   std::size_t buffer_capacity = 256;
+  /// A dropout: the sensor with this id (none: no dropout) is not measured from
+  /// dropout_start_s after start for dropout_duration_s (no samples, no sequence numbers).
+  std::optional<std::uint32_t> dropout_sensor_id;
+  double dropout_start_s = 0.0;
+  double dropout_duration_s = 0.0;
   std::uint64_t seed = 0;
 };
 
@@ -79,6 +85,8 @@ class Is900Model {
 
  private:
   void measure(double t_s, const WorldTruth& truth);
+  /// True when `sensor_id` is inside its dropout window at host time t_s.
+  [[nodiscard]] bool dropped_out(std::uint32_t sensor_id, double t_s) const;
   void push(std::uint32_t sensor_id, std::uint64_t& sequence, double t_s, const Eigen::Isometry3d& X_TS);
 
   Is900Config config_;

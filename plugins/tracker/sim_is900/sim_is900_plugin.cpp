@@ -82,6 +82,14 @@ Is900Config read_config(const mhd_param* params, std::size_t count) {
   c.X_WT = read_pose(reader, "tracker", c.X_WT);
   c.buffer_capacity = static_cast<std::size_t>(reader.unsigned_integer("buffer_capacity", c.buffer_capacity, 1u << 20));
   c.seed = reader.unsigned_integer("seed", c.seed, UINT64_MAX);
+  if (const auto sensor = reader.optional_text("dropout_sensor")) {
+    if (*sensor != "head" && *sensor != "base") {
+      throw plugin_support::ParamError("parameter 'dropout_sensor' must be 'head' or 'base', got '" + *sensor + "'");
+    }
+    c.dropout_sensor_id = *sensor == "head" ? c.head_sensor_id : c.base_sensor_id;
+  }
+  c.dropout_start_s = reader.non_negative("dropout_start_s", c.dropout_start_s);
+  c.dropout_duration_s = reader.non_negative("dropout_duration_s", c.dropout_duration_s);
   reader.reject_unknown();
   if (c.buffer_capacity == 0) throw plugin_support::ParamError("parameter 'buffer_capacity' must be at least 1, got '0'");
   if (c.base_sensor_id == c.head_sensor_id) {
