@@ -1,5 +1,7 @@
 #include "mesh_io/mesh_cache.h"
 
+#include "mesh_io/regular_file.h"
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <sys/uio.h>
@@ -241,7 +243,8 @@ std::unique_ptr<MeshBvh> parse_payload(const FileHeader& h, const Layout& layout
 /// unusable, nullptr with `why` empty if there is none.
 std::unique_ptr<MeshBvh> read_cache_file(const std::filesystem::path& path, const MeshCacheKey& key,
                                          const std::string& name, const MeshProgress& progress, std::string& why) {
-  Fd fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
+  // O_NONBLOCK: a FIFO in the cache folder must not block the open (refused below).
+  Fd fd(::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC));
   if (fd.fd < 0) {
     if (errno != ENOENT && errno != ENOTDIR) why = fmt::format("cannot open: {}", std::strerror(errno));
     return nullptr;
@@ -292,8 +295,9 @@ std::optional<std::filesystem::path> default_mesh_cache_dir() {
 std::string MeshCacheKey::hex() const { return fmt::format("{:016x}{:016x}", high, low); }
 
 std::optional<MeshCacheKey> mesh_cache_key(const std::filesystem::path& file, const Eigen::Vector3d& scale_to_m) {
-  Fd fd(::open(file.c_str(), O_RDONLY | O_CLOEXEC));
-  if (fd.fd < 0) return std::nullopt;
+  RegularFile opened(file);  // never blocks on a FIFO; the loader then says what it is
+  if (!opened.ok()) return std::nullopt;
+  Fd fd(opened.release());
   ::posix_fadvise(fd.fd, 0, 0, POSIX_FADV_SEQUENTIAL);
   std::unique_ptr<XXH3_state_t, XXH_errorcode (*)(XXH3_state_t*)> state(XXH3_createState(), &XXH3_freeState);
   if (!state || XXH3_128bits_reset(state.get()) != XXH_OK) return std::nullopt;
@@ -332,7 +336,7 @@ std::filesystem::path MeshCache::file_for(const MeshCacheKey& key) const {
 }
 
 CachedMesh MeshCache::load(const std::filesystem::path& file, const Eigen::Vector3d& scale_to_m,
-                           const MeshProgress& progress) {
+                           const MeshProgress& progress, std::optional<std::uint64_t> max_triangles) {
   CachedMesh result;
   const std::string name = short_name(file);
   std::optional<MeshCacheKey> key;
@@ -343,6 +347,11 @@ CachedMesh MeshCache::load(const std::filesystem::path& file, const Eigen::Vecto
     result.cache_file = file_for(*key);
     std::string why;
     auto bvh = read_cache_file(result.cache_file, *key, name, progress, why);
+    if (bvh && max_triangles && bvh->mesh().triangle_count() > *max_triangles) {
+      result.error = MeshLoadError{file, fmt::format("{} triangles, more than max_triangles ({})",
+                                                     bvh->mesh().triangle_count(), *max_triangles)};
+      return result;
+    }
     if (bvh) {
       ++stats_.hits;
       result.outcome = CacheOutcome::Hit;
@@ -369,7 +378,7 @@ CachedMesh MeshCache::load(const std::filesystem::path& file, const Eigen::Vecto
   // Roughly 16+ bytes per triangle in binary formats; text formats are larger, so this
   // errs towards reporting.
   if (progress && !ec && file_bytes >= kProgressMinTriangles * 16) read_progress = progress;
-  MeshLoadResult loaded = load_mesh_file(file, scale_to_m, read_progress);
+  MeshLoadResult loaded = load_mesh_file(file, scale_to_m, read_progress, max_triangles);
   if (!loaded.ok()) {
     result.error = std::move(loaded.error);
     return result;

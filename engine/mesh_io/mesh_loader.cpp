@@ -1,5 +1,10 @@
 #include "mesh_io/mesh_loader.h"
 
+#include "mesh_io/mesh_header.h"
+#include "mesh_io/regular_file.h"
+#include "mesh_io/regular_file_io_system.h"
+#include "mesh_io/texture_references.h"
+
 #include <assimp/Importer.hpp>
 #include <assimp/ProgressHandler.hpp>
 #include <assimp/config.h>
@@ -18,6 +23,8 @@
 #include <limits>
 #include <system_error>
 #include <unordered_map>
+
+#include <unistd.h>
 
 namespace mhd {
 
@@ -41,6 +48,21 @@ class ForwardProgress final : public Assimp::ProgressHandler {
   const MeshProgress& progress_;
   std::string what_;
 };
+
+/// The first `bytes` bytes of an open file (nullopt on a read error, errno set).
+std::optional<std::string> read_head(int fd, std::size_t bytes) {
+  std::string head(bytes, '\0');
+  std::size_t got = 0;
+  while (got < bytes) {
+    const ssize_t n = ::pread(fd, head.data() + got, bytes - got, static_cast<off_t>(got));
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) return std::nullopt;
+    if (n == 0) break;
+    got += static_cast<std::size_t>(n);
+  }
+  head.resize(got);
+  return head;
+}
 
 MeshLoadResult fail(const std::filesystem::path& file, std::string reason) {
   MeshLoadResult r;
@@ -128,28 +150,29 @@ std::size_t finish_loaded_mesh(TriangleMesh& mesh, const Eigen::Vector3d& scale_
 }
 
 MeshLoadResult load_mesh_file(const std::filesystem::path& file, const Eigen::Vector3d& scale_to_m,
-                              const MeshProgress& progress) {
+                              const MeshProgress& progress, std::optional<std::uint64_t> max_triangles) {
   if (!scale_to_m.allFinite() || (scale_to_m.array() == 0.0).any()) {
     return fail(file, fmt::format("invalid scale ({}, {}, {}): every factor must be finite and non-zero",
                                   scale_to_m.x(), scale_to_m.y(), scale_to_m.z()));
   }
-  std::error_code ec;
-  const auto status = std::filesystem::status(file, ec);
-  if (!std::filesystem::exists(status)) {
-    if (ec && ec != std::errc::no_such_file_or_directory) {
-      return fail(file, fmt::format("cannot access file: {}", ec.message()));
+  {
+    // Header counts are checked against the file size before assimp allocates for them.
+    const RegularFile opened(file);
+    if (!opened.ok()) return fail(file, opened.problem());
+    if (opened.size_bytes() == 0) return fail(file, "file is empty");
+    const std::optional<std::string> head = read_head(opened.fd(), std::min<unsigned long long>(opened.size_bytes(), kMeshHeaderBytes));
+    if (!head) return fail(file, fmt::format("cannot read file: {}", std::strerror(errno)));
+    const MeshHeaderCheck header = check_mesh_header(*head, opened.size_bytes(), file.extension().string());
+    if (!header.ok()) return fail(file, header.error);
+    if (max_triangles && header.claimed_faces && *header.claimed_faces > *max_triangles) {
+      return fail(file, fmt::format("the header claims {} faces, more than max_triangles ({})", *header.claimed_faces,
+                                    *max_triangles));
     }
-    return fail(file, "file not found");
   }
-  if (!std::filesystem::is_regular_file(status)) return fail(file, "not a regular file");
-  if (std::FILE* f = std::fopen(file.c_str(), "rb")) {
-    std::fclose(f);
-  } else {
-    return fail(file, fmt::format("cannot open file: {}", std::strerror(errno)));
-  }
-  if (std::filesystem::file_size(file, ec) == 0 && !ec) return fail(file, "file is empty");
 
   Assimp::Importer importer;
+  auto* io = new RegularFileIoSystem();  // owned by the importer
+  importer.SetIOHandler(io);
   // Keep positions only, so vertices that differ only in normals, UVs or colours
   // (flat-shaded or STL files) join into one. SortByPType splits point and line
   // primitives into meshes of their own, which are skipped below (not removed by
@@ -166,6 +189,8 @@ MeshLoadResult load_mesh_file(const std::filesystem::path& file, const Eigen::Ve
   const unsigned flags = aiProcess_Triangulate | aiProcess_PreTransformVertices | aiProcess_SortByPType |
                          aiProcess_RemoveComponent;
   const aiScene* scene = importer.ReadFile(file.string(), flags);
+  if (!io->refusals().empty()) return fail(file, fmt::format("side file {}", io->refusals().front()));
+  if (const std::string texture = texture_problem(scene, file); !texture.empty()) return fail(file, texture);
   if (scene == nullptr) {
     std::string why = importer.GetErrorString();
     if (why.empty()) why = "unknown error";
@@ -212,6 +237,9 @@ MeshLoadResult load_mesh_file(const std::filesystem::path& file, const Eigen::Ve
   }
   importer.FreeScene();
   if (mesh.triangles.empty()) return fail(file, "mesh has no triangles");
+  if (max_triangles && mesh.triangles.size() > *max_triangles) {
+    return fail(file, fmt::format("{} triangles, more than max_triangles ({})", mesh.triangles.size(), *max_triangles));
+  }
   // An indexed surface has about half as many vertices as triangles; more vertices than
   // triangles means corners are not shared (STL, per-face OBJ) or the file has several
   // meshes: join identical positions so neighbours share their edges.

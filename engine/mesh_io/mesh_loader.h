@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -40,9 +41,14 @@ struct MeshLoadResult {
 /// file's meshes, drops degenerate triangles and unused vertices, and computes vertex
 /// normals. Positions pass through assimp's single precision.
 /// `progress`, if set, receives assimp's read/post-processing progress.
+/// Bounded: the file and every side file assimp opens (an OBJ's mtllib) must be regular
+/// files, and so must textures that exist; a PLY's or binary STL's header counts must fit
+/// the file's size, and with `max_triangles` set neither the header's face count nor the
+/// loaded triangles may exceed it. All of this is checked before assimp allocates.
 [[nodiscard]] MeshLoadResult load_mesh_file(const std::filesystem::path& file,
                                             const Eigen::Vector3d& scale_to_m,
-                                            const MeshProgress& progress = {});
+                                            const MeshProgress& progress = {},
+                                            std::optional<std::uint64_t> max_triangles = std::nullopt);
 
 /// Applies the loader's clean-up to a mesh in memory: scale (and winding flip for a
 /// mirroring scale), invalid/degenerate triangle and unused vertex removal, vertex

@@ -190,7 +190,7 @@ TEST(MeshLoader, FolderIsNotAMeshFile) {
   TempDir dir;
   const MeshLoadResult r = load_mesh_file(dir.path(), Eigen::Vector3d::Ones());
   ASSERT_FALSE(r.ok());
-  EXPECT_EQ(r.error->reason, "not a regular file");
+  EXPECT_EQ(r.error->reason, "is a directory, not a regular file");
 }
 
 TEST(MeshLoader, PointsAndLinesOnlyMeansNoTriangles) {

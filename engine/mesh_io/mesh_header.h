@@ -1,0 +1,30 @@
+#pragma once
+// What a mesh file's header claims, checked against the file's size before anything is
+// allocated: a PLY's element counts, a binary STL's triangle count. OBJ and ASCII STL
+// carry no counts (their size bounds what they can hold).
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace mhd {
+
+/// The bytes at the start of a file that the header checks read (a PLY header must end
+/// within them).
+inline constexpr std::size_t kMeshHeaderBytes = 65536;
+
+struct MeshHeaderCheck {
+  std::string error;  ///< empty when the header fits the file
+  /// Faces the header claims (PLY 'face' elements, binary STL triangles); each is at
+  /// least one triangle. nullopt when the format carries no count.
+  std::optional<std::uint64_t> claimed_faces;
+  [[nodiscard]] bool ok() const { return error.empty(); }
+};
+
+/// Checks a header: `head` is the file's first min(file_size, kMeshHeaderBytes) bytes,
+/// `extension` the file's (".stl", any case; binary STL has no magic number).
+[[nodiscard]] MeshHeaderCheck check_mesh_header(std::string_view head, std::uint64_t file_size,
+                                                std::string_view extension);
+
+}  // namespace mhd
