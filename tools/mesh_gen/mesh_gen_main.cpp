@@ -1,9 +1,11 @@
-// mhd-mesh-gen: writes the procedural test meshes (dolphin, UV sphere, bowl) in
-// millimetres, the format chosen by the output file's extension.
+// mhd-mesh-gen: writes the procedural test meshes (dolphin, UV sphere, bowl, range
+// scans) in millimetres, the format chosen by the output file's extension.
 
 #include "mesh_gen/bowl_mesh.h"
 #include "mesh_gen/dolphin_mesh.h"
 #include "mesh_gen/mesh_export.h"
+#include "mesh_gen/range_scan.h"
+#include "mesh_gen/scan_source.h"
 #include "mesh_gen/uv_sphere_mesh.h"
 
 #include <CLI/CLI.hpp>
@@ -13,6 +15,8 @@
 #include <exception>
 #include <filesystem>
 #include <numbers>
+#include <regex>
+#include <stdexcept>
 #include <string>
 
 namespace {
@@ -33,6 +37,31 @@ int write_and_report(const mhd::TriangleMesh& mesh, const std::string& out,
               out.c_str(), mesh.triangle_count(), mesh.vertices_m.size(), size_mm.x(), size_mm.y(), size_mm.z(),
               ms(built - start).count(), ms(written - built).count());
   return 0;
+}
+
+// "330x330" -> columns 330, rows 330.
+void parse_grid(const std::string& text, mhd::mesh_gen::RangeScanParams& params) {
+  std::smatch m;
+  if (!std::regex_match(text, m, std::regex(R"((\d{1,9})x(\d{1,9}))"))) {
+    throw std::invalid_argument("--grid '" + text + "': expected COLUMNSxROWS, e.g. 330x330");
+  }
+  params.columns = std::stoi(m[1].str());
+  params.rows = std::stoi(m[2].str());
+}
+
+int scan_and_report(const std::string& source, const mhd::mesh_gen::ScanSourceOptions& options,
+                    mhd::mesh_gen::RangeScanParams params, const std::string& grid, const std::string& out,
+                    std::chrono::steady_clock::time_point start) {
+  parse_grid(grid, params);
+  const mhd::TriangleMesh source_mesh = mhd::mesh_gen::load_scan_source(source, options);
+  const mhd::mesh_gen::RangeScan scan = mhd::mesh_gen::make_range_scan(source_mesh, params);
+  if (scan.mesh.triangles.empty()) throw std::runtime_error("range scan of '" + source + "' has no triangles");
+  const mhd::mesh_gen::RangeScanStats& st = scan.stats;
+  std::printf("range scan of %s (%zu triangles): %s samples at %.3f mm, %zu hit, %zu patches; dropped %zu "
+              "triangles at depth jumps, %zu degenerate\n",
+              source.c_str(), source_mesh.triangle_count(), grid.c_str(), st.spacing_m * kMillimetresPerMetre,
+              st.samples_hit, st.patches, st.dropped_depth_jump, st.dropped_degenerate);
+  return write_and_report(scan.mesh, out, start);
 }
 
 }  // namespace
@@ -69,9 +98,39 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1.0, 179.0));
   bowl->add_option("--out", bowl_out, "output file")->required();
 
+  std::string scan_source;
+  mhd::mesh_gen::ScanSourceOptions scan_options;
+  double scan_unit_m = 0.0;
+  mhd::mesh_gen::RangeScanParams scan_params;
+  double scan_noise_mm = 0.0;
+  std::string scan_grid = "330x330";
+  std::string scan_out;
+  CLI::App* scan = app.add_subcommand(
+      "range-scan", "open single-view range scan of a mesh: orthographic depth grid, cut at depth jumps");
+  scan->add_option("--source", scan_source,
+                   "what to scan: " + mhd::mesh_gen::scan_source_names() + " or a mesh file path")
+      ->required();
+  scan->add_option("--source-triangles", scan_options.generator_triangles, "triangles of a generated source");
+  CLI::Option* unit = scan->add_option("--source-unit-m", scan_unit_m, "metres per unit of a mesh file (default 0.001)");
+  scan->add_option("--azimuth-deg", scan_params.azimuth_deg, "scanner direction about +y, from +z towards +x");
+  scan->add_option("--elevation-deg", scan_params.elevation_deg, "scanner direction above the x-z plane");
+  scan->add_option("--grid", scan_grid, "samples, COLUMNSxROWS (square cells fitted to the source's outline)");
+  scan->add_option("--max-jump-cells", scan_params.max_depth_jump_cells,
+                   "drop triangles whose depths differ by more than this many grid spacings");
+  scan->add_option("--noise-mm", scan_noise_mm, "uniform per-sample noise along the ray, [0, 1) mm");
+  scan->add_option("--seed", scan_params.seed, "seed of the noise");
+  scan->add_option("--out", scan_out, "output file")->required();
+
   CLI11_PARSE(app, argc, argv);
 
   try {
+    if (scan->parsed()) {
+      (void)mhd::mesh_gen::mesh_file_format(scan_out);
+      if (unit->count() > 0) scan_options.file_unit_m = scan_unit_m;
+      scan_params.noise_m = scan_noise_mm / kMillimetresPerMetre;
+      return scan_and_report(scan_source, scan_options, scan_params, scan_grid, scan_out,
+                             std::chrono::steady_clock::now());
+    }
     (void)mhd::mesh_gen::mesh_file_format(dolphin->parsed() ? dolphin_out : sphere->parsed() ? sphere_out : bowl_out);
     const auto start = std::chrono::steady_clock::now();
     if (dolphin->parsed()) {
