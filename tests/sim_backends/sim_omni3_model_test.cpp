@@ -92,21 +92,21 @@ TEST(Omni3Model, AStaleCommandStopsTheBase) {
   Omni3Model m({});
   m.start(0.0);
   m.command({0.3, 0.0, 0.0}, 0.0);
-  m.simulate_until(0.3);
+  m.simulate_until(0.2);
   EXPECT_FALSE(m.watchdog_stopped());
-  EXPECT_GT(body_velocity(m)[0], 0.29);
-  m.simulate_until(0.33);  // the tick at 0.32 finds the command 0.32 s old
+  EXPECT_GT(body_velocity(m)[0], 0.2);
+  m.simulate_until(0.23);  // the tick at 0.22 finds the command 0.22 s old
   EXPECT_TRUE(m.watchdog_stopped());
   m.simulate_until(1.5);  // the speed loop decays exponentially: zero to within 1e-6
   EXPECT_TRUE(m.velocity_W().isZero(1e-6));
   EXPECT_TRUE(m.wheel_speeds().isZero(1e-6));
 
-  // Commands every 0.25 s keep it going.
+  // Commands every 0.15 s keep it going.
   Omni3Model n({});
   n.start(0.0);
-  for (int k = 0; k < 8; ++k) {
-    n.command({0.3, 0.0, 0.0}, 0.25 * k);
-    n.simulate_until(0.25 * (k + 1));
+  for (int k = 0; k < 12; ++k) {
+    n.command({0.3, 0.0, 0.0}, 0.15 * k);
+    n.simulate_until(0.15 * (k + 1));
     EXPECT_FALSE(n.watchdog_stopped());
   }
   EXPECT_NEAR(body_velocity(n)[0], 0.3, 1e-9);

@@ -1,8 +1,11 @@
+#include "command_log_file.h"
 #include "plugin_file.h"
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
+#include <unistd.h>
 
 namespace mhd::test {
 namespace {
@@ -27,8 +30,8 @@ TEST(SimOmni3Plugin, OpenRejectsUnknownAndMalformedParameters) {
   FakeHost h;
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"speed", "1"}}).error,
             "unknown parameter 'speed' (known: base_radius_m, wheel_radius_m, max_speed_mps, max_omega_degps, "
-            "control_rate_hz, motor_time_constant_s, max_wheel_accel_mps2, slip_fraction, watchdog_s, seed, x_m, z_m, "
-            "heading_deg)");
+            "control_rate_hz, motor_time_constant_s, max_wheel_accel_mps2, slip_fraction, command_timeout_s, seed, x_m, "
+            "z_m, heading_deg, command_log)");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"max_speed_mps", "fast"}}).error,
             "parameter 'max_speed_mps' must be a positive number, got 'fast'");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"slip_fraction", "1.5"}}).error,
@@ -80,6 +83,45 @@ TEST(SimOmni3Plugin, DrivesTheBaseAndMovesItInTheSimulatedWorld) {
   EXPECT_EQ(api.base_read(base, &state, &err), MHD_ERROR);
   EXPECT_STREQ(err.message, "sim_omni3 is not started");
   api.close(base);
+}
+
+TEST(SimOmni3Plugin, LogsEveryCommandAndItsOwnWatchdogFiring) {
+  const PluginFile file(MHD_SIM_OMNI3_PLUGIN);
+  const mhd_plugin_api& api = file.api();
+  FakeHost h;
+  const std::filesystem::path log =
+      std::filesystem::temp_directory_path() / ("sim_omni3_log_" + std::to_string(::getpid()) + ".csv");
+  const Opened opened = open_plugin(api, h.host, {{"command_log", log.c_str()}});  // command_timeout_s 0.2
+  ASSERT_NE(opened.instance, nullptr) << opened.error;
+  mhd_error err{};
+  ASSERT_EQ(api.start(opened.instance, &err), MHD_OK) << err.message;
+  for (int k = 0; k < 3; ++k) {
+    h.now_s = 0.1 * k;
+    const mhd_base_command command{h.now_s, 0.25, 0.0, 0.1};
+    ASSERT_EQ(api.base_write(opened.instance, &command, &err), MHD_OK) << err.message;
+    for (int i = 1; i <= 10; ++i) ASSERT_EQ(api.simulate_until(opened.instance, 0.1 * k + 0.01 * i, &err), MHD_OK);
+  }
+  // Commands stop: the last (at 0.2 s) expires at 0.4 s, which the 50 Hz controller sees.
+  ASSERT_EQ(api.simulate_until(opened.instance, 1.0, &err), MHD_OK);
+  ASSERT_EQ(api.stop(opened.instance, &err), MHD_OK);
+  api.close(opened.instance);
+
+  std::string header;
+  const std::vector<CommandLogRow> rows = read_command_log(log, &header);
+  std::filesystem::remove(log);
+  EXPECT_EQ(header, "t_s,event,vx_mps,vz_mps,omega_radps");
+  ASSERT_EQ(rows.size(), 1u + 3u + 1u + 1u);
+  EXPECT_EQ(rows[0].event, "start");
+  for (int k = 1; k <= 3; ++k) {
+    EXPECT_EQ(rows[k].event, "command");
+    EXPECT_NEAR(rows[k].t_s, 0.1 * (k - 1), 1e-6);
+    EXPECT_EQ(rows[k].values[0], 0.25);
+    EXPECT_EQ(rows[k].values[2], 0.1);
+  }
+  EXPECT_EQ(rows[4].event, "timeout");
+  EXPECT_NEAR(rows[4].t_s, 0.4, 1e-6);
+  EXPECT_TRUE(rows[4].is_zero());
+  EXPECT_EQ(rows[5].event, "stop");
 }
 
 }  // namespace

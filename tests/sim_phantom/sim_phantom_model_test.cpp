@@ -118,10 +118,10 @@ TEST(SimPhantomModel, TheWatchdogZeroesStaleTorques) {
   m.simulate_until(0.0, hand);
   EXPECT_TRUE(m.watchdog_stopped());  // nothing commanded yet
   m.command(Eigen::Vector3d(0.5, -0.4, 0.3), 0.0);
-  m.simulate_until(0.1, hand);  // exactly watchdog_s old: still in effect
+  m.simulate_until(0.02, hand);  // exactly command_timeout_s old: still in effect
   EXPECT_FALSE(m.watchdog_stopped());
   EXPECT_GT((m.p_P_hip_m() - hand).norm(), 1e-4);
-  m.simulate_until(0.1001, hand);  // stale: the host stalled
+  m.simulate_until(0.0201, hand);  // stale: the host stalled
   EXPECT_TRUE(m.watchdog_stopped());
   EXPECT_EQ(m.applied_torques_Nm(), Eigen::Vector3d::Zero());
   EXPECT_EQ(m.force_P_N(), Eigen::Vector3d::Zero());
@@ -169,8 +169,8 @@ TEST(SimPhantomModel, BadSettingsAreRejectedWithTheirName) {
   c.hand_stiffness_N_per_m = 0.0;
   EXPECT_EQ(config_error(c), "hand_stiffness_N_per_m must be a positive number");
   c = PhantomSimConfig{};
-  c.watchdog_s = std::numeric_limits<double>::infinity();
-  EXPECT_EQ(config_error(c), "watchdog_s must be a positive number");
+  c.command_timeout_s = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(config_error(c), "command_timeout_s must be a positive number");
   c = PhantomSimConfig{};
   c.position_resolution_m = -1e-6;
   EXPECT_EQ(config_error(c), "position_resolution_m must be a non-negative number");

@@ -1,5 +1,6 @@
 // The built libmhd_sim_phantom.so through the real dlopen path, with a fake host clock and
 // a SimulatedWorld; the world's hand is placed with the rig read from scenes/rigs/pomhi.xml.
+#include "command_log_file.h"
 #include "plugin_file.h"
 
 #include "kinematics/rig.h"
@@ -11,6 +12,9 @@
 #include <filesystem>
 #include <numbers>
 #include <string>
+#include <unistd.h>
+#include <thread>
+#include <chrono>
 
 namespace mhd::test {
 namespace {
@@ -52,8 +56,12 @@ TEST(SimPhantomPlugin, OpenRejectsUnknownAndMalformedParameters) {
   const PluginFile file(MHD_SIM_PHANTOM_PLUGIN);
   FakeHost h;
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"stiffness", "1"}}).error,
-            "unknown parameter 'stiffness' (known: hand_stiffness_N_per_m, watchdog_s, position_resolution_m, "
-            "phantom_position_m, phantom_rpy_deg, base_position_m, base_rpy_deg, hand_P_m)");
+            "unknown parameter 'stiffness' (known: hand_stiffness_N_per_m, command_timeout_s, position_resolution_m, "
+            "phantom_position_m, phantom_rpy_deg, base_position_m, base_rpy_deg, hand_P_m, command_log)");
+  EXPECT_EQ(open_plugin(file.api(), h.host, {{"command_log", "/nonexistent/dir/log.csv"}}).error,
+            "cannot write the command log '/nonexistent/dir/log.csv': No such file or directory");
+  EXPECT_EQ(open_plugin(file.api(), h.host, {{"command_timeout_s", "0"}}).error,
+            "parameter 'command_timeout_s' must be a positive number, got '0'");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"hand_stiffness_N_per_m", "-5"}}).error,
             "parameter 'hand_stiffness_N_per_m' must be a positive number, got '-5'");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"position_resolution_m", "fine"}}).error,
@@ -115,7 +123,7 @@ TEST(SimPhantomPlugin, FollowsTheWorldsHandAndIsPushedByTorques) {
   ASSERT_EQ(api.device_read(device, &state, &err), MHD_OK);
   EXPECT_LT((hip_of(state) - (hand2_P + F / 2000.0)).norm(), 1e-9);
 
-  // The host stalls: 0.1 s later the force is gone.
+  // The host stalls: 20 ms later (command_timeout_s) the force is gone.
   ASSERT_EQ(api.simulate_until(device, 1.2, &err), MHD_OK);
   ASSERT_EQ(api.device_read(device, &state, &err), MHD_OK);
   EXPECT_LT((hip_of(state) - hand2_P).norm(), 1e-9);
@@ -177,6 +185,72 @@ TEST(SimPhantomPlugin, WithoutAWorldTheHandRestsAtHandP) {
   // Default resolution 0.03 mm: within 1.5 resolution steps.
   EXPECT_LT((hip_of(state) - Eigen::Vector3d(0.01, 0.1, 0.02)).norm(), 1.5 * 0.03e-3);
   api.close(opened.instance);
+}
+
+TEST(SimPhantomPlugin, LogsEveryCommandAndItsOwnWatchdogFiring) {
+  const PluginFile file(MHD_SIM_PHANTOM_PLUGIN);
+  const mhd_plugin_api& api = file.api();
+  FakeHost h;
+  const std::filesystem::path log =
+      std::filesystem::temp_directory_path() / ("sim_phantom_log_" + std::to_string(::getpid()) + ".csv");
+  const Opened opened = open_plugin(api, h.host, {{"command_log", log.c_str()}, {"command_timeout_s", "0.02"}});
+  ASSERT_NE(opened.instance, nullptr) << opened.error;
+  mhd_error err{};
+  h.now_s = 1.0;
+  ASSERT_EQ(api.start(opened.instance, &err), MHD_OK) << err.message;
+  for (int k = 1; k <= 5; ++k) {
+    h.now_s = 1.0 + 0.001 * k;
+    ASSERT_EQ(api.simulate_until(opened.instance, h.now_s, &err), MHD_OK) << err.message;
+    const mhd_device_command command{h.now_s, {0.1 * k, -0.2, 0.0}};
+    ASSERT_EQ(api.device_write(opened.instance, &command, &err), MHD_OK) << err.message;
+  }
+  // Commands stop; the device's watchdog fires 20 ms after the last one, once.
+  h.now_s = 1.1;
+  ASSERT_EQ(api.simulate_until(opened.instance, 1.05, &err), MHD_OK);
+  ASSERT_EQ(api.simulate_until(opened.instance, 1.1, &err), MHD_OK);
+  ASSERT_EQ(api.stop(opened.instance, &err), MHD_OK);
+  api.close(opened.instance);
+
+  std::string header;
+  const std::vector<CommandLogRow> rows = read_command_log(log, &header);
+  std::filesystem::remove(log);
+  EXPECT_EQ(header, "t_s,event,tau1_Nm,tau2_Nm,tau3_Nm");
+  ASSERT_EQ(rows.size(), 1u + 5u + 1u + 1u);
+  EXPECT_EQ(rows[0].event, "start");
+  EXPECT_DOUBLE_EQ(rows[0].t_s, 1.0);
+  for (int k = 1; k <= 5; ++k) {
+    EXPECT_EQ(rows[k].event, "command");
+    EXPECT_NEAR(rows[k].t_s, 1.0 + 0.001 * k, 1e-6);
+    EXPECT_NEAR(rows[k].values[0], 0.1 * k, 1e-9);
+    EXPECT_EQ(rows[k].values[1], -0.2);
+  }
+  EXPECT_EQ(rows[6].event, "timeout");
+  EXPECT_NEAR(rows[6].t_s, 1.025, 1e-6);
+  EXPECT_TRUE(rows[6].is_zero());
+  EXPECT_EQ(rows[7].event, "stop");
+}
+
+TEST(SimPhantomPlugin, FlushesTheCommandLogWhileOpen) {
+  const PluginFile file(MHD_SIM_PHANTOM_PLUGIN);
+  const mhd_plugin_api& api = file.api();
+  FakeHost h;
+  const std::filesystem::path log =
+      std::filesystem::temp_directory_path() / ("sim_phantom_flush_" + std::to_string(::getpid()) + ".csv");
+  const Opened opened = open_plugin(api, h.host, {{"command_log", log.c_str()}});
+  ASSERT_NE(opened.instance, nullptr) << opened.error;
+  mhd_error err{};
+  ASSERT_EQ(api.start(opened.instance, &err), MHD_OK) << err.message;
+  const mhd_device_command command{0.0, {0.0, 0.0, 0.0}};
+  ASSERT_EQ(api.device_write(opened.instance, &command, &err), MHD_OK) << err.message;
+  // Within 50 ms (generously waited for) the row is in the file without a close.
+  std::size_t rows = 0;
+  for (int i = 0; i < 200 && rows < 2; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    rows = read_command_log(log).size();
+  }
+  EXPECT_EQ(rows, 2u);
+  api.close(opened.instance);
+  std::filesystem::remove(log);
 }
 
 }  // namespace

@@ -61,7 +61,7 @@ Omni3Model::Omni3Model(const Omni3Config& config)
   require_positive(config.max_omega_radps, "max_omega_radps");
   require_positive(config.control_rate_hz, "control_rate_hz");
   require_positive(config.max_wheel_accel_mps2, "max_wheel_accel_mps2");
-  require_positive(config.watchdog_s, "watchdog_s");
+  require_positive(config.command_timeout_s, "command_timeout_s");
   require_positive(config.physics_step_s, "physics_step_s");
   if (!(config.motor_time_constant_s >= 0.0) || !std::isfinite(config.motor_time_constant_s)) {
     throw std::invalid_argument("motor_time_constant_s must be a non-negative number");
@@ -119,7 +119,7 @@ void Omni3Model::simulate_until(double t_s) {
 void Omni3Model::control_tick(double t_s) {
   constexpr double kTimeTolerance_s = 1e-9;
   const bool fresh = command_B_ && command_time_s_ <= t_s + kTimeTolerance_s &&
-                     t_s - command_time_s_ <= config_.watchdog_s + kTimeTolerance_s;
+                     t_s - command_time_s_ <= config_.command_timeout_s + kTimeTolerance_s;
   watchdog_stopped_ = !fresh;
   setpoint_radps_ = fresh ? kinematics_.wheel_speeds(
                                 limit_twist(*command_B_, config_.max_speed_mps, config_.max_omega_radps))

@@ -66,8 +66,9 @@ struct Omni3Config {
   /// Each wheel loses a fraction of its rim speed to slip, drawn uniformly from
   /// [0, slip_fraction] per wheel and controller period. 0: no slip.
   double slip_fraction = 0.0;
-  /// A command older than this stops the base (three missed 10 Hz commands).
-  double watchdog_s = 0.3;
+  /// The base's own command watchdog: a command older than this stops the base (two
+  /// missed 10 Hz commands).
+  double command_timeout_s = 0.2;
   /// Integration step of the pose and wheel dynamics.
   double physics_step_s = 0.001;
   std::uint64_t seed = 0;
@@ -87,7 +88,7 @@ class Omni3Model {
 
   /// The latest body twist command, received at host time t_received_s. Each 50 Hz
   /// controller tick uses the latest command received at or before it, limited; with no
-  /// command, or one older than watchdog_s, the setpoint is zero.
+  /// command, or one older than command_timeout_s, the setpoint is zero.
   void command(const Twist& twist_B, double t_received_s);
 
   /// Advances to host time t_s (no-op if t_s is not ahead). Precondition: started.
@@ -105,6 +106,8 @@ class Omni3Model {
   [[nodiscard]] const WheelSpeeds& wheel_speeds() const { return wheels_radps_; }
   /// True when the last controller tick found no fresh command (none, or a stale one).
   [[nodiscard]] bool watchdog_stopped() const { return watchdog_stopped_; }
+  /// Host time of the latest command (0 before the first).
+  [[nodiscard]] double command_time_s() const { return command_time_s_; }
 
  private:
   void control_tick(double t_s);

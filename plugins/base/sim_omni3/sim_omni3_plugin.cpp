@@ -1,17 +1,23 @@
 // The sim_omni3 base plugin: the C ABI over Omni3Model. Commands are stamped with the
 // host clock when they arrive; the host advances the base with simulate_until(), and
-// the true pose goes to the shared simulated world after every advance.
+// the true pose goes to the shared simulated world after every advance. With command_log,
+// every command and every firing of the command watchdog goes to a CSV
+// (sim_common/command_log.h).
 
 #include "sim_omni3_model.h"
+#include "sim_common/command_log.h"
 #include "sim_common/plugin_params.h"
 #include "sim_common/plugin_shell.h"
 
 #include <mhd/plugin_abi.h>
 
+#include <array>
 #include <cmath>
+#include <memory>
 #include <mutex>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace mhd::sim_omni3 {
@@ -21,8 +27,18 @@ using plugin_support::guarded_open;
 
 constexpr double kDegToRad = std::numbers::pi / 180.0;
 
+struct Config {
+  Omni3Config model;
+  std::string command_log;  ///< empty: none
+};
+
 struct Instance {
-  Instance(const mhd_host& h, const Omni3Config& config) : host(h), model(config) {}
+  Instance(const mhd_host& h, const Config& config) : host(h), model(config.model) {
+    if (!config.command_log.empty()) {
+      log = std::make_unique<plugin_support::CommandLog>(config.command_log,
+                                                         std::array{"vx_mps", "vz_mps", "omega_radps"});
+    }
+  }
 
   std::mutex mutex;
   mhd_host host;
@@ -30,6 +46,11 @@ struct Instance {
   bool started = false;
   bool read_once = false;
   double last_read_time_s = 0.0;
+  std::unique_ptr<plugin_support::CommandLog> log;  ///< written only under `mutex`: one producer
+
+  void log_event(double t_s, plugin_support::CommandEvent event, const std::array<double, 3>& values = {}) noexcept {
+    if (log) log->add(t_s, event, values);
+  }
 
   void publish_pose() {
     if (host.sim_world == nullptr) return;
@@ -38,9 +59,10 @@ struct Instance {
   }
 };
 
-Omni3Config read_config(const mhd_host& host, const mhd_param* params, std::size_t count) {
+Config read_config(const mhd_host& host, const mhd_param* params, std::size_t count) {
   plugin_support::ParamReader reader(params, count);
-  Omni3Config c;
+  Config config;
+  Omni3Config& c = config.model;
   c.base_radius_m = reader.positive("base_radius_m", c.base_radius_m);
   c.wheel_radius_m = reader.positive("wheel_radius_m", c.wheel_radius_m);
   c.max_speed_mps = reader.positive("max_speed_mps", c.max_speed_mps);
@@ -49,7 +71,7 @@ Omni3Config read_config(const mhd_host& host, const mhd_param* params, std::size
   c.motor_time_constant_s = reader.non_negative("motor_time_constant_s", c.motor_time_constant_s);
   c.max_wheel_accel_mps2 = reader.positive("max_wheel_accel_mps2", c.max_wheel_accel_mps2);
   c.slip_fraction = reader.fraction("slip_fraction", c.slip_fraction);
-  c.watchdog_s = reader.positive("watchdog_s", c.watchdog_s);
+  c.command_timeout_s = reader.positive("command_timeout_s", c.command_timeout_s);
   c.seed = reader.unsigned_integer("seed", c.seed, UINT64_MAX);
   // The start pose: the simulated world's base pose when there is one, each field
   // overridden by its parameter.
@@ -58,8 +80,9 @@ Omni3Config read_config(const mhd_host& host, const mhd_param* params, std::size
   p.x_m = reader.number("x_m", p.x_m);
   p.z_m = reader.number("z_m", p.z_m);
   if (const auto heading_deg = reader.optional_number("heading_deg")) p.heading_rad = *heading_deg * kDegToRad;
+  config.command_log = reader.optional_text("command_log").value_or("");
   reader.reject_unknown();
-  return c;
+  return config;
 }
 
 mhd_plugin_instance* open_instance(const mhd_host* host, const mhd_param* params, size_t param_count, mhd_error* err) {
@@ -79,9 +102,11 @@ mhd_status call(mhd_plugin_instance* self, plugin_support::Need need, mhd_error*
 
 mhd_status start_instance(mhd_plugin_instance* self, mhd_error* err) {
   return call(self, plugin_support::Need::Open, err, [&](Instance& s) {
-    s.model.start(plugin_support::host_now(s.host));
+    const double now = plugin_support::host_now(s.host);
+    s.model.start(now);
     s.started = true;
     s.read_once = false;
+    s.log_event(now, plugin_support::CommandEvent::Start);
     s.publish_pose();
     return MHD_OK;
   });
@@ -89,6 +114,7 @@ mhd_status start_instance(mhd_plugin_instance* self, mhd_error* err) {
 
 mhd_status stop_instance(mhd_plugin_instance* self, mhd_error* err) {
   return call(self, plugin_support::Need::Open, err, [&](Instance& s) {
+    if (s.started) s.log_event(plugin_support::host_now(s.host), plugin_support::CommandEvent::Stop);
     s.started = false;  // the base stands where it is; start() begins again from here
     return MHD_OK;
   });
@@ -113,14 +139,21 @@ mhd_status base_read(mhd_plugin_instance* self, mhd_base_state* out, mhd_error* 
 mhd_status base_write(mhd_plugin_instance* self, const mhd_base_command* command, mhd_error* err) {
   return call(self, plugin_support::Need::Running, err, [&](Instance& s) {
     if (command == nullptr) throw std::invalid_argument("base_write: command is NULL");
-    s.model.command(Twist(command->vx_mps, command->vz_mps, command->omega_radps), plugin_support::host_now(s.host));
+    const double now = plugin_support::host_now(s.host);
+    s.model.command(Twist(command->vx_mps, command->vz_mps, command->omega_radps), now);
+    s.log_event(now, plugin_support::CommandEvent::Command, {command->vx_mps, command->vz_mps, command->omega_radps});
     return MHD_OK;
   });
 }
 
 mhd_status simulate_until(mhd_plugin_instance* self, double t_s, mhd_error* err) {
   return call(self, plugin_support::Need::Running, err, [&](Instance& s) {
+    const bool was_commanded = !s.model.watchdog_stopped();
     s.model.simulate_until(t_s);
+    if (was_commanded && s.model.watchdog_stopped()) {
+      // The base's own watchdog fired: the last command expired command_timeout_s after it came.
+      s.log_event(s.model.command_time_s() + s.model.config().command_timeout_s, plugin_support::CommandEvent::Timeout);
+    }
     s.publish_pose();
     return MHD_OK;
   });

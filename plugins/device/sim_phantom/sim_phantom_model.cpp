@@ -34,7 +34,7 @@ Eigen::Isometry3d pomhi_X_robot_base() {
 PhantomSimModel::PhantomSimModel(const PhantomSimConfig& config) : config_(config) {
   require_positive(config.max_force_N, "max_force_N");
   require_positive(config.hand_stiffness_N_per_m, "hand_stiffness_N_per_m");
-  require_positive(config.watchdog_s, "watchdog_s");
+  require_positive(config.command_timeout_s, "command_timeout_s");
   if (!(config.position_resolution_m >= 0.0) || !std::isfinite(config.position_resolution_m)) {
     throw std::invalid_argument("position_resolution_m must be a non-negative number");
   }
@@ -104,9 +104,9 @@ void PhantomSimModel::simulate_until(double t_s, const Eigen::Vector3d& hand_P_m
   if (t_s < time_s_) return;
   time_s_ = t_s;
 
-  // Torques in effect: the latest command, unless it is older than the watchdog allows.
+  // Torques in effect: the latest command, unless it is older than command_timeout_s.
   const bool fresh = tau_command_ && command_time_s_ <= t_s + kTimeTolerance_s &&
-                     t_s - command_time_s_ <= config_.watchdog_s + kTimeTolerance_s;
+                     t_s - command_time_s_ <= config_.command_timeout_s + kTimeTolerance_s;
   watchdog_stopped_ = !fresh;
   tau_applied_ = fresh ? *tau_command_ : Eigen::Vector3d::Zero();
 

@@ -10,8 +10,8 @@
 // the closed-form inverse kinematics; when it has no solution within the joint limits the
 // last reachable angles are held (counted). Joint angles are quantised to the encoder
 // resolution and the reported HIP is the forward kinematics of the quantised angles.
-// Torques received more than watchdog_s before t count as zero: a stalled host must not
-// leave force applied. Not thread-safe; nothing here is random.
+// Torques received more than command_timeout_s before t count as zero (the device's own
+// command watchdog): a stalled host must not leave force applied. Not thread-safe; nothing here is random.
 
 #include "kinematics/base_pose.h"
 #include "kinematics/phantom_kinematics.h"
@@ -33,7 +33,8 @@ struct PhantomSimConfig {
   PhantomModel device = phantom_premium_1_5();
   double max_force_N = 8.5;
   double hand_stiffness_N_per_m = 2000.0;
-  double watchdog_s = 0.1;
+  /// The device's own command watchdog: torques older than this count as zero.
+  double command_timeout_s = 0.02;
   /// Tool-point resolution; each joint angle is quantised to resolution / (l1 + l2)
   /// (the angle step that moves the tool by at most this much). 0: no quantisation.
   double position_resolution_m = 0.03e-3;
@@ -70,6 +71,8 @@ class PhantomSimModel {
   [[nodiscard]] const Eigen::Vector3d& applied_torques_Nm() const { return tau_applied_; }
   [[nodiscard]] const Eigen::Vector3d& force_P_N() const { return force_P_; }
   [[nodiscard]] bool watchdog_stopped() const { return watchdog_stopped_; }
+  /// Host time of the latest command (0 before the first).
+  [[nodiscard]] double command_time_s() const { return command_time_s_; }
   /// Evaluations where the hand (or the pushed tool point) lay outside the workspace box.
   [[nodiscard]] std::uint64_t workspace_clamps() const { return workspace_clamps_; }
   /// Evaluations where the inverse kinematics failed and the last angles were held.

@@ -1,9 +1,12 @@
 // The sim_phantom device plugin: the C ABI over PhantomSimModel. Torques are stamped with
 // the host clock when they arrive; the host advances the device with simulate_until(),
 // which reads the hand and the base pose from the simulated world (without a world: a
-// fixed hand, parameter hand_P_m, in the device frame). docs/sim_phantom.md.
+// fixed hand, parameter hand_P_m, in the device frame). With command_log, every command
+// and every firing of the command watchdog goes to a CSV (sim_common/command_log.h).
+// docs/sim_phantom.md.
 
 #include "sim_phantom_model.h"
+#include "sim_common/command_log.h"
 #include "sim_common/plugin_params.h"
 #include "sim_common/plugin_shell.h"
 
@@ -11,10 +14,13 @@
 
 #include <mhd/plugin_abi.h>
 
+#include <array>
 #include <cmath>
+#include <memory>
 #include <mutex>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace mhd::sim_phantom {
@@ -27,10 +33,16 @@ constexpr double kDegToRad = std::numbers::pi / 180.0;
 struct Config {
   PhantomSimConfig model;
   Eigen::Vector3d rest_hand_P_m = Eigen::Vector3d::Zero();
+  std::string command_log;  ///< empty: none
 };
 
 struct Instance {
-  Instance(const mhd_host& h, const Config& config) : host(h), model(config.model), rest_hand_P_m(config.rest_hand_P_m) {}
+  Instance(const mhd_host& h, const Config& config) : host(h), model(config.model), rest_hand_P_m(config.rest_hand_P_m) {
+    if (!config.command_log.empty()) {
+      log = std::make_unique<plugin_support::CommandLog>(config.command_log,
+                                                         std::array{"tau1_Nm", "tau2_Nm", "tau3_Nm"});
+    }
+  }
 
   std::mutex mutex;
   mhd_host host;
@@ -39,6 +51,11 @@ struct Instance {
   bool started = false;
   bool read_once = false;
   double last_read_time_s = 0.0;
+  std::unique_ptr<plugin_support::CommandLog> log;  ///< written only under `mutex`: one producer
+
+  void log_event(double t_s, plugin_support::CommandEvent event, const std::array<double, 3>& values = {}) noexcept {
+    if (log) log->add(t_s, event, values);
+  }
 
   /// The hand in P: the world's hand seen from the device at the world's base pose.
   Eigen::Vector3d hand_P() const {
@@ -67,11 +84,12 @@ Config read_config(const mhd_param* params, std::size_t count) {
   Config c;
   PhantomSimConfig& m = c.model;
   m.hand_stiffness_N_per_m = reader.positive("hand_stiffness_N_per_m", m.hand_stiffness_N_per_m);
-  m.watchdog_s = reader.positive("watchdog_s", m.watchdog_s);
+  m.command_timeout_s = reader.positive("command_timeout_s", m.command_timeout_s);
   m.position_resolution_m = reader.non_negative("position_resolution_m", m.position_resolution_m);
   m.X_robot_phantom = read_pose(reader, "phantom_position_m", "phantom_rpy_deg", m.X_robot_phantom);
   m.X_robot_base = read_pose(reader, "base_position_m", "base_rpy_deg", m.X_robot_base);
   c.rest_hand_P_m = reader.vector3("hand_P_m", m.device.workspace.center_P_m());
+  c.command_log = reader.optional_text("command_log").value_or("");
   reader.reject_unknown();
   return c;
 }
@@ -98,12 +116,14 @@ mhd_status start_instance(mhd_plugin_instance* self, mhd_error* err) {
     s.model.simulate_until(now, s.hand_P());
     s.started = true;
     s.read_once = false;
+    s.log_event(now, plugin_support::CommandEvent::Start);
     return MHD_OK;
   });
 }
 
 mhd_status stop_instance(mhd_plugin_instance* self, mhd_error* err) {
   return call(self, plugin_support::Need::Open, err, [&](Instance& s) {
+    if (s.started) s.log_event(plugin_support::host_now(s.host), plugin_support::CommandEvent::Stop);
     s.started = false;
     return MHD_OK;
   });
@@ -138,14 +158,21 @@ mhd_status device_write(mhd_plugin_instance* self, const mhd_device_command* com
   return call(self, plugin_support::Need::Running, err, [&](Instance& s) {
     if (command == nullptr) throw std::invalid_argument("device_write: command is NULL");
     const Eigen::Vector3d tau(command->joint_torques_Nm[0], command->joint_torques_Nm[1], command->joint_torques_Nm[2]);
-    s.model.command(tau, plugin_support::host_now(s.host));
+    const double now = plugin_support::host_now(s.host);
+    s.model.command(tau, now);
+    s.log_event(now, plugin_support::CommandEvent::Command, {tau[0], tau[1], tau[2]});
     return MHD_OK;
   });
 }
 
 mhd_status simulate_until(mhd_plugin_instance* self, double t_s, mhd_error* err) {
   return call(self, plugin_support::Need::Running, err, [&](Instance& s) {
+    const bool was_commanded = !s.model.watchdog_stopped();
     s.model.simulate_until(t_s, s.hand_P());
+    if (was_commanded && s.model.watchdog_stopped()) {
+      // The device's own watchdog fired: the last torques expired command_timeout_s after they came.
+      s.log_event(s.model.command_time_s() + s.model.config().command_timeout_s, plugin_support::CommandEvent::Timeout);
+    }
     return MHD_OK;
   });
 }

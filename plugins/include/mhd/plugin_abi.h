@@ -13,7 +13,16 @@
  * X_AB naming: a pose of B given in A.
  *
  * The host validates everything a plugin returns (NaN, ranges, staleness) and clamps
- * every command it sends; a plugin never needs to trust the host's numbers either. */
+ * every command it sends; a plugin never needs to trust the host's numbers either.
+ *
+ * Ending safely. The host ends every run with a zero device command and a zero base
+ * command; when the process is dying (a plugin crashed, aborted, threw or called exit())
+ * it sends both from a last-gasp path that may run in a signal handler, so device_write
+ * and base_write should not wait on locks another thread may hold for long. What no
+ * process survives (kill -9, power loss) the hardware must handle: a backend driving
+ * real hardware MUST arm the hardware's own command timeout at start() (amplifier or
+ * motor-controller watchdog: without a fresh command within that time, zero torque /
+ * base stopped). The simulated backends model it (parameter command_timeout_s). */
 #ifndef MHD_PLUGIN_ABI_H
 #define MHD_PLUGIN_ABI_H
 

@@ -1,0 +1,59 @@
+#pragma once
+// What a simulated backend received, seen from the hardware's side: a CSV of every command
+// with the host time it arrived, and the backend's own watchdog firing. The caller (the
+// host's real-time thread) only copies a fixed-size row into a lock-free SPSC ring; a
+// writer thread the log owns writes the rows and flushes at least every 50 ms, and at close.
+//
+// File: the header "t_s,event,<value names>", then one row per event:
+//   start    the backend was started (values 0)
+//   command  a command as received (e.g. torques, or a base twist)
+//   timeout  the backend's command watchdog fired: no command for command_timeout_s; t_s is
+//            when the last command expired, the values are what then acts (0)
+//   stop     the backend was stopped (values 0)
+//   dropped  at close, when the ring was ever full: the first value is how many rows were lost
+
+#include "realtime/spsc_ring.h"
+
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <thread>
+
+namespace mhd::plugin_support {
+
+enum class CommandEvent : std::uint8_t { Start, Command, Timeout, Stop };
+
+class CommandLog {
+ public:
+  /// Creates `path` (truncating it), writes the header and starts the writer thread.
+  /// Throws std::runtime_error "cannot write the command log '<path>': <reason>".
+  CommandLog(const std::string& path, const std::array<const char*, 3>& value_names);
+  /// Stops the writer, writes every queued row, flushes and closes the file.
+  ~CommandLog();
+  CommandLog(const CommandLog&) = delete;
+  CommandLog& operator=(const CommandLog&) = delete;
+
+  /// Real-time side: never blocks, allocates or does I/O. One producer at a time (the
+  /// plugins call it under their instance mutex). A full ring drops the row (counted).
+  void add(double t_s, CommandEvent event, const std::array<double, 3>& values) noexcept;
+  [[nodiscard]] std::uint64_t dropped() const noexcept { return dropped_.load(std::memory_order_relaxed); }
+
+ private:
+  struct Row {
+    double t_s = 0.0;
+    CommandEvent event = CommandEvent::Command;
+    std::array<double, 3> values{};
+  };
+  void write_queued();
+  void writer_loop();
+
+  std::FILE* file_ = nullptr;
+  realtime::SpscRing<Row> ring_{1 << 14};  // 16 s of 1 kHz commands
+  std::atomic<std::uint64_t> dropped_{0};
+  std::atomic<bool> stop_{false};
+  std::thread writer_;
+};
+
+}  // namespace mhd::plugin_support
