@@ -336,7 +336,7 @@ std::filesystem::path MeshCache::file_for(const MeshCacheKey& key) const {
 }
 
 CachedMesh MeshCache::load(const std::filesystem::path& file, const Eigen::Vector3d& scale_to_m,
-                           const MeshProgress& progress, std::optional<std::uint64_t> max_triangles) {
+                           const MeshProgress& progress, std::optional<TriangleBudget> budget) {
   CachedMesh result;
   const std::string name = short_name(file);
   std::optional<MeshCacheKey> key;
@@ -347,10 +347,11 @@ CachedMesh MeshCache::load(const std::filesystem::path& file, const Eigen::Vecto
     result.cache_file = file_for(*key);
     std::string why;
     auto bvh = read_cache_file(result.cache_file, *key, name, progress, why);
-    if (bvh && max_triangles && bvh->mesh().triangle_count() > *max_triangles) {
-      result.error = MeshLoadError{file, fmt::format("{} triangles, more than max_triangles ({})",
-                                                     bvh->mesh().triangle_count(), *max_triangles)};
-      return result;
+    if (bvh && budget) {
+      if (std::string refused = budget->refusal("", bvh->mesh().triangle_count(), "triangles"); !refused.empty()) {
+        result.error = MeshLoadError{file, std::move(refused)};
+        return result;
+      }
     }
     if (bvh) {
       ++stats_.hits;
@@ -378,7 +379,7 @@ CachedMesh MeshCache::load(const std::filesystem::path& file, const Eigen::Vecto
   // Roughly 16+ bytes per triangle in binary formats; text formats are larger, so this
   // errs towards reporting.
   if (progress && !ec && file_bytes >= kProgressMinTriangles * 16) read_progress = progress;
-  MeshLoadResult loaded = load_mesh_file(file, scale_to_m, read_progress, max_triangles);
+  MeshLoadResult loaded = load_mesh_file(file, scale_to_m, read_progress, budget);
   if (!loaded.ok()) {
     result.error = std::move(loaded.error);
     return result;

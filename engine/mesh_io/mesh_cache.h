@@ -82,11 +82,11 @@ class MeshCache {
   /// Loads `file` at `scale_to_m` (see load_mesh_file()) with its BVH, from the cache
   /// if a valid entry exists, else from the file, then stores it.
   /// `progress` is called for meshes of kProgressMinTriangles or more (for the read
-  /// step, estimated from the file size). `max_triangles` as for load_mesh_file(), and
-  /// applied to a cache hit too.
+  /// step, estimated from the file size). `budget` as for load_mesh_file(), and applied
+  /// to a cache hit too.
   [[nodiscard]] CachedMesh load(const std::filesystem::path& file, const Eigen::Vector3d& scale_to_m,
                                 const MeshProgress& progress = {},
-                                std::optional<std::uint64_t> max_triangles = std::nullopt);
+                                std::optional<TriangleBudget> budget = std::nullopt);
 
   [[nodiscard]] const std::optional<std::filesystem::path>& dir() const { return dir_; }
   [[nodiscard]] bool writable() const { return writable_; }

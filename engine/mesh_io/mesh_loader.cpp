@@ -150,7 +150,7 @@ std::size_t finish_loaded_mesh(TriangleMesh& mesh, const Eigen::Vector3d& scale_
 }
 
 MeshLoadResult load_mesh_file(const std::filesystem::path& file, const Eigen::Vector3d& scale_to_m,
-                              const MeshProgress& progress, std::optional<std::uint64_t> max_triangles) {
+                              const MeshProgress& progress, std::optional<TriangleBudget> budget) {
   if (!scale_to_m.allFinite() || (scale_to_m.array() == 0.0).any()) {
     return fail(file, fmt::format("invalid scale ({}, {}, {}): every factor must be finite and non-zero",
                                   scale_to_m.x(), scale_to_m.y(), scale_to_m.z()));
@@ -164,9 +164,10 @@ MeshLoadResult load_mesh_file(const std::filesystem::path& file, const Eigen::Ve
     if (!head) return fail(file, fmt::format("cannot read file: {}", std::strerror(errno)));
     const MeshHeaderCheck header = check_mesh_header(*head, opened.size_bytes(), file.extension().string());
     if (!header.ok()) return fail(file, header.error);
-    if (max_triangles && header.claimed_faces && *header.claimed_faces > *max_triangles) {
-      return fail(file, fmt::format("the header claims {} faces, more than max_triangles ({})", *header.claimed_faces,
-                                    *max_triangles));
+    if (budget && header.claimed_faces) {
+      if (std::string refused = budget->refusal("the header claims", *header.claimed_faces, "faces"); !refused.empty()) {
+        return fail(file, std::move(refused));
+      }
     }
   }
 
@@ -237,8 +238,10 @@ MeshLoadResult load_mesh_file(const std::filesystem::path& file, const Eigen::Ve
   }
   importer.FreeScene();
   if (mesh.triangles.empty()) return fail(file, "mesh has no triangles");
-  if (max_triangles && mesh.triangles.size() > *max_triangles) {
-    return fail(file, fmt::format("{} triangles, more than max_triangles ({})", mesh.triangles.size(), *max_triangles));
+  if (budget) {
+    if (std::string refused = budget->refusal("", mesh.triangles.size(), "triangles"); !refused.empty()) {
+      return fail(file, std::move(refused));
+    }
   }
   // An indexed surface has about half as many vertices as triangles; more vertices than
   // triangles means corners are not shared (STL, per-face OBJ) or the file has several

@@ -2,6 +2,7 @@
 // Loads a mesh file (any format assimp reads) into one TriangleMesh in metres.
 
 #include "geometry/triangle_mesh.h"
+#include "mesh_io/triangle_budget.h"
 
 #include <Eigen/Core>
 
@@ -43,12 +44,12 @@ struct MeshLoadResult {
 /// `progress`, if set, receives assimp's read/post-processing progress.
 /// Bounded: the file and every side file assimp opens (an OBJ's mtllib) must be regular
 /// files, and so must textures that exist; a PLY's or binary STL's header counts must fit
-/// the file's size, and with `max_triangles` set neither the header's face count nor the
-/// loaded triangles may exceed it. All of this is checked before assimp allocates.
+/// the file's size, and with a `budget` neither the header's face count (checked before
+/// assimp allocates) nor the loaded triangles may exceed what is left of it.
 [[nodiscard]] MeshLoadResult load_mesh_file(const std::filesystem::path& file,
                                             const Eigen::Vector3d& scale_to_m,
                                             const MeshProgress& progress = {},
-                                            std::optional<std::uint64_t> max_triangles = std::nullopt);
+                                            std::optional<TriangleBudget> budget = std::nullopt);
 
 /// Applies the loader's clean-up to a mesh in memory: scale (and winding flip for a
 /// mirroring scale), invalid/degenerate triangle and unused vertex removal, vertex

@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -74,9 +75,15 @@ struct HapticsSettings {
   double update_rate_Hz = 1000.0;
 };
 
+/// Default of <scene max_triangles>: the most triangles a scene may load.
+inline constexpr std::uint64_t kDefaultMaxTriangles = 50'000'000;
+
 struct SceneDescription {
   std::filesystem::path file;  ///< the root XML file
   std::string name;
+  /// Triangles over the scene's distinct meshes and primitives, at most; checked against
+  /// each mesh file's header before it is loaded, and after.
+  std::uint64_t max_triangles = kDefaultMaxTriangles;
   HapticsSettings haptics;
   std::map<std::string, HapticMaterial> materials;
   std::vector<ObjectDescription> objects;

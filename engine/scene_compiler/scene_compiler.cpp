@@ -8,6 +8,7 @@
 
 #include <array>
 #include <bit>
+#include <cstdint>
 #include <cmath>
 #include <exception>
 #include <map>
@@ -195,9 +196,11 @@ class Compiler {
     const MeshKey key = mesh_key(source);
     if (const auto it = meshes_.find(key); it != meshes_.end()) return it->second;
     SharedShape shape;
-    const CachedMesh loaded = cache_.load(source.file, source.scale_to_m, progress_for(object));
+    const TriangleBudget budget{description_.max_triangles, loaded_triangles_};
+    const CachedMesh loaded = cache_.load(source.file, source.scale_to_m, progress_for(object), budget);
     if (loaded.ok()) {
       shape.bvh = loaded.bvh;
+      loaded_triangles_ += loaded.mesh().triangle_count();
       if (loaded.dropped_triangles > 0) {
         spdlog::info("{}: mesh file '{}': dropped {} degenerate triangles", object.name, source.file.string(),
                      loaded.dropped_triangles);
@@ -213,6 +216,11 @@ class Compiler {
   const SharedShape& primitive(const ObjectDescription& object, const std::string& key, Make&& make) {
     if (const auto it = primitives_.find(key); it != primitives_.end()) return it->second;
     auto mesh = std::make_shared<const TriangleMesh>(make());
+    const TriangleBudget budget{description_.max_triangles, loaded_triangles_};
+    if (std::string refused = budget.refusal("", mesh->triangle_count(), "triangles"); !refused.empty()) {
+      return invalid(std::move(refused));
+    }
+    loaded_triangles_ += mesh->triangle_count();
     const bool report = options_.progress && mesh->triangle_count() >= kProgressMinTriangles;
     const MeshProgress progress = progress_for(object);
     const std::string what = fmt::format("building BVH ({} triangles)", mesh->triangle_count());
@@ -228,6 +236,7 @@ class Compiler {
   std::map<MeshKey, SharedShape> meshes_;
   std::map<std::string, SharedShape> primitives_;
   SharedShape invalid_;
+  std::uint64_t loaded_triangles_ = 0;  ///< over distinct shapes, for max_triangles
 };
 
 }  // namespace

@@ -1,25 +1,64 @@
 #include "scene_xml/readable_file.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <array>
-#include <fstream>
-#include <system_error>
+#include <cerrno>
 
 namespace mhd::scene_xml {
+namespace {
+
+FileProblem problem_of_errno(int error) {
+  if (error == ENOENT || error == ENOTDIR) return FileProblem::NotFound;
+  if (error == ELOOP) return FileProblem::SymlinkLoop;
+  return FileProblem::NotReadable;
+}
+
+/// Opens a regular file without blocking on a FIFO swapped in after the check; -1 with
+/// `problem` set otherwise.
+int open_regular(const std::filesystem::path& path, FileProblem& problem) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) {
+    problem = problem_of_errno(errno);
+    return -1;
+  }
+  if (!S_ISREG(st.st_mode)) {  // never open a FIFO or device: that can block
+    problem = FileProblem::NotRegularFile;
+    return -1;
+  }
+  int fd = -1;
+  do {
+    fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+  } while (fd < 0 && errno == EINTR);
+  if (fd < 0) {
+    problem = problem_of_errno(errno);
+    return -1;
+  }
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    ::close(fd);
+    problem = FileProblem::NotRegularFile;
+    return -1;
+  }
+  problem = FileProblem::None;
+  return fd;
+}
+
+}  // namespace
 
 FileProblem check_readable_file(const std::filesystem::path& path) {
-  std::error_code ec;
-  const std::filesystem::file_status status = std::filesystem::status(path, ec);
-  if (ec || !std::filesystem::exists(status)) return FileProblem::NotFound;
-  if (!std::filesystem::is_regular_file(status)) return FileProblem::NotRegularFile;
-  std::ifstream in(path, std::ios::binary);
-  if (!in.is_open()) return FileProblem::NotReadable;
-  return FileProblem::None;
+  FileProblem problem{};
+  const int fd = open_regular(path, problem);
+  if (fd >= 0) ::close(fd);
+  return problem;
 }
 
 std::string_view describe(FileProblem problem) {
   switch (problem) {
     case FileProblem::None: return "";
     case FileProblem::NotFound: return "not found";
+    case FileProblem::SymlinkLoop: return "is a symlink loop";
     case FileProblem::NotRegularFile: return "is not a regular file";
     case FileProblem::NotReadable: return "is not readable";
   }
@@ -27,18 +66,22 @@ std::string_view describe(FileProblem problem) {
 }
 
 std::optional<std::string> read_whole_file(const std::filesystem::path& path, FileProblem& problem) {
-  problem = check_readable_file(path);
-  if (problem != FileProblem::None) return std::nullopt;
-  std::ifstream in(path, std::ios::binary);
+  const int fd = open_regular(path, problem);
+  if (fd < 0) return std::nullopt;
   std::string bytes;
   std::array<char, 16384> buffer{};
-  while (in.read(buffer.data(), static_cast<std::streamsize>(buffer.size())) || in.gcount() > 0) {
-    bytes.append(buffer.data(), static_cast<std::size_t>(in.gcount()));
+  for (;;) {
+    const ssize_t n = ::read(fd, buffer.data(), buffer.size());
+    if (n < 0 && (errno == EINTR || errno == EAGAIN)) continue;
+    if (n < 0) {
+      ::close(fd);
+      problem = FileProblem::NotReadable;
+      return std::nullopt;
+    }
+    if (n == 0) break;
+    bytes.append(buffer.data(), static_cast<std::size_t>(n));
   }
-  if (in.bad()) {
-    problem = FileProblem::NotReadable;
-    return std::nullopt;
-  }
+  ::close(fd);
   return bytes;
 }
 

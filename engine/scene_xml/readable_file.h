@@ -1,5 +1,6 @@
 #pragma once
-// Whether a path names a regular file this process can read, and reading one whole.
+// Whether a path names a regular file this process can read, and reading one whole;
+// neither ever opens (and so blocks on) a FIFO or device.
 
 #include <filesystem>
 #include <optional>
@@ -8,11 +9,12 @@
 
 namespace mhd::scene_xml {
 
-enum class FileProblem { None, NotFound, NotRegularFile, NotReadable };
+enum class FileProblem { None, NotFound, SymlinkLoop, NotRegularFile, NotReadable };
 
 [[nodiscard]] FileProblem check_readable_file(const std::filesystem::path& path);
 
-/// "not found", "is not a regular file", "is not readable" (empty for None).
+/// "not found", "is a symlink loop", "is not a regular file", "is not readable" (empty
+/// for None).
 [[nodiscard]] std::string_view describe(FileProblem problem);
 
 /// The file's bytes, or nullopt with `problem` set.

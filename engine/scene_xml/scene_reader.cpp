@@ -35,6 +35,10 @@ using scene_xml::Presence;
 
 constexpr std::string_view kVersion = "1";
 constexpr double kMinScaleToM = 1e-6;
+/// Highest max_triangles accepted: 1e9 triangles need about 100 GB with their BVH.
+constexpr int kMaxMaxTriangles = 1'000'000'000;
+/// Includes below the root file, at most (docs/scene-format.md).
+constexpr std::size_t kMaxIncludeDepth = 64;
 constexpr double kMaxScaleToM = 1e6;
 constexpr std::array<std::string_view, 5> kShapes = {"mesh", "plane", "sphere", "box", "cylinder"};
 
@@ -242,7 +246,7 @@ class SceneReader {
 
   void read_scene_element(const tinyxml2::XMLElement& root, FileContext& ctx, bool is_root) {
     AttributeParser a(root, ctx.sink,
-                      {"version", "name", "unit", "xmlns:xsi", "xsi:noNamespaceSchemaLocation"});
+                      {"version", "name", "unit", "max_triangles", "xmlns:xsi", "xsi:noNamespaceSchemaLocation"});
     if (const auto version = a.token("version", Presence::Required); version && *version != kVersion) {
       ctx.sink.error(a.line_of("version"),
                      concat("unsupported scene version '", *version, "' (this reader reads version ",
@@ -251,6 +255,10 @@ class SceneReader {
     }
     if (const auto name = a.text("name", Presence::Optional, Emptiness::Forbidden); name && is_root) {
       scene_.name = *name;
+    }
+    if (const auto max_triangles = a.integer("max_triangles", Presence::Optional, 1, kMaxMaxTriangles);
+        max_triangles && is_root) {
+      scene_.max_triangles = static_cast<std::uint64_t>(*max_triangles);
     }
     if (const auto unit = a.token("unit", Presence::Optional)) {
       if (*unit == "m") {
@@ -288,6 +296,13 @@ class SceneReader {
     });
   }
 
+  /// "a.xml -> b.xml -> <next>": the open files from `first` on, then `next`.
+  std::string include_chain(std::size_t first, const std::string& next) const {
+    std::string chain;
+    for (std::size_t j = first; j < open_files_.size(); ++j) chain += open_files_[j].display + " -> ";
+    return chain + next;
+  }
+
   void read_include(const tinyxml2::XMLElement& e, const FileContext& ctx) {
     AttributeParser a(e, ctx.sink, {"file"});
     expect_no_children(e, ctx.sink);
@@ -299,10 +314,12 @@ class SceneReader {
     fs::path identity = identity_of(path);
     for (std::size_t i = 0; i < open_files_.size(); ++i) {
       if (open_files_[i].identity != identity) continue;
-      std::string chain;
-      for (std::size_t j = i; j < open_files_.size(); ++j) chain += open_files_[j].display + " -> ";
-      chain += display;
-      ctx.sink.error(line, concat("include cycle: ", chain));
+      ctx.sink.error(line, concat("include cycle: ", include_chain(i, display)));
+      return;
+    }
+    // Each level costs stack (a parsed document per file): refuse before recursing.
+    if (open_files_.size() > kMaxIncludeDepth) {
+      ctx.sink.error(line, concat("includes nested deeper than ", kMaxIncludeDepth, ": ", include_chain(0, display)));
       return;
     }
     scene_xml::FileProblem problem{};

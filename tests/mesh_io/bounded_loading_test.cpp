@@ -52,16 +52,18 @@ TEST(BoundedLoading, HeaderFaceCountAboveMaxTrianglesIsRefusedBeforeLoading) {
   mesh.vertices_m = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
   mesh.triangles = {{0, 1, 2}, {1, 3, 2}};
   test::write_binary_ply(dir / "two.ply", mesh);
-  EXPECT_EQ(reason_of(load_mesh_file(dir / "two.ply", Eigen::Vector3d::Ones(), {}, 1)),
+  EXPECT_EQ(reason_of(load_mesh_file(dir / "two.ply", Eigen::Vector3d::Ones(), {}, TriangleBudget{1})),
             "the header claims 2 faces, more than max_triangles (1)");
-  EXPECT_TRUE(load_mesh_file(dir / "two.ply", Eigen::Vector3d::Ones(), {}, 2).ok());
+  EXPECT_TRUE(load_mesh_file(dir / "two.ply", Eigen::Vector3d::Ones(), {}, TriangleBudget{2}).ok());
 }
 
 TEST(BoundedLoading, LoadedTrianglesAboveMaxTrianglesAreRefused) {
   TempDir dir;
   test::write_box_obj(dir / "box.obj", Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());  // OBJ: no header count
-  EXPECT_EQ(reason_of(load_mesh_file(dir / "box.obj", Eigen::Vector3d::Ones(), {}, 11)),
+  EXPECT_EQ(reason_of(load_mesh_file(dir / "box.obj", Eigen::Vector3d::Ones(), {}, TriangleBudget{11})),
             "12 triangles, more than max_triangles (11)");
+  EXPECT_EQ(reason_of(load_mesh_file(dir / "box.obj", Eigen::Vector3d::Ones(), {}, TriangleBudget{20, 10})),
+            "12 triangles, more than the 10 left of max_triangles (20) after the scene's other 10 triangles");
 }
 
 TEST(BoundedLoading, MtllibNamingAFifoFailsInsteadOfBlocking) {
@@ -119,7 +121,7 @@ TEST(BoundedLoading, MeshFileThatIsAFifoIsRefused) {
 /// Good input is never refused: the repository's assets, and Debian's bunny when present.
 void expect_loads(const fs::path& file) {
   SCOPED_TRACE(file.string());
-  const MeshLoadResult r = load_mesh_file(file, Eigen::Vector3d::Ones(), {}, std::uint64_t{50'000'000});
+  const MeshLoadResult r = load_mesh_file(file, Eigen::Vector3d::Ones(), {}, TriangleBudget{50'000'000});
   ASSERT_TRUE(r.ok()) << r.error->message();
   EXPECT_GT(r.mesh->triangle_count(), 0u);
 }
