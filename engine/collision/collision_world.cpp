@@ -10,8 +10,11 @@ namespace mhd {
 namespace {
 
 // Lateral growth of every triangle in the sweep test, relative to the skin. It only has
-// to exceed double rounding at scene scale; a multiple of the skin keeps both in step.
-constexpr double kInflatePerSkin = 1.0;
+// to exceed double rounding at scene scale (1e-15 m at metres; this is 10 nm at the
+// default skin). It must stay well below the skin: a proxy resting one skin off a face
+// at a right-angled convex edge is one skin outside the other face, and a growth of a
+// whole skin caught it there as if it touched that face from behind.
+constexpr double kInflatePerSkin = 1e-2;
 // Sweeps longer than this go in pieces (see sweep()).
 constexpr double kFirstPiece_m = 0.01;
 

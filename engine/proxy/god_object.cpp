@@ -143,7 +143,14 @@ ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMateri
 
   const Eigen::Vector3d to_proxy = motion.p - hip_W;
   const double depth = to_proxy.norm();
-  if (state.plane_count == 0 || !(depth > 0.0)) return out;  // free space: no force
+  // Contact starts when the HIP is behind the surface of a plane the proxy rests on;
+  // a HIP inside the proxy's skin, or beside it, touches nothing (no spring, no damping).
+  bool behind_surface = false;
+  for (int i = 0; i < state.plane_count; ++i) {
+    const ConstraintPlane& plane = state.planes[static_cast<std::size_t>(i)];
+    behind_surface = behind_surface || plane.normal_W.dot(hip_W) < plane.offset_m - settings.skin_m;
+  }
+  if (!behind_surface || !(depth > 0.0)) return out;
 
   const int object = state.planes[0].triangle.object;
   const HapticMaterial& mat = material_of(materials, object);

@@ -1,5 +1,7 @@
 #include "proxy/proxy_motion.h"
 
+#include "collision/segment_triangle.h"
+
 #include <cmath>
 #include <optional>
 #include <span>
@@ -14,7 +16,7 @@ constexpr double kMinStepPerSkin = 1e-3;
 // further than this on a plane's wrong side has left it (the plane goes).
 constexpr double kFeasibleTolerancePerSkin = 1e-3;
 // A constraint is released once the proxy's projection leaves its triangle by more
-// than this (fraction of the skin). It exceeds the sweep's own inflation (one skin),
+// than this (fraction of the skin). It exceeds the sweep's own inflation of triangles,
 // so a triangle just hit is never released at once.
 constexpr double kReleaseMarginPerSkin = 2.0;
 
@@ -40,6 +42,42 @@ bool budgeted_sweep(const CollisionWorld& world, TickWork& work, const Eigen::Ve
     return false;
   }
   return true;
+}
+
+// Triangles one sweep may find touched only within its inflation.
+constexpr int kMaxGrazed = 8;
+// A graze must miss the triangle itself by this much (fraction of the skin): far above
+// double rounding, so a segment through a shared edge is never taken for a graze of both
+// neighbours, and far below the sweep's inflation.
+constexpr double kGrazeMarginPerSkin = 1e-4;
+
+// True when the leg a -> b reaches `t` only in the band the sweep adds round every
+// triangle (nanometres past an edge): it misses the triangle itself. Next to an open
+// boundary such grazes are all a sweep finds, and a plane built from one would hold the
+// proxy against nothing.
+bool only_grazes(const CollisionWorld& world, const TriangleRef& t, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                 double skin_m) {
+  const auto v = world.triangle_W(t);
+  return !sweep_point_triangle(a, b, v[0], v[1], v[2], skin_m, kGrazeMarginPerSkin * skin_m).has_value();
+}
+
+// budgeted_sweep that sweeps again past triangles it only grazes at the start of the leg
+// (where a proxy resting beside an open edge meets them), so they stop nothing.
+bool sweep_past_grazes(const CollisionWorld& world, TickWork& work, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                       double skin_m, std::span<const TriangleRef> ignore, std::optional<SweepHit>& hit) {
+  std::array<TriangleRef, kMaxIgnored + kMaxGrazed> skip{};
+  std::size_t k = 0;
+  for (const TriangleRef& t : ignore) skip[k++] = t;
+  const std::size_t first_grazed = k;
+  const double min_step = kMinStepPerSkin * skin_m;
+  for (;;) {
+    if (!budgeted_sweep(world, work, a, b, skin_m, std::span<const TriangleRef>(skip.data(), k), hit)) return false;
+    if (!hit || hit->t_stop * (b - a).norm() > min_step || k - first_grazed == kMaxGrazed ||
+        !only_grazes(world, hit->where, a, b, skin_m)) {
+      return true;
+    }
+    skip[k++] = hit->where;
+  }
 }
 
 std::span<const TriangleRef> ignored_of(const Motion& m) {
@@ -160,11 +198,11 @@ void advance(Motion& m, const Eigen::Vector3d& to, const std::optional<SweepHit>
 
 enum class Release { None, Moved, OutOfWork };
 
-// The active-set step at a corner of the collected planes: a plane whose own triangle
-// does not stop a move towards the projection of the goal on the other planes holds the
-// proxy only as an infinite plane (a saddle, a convex edge seen from the side) and goes.
-// The move is swept against that plane's triangles and stays inside the others, so it
-// crosses nothing.
+// The active-set step at the minimum over the collected planes: a plane whose own
+// triangle does not stop a move towards the projection of the goal on the other planes
+// holds the proxy only as an infinite plane (a saddle, a convex edge seen from the side,
+// a graze of an open boundary) and goes. The move is swept against that plane's
+// triangles and stays inside the others, so it crosses nothing.
 Release release_one_plane(const CollisionWorld& world, double skin_m, const Eigen::Vector3d& goal, Motion& m,
                           ProxyState& state, TickWork& work) {
   const double min_step = kMinStepPerSkin * skin_m;
@@ -184,7 +222,7 @@ Release release_one_plane(const CollisionWorld& world, double skin_m, const Eige
       if (m.ignored[at(j)].plane != i) keep[at(k++)] = m.ignored[at(j)].triangle;
     }
     std::optional<SweepHit> hit;
-    if (!budgeted_sweep(world, work, m.p, *target, skin_m, std::span<const TriangleRef>(keep.data(), at(k)), hit)) {
+    if (!sweep_past_grazes(world, work, m.p, *target, skin_m, std::span<const TriangleRef>(keep.data(), at(k)), hit)) {
       return Release::OutOfWork;
     }
     if (hit && hit->t_stop * (*target - m.p).norm() <= min_step) continue;  // plane i really holds
@@ -216,7 +254,7 @@ void solve_motion(const CollisionWorld& world, double skin_m, const Eigen::Vecto
   append_path(state, start);
   std::optional<SweepHit> hit;
   // The straight segment first, nothing ignored: if it is free the proxy is at the goal.
-  if (!budgeted_sweep(world, work, m.p, goal, skin_m, {}, hit)) return;
+  if (!sweep_past_grazes(world, work, m.p, goal, skin_m, {}, hit)) return;
   advance(m, goal, hit, state);
   if (!hit) return;
   if (!add_constraint(m, *hit, skin_m)) {
@@ -237,13 +275,14 @@ void solve_motion(const CollisionWorld& world, double skin_m, const Eigen::Vecto
         }
         continue;
       }
-      if (release_passed_constraints(world, m, skin_m)) continue;
     }
+    // Off a triangle past a convex edge, whether this step moved or an earlier one did.
+    if (release_passed_constraints(world, m, skin_m)) continue;
     if (m.plane_count == 0 || (goal - m.p).norm() <= min_step) return;  // at the goal
     if (single_face_under(world, m)) return;  // pressed onto one face: a minimum
     // At the minimum over the collected planes. Check it against the surface itself:
     // the straight segment to the goal, nothing ignored.
-    if (!budgeted_sweep(world, work, m.p, goal, skin_m, {}, hit)) return;
+    if (!sweep_past_grazes(world, work, m.p, goal, skin_m, {}, hit)) return;
     if (!hit) {
       advance(m, goal, hit, state);
       m.plane_count = 0;
@@ -263,9 +302,8 @@ void solve_motion(const CollisionWorld& world, double skin_m, const Eigen::Vecto
       continue;
     }
     if (moved) continue;
-    // Blocked straight ahead by a collected triangle: a true corner, unless one of its
-    // planes holds only as an infinite plane.
-    if (m.plane_count < 2) return;
+    // Blocked straight ahead by a collected triangle: a true minimum, unless one of the
+    // planes holds only as an infinite plane or a graze.
     const Release r = release_one_plane(world, skin_m, goal, m, state, work);
     if (r != Release::Moved) return;
   }

@@ -243,6 +243,22 @@ TEST(ProxyContract, AroundAConvexEdgeTheProxyFollowsAndOnTheFaceItHolds) {
   EXPECT_FALSE(beside.in_contact);
 }
 
+TEST(ProxyContract, SlidingOffARightAngledEdgeTheOtherFaceDoesNotCatchTheProxyFromBehind) {
+  // Pressed into the box's -y face and dragged past its +x edge: resting one skin off the
+  // -y face, the proxy is one skin outside the +x face, which a sweep that grows triangles
+  // by a whole skin took for a touch from behind, holding the proxy at the edge at full force.
+  Rig rig;
+  rig.add(make_box_mesh(V(0.2, 0.2, 0.2)));  // faces at +-0.1
+  reset_proxy(rig.state, V(0.08, -0.12, 0.0));
+  rig.move(V(0.08, -0.12, 0.0), V(0.08, -0.095, 0.0), 25);
+  // Along the face to the edge and round it, ending beside the +x face, outside the box.
+  const ProxyOutput edge = rig.move(V(0.08, -0.095, 0.0), V(0.099, -0.095, 0.0), 19);
+  EXPECT_NEAR(edge.proxy_W.y(), -0.1 - rig.settings.skin_m, 1e-12);
+  const ProxyOutput round = rig.move(V(0.099, -0.095, 0.0), V(0.13, -0.07, 0.0), 30);
+  EXPECT_EQ(round.proxy_W, V(0.13, -0.07, 0.0));
+  EXPECT_EQ(round.force_W, V::Zero());
+}
+
 TEST(ProxyContract, OnAnOpenSheetTheProxySlidesOverTheBoundaryAndAroundIt) {
   Rig rig;
   rig.add(quad(V(-0.05, -0.05, 0), V(0.05, -0.05, 0), V(0.05, 0.05, 0), V(-0.05, 0.05, 0)));
