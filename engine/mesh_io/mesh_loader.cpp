@@ -187,8 +187,10 @@ MeshLoadResult load_mesh_file(const std::filesystem::path& file, const Eigen::Ve
   }
   // No aiProcess_JoinIdenticalVertices: on an already indexed 1M-triangle PLY it costs
   // 0.65 s to find nothing to join. Files that arrive unshared are welded below instead.
-  const unsigned flags = aiProcess_Triangulate | aiProcess_PreTransformVertices | aiProcess_SortByPType |
-                         aiProcess_RemoveComponent;
+  // ValidateDataStructure runs first: without it a face index past the vertices (a
+  // hostile PLY, found by mhd-fuzz-mesh-header) crashes assimp's later steps.
+  const unsigned flags = aiProcess_ValidateDataStructure | aiProcess_Triangulate | aiProcess_PreTransformVertices |
+                         aiProcess_SortByPType | aiProcess_RemoveComponent;
   const aiScene* scene = importer.ReadFile(file.string(), flags);
   if (!io->refusals().empty()) return fail(file, fmt::format("side file {}", io->refusals().front()));
   if (const std::string texture = texture_problem(scene, file); !texture.empty()) return fail(file, texture);

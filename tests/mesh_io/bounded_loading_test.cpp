@@ -118,6 +118,17 @@ TEST(BoundedLoading, MeshFileThatIsAFifoIsRefused) {
   EXPECT_EQ(reason_of(load_mesh_file(dir / "pipe.ply", Eigen::Vector3d::Ones())), "is a FIFO, not a regular file");
 }
 
+TEST(BoundedLoading, FaceIndexPastTheVerticesIsRefusedNotACrash) {
+  // Found by mhd-fuzz-mesh-header: assimp's post-processing crashed on it.
+  TempDir dir;
+  TriangleMesh mesh;
+  mesh.vertices_m = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  mesh.triangles = {{0, 1, 130816}};
+  test::write_binary_ply(dir / "index.ply", mesh);
+  EXPECT_EQ(reason_of(load_mesh_file(dir / "index.ply", Eigen::Vector3d::Ones())),
+            "assimp could not read it: Validation failed: aiMesh::mFaces[0]::mIndices[2] is out of range");
+}
+
 /// Good input is never refused: the repository's assets, and Debian's bunny when present.
 void expect_loads(const fs::path& file) {
   SCOPED_TRACE(file.string());
