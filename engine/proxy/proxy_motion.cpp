@@ -49,7 +49,7 @@ constexpr int kMaxGrazed = 8;
 // A graze must miss the triangle itself by this much (fraction of the skin): far above
 // double rounding, so a segment through a shared edge is never taken for a graze of both
 // neighbours, and far below the sweep's inflation.
-constexpr double kGrazeMarginPerSkin = 1e-4;
+constexpr double kGrazeMarginPerSkin = 1e-6;
 
 // True when the leg a -> b reaches `t` only in the band the sweep adds round every
 // triangle (nanometres past an edge): it misses the triangle itself. Next to an open
@@ -61,19 +61,17 @@ bool only_grazes(const CollisionWorld& world, const TriangleRef& t, const Eigen:
   return !sweep_point_triangle(a, b, v[0], v[1], v[2], skin_m, kGrazeMarginPerSkin * skin_m).has_value();
 }
 
-// budgeted_sweep that sweeps again past triangles it only grazes at the start of the leg
-// (where a proxy resting beside an open edge meets them), so they stop nothing.
+// budgeted_sweep that sweeps again past triangles the leg only grazes (a proxy resting
+// beside an open edge, a hand passing one), so they stop nothing.
 bool sweep_past_grazes(const CollisionWorld& world, TickWork& work, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                        double skin_m, std::span<const TriangleRef> ignore, std::optional<SweepHit>& hit) {
   std::array<TriangleRef, kMaxIgnored + kMaxGrazed> skip{};
   std::size_t k = 0;
   for (const TriangleRef& t : ignore) skip[k++] = t;
   const std::size_t first_grazed = k;
-  const double min_step = kMinStepPerSkin * skin_m;
   for (;;) {
     if (!budgeted_sweep(world, work, a, b, skin_m, std::span<const TriangleRef>(skip.data(), k), hit)) return false;
-    if (!hit || hit->t_stop * (b - a).norm() > min_step || k - first_grazed == kMaxGrazed ||
-        !only_grazes(world, hit->where, a, b, skin_m)) {
+    if (!hit || k - first_grazed == kMaxGrazed || !only_grazes(world, hit->where, a, b, skin_m)) {
       return true;
     }
     skip[k++] = hit->where;
