@@ -196,6 +196,11 @@ void advance(Motion& m, const Eigen::Vector3d& to, const std::optional<SweepHit>
 
 enum class Release { None, Moved, OutOfWork };
 
+// Least gain in distance to the goal, as a fraction of it, that a release must make and
+// that counts as progress; and the sweeps a motion may make without progress.
+constexpr double kMinReleaseGainPerDistance = 1e-3;
+constexpr int kMaxSweepsWithoutGain = 8;
+
 // The active-set step at the minimum over the collected planes: a plane whose own
 // triangle does not stop a move towards the projection of the goal on the other planes
 // holds the proxy only as an infinite plane (a saddle, a convex edge seen from the side,
@@ -224,6 +229,11 @@ Release release_one_plane(const CollisionWorld& world, double skin_m, const Eige
       return Release::OutOfWork;
     }
     if (hit && hit->t_stop * (*target - m.p).norm() <= min_step) continue;  // plane i really holds
+    // A release must bring the proxy clearly nearer the goal, or releases and re-hits of
+    // the planes round a vertex could take turns for ever.
+    const Eigen::Vector3d next = hit ? Eigen::Vector3d(m.p + hit->t_stop * (*target - m.p)) : *target;
+    const double before = (goal - m.p).norm();
+    if ((goal - next).norm() > before - std::max(min_step, kMinReleaseGainPerDistance * before)) continue;
     drop_plane(m, i);
     advance(m, *target, hit, state);
     drop_violated_planes(m, skin_m);
@@ -259,7 +269,19 @@ void solve_motion(const CollisionWorld& world, double skin_m, const Eigen::Vecto
     work.exhausted = true;
     return;
   }
+  // Progress guard: constraint changes round a vertex of a fine mesh can take turns
+  // without bringing the proxy nearer; a motion that has not gained for a few sweeps is at
+  // its minimum as far as these planes can tell.
+  double best_distance = (goal - m.p).norm();
+  int sweeps_at_best = work.sweeps;
   for (;;) {
+    const double distance = (goal - m.p).norm();
+    if (distance < best_distance - std::max(min_step, kMinReleaseGainPerDistance * best_distance)) {
+      best_distance = distance;
+      sweeps_at_best = work.sweeps;
+    } else if (work.sweeps - sweeps_at_best >= kMaxSweepsWithoutGain) {
+      return;
+    }
     const auto target = project_onto_half_spaces(goal, std::span<const HalfSpace>(m.planes.data(), at(m.plane_count)),
                                                  kFeasibleTolerancePerSkin * skin_m);
     if (!target) return;  // numerically empty: stay (crossing-free) where we are
