@@ -25,6 +25,8 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <ctime>
+#include <exception>
 #include <limits>
 #include <map>
 #include <memory>
@@ -91,26 +93,55 @@ struct CallWatch {
 struct OpenedPlugin {
   PluginDescription description;
   PluginInstance instance;
+  /// "plugin 'x' (scene.xml:12)", made at open: a crash message names the plugin without allocating.
+  std::string culprit = description.where.line > 0
+                            ? fmt::format("plugin '{}' ({}:{})", description.name, description.where.file,
+                                          description.where.line)
+                            : fmt::format("plugin '{}' ({})", description.name, description.where.file);
   std::unique_ptr<CallWatch> watch = std::make_unique<CallWatch>();
   /// Held around every call to this plugin from a server thread, so run()'s thread can
   /// send the base its stop while the io thread is stuck inside another plugin.
   std::unique_ptr<std::mutex> call_mutex = std::make_unique<std::mutex>();
 };
 
-/// Marks `plugin` as inside `call` for as long as it lives.
+/// The plugin call in progress on this thread: the last gasp names it when the thread dies.
+thread_local const OpenedPlugin* t_plugin_in_call = nullptr;
+thread_local const char* t_call_in_progress = nullptr;
+/// Set on the server's own threads (haptic, io, planner, display).
+thread_local bool t_server_thread = false;
+
+/// Marks `plugin` as inside `call` for as long as it lives, for the watchdog and, on this
+/// thread, for the last gasp. An exception leaving the call keeps the thread's mark, so
+/// std::terminate can still name the plugin it came from.
 class InCall {
  public:
-  InCall(OpenedPlugin& plugin, const char* call, double now_s) noexcept : watch_(*plugin.watch) {
+  InCall(OpenedPlugin& plugin, const char* call, double now_s) noexcept
+      : watch_(*plugin.watch), outer_plugin_(t_plugin_in_call), outer_call_(t_call_in_progress),
+        exceptions_(std::uncaught_exceptions()) {
     watch_.call.store(call, std::memory_order_relaxed);
     watch_.since_s.store(now_s, std::memory_order_release);
+    t_plugin_in_call = &plugin;
+    t_call_in_progress = call;
   }
-  ~InCall() { watch_.since_s.store(0.0, std::memory_order_release); }
+  ~InCall() {
+    watch_.since_s.store(0.0, std::memory_order_release);
+    if (std::uncaught_exceptions() > exceptions_) return;
+    t_plugin_in_call = outer_plugin_;
+    t_call_in_progress = outer_call_;
+  }
   InCall(const InCall&) = delete;
   InCall& operator=(const InCall&) = delete;
 
  private:
   CallWatch& watch_;
+  const OpenedPlugin* outer_plugin_;
+  const char* outer_call_;
+  int exceptions_;
 };
+
+/// The last gasp's claim on the plugins: run() arms it while plugins may be driven, and
+/// exactly one of run() (to stop and close them) and a dying thread (to send the zeros) wins.
+enum GaspState : int { kGaspIdle, kGaspArmed, kGaspSending, kGaspDone };
 
 std::string plugin_failure(const PluginDescription& d, const PluginError& e) {
   return Diagnostic{d.where, e.to_string()}.to_string();
@@ -160,6 +191,7 @@ struct HapticServer::Impl {
   Shared<std::vector<PluginCounter>> tracker_counters;
 
   std::atomic<bool> stop{false};
+  std::atomic<int> gasp_state{kGaspIdle};
   std::atomic<bool> recorder_stop{false};  ///< set after the haptic thread has ended
   std::atomic<int> running_threads{0};     ///< server threads not yet ended (not the recorder)
   /// A thread never came back from a plugin call: this Impl (and the plugin's library)
@@ -608,6 +640,7 @@ void HapticServer::Impl::display_thread() {
     frame.q_W_head_wxyz[2] = h.q_W.y();
     frame.q_W_head_wxyz[3] = h.q_W.z();
     for (OpenedPlugin* d : displays) {
+      const InCall in_call(*d, "display_write", host.now_s());
       auto r = d->instance.display_write(frame);
       if (check(r, *d) || deactivated(r.value(), *d, "display_write")) return;
     }
@@ -748,7 +781,9 @@ ServerReport HapticServer::run() {
     if (&p != m.device) start_order.push_back(&p);
   }
   start_order.push_back(m.device);
+  m.gasp_state.store(kGaspArmed);
   for (OpenedPlugin* p : start_order) {
+    const InCall in_call(*p, "start", m.host.now_s());
     auto r = p->instance.start();
     if (!r.ok()) {
       m.fail(plugin_failure(p->description, r.error()));
@@ -771,6 +806,7 @@ ServerReport HapticServer::run() {
     auto spawn = [&](void (Impl::*body)()) {
       m.running_threads.fetch_add(1);
       threads.emplace_back([&m, body] {
+        t_server_thread = true;
         (m.*body)();
         m.running_threads.fetch_sub(1);
       });
@@ -859,13 +895,21 @@ ServerReport HapticServer::run() {
     }
   }
 
+  // A dying thread is sending its last gasp through the plugins: leave them open; the
+  // process ends from that thread.
+  if (int armed = kGaspArmed; !m.gasp_state.compare_exchange_strong(armed, kGaspIdle)) {
+    for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));
+  }
+
   // Stop and close everything (device first: no force while the rest shuts down).
   std::vector<OpenedPlugin*> stop_order(start_order.rbegin(), start_order.rend());
   if (m.abandoned) stop_order.clear();
   for (OpenedPlugin* p : stop_order) {
     if (p->instance.state() == PluginState::Running) {
+      const InCall in_call(*p, "stop", m.host.now_s());
       if (auto r = p->instance.stop(); !r.ok()) m.fail(plugin_failure(p->description, r.error()));
     }
+    const InCall in_call(*p, "close", m.host.now_s());
     (void)p->instance.close();
   }
 
@@ -907,6 +951,54 @@ ServerReport HapticServer::run() {
   }
   if (report.error) report.ended_by = RunEnd::Fault;  // a fault wins over a stop at the same moment
   return report;
+}
+
+// ---- last gasp -------------------------------------------------------------------------
+
+std::pair<const char*, const char*> HapticServer::call_in_progress() noexcept {
+  if (t_plugin_in_call == nullptr) return {nullptr, nullptr};
+  return {t_plugin_in_call->culprit.c_str(), t_call_in_progress};
+}
+
+HapticServer::LastGasp HapticServer::last_gasp() noexcept {
+  Impl& m = *impl_;
+  LastGasp out;
+  if (int armed = kGaspArmed; !m.gasp_state.compare_exchange_strong(armed, kGaspSending)) return out;
+  m.stop.store(true);
+  // The server's threads see the stop and send their own zeros; waiting for them means
+  // none of their commands lands after ours. The dying thread, if one of them, never ends.
+  const int dying = t_server_thread ? 1 : 0;
+  for (int waited_ms = 0; waited_ms < 50 && m.running_threads.load() > dying; ++waited_ms) {
+    const timespec one_ms{0, 1000000};
+    nanosleep(&one_ms, nullptr);
+  }
+  auto zero_torque = [&] {
+    if (m.device->instance.state() != PluginState::Running) return;
+    mhd_device_command zero{};
+    zero.timestamp_s = m.host.now_s();
+    out.zero_torque_sent = m.device->instance.device_write(zero).ok();
+  };
+  auto base_stop = [&] {
+    if (m.base == nullptr) {
+      out.base_stop_sent = true;
+      return;
+    }
+    if (m.base->instance.state() != PluginState::Running) return;
+    mhd_base_command zero{};
+    zero.timestamp_s = m.host.now_s();
+    out.base_stop_sent = m.base->instance.base_write(zero).ok();
+  };
+  // The plugin that died mid-call may hang or crash again: the other one goes first.
+  if (t_plugin_in_call == m.device) {
+    base_stop();
+    zero_torque();
+  } else {
+    zero_torque();
+    base_stop();
+  }
+  out.sent = true;
+  m.gasp_state.store(kGaspDone);
+  return out;
 }
 
 }  // namespace mhd

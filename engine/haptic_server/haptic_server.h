@@ -34,6 +34,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace mhd {
@@ -125,6 +126,25 @@ class HapticServer {
   ServerReport run();
   /// From any thread or a signal handler.
   void request_stop() noexcept { stop_requested_.store(true, std::memory_order_relaxed); }
+
+  /// What last_gasp() did, and the plugin call the dying thread was in.
+  struct LastGasp {
+    bool sent = false;              ///< run() was running and this call sent the zeros
+    bool zero_torque_sent = false;  ///< the device took a zero command
+    bool base_stop_sent = false;    ///< the base took a zero twist (or there is none)
+  };
+  /// The plugin call in progress on the calling thread ("plugin 'x' (scene.xml:12)" and
+  /// e.g. "display_write"), or nulls when none: which plugin a crash happened in. The
+  /// strings live as long as the server. Async-signal-safe (reads a thread-local).
+  [[nodiscard]] static std::pair<const char*, const char*> call_in_progress() noexcept;
+  /// For a process about to die while run() runs (a plugin crashed, aborted, threw or
+  /// called exit()), from the dying thread, in a signal handler if need be: ends the
+  /// threads' loops, lets them reach their own safe state (at most 50 ms), then sends zero
+  /// torque and a zero base twist directly through the plugins (the plugin whose call the
+  /// dying thread is in last), and keeps run() from stopping or closing any plugin after.
+  /// No lock, no allocation on success; only atomics, nanosleep and the plugins' own
+  /// write calls. Once: a second call (or one outside run()) sends nothing.
+  LastGasp last_gasp() noexcept;
 
   [[nodiscard]] const ServerSettings& settings() const noexcept;
 

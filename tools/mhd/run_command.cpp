@@ -2,12 +2,16 @@
 // plugins it names and runs the haptic server (engine/haptic_server) until the duration
 // is over, Ctrl-C, or a fault. A status line shows the loop's rate, overruns, contact and
 // force; the summary at the end gives the tick timings and every safety count.
-// Exit status: 0 for a clean run, 1 when the scene or a plugin cannot be opened, 3 when a
-// fault ended the run (the message names the plugin and its scene line).
+// Exit status (docs/haptic_server.md, "How a run ends"): 0 for a clean run or one stopped
+// by SIGINT/SIGTERM, 1 when the scene or a plugin cannot be opened, 3 when a fault ended
+// the run (the message names the plugin and its scene line), 4 when the last gasp ended
+// it (a plugin crashed, aborted, threw or called exit(); run_signals.h), 128 + the signal
+// for a run stopped safely by SIGHUP or SIGQUIT.
 
 #include "run_command.h"
 
 #include "command_exit.h"
+#include "run_signals.h"
 #include "haptic_server/haptic_server.h"
 #include "scene_compiler/scene_compiler.h"
 #include "scene_xml/scene_reader.h"
@@ -20,6 +24,7 @@
 #include <cmath>
 #include <chrono>
 #include <csignal>
+#include <exception>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -40,12 +45,6 @@ struct RunOptions {
   bool quiet = false;
 };
 
-std::atomic<mhd::HapticServer*> g_server{nullptr};
-
-extern "C" void on_stop_signal(int /*signal*/) {
-  if (mhd::HapticServer* s = g_server.load()) s->request_stop();
-}
-
 /// " (plugin: stale 3, non_finite 1)" when the tracker plugin dropped samples itself.
 std::string plugin_drops(const mhd::ServerStatus& s) {
   const std::string text = mhd::dropped_counts_text(s.tracker_plugin_counters);
@@ -60,17 +59,35 @@ void print_status(const mhd::ServerStatus& s, bool tty) {
       std::isfinite(s.tracker_age_s) ? fmt::format("{:.0f}", s.tracker_age_s * 1e3) : std::string("-"),
       s.tracker_samples, s.tracker_rejected, plugin_drops(s), s.base.x_m, s.base.z_m,
       s.base.heading_rad * 180.0 / 3.141592653589793);
-  if (tty) {
-    fmt::print(stderr, "\r{}\x1b[K", line);
-  } else {
-    fmt::print(stderr, "{}\n", line);
+  try {
+    if (tty) {
+      fmt::print(stderr, "\r{}\x1b[K", line);
+    } else {
+      fmt::print(stderr, "{}\n", line);
+    }
+    std::fflush(stderr);
+  } catch (const std::exception&) {
+    // A closed terminal or pipe never ends a run: the line is lost, nothing else.
   }
-  std::fflush(stderr);
 }
+
+/// The name of a stop signal, for the summary.
+const char* signal_name(int signal) {
+  switch (signal) {
+    case SIGINT: return "SIGINT";
+    case SIGTERM: return "SIGTERM";
+    case SIGHUP: return "SIGHUP";
+    case SIGQUIT: return "SIGQUIT";
+    default: return "a signal";
+  }
+}
+
+void print_summary(const RunOptions& opt, const mhd::CompiledScene& scene, const mhd::ServerReport& r);
 
 int run(const RunOptions& opt) {
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();
+  mhd::cli::install_run_signal_handlers();
   const mhd::SceneReadResult read = mhd::read_scene_file(opt.scene);
   for (const auto& d : read.diagnostics) fmt::print(stderr, "{}\n", d.to_string());
   if (!read.ok()) return 1;
@@ -96,26 +113,48 @@ int run(const RunOptions& opt) {
   for (const auto& d : build.diagnostics) fmt::print(stderr, "{}\n", d.to_string());
   if (!build.server) return 1;
   const double load_s = std::chrono::duration<double>(Clock::now() - t0).count();
-  fmt::print("scene {}: {} objects, {} triangles, plugins open after {:.3f} s; haptic loop at {:.0f} Hz{}\n",
-             opt.scene, scene.world.object_count(), scene.triangle_count, load_s,
-             build.server->settings().haptic_rate_hz,
-             opt.duration_s > 0.0 ? fmt::format(" for {} s", opt.duration_s) : std::string(" until Ctrl-C"));
-  std::fflush(stdout);
+  try {
+    fmt::print("scene {}: {} objects, {} triangles, plugins open after {:.3f} s; haptic loop at {:.0f} Hz{}\n",
+               opt.scene, scene.world.object_count(), scene.triangle_count, load_s,
+               build.server->settings().haptic_rate_hz,
+               opt.duration_s > 0.0 ? fmt::format(" for {} s", opt.duration_s) : std::string(" until Ctrl-C"));
+    std::fflush(stdout);
+  } catch (const std::exception&) {
+    // stdout closed (`mhd run ... | head -1`): the run goes on.
+  }
 
   if (!opt.record.empty()) {
     // For `mhd replay`: which scene this recording ran.
     std::ofstream meta(opt.record + ".meta");
     meta << "scene=" << std::filesystem::absolute(opt.scene).lexically_normal().string() << "\n";
   }
-  g_server.store(build.server.get());
-  std::signal(SIGINT, on_stop_signal);
-  std::signal(SIGTERM, on_stop_signal);
-  const mhd::ServerReport r = build.server->run();
-  std::signal(SIGINT, SIG_DFL);
-  std::signal(SIGTERM, SIG_DFL);
-  g_server.store(nullptr);
-  if (!opt.quiet && tty) fmt::print(stderr, "\n");
+  mhd::cli::guard_server(build.server.get());
+  const mhd::ServerReport r = [&] {
+    try {
+      return build.server->run();
+    } catch (...) {
+      std::terminate();  // the last gasp, naming the exception (run_signals.h)
+    }
+  }();
+  mhd::cli::guard_server(nullptr);
+  try {
+    if (!opt.quiet && tty) fmt::print(stderr, "\n");
+    print_summary(opt, scene, r);
+  } catch (const std::exception&) {
+    // stdout or stderr closed: the run itself ended safely; its status still says how.
+  }
+  if (r.error) {
+    try {
+      fmt::print(stderr, "mhd run: error: {}\n", *r.error);
+    } catch (const std::exception&) {
+    }
+    return kRunFault;
+  }
+  const int signal = mhd::cli::stop_signal();
+  return signal == SIGHUP || signal == SIGQUIT ? 128 + signal : 0;
+}
 
+void print_summary(const RunOptions& opt, const mhd::CompiledScene& scene, const mhd::ServerReport& r) {
   const mhd::ServerStatus& s = r.status;
   fmt::print("ran {:.2f} s: {} ticks ({:.1f} Hz), {} overruns, {} deadlines missed\n", s.elapsed_s, s.ticks,
              s.haptic_rate_hz, s.overruns, r.missed_deadlines);
@@ -136,11 +175,10 @@ int run(const RunOptions& opt) {
   }
   fmt::print("safe state: {}, {}\n", r.zero_force_sent ? "zero force sent" : "ZERO FORCE NOT CONFIRMED",
              r.base_stop_sent ? "base stopped" : "BASE STOP NOT CONFIRMED");
-  if (r.error) {
-    fmt::print(stderr, "mhd run: error: {}\n", *r.error);
-    return kRunFault;
+  if (const int signal = mhd::cli::stop_signal(); signal != 0 && r.ended_by == mhd::RunEnd::StopRequested) {
+    fmt::print("stopped by {}\n", signal_name(signal));
   }
-  return 0;
+  std::fflush(stdout);
 }
 
 }  // namespace
