@@ -19,6 +19,7 @@ struct Element {
   std::string name;
   std::uint64_t count = 0;
   std::uint64_t min_bytes = 0;  ///< the least one element can take in the file
+  std::vector<std::string> properties;
 };
 
 /// Bytes of a PLY scalar type (0 for an unknown name).
@@ -109,20 +110,19 @@ MeshHeaderCheck check_ply_header(std::string_view head, std::uint64_t file_size)
         return failure(fmt::format("PLY header: invalid count '{}' for element '{}'", count, words[1]));
       }
       elements.push_back(std::move(e));
-    } else if (words[0] == "property" && !elements.empty()) {
+    } else if (words[0] == "property") {
+      // "property TYPE NAME" or "property list COUNT_TYPE ITEM_TYPE NAME", known types
+      // only: assimp 5.2 aborts on some malformed property lines instead of failing.
+      const bool list = words.size() >= 2 && words[1] == "list";
+      const bool well_formed = list ? words.size() == 5 && type_bytes(words[2]) > 0 && type_bytes(words[3]) > 0
+                                    : words.size() == 3 && type_bytes(words[1]) > 0;
+      if (!well_formed || elements.empty()) {
+        return failure(fmt::format("PLY header: malformed property line '{}'", line));
+      }
       // A list takes at least its count; a scalar its size (binary) or a number (ASCII).
-      std::uint64_t bytes = 0;
-      if (words.size() >= 2 && words[1] == "list") {
-        bytes = words.size() >= 3 ? type_bytes(words[2]) : 0;
-      } else if (words.size() >= 2) {
-        bytes = type_bytes(words[1]);
-      }
-      if (format == PlyFormat::Ascii) {
-        bytes = 2;
-      } else if (bytes == 0) {
-        bytes = 1;  // an unknown type: assimp refuses it later
-      }
+      const std::uint64_t bytes = format == PlyFormat::Ascii ? 2 : type_bytes(words[list ? 2 : 1]);
       elements.back().min_bytes = saturating_add(elements.back().min_bytes, bytes);
+      elements.back().properties.emplace_back(words.back());
     }
     // comment, obj_info and unknown lines say nothing about sizes.
   }
@@ -133,6 +133,14 @@ MeshHeaderCheck check_ply_header(std::string_view head, std::uint64_t file_size)
   }
   std::uint64_t needed = 0;
   MeshHeaderCheck check;
+  for (const Element& e : elements) {
+    if (e.name != "vertex") continue;
+    for (const char* axis : {"x", "y", "z"}) {
+      if (std::find(e.properties.begin(), e.properties.end(), axis) == e.properties.end()) {
+        return failure(fmt::format("PLY header: element 'vertex' has no property '{}'", axis));
+      }
+    }
+  }
   for (Element& e : elements) {
     e.min_bytes = std::max<std::uint64_t>(e.min_bytes, 1);  // an element is at least a byte (or a line end)
     needed = saturating_add(needed, saturating_mul(e.count, e.min_bytes));

@@ -49,7 +49,7 @@ TEST(MeshHeader, AsciiPlyNeedsAboutTwoBytesPerNumber) {
 TEST(MeshHeader, PlyCountsThatOverflowAreRefused) {
   const std::string ply =
       "ply\r\nformat binary_big_endian 1.0\r\nelement vertex 18446744073709551615\r\nproperty double x\r\n"
-      "end_header\r\n";
+      "property double y\r\nproperty double z\r\nend_header\r\n";
   EXPECT_EQ(check(ply, ".ply").error,
             "PLY header claims 18446744073709551615 vertex elements, at least 2^64 bytes of binary data, but only 0 "
             "bytes follow the header");
@@ -65,6 +65,21 @@ TEST(MeshHeader, PlyWithoutEndHeaderIsRefused) {
   while (endless.size() < 2 * kMeshHeaderBytes) endless += "comment padding padding padding\n";
   EXPECT_EQ(check(endless, ".ply").error, "PLY header: no end_header in the first 65536 bytes");
   EXPECT_EQ(check("ply\nformat utf16 1.0\nend_header\n", ".ply").error, "PLY header: unknown format 'utf16'");
+}
+
+TEST(MeshHeader, MalformedPlyPropertiesAreRefused) {
+  // assimp 5.2 aborts on some of these (found by mhd-fuzz-mesh-header).
+  const std::string start = "ply\nformat binary_little_endian 1.0\nelement vertex 1\n";
+  EXPECT_EQ(check(start + "property float x\nproperty float\n y\nproperty float z\nend_header\n", ".ply").error,
+            "PLY header: malformed property line 'property float'");
+  EXPECT_EQ(check(start + "property float x\nproperty float y\nproperty list uchar z\nend_header\n", ".ply").error,
+            "PLY header: malformed property line 'property list uchar z'");
+  EXPECT_EQ(check(start + "property float x\nproperty float y\nproperty quad z\nend_header\n", ".ply").error,
+            "PLY header: malformed property line 'property quad z'");
+  EXPECT_EQ(check("ply\nformat ascii 1.0\nproperty float x\nend_header\n", ".ply").error,
+            "PLY header: malformed property line 'property float x'");
+  EXPECT_EQ(check(start + "property float x\nproperty float y\nend_header\n" + std::string(8, '\0'), ".ply").error,
+            "PLY header: element 'vertex' has no property 'z'");
 }
 
 TEST(MeshHeader, BinaryStlMustBeExactlyAsLongAsItsCount) {
