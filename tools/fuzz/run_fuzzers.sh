@@ -8,7 +8,7 @@
 #   --seconds N     run each target for N seconds (default 20)
 #   --build-dir DIR build folder (default build/fuzz); the corpora, crash files and logs
 #                   go under DIR/fuzz/
-#   --only NAME     one target: scene, replay-csv or dds-sample (default: all)
+#   --only NAME     one target: scene, mesh-header, replay-csv or dds-sample (default: all)
 #   --jobs J        build jobs (default 2)
 #   --fresh         start from the seeds only (drop what earlier runs added to the corpus)
 #   --no-build      run what is already built
@@ -43,7 +43,7 @@ done
 [[ "$jobs" =~ ^[0-9]+$ && "$jobs" -gt 0 ]] || { echo "run_fuzzers.sh: error: --jobs must be a positive integer, got '$jobs'" >&2; exit 2; }
 [[ "$build_dir" = /* ]] || build_dir="$PWD/$build_dir"
 
-all_targets=(scene replay-csv dds-sample)
+all_targets=(scene mesh-header replay-csv dds-sample)
 if [[ -n "$only" ]]; then
   case " ${all_targets[*]} " in
     *" $only "*) targets=("$only") ;;
@@ -53,10 +53,12 @@ else
   targets=("${all_targets[@]}")
 fi
 
-# max_len per target: scenes run to ~2.5 kB, CSV rows ~60 bytes, a DDS sample ~90 bytes.
+# max_len per target: scenes run to ~2.5 kB, mesh seeds to ~1 kB, CSV rows ~60 bytes, a
+# DDS sample ~90 bytes.
 max_len_of() {
   case "$1" in
     scene) echo 16384 ;;
+    mesh-header) echo 8192 ;;
     replay-csv) echo 8192 ;;
     dds-sample) echo 4096 ;;
   esac
@@ -64,6 +66,7 @@ max_len_of() {
 dict_of() {
   case "$1" in
     scene) echo "$repo/tools/fuzz/dict/scene.dict" ;;
+    mesh-header) echo "$repo/tools/fuzz/dict/mesh_header.dict" ;;
     replay-csv) echo "$repo/tools/fuzz/dict/replay_csv.dict" ;;
     dds-sample) echo "" ;;
   esac
@@ -74,6 +77,7 @@ seeds_of() {
   local name="$1"
   case "$name" in
     scene) find "$repo/scenes" "$repo/tests/data" -type f -name '*.xml' ;;
+    mesh-header) ;;  # seeds carry a leading format byte: tools/fuzz/corpus/mesh-header
     replay-csv) find "$repo/tests/data" -type f -name '*.csv' -size -64k ;;
     dds-sample) ;;
   esac
@@ -105,6 +109,7 @@ fi
 if [[ -z "${TMPDIR:-}" && -d /dev/shm && -w /dev/shm ]]; then export TMPDIR=/dev/shm; fi
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:symbolize=1}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
+export LSAN_OPTIONS="${LSAN_OPTIONS:-suppressions=$repo/tools/fuzz/lsan.supp:print_suppressions=0}"
 
 work="$build_dir/fuzz"
 status=0
