@@ -114,7 +114,8 @@ int run(const RunOptions& opt) {
   fmt::print("pop-throughs: {} proxy moves touched the surface, {} ticks ended inside (exact check); "
              "follow failures: {} ticks (largest free-space gap {:.3f} mm)\n",
              r.pop_throughs, r.ticks_inside, r.follow_failures, 1e3 * r.max_free_gap_m);
-  return r.pop_throughs == 0 && r.ticks_inside == 0 ? 0 : 1;
+  // Both halves of the proxy's contract (docs/proxy.md) decide the status.
+  return r.pop_throughs == 0 && r.ticks_inside == 0 && r.follow_failures == 0 ? 0 : 1;
 }
 
 }  // namespace
