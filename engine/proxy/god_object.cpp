@@ -118,10 +118,18 @@ ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMateri
         state.path_W[0] = start;
       } else if (mat.dynamic_friction > 0.0 && slip > 0.0) {
         const Eigen::Vector3d goal = hip_W + tangential * (mat.dynamic_friction * depth / slip);
+        // The frictionless motion and its path, kept in case the slide ends off the surface.
+        const ProxyState frictionless = state;
         Motion sliding;
         proxy_detail::solve_motion(world, settings.skin_m, start, goal, sliding, state, work);
-        motion = sliding;
-        store_active_planes(motion, settings.skin_m, state);
+        store_active_planes(sliding, settings.skin_m, state);
+        if (state.plane_count > 0) {
+          motion = sliding;
+        } else {
+          // The rim of the cone lies in free space (the surface turned away): friction has
+          // nothing to act on, and the proxy must not stop short of the hand there.
+          state = frictionless;
+        }
       }
     }
   }

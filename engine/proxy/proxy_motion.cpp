@@ -279,7 +279,14 @@ void solve_motion(const CollisionWorld& world, double skin_m, const Eigen::Vecto
     if (distance < best_distance - std::max(min_step, kMinReleaseGainPerDistance * best_distance)) {
       best_distance = distance;
       sweeps_at_best = work.sweeps;
-    } else if (work.sweeps - sweeps_at_best >= kMaxSweepsWithoutGain) {
+    } else if (m.plane_count > 0 && work.sweeps - sweeps_at_best >= kMaxSweepsWithoutGain) {
+      // One last look: a proxy that has worked its way round an edge may see the goal.
+      if (!sweep_past_grazes(world, work, m.p, goal, skin_m, {}, hit)) return;
+      if (!hit) {
+        advance(m, goal, hit, state);
+        m.plane_count = 0;
+        m.ignored_count = 0;
+      }
       return;
     }
     const auto target = project_onto_half_spaces(goal, std::span<const HalfSpace>(m.planes.data(), at(m.plane_count)),

@@ -259,6 +259,36 @@ TEST(ProxyContract, SlidingOffARightAngledEdgeTheOtherFaceDoesNotCatchTheProxyFr
   EXPECT_EQ(round.force_W, V::Zero());
 }
 
+TEST(ProxyContract, AFrictionSlideThatLeavesTheSurfaceStillEndsAtTheHand) {
+  // Dragged over a box's edges with friction, in and out, the dynamic cone's rim (a
+  // little way back from the HIP) can lie in free space past an edge; the proxy must
+  // not stop there, short of a hand it can see.
+  Rig rig;
+  rig.add(make_box_mesh(V(0.2, 0.2, 0.2)));  // faces at +-0.1
+  rig.materials[0].static_friction = 0.6;
+  rig.materials[0].dynamic_friction = 0.5;
+  const verify::SurfaceCrossingOracle oracle(rig.world);
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<V> path{V(0, 0, 0.15)};
+  for (int k = 0; k < 200; ++k) {
+    // From above the top face, press in, drag out over a random edge and down the side.
+    const V press(0.08 * u(rng), 0.08 * u(rng), 0.1 - 0.01 - 0.02 * std::abs(u(rng)));
+    const double a = std::numbers::pi * u(rng);
+    const V out = press + 0.1 * V(std::cos(a), std::sin(a), 0) + V(0, 0, -0.03 * std::abs(u(rng)));
+    for (const V& to : {V(press.x(), press.y(), 0.15), press, out, V(out.x(), out.y(), 0.15)}) {
+      const V from = path.back();
+      const int n = std::max(1, static_cast<int>((to - from).norm() / 0.0015));  // 1.5 m/s
+      for (int i = 1; i <= n; ++i) path.push_back(from + (to - from) * (double(i) / n));
+    }
+  }
+  const ContractCount c = judge(oracle, rig, path);
+  EXPECT_GT(c.contact_ticks, 2000u);
+  EXPECT_EQ(c.crossings, 0u);
+  EXPECT_EQ(c.not_followed, 0u) << "worst gap " << c.worst_gap_m << " m";
+  EXPECT_EQ(c.free_force, 0u);
+}
+
 TEST(ProxyContract, OnAnOpenSheetTheProxySlidesOverTheBoundaryAndAroundIt) {
   Rig rig;
   rig.add(quad(V(-0.05, -0.05, 0), V(0.05, -0.05, 0), V(0.05, 0.05, 0), V(-0.05, 0.05, 0)));
