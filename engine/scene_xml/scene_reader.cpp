@@ -1,6 +1,7 @@
 #include "scene_xml/scene_reader.h"
 
 #include "geometry/pose.h"
+#include "scene/plausible_bounds.h"
 #include "scene_xml/diagnostic_sink.h"
 #include "scene_xml/frame_graph.h"
 #include "scene_xml/message_text.h"
@@ -109,6 +110,14 @@ void for_each_child(const tinyxml2::XMLElement& parent, const DiagnosticSink& si
   }
 }
 
+/// "attribute 'x' on <tag> must not exceed max (why), got v" when value > max.
+void report_above(const AttributeParser& a, const FileContext& ctx, std::string_view name, double value, double max,
+                  std::string_view why) {
+  if (value <= max) return;
+  ctx.sink.error(a.line_of(name), concat("attribute '", name, "' on ", a.tag(), " must not exceed ",
+                                         scene_xml::format_g(max), " (", why, "), got ", scene_xml::format_g(value)));
+}
+
 void report_unknown_element(const tinyxml2::XMLElement& e, const tinyxml2::XMLElement& parent,
                             const DiagnosticSink& sink) {
   sink.error(e.GetLineNum(), concat("unknown element ", tag(e), " in ", tag(parent)));
@@ -126,6 +135,11 @@ Pose read_pose_attributes(AttributeParser& a, const FileContext& ctx) {
   const Eigen::Vector3d p_m =
       a.vector3("position", Presence::Optional, Bound::Any).value_or(Eigen::Vector3d::Zero()) *
       ctx.unit_to_m;
+  if (p_m.norm() > kMaxPosition_m) {
+    ctx.sink.error(a.line_of("position"),
+                   concat("attribute 'position' on ", a.tag(), " must lie within ", scene_xml::format_g(kMaxPosition_m),
+                          " m of its frame's origin, got ", scene_xml::format_g(p_m.norm()), " m"));
+  }
   if (a.has("rpy_deg") && a.has("quaternion_wxyz")) {
     ctx.sink.error(a.line(), concat(a.tag(), " takes rpy_deg or quaternion_wxyz, not both"));
   }
@@ -187,6 +201,7 @@ class SceneReader {
 
   SceneReadResult finish() {
     resolve_material_references();
+    check_stiffness_against_rate();
     scene_xml::check_frame_graph(scene_.rig_frames, diagnostics_);
     SceneReadResult result;
     result.diagnostics = std::move(diagnostics_);
@@ -345,10 +360,17 @@ class SceneReader {
     h.max_force_N = a.number("max_force_N", Presence::Optional, Bound::Positive).value_or(h.max_force_N);
     h.update_rate_Hz =
         a.number("update_rate_Hz", Presence::Optional, Bound::Positive).value_or(h.update_rate_Hz);
+    if (h.update_rate_Hz < kMinHapticRate_Hz || h.update_rate_Hz > kMaxHapticRate_Hz) {
+      ctx.sink.error(a.line_of("update_rate_Hz"),
+                     concat("attribute 'update_rate_Hz' on <haptics> must be within [",
+                            scene_xml::format_g(kMinHapticRate_Hz), ", ", scene_xml::format_g(kMaxHapticRate_Hz),
+                            "] Hz, got ", scene_xml::format_g(h.update_rate_Hz)));
+    }
+    report_above(a, ctx, "max_force_N", h.max_force_N, kDeviceMaxForce_N, "the device's peak force");
   }
 
   /// The material attributes shared by named and inline materials.
-  static HapticMaterial read_material_properties(AttributeParser& a, const FileContext& ctx) {
+  HapticMaterial read_material_properties(AttributeParser& a, const FileContext& ctx) {
     HapticMaterial m;
     m.stiffness_N_per_m =
         a.number("stiffness_N_per_m", Presence::Required, Bound::Positive).value_or(m.stiffness_N_per_m);
@@ -367,6 +389,12 @@ class SceneReader {
                             scene_xml::format_g(m.static_friction), ") on <material>"));
     }
     m.force_shading = a.boolean("force_shading", Presence::Optional).value_or(m.force_shading);
+    report_above(a, ctx, "damping_Ns_per_m", m.damping_Ns_per_m, kMaxDamping_Ns_per_m, "MHD's bound");
+    report_above(a, ctx, "static_friction", m.static_friction, kMaxFriction, "MHD's bound");
+    report_above(a, ctx, "dynamic_friction", m.dynamic_friction, kMaxFriction, "MHD's bound");
+    if (a.has("stiffness_N_per_m")) {
+      stiffness_uses_.push_back({m.stiffness_N_per_m, ctx.sink.at(a.line_of("stiffness_N_per_m"))});
+    }
     return m;
   }
 
@@ -674,6 +702,20 @@ class SceneReader {
     slot = std::move(block);
   }
 
+  /// Each stiffness against the bound at the scene's rate (known only once all is read).
+  void check_stiffness_against_rate() {
+    const double rate_Hz = scene_.haptics.update_rate_Hz;
+    if (rate_Hz < kMinHapticRate_Hz || rate_Hz > kMaxHapticRate_Hz) return;  // reported already
+    const double max_N_per_m = max_stable_stiffness_N_per_m(rate_Hz);
+    for (const StiffnessUse& use : stiffness_uses_) {
+      if (use.stiffness_N_per_m <= max_N_per_m) continue;
+      diagnostics_.push_back(
+          {use.where, concat("attribute 'stiffness_N_per_m' on <material> must not exceed ",
+                             scene_xml::format_g(max_N_per_m), " N/m, the stiffest the device renders stably at ",
+                             scene_xml::format_g(rate_Hz), " Hz, got ", scene_xml::format_g(use.stiffness_N_per_m))});
+    }
+  }
+
   void resolve_material_references() {
     for (const MaterialReference& ref : material_references_) {
       const auto it = scene_.materials.find(ref.name);
@@ -694,6 +736,11 @@ class SceneReader {
   std::map<std::string, SourceLocation, std::less<>> object_where_;
   std::map<std::string, SourceLocation, std::less<>> frame_where_;
   std::optional<SourceLocation> haptics_where_;
+  struct StiffnessUse {
+    double stiffness_N_per_m = 0.0;
+    SourceLocation where;
+  };
+  std::vector<StiffnessUse> stiffness_uses_;
 };
 
 }  // namespace

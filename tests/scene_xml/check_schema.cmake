@@ -18,7 +18,8 @@ elseif(MODE STREQUAL "malformed")
   set(files)
   foreach(name IN ITEMS malformed_xml unknown_element unknown_attribute non_finite
                         negative_stiffness zero_scale duplicate_names trailing_junk wrong_arity
-                        two_shapes missing_version unknown_plugin_kind)
+                        two_shapes missing_version unknown_plugin_kind
+                        slow_haptic_rate tiny_haptic_rate absurd_stiffness absurd_material)
     list(APPEND files "${SOURCE_DIR}/tests/data/scenes/malformed/${name}.xml")
   endforeach()
 else()

@@ -151,11 +151,14 @@ TEST_F(SceneXmlMalformed, FrameParentCyclesAndUnknownParents) {
 
 TEST_F(SceneXmlMalformed, EveryMalformedFileIsCovered) {
   // A new file under malformed/ needs a test above; this list keeps the two in step.
+  // (absurd_*, far_position, slow_/tiny_haptic_rate, stiffness_over_rate: plausible_settings_test.cpp)
   const std::vector<std::string> covered = {
-      "absurd_scale.xml",       "duplicate_names.xml",     "duplicate_names_part.xml",
-      "dynamic_friction.xml",   "frame_cycle.xml",         "include_cycle_a.xml",
+      "absurd_material.xml",    "absurd_scale.xml",        "absurd_stiffness.xml",
+      "duplicate_names.xml",    "duplicate_names_part.xml", "dynamic_friction.xml",
+      "far_position.xml",       "frame_cycle.xml",         "include_cycle_a.xml",
       "include_cycle_b.xml",    "malformed_xml.xml",       "missing_mesh.xml",
       "missing_version.xml",    "negative_stiffness.xml",  "non_finite.xml",
+      "slow_haptic_rate.xml",   "stiffness_over_rate.xml", "tiny_haptic_rate.xml",
       "trailing_junk.xml",      "two_shapes.xml",          "unknown_attribute.xml",
       "unknown_element.xml",    "unknown_material.xml",    "unknown_plugin_kind.xml",
       "wrong_arity.xml",        "zero_scale.xml"};
