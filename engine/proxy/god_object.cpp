@@ -17,6 +17,8 @@ using proxy_detail::TickWork;
 // A constraint counts as active when the proxy is this close (fraction of the skin) to
 // its offset plane.
 constexpr double kActivePerSkin = 1e-2;
+// Depth behind the surface, in skins, over which damping fades in (10 um at the default skin).
+constexpr double kDampingOnsetPerSkin = 10.0;
 
 // Copies the constraints the proxy rests on (up to three, nearest first) into state.
 void store_active_planes(const Motion& m, double skin_m, ProxyState& state) {
@@ -153,12 +155,12 @@ ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMateri
   const double depth = to_proxy.norm();
   // Contact starts when the HIP is behind the surface of a plane the proxy rests on;
   // a HIP inside the proxy's skin, or beside it, touches nothing (no spring, no damping).
-  bool behind_surface = false;
+  double behind_m = 0.0;  // how far the HIP is behind the surface of a plane it rests on
   for (int i = 0; i < state.plane_count; ++i) {
     const ConstraintPlane& plane = state.planes[static_cast<std::size_t>(i)];
-    behind_surface = behind_surface || plane.normal_W.dot(hip_W) < plane.offset_m - settings.skin_m;
+    behind_m = std::max(behind_m, plane.offset_m - settings.skin_m - plane.normal_W.dot(hip_W));
   }
-  if (!behind_surface || !(depth > 0.0)) return out;
+  if (!(behind_m > 0.0) || !(depth > 0.0)) return out;
 
   const int object = state.planes[0].triangle.object;
   const HapticMaterial& mat = material_of(materials, object);
@@ -176,7 +178,10 @@ ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMateri
     force += force.dot(n_face) * (n_shaded - n_face);
   }
   if (mat.damping_Ns_per_m > 0.0) {
-    force -= mat.damping_Ns_per_m * state.hip_velocity_W.dot(n_contact) * n_contact;
+    // Damping fades in over the first kDampingOnsetPerSkin skins of depth: a HIP grazing a
+    // surface within micrometres gets no kick of b * v from a contact it barely makes.
+    const double onset = std::min(1.0, behind_m / (kDampingOnsetPerSkin * settings.skin_m));
+    force -= onset * mat.damping_Ns_per_m * state.hip_velocity_W.dot(n_contact) * n_contact;
     // Damping may slow the push-back but never pull the hand into the surface.
     const double normal = force.dot(n_contact);
     if (normal < 0.0) force -= normal * n_contact;
