@@ -43,8 +43,9 @@ TEST(DriveProxy, RecordsEveryTickAndAContinuousPath) {
       EXPECT_LE(s.force_W.norm(), box.settings.max_force_N * (1.0 + 1e-12));
       if (s.in_contact) ++contact;
     }
-    // 5 mm approach + 50 mm slide at 0.5 mm per tick, on a box face or past its edge.
-    EXPECT_GT(contact, 10U);
+    // 5 mm approach + 50 mm slide at 0.5 mm per tick, on a box face or past its edge
+    // (contact starts once the HIP is behind the surface, not within the proxy's skin).
+    EXPECT_GE(contact, 10U);
     EXPECT_EQ(count_crossings(oracle, records), 0U);
     EXPECT_EQ(count_ticks_inside(oracle, records), 0U);
   }

@@ -86,7 +86,10 @@ TEST(StressRun, RealProxyOnABoxIsCleanAndStrokesReachEveryKind) {
   EXPECT_EQ(r.worst_penetration_m, 0.0);
   EXPECT_GT(r.contact_ticks, r.ticks / 10);
   EXPECT_GT(r.max_hip_depth_m, 0.05);  // through strokes push the HIP deep
-  EXPECT_GE(r.max_plane_count, 2);     // edges and corners were pressed
+  // Edges and corners were pressed, but the box is convex: the proxy rests on one face at
+  // a time. (A second plane there was the far face caught from behind, within the
+  // sweep's inflation, which held the proxy at convex edges while the hand moved away.)
+  EXPECT_EQ(r.max_plane_count, 1);
   for (StrokeKind k : {StrokeKind::Through, StrokeKind::Poke, StrokeKind::Graze, StrokeKind::Ridge, StrokeKind::Vertex,
                        StrokeKind::Random, StrokeKind::Tour}) {
     EXPECT_GT(r.strokes_by_kind[static_cast<std::size_t>(k)], 0U) << to_string(k);
