@@ -127,6 +127,9 @@ ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMateri
         store_active_planes(sliding, settings.skin_m, state);
         if (state.plane_count > 0) {
           motion = sliding;
+          // The cone's rim is not the hand: slid to where the rim is blocked, the proxy
+          // may see the HIP itself (round an edge), and then it goes there, free.
+          if (proxy_detail::go_if_visible(world, settings.skin_m, hip_W, motion, state, work)) state.plane_count = 0;
         } else {
           // The rim of the cone lies in free space (the surface turned away): friction has
           // nothing to act on, and the proxy must not stop short of the hand there.

@@ -248,6 +248,17 @@ Release release_one_plane(const CollisionWorld& world, double skin_m, const Eige
 
 }  // namespace
 
+bool go_if_visible(const CollisionWorld& world, double skin_m, const Eigen::Vector3d& goal, Motion& m,
+                   ProxyState& state, TickWork& work) {
+  std::optional<SweepHit> hit;
+  if ((goal - m.p).norm() <= kMinStepPerSkin * skin_m) return false;
+  if (!sweep_past_grazes(world, work, m.p, goal, skin_m, {}, hit) || hit) return false;
+  advance(m, goal, hit, state);
+  m.plane_count = 0;
+  m.ignored_count = 0;
+  return true;
+}
+
 // Zilles-Salisbury with a checked active set. Each step either moves the proxy nearer
 // the goal along a swept leg or changes the constraint set, and every leg is either
 // swept against every triangle it could cross or stays inside the collected half-spaces
@@ -272,6 +283,9 @@ void solve_motion(const CollisionWorld& world, double skin_m, const Eigen::Vecto
   // Progress guard: constraint changes round a vertex of a fine mesh can take turns
   // without bringing the proxy nearer; a motion that has not gained for a few sweeps is at
   // its minimum as far as these planes can tell.
+  // Before giving up on the planes (no progress, or no point satisfies them all): a
+  // proxy that has worked its way round an edge may see the goal.
+  auto last_look = [&] { (void)go_if_visible(world, skin_m, goal, m, state, work); };
   double best_distance = (goal - m.p).norm();
   int sweeps_at_best = work.sweeps;
   for (;;) {
@@ -280,18 +294,15 @@ void solve_motion(const CollisionWorld& world, double skin_m, const Eigen::Vecto
       best_distance = distance;
       sweeps_at_best = work.sweeps;
     } else if (m.plane_count > 0 && work.sweeps - sweeps_at_best >= kMaxSweepsWithoutGain) {
-      // One last look: a proxy that has worked its way round an edge may see the goal.
-      if (!sweep_past_grazes(world, work, m.p, goal, skin_m, {}, hit)) return;
-      if (!hit) {
-        advance(m, goal, hit, state);
-        m.plane_count = 0;
-        m.ignored_count = 0;
-      }
+      last_look();
       return;
     }
     const auto target = project_onto_half_spaces(goal, std::span<const HalfSpace>(m.planes.data(), at(m.plane_count)),
                                                  kFeasibleTolerancePerSkin * skin_m);
-    if (!target) return;  // numerically empty: stay (crossing-free) where we are
+    if (!target) {  // numerically empty (e.g. both sides of a thin fin): stay, crossing-free
+      last_look();
+      return;
+    }
     if ((*target - m.p).norm() > min_step) {
       if (!budgeted_sweep(world, work, m.p, *target, skin_m, ignored_of(m), hit)) return;
       advance(m, *target, hit, state);

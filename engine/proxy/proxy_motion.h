@@ -47,4 +47,10 @@ struct Motion {
 void solve_motion(const CollisionWorld& world, double skin_m, const Eigen::Vector3d& start,
                   const Eigen::Vector3d& goal, Motion& m, ProxyState& state, TickWork& work);
 
+// If the straight segment from m.p to `goal` crosses nothing (one sweep within the
+// budget), moves the proxy there (recorded in state.path_W), clears the planes and
+// returns true; otherwise leaves everything as it was.
+bool go_if_visible(const CollisionWorld& world, double skin_m, const Eigen::Vector3d& goal, Motion& m,
+                   ProxyState& state, TickWork& work);
+
 }  // namespace mhd::proxy_detail
