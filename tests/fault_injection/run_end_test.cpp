@@ -19,6 +19,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <thread>
 #include <vector>
 
@@ -218,6 +219,14 @@ class PluginCrash : public ::testing::TestWithParam<CrashCase> {};
 
 TEST_P(PluginCrash, TheLastGaspSendsZerosAndNamesThePlugin) {
   const CrashCase c = GetParam();
+#if defined(__SANITIZE_ADDRESS__)
+  // Under ASan+UBSan the sanitizers own these: ASan's SIGSEGV handler and UBSan's
+  // division-by-zero check end the process before our last gasp sees the signal. The
+  // release suite runs both cases.
+  if (std::string_view(c.crash) == "segfault" || std::string_view(c.crash) == "fpe") {
+    GTEST_SKIP() << "the sanitizers handle " << c.crash << " themselves";
+  }
+#endif
   const fs::path dir = fresh_dir(c.crash);
   write_scene(dir, std::string("<plugin kind=\"display\" name=\"fi_crash\"><param name=\"crash\" value=\"") + c.crash +
                        "\"/></plugin>");

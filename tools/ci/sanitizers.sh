@@ -31,9 +31,11 @@ read -r -a extra_ctest <<<"${MHD_SAN_CTEST_ARGS:-}"
 # deadline count measures the sanitizer, not the code); each one says why. The code
 # they run is still checked by the other tests of the same binary.
 asan_exclude=(
-  # None today. viewer_server_tests (the haptic loop's overruns with the OSG viewer
-  # drawing) compares against a run without the viewer under the same load, so it
-  # holds under ASan too (measured: passes at load average 7-9 on 2 cores).
+  # viewer_server_tests counts the haptic loop's overruns with the OSG viewer drawing
+  # against a run without it. Under ASan on the 2-core CI machine it failed on
+  # 2026-11-25 (11 overruns against 1 without the viewer); it is a timing comparison,
+  # and it runs in the release suite.
+  viewer_server_tests
 )
 tsan_exclude=(
   # None today (see docs/reliability/sanitizers.md for what runs).
