@@ -1,5 +1,7 @@
 #include "proxy/god_object.h"
 
+#include "proxy_test_rig.h"
+
 #include "geometry/primitive_mesh.h"
 
 #include <gtest/gtest.h>
@@ -10,45 +12,10 @@ namespace mhd {
 namespace {
 
 using V = Eigen::Vector3d;
-constexpr double kDt = 1e-3;
 
-std::shared_ptr<const MeshBvh> shape_of(TriangleMesh mesh) {
-  compute_vertex_normals(mesh);
-  return std::make_shared<MeshBvh>(std::make_shared<TriangleMesh>(std::move(mesh)));
-}
-
-// Quad with corners a, b, c, d (CCW seen from the side it faces).
-TriangleMesh quad(const V& a, const V& b, const V& c, const V& d) {
-  TriangleMesh m;
-  m.vertices_m = {a, b, c, d};
-  m.triangles = {{0, 1, 2}, {0, 2, 3}};
-  return m;
-}
-
-struct Rig {
-  CollisionWorld world;
-  std::vector<HapticMaterial> materials;
-  ProxySettings settings;
-  ProxyState state;
-
-  void add(TriangleMesh mesh, HapticMaterial mat, const Pose& X_WO = Pose::Identity()) {
-    world.add_object(shape_of(std::move(mesh)), X_WO);
-    materials.push_back(mat);
-  }
-  ProxyOutput step(const V& hip) { return step_proxy(world, materials, settings, state, hip, kDt); }
-  // Moves the HIP in a straight line at 1 kHz with `steps` ticks.
-  ProxyOutput move(const V& from, const V& to, int steps) {
-    ProxyOutput out;
-    for (int i = 1; i <= steps; ++i) out = step(from + (to - from) * (double(i) / steps));
-    return out;
-  }
-};
-
-HapticMaterial stiff(double k) {
-  HapticMaterial m;
-  m.stiffness_N_per_m = k;
-  return m;
-}
+using test::quad;
+using test::stiff;
+using Rig = test::ProxyRig;
 
 TEST(GodObject, FreeSpaceProxyFollowsTheHipWithZeroForce) {
   Rig rig;

@@ -8,6 +8,8 @@
 
 #include "proxy/god_object.h"
 
+#include "proxy_test_rig.h"
+
 #include "geometry/primitive_mesh.h"
 #include "verification/proxy_drive.h"
 #include "verification/surface_crossing_oracle.h"
@@ -22,42 +24,18 @@ namespace mhd {
 namespace {
 
 using V = Eigen::Vector3d;
-constexpr double kDt = 1e-3;
+constexpr double kDt = test::kProxyTestDt_s;
 // The proxy keeps a 1 µm skin and the sweeps are conservative by about as much, so "at
 // the HIP" is judged to 10 µm (10 mN at 1 kN/m).
 constexpr double kFollow_m = 1e-5;
 
-std::shared_ptr<const MeshBvh> shape_of(TriangleMesh mesh) {
-  compute_vertex_normals(mesh);
-  return std::make_shared<MeshBvh>(std::make_shared<TriangleMesh>(std::move(mesh)));
-}
+using test::quad;
+using test::stiff;
 
-TriangleMesh quad(const V& a, const V& b, const V& c, const V& d) {
-  TriangleMesh m;
-  m.vertices_m = {a, b, c, d};
-  m.triangles = {{0, 1, 2}, {0, 2, 3}};
-  return m;
-}
-
-struct Rig {
-  CollisionWorld world;
-  std::vector<HapticMaterial> materials;
-  ProxySettings settings;
-  ProxyState state;
-
+// Forces are not clamped here: the tests compare them with k * depth.
+struct Rig : test::ProxyRig {
   Rig() { settings.max_force_N = 1e6; }
-  void add(TriangleMesh mesh, double k = 1000.0) {
-    world.add_object(shape_of(std::move(mesh)), Pose::Identity());
-    HapticMaterial m;
-    m.stiffness_N_per_m = k;
-    materials.push_back(m);
-  }
-  ProxyOutput step(const V& hip) { return step_proxy(world, materials, settings, state, hip, kDt); }
-  ProxyOutput move(const V& from, const V& to, int steps) {
-    ProxyOutput out;
-    for (int i = 1; i <= steps; ++i) out = step(from + (to - from) * (double(i) / steps));
-    return out;
-  }
+  void add(TriangleMesh mesh, double k_N_per_m = 1000.0) { ProxyRig::add(std::move(mesh), stiff(k_N_per_m)); }
 };
 
 // Counts the ticks of a drive that break either half of the contract.
