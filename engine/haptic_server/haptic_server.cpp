@@ -175,6 +175,7 @@ struct HapticServer::Impl {
   realtime::SpscRing<RecordingRow> recording_rows{1 << 14};
   realtime::TripleBuffer<HapticSnapshot> snapshot_for_planner;
   realtime::TripleBuffer<HapticSnapshot> snapshot_for_display;
+  realtime::TripleBuffer<HapticSnapshot> snapshot_for_io;  ///< the base pose the guard judges
   Shared<HeadState> head;
   Shared<std::pair<std::uint64_t, BaseTwist>> planned_command;  // sequence, twist
   realtime::WakeEvent base_sample_arrived;  ///< io -> haptic: start the tick now
@@ -186,6 +187,8 @@ struct HapticServer::Impl {
   std::atomic<bool> in_contact{false};
   std::atomic<std::uint64_t> tracker_samples{0}, tracker_rejected{0}, recording_dropped{0};
   std::atomic<std::uint64_t> base_commands{0}, base_stops{0};
+  Shared<BaseStopCounts> base_stop_counts;  ///< the guard's, by cause (io thread)
+  std::atomic<double> base_sample_newest_t_s{-std::numeric_limits<double>::infinity()};  ///< for the planner
   std::atomic<std::uint64_t> early_ticks{0};
   Shared<BasePose> status_base;
   Shared<std::vector<PluginCounter>> tracker_counters;
@@ -316,6 +319,7 @@ void HapticServer::Impl::haptic_thread() {
     snap.base = out.base;
     snapshot_for_planner.write(snap);
     snapshot_for_display.write(snap);
+    snapshot_for_io.write(snap);
 
     if (!options.recording.empty()) {
       RecordingRow row;
@@ -365,7 +369,9 @@ void HapticServer::Impl::haptic_thread() {
 void HapticServer::Impl::io_thread() {
   std::optional<simulation::SimulatedUser> user;
   if (user_config) user.emplace(*user_config);
-  BaseCommandGuard guard(settings.base_guard);
+  BaseCommandGuardSettings guard_settings = settings.base_guard;
+  guard_settings.command_hold_s = 1.0 / settings.io_rate_hz;
+  BaseCommandGuard guard(guard_settings);
   // Tracker input is on the force's critical path (stale poses fade the force out), so it
   // runs real-time too, below the haptic thread.
   (void)realtime::make_current_thread_realtime(70);
@@ -384,6 +390,7 @@ void HapticServer::Impl::io_thread() {
   double last_base_write_t_s = -1.0;
   bool last_write_was_zero = false;
   const double base_period_s = 1.0 / settings.base_rate_hz;
+  BaseStopCounts counts_published;
 
   // Everything the tracker has received since the last read: checked, then base-sensor
   // samples to the haptic thread (woken for them) and head samples to the planner.
@@ -418,6 +425,7 @@ void HapticServer::Impl::io_thread() {
         if (s.sensor_id == settings.base_sensor_id) {
           if (!base_samples.push({s.timestamp_s, X_T_S})) tracker_rejected.fetch_add(1, std::memory_order_relaxed);
           newest_base_sample_t_s = std::max(newest_base_sample_t_s, s.timestamp_s);
+          base_sample_newest_t_s.store(newest_base_sample_t_s, std::memory_order_relaxed);
           base_sample = true;
         } else {
           const Pose X_W_head = rig.X_W_is900() * X_T_S;
@@ -506,8 +514,8 @@ void HapticServer::Impl::io_thread() {
     }();
     if (check(br, *base) || deactivated(br.value(), *base, "base_read")) break;
 
-    // Command: the planner's newest, through the guard; stale tracking stops the base at
-    // once, otherwise commands go out at the base rate (and feed the base's watchdog).
+    // Command: the planner's newest, through the guard; stale base or head data stops the
+    // base at once, otherwise commands go out at the base rate (and feed the base's watchdog).
     const auto [sequence, twist] = planned_command.get();
     const bool new_plan = sequence != command_sequence_seen;
     if (new_plan) {
@@ -515,10 +523,20 @@ void HapticServer::Impl::io_thread() {
       planned = twist;
     }
     const HeadState h = head.get();
-    const BasePose pose = status_base.get();
-    const Eigen::Vector2d user_xz = h.known ? Eigen::Vector2d(h.p_W_m.x(), h.p_W_m.z())
-                                            : Eigen::Vector2d::Constant(std::numeric_limits<double>::quiet_NaN());
-    const BaseGuardResult guarded = guard.apply(planned, pose, user_xz, t_s - newest_base_sample_t_s);
+    BaseGuardInput judged;
+    judged.t_s = t_s;
+    judged.X_WB = snapshot_for_io.latest().base;
+    judged.base_age_s = t_s - newest_base_sample_t_s;
+    if (h.known) {
+      judged.p_W_head_xz_m = Eigen::Vector2d(h.p_W_m.x(), h.p_W_m.z());
+      judged.head_age_s = t_s - h.t_s;
+    }
+    const BaseGuardResult guarded = guard.apply(planned, judged);
+    if (guard.counts().stops() != counts_published.stops() ||
+        guard.counts().keep_out_deflections != counts_published.keep_out_deflections) {
+      counts_published = guard.counts();
+      base_stop_counts.set(counts_published);
+    }
     const bool is_zero = guarded.twist_B.vx_mps == 0.0 && guarded.twist_B.vz_mps == 0.0 && guarded.twist_B.omega_radps == 0.0;
     const bool due = t_s - last_base_write_t_s >= base_period_s;
     const bool must_stop_now = is_zero && !last_write_was_zero;
@@ -610,6 +628,10 @@ void HapticServer::Impl::planner_thread() {
     in.user_xz_W_m = Eigen::Vector2d(h.p_W_m.x(), h.p_W_m.z());
     in.user_heading_rad = planar_heading_of(h.q_W);
     in.user_velocity_W_mps = user_velocity;
+    in.max_input_age_s = settings.base_guard.tracker_timeout_s;
+    in.hip_age_s = in.t_s - snap.t_s;
+    in.base_age_s = in.t_s - base_sample_newest_t_s.load(std::memory_order_relaxed);
+    if (h.known) in.head_age_s = in.t_s - h.t_s;
     const BaseTwist twist = options.plan_base(in);
     planned_command.set({++sequence, twist});
   }
@@ -940,6 +962,7 @@ ServerReport HapticServer::run() {
   report.clamped_ticks = m.safety_counters.clamped_ticks;
   report.base_commands = m.base_commands.load();
   report.base_stops = m.base_stops.load();
+  report.base_stops_by_cause = m.base_stop_counts.get();
   report.recording_rows = m.recording_rows_written;
   report.recording_dropped = m.recording_dropped.load();
   report.zero_force_sent = m.zero_force_sent;

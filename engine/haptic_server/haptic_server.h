@@ -6,7 +6,7 @@
 //            (HIP, proxy, safety, torques) -> device write. Never locks, never allocates.
 //   io       tracker and base plugins, and the simulated user (io_rate_hz): tracker samples
 //            to the haptic thread; base commands from the planner, through the
-//            BaseCommandGuard (stale tracking or a fault stops the base), to the base.
+//            BaseCommandGuard (stale base or head data, or a fault, stops the base), to the base.
 //   planner  10 Hz: the base motion planner (holds still until one is set).
 //   display  60 Hz: the newest state to every display plugin.
 //   recorder writes the CSV recording, flushed at least every record_flush_s.
@@ -31,6 +31,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -49,6 +50,15 @@ struct BasePlanInput {
   Eigen::Vector2d user_xz_W_m = Eigen::Vector2d::Zero();
   double user_heading_rad = 0.0;  ///< the head's line of sight, projected on the floor
   Eigen::Vector2d user_velocity_W_mps = Eigen::Vector2d::Zero();  ///< smoothed, from the head track
+  // Each input's age at t_s (+inf: never measured); a plan on anything older than
+  // max_input_age_s (the tracker timeout) holds the base still.
+  double head_age_s = std::numeric_limits<double>::infinity();
+  double base_age_s = std::numeric_limits<double>::infinity();
+  double hip_age_s = std::numeric_limits<double>::infinity();
+  double max_input_age_s = 0.05;
+  [[nodiscard]] bool fresh() const noexcept {
+    return head_age_s < max_input_age_s && base_age_s < max_input_age_s && hip_age_s < max_input_age_s;
+  }
 };
 
 /// The base twist to command (base frame). The server's guard limits it afterwards.
@@ -95,7 +105,8 @@ struct ServerReport {
   std::uint64_t contact_ticks = 0;
   std::uint64_t proxy_budget_exhausted_ticks = 0;  ///< ticks whose proxy ran out of its work budget
   std::uint64_t stale_ticks = 0, fault_ticks = 0, hip_jumps = 0, clamped_ticks = 0;
-  std::uint64_t base_commands = 0, base_stops = 0;
+  std::uint64_t base_commands = 0, base_stops = 0;  ///< commands sent; of them zero by a guard stop
+  BaseStopCounts base_stops_by_cause;  ///< stop episodes by cause, and keep-out deflections
   std::uint64_t recording_rows = 0, recording_dropped = 0;
   bool zero_force_sent = false;  ///< the last device command was zero torque
   bool base_stop_sent = false;   ///< the last base command was zero (or there is no base)

@@ -31,7 +31,7 @@ ScenePlannerResult scene_planner(const SceneDescription& scene, const Rig& rig) 
   std::shared_ptr<Planner> planner = make_planner(kind, parsed.settings);
   out.collision_radius_m = parsed.settings.collision_radius_m();
   out.plan = [planner](const BasePlanInput& in) {
-    if (!in.hip_valid || !in.user_known) return BaseTwist{};  // nothing to follow: hold still
+    if (!in.hip_valid || !in.user_known || !in.fresh()) return BaseTwist{};  // nothing fresh to follow: hold still
     PlannerInput p;
     p.time_s = in.t_s;
     p.base = in.base;

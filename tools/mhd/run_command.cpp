@@ -170,6 +170,9 @@ void print_summary(const RunOptions& opt, const mhd::CompiledScene& scene, const
              "ends at ({:.3f}, {:.3f}) m\n",
              s.tracker_samples, s.tracker_rejected, plugin_drops(s), s.early_ticks, r.base_commands, r.base_stops,
              s.base.x_m, s.base.z_m);
+  const mhd::BaseStopCounts& why = r.base_stops_by_cause;
+  fmt::print("base stops by cause: {} head stale, {} base stale, {} not finite; {} keep-out deflections\n",
+             why.head_stale, why.base_stale, why.not_finite, why.keep_out_deflections);
   if (!opt.record.empty()) {
     fmt::print("recording {}: {} rows, {} dropped\n", opt.record, r.recording_rows, r.recording_dropped);
   }
