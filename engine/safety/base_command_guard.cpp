@@ -70,8 +70,9 @@ BaseGuardResult BaseCommandGuard::apply(const BaseTwist& command_B, const BaseGu
   }
 
   // Limits, ramping back in after a stop so the base resumes smoothly.
-  const double ramp = std::clamp((in.t_s - resume_start_s_) / settings_.resume_s, 0.0, 1.0);
-  const double max_speed_mps = settings_.max_speed_mps * ramp, max_omega_radps = settings_.max_omega_radps * ramp;
+  const double since_resume_s = std::max(0.0, in.t_s - resume_start_s_);
+  const double max_speed_mps = std::min(settings_.max_speed_mps, settings_.resume_accel_mps2 * since_resume_s);
+  const double max_omega_radps = std::min(settings_.max_omega_radps, settings_.resume_angular_accel_radps2 * since_resume_s);
   const double speed = std::hypot(t.vx_mps, t.vz_mps);
   double scale = 1.0;
   if (speed > max_speed_mps) scale = max_speed_mps / speed;

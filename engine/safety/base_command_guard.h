@@ -7,7 +7,8 @@
 //    have walked user_max_speed_mps x (head age + command hold) since the head sample, the
 //    base max_speed_mps x (base age + command hold). Inside keep_out_m plus that margin,
 //    no velocity points at any place the user may be (the cone of the uncertainty disk);
-//  - after a stop, the speed limits ramp from zero back to full over resume_s;
+//  - after a stop, the speed limits grow from zero at resume_accel_mps2 and
+//    resume_angular_accel_radps2 (a slow command passes almost at once, a fast one ramps);
 //  - the command is scaled (direction kept) into the base's speed and turn-rate limits.
 // apply() is noexcept and allocation-free; it counts stops by cause (a stop is one
 // episode of zero commands for one cause) and keep-out deflections.
@@ -30,7 +31,9 @@ struct BaseCommandGuardSettings {
   double keep_out_m = 0.475;
   double user_max_speed_mps = 1.5;  ///< how fast the user may walk unseen (simulated user's maximum)
   double command_hold_s = 0.001;    ///< how long one command is held (the io period)
-  double resume_s = 0.5;            ///< after a stop, the limits ramp back to full over this long
+  /// After a stop the limits grow back from zero at these rates (full speed in 0.5 s).
+  double resume_accel_mps2 = 1.0;
+  double resume_angular_accel_radps2 = 1.3962634015954636;  ///< 80 deg/s^2
 };
 
 /// What the guard judges one command on; ages in seconds, +inf when never measured.

@@ -81,6 +81,10 @@ void write_approach_replay(const fs::path& file, const Rig& rig, double duration
     const Eigen::Quaterniond q(X.rotation());
     out << fmt::format("{:.3f},0,{},{:.9f},{:.9f},{:.9f},{:.12f},{:.12f},{:.12f},{:.12f}\n", t, i, X.translation().x(),
                        X.translation().y(), X.translation().z(), q.w(), q.x(), q.y(), q.z());
+    // The head (sensor 1) of a user standing 3 m behind: the guard moves the base on fresh
+    // head data only, and this user is outside the keep-out whatever the data's age.
+    const Eigen::Vector3d p_T_head = rig.X_W_is900().inverse() * Eigen::Vector3d(-3.0, 1.7, 0.0);
+    out << fmt::format("{:.3f},1,{},{:.9f},{:.9f},{:.9f},1,0,0,0\n", t, i, p_T_head.x(), p_T_head.y(), p_T_head.z());
   }
 }
 

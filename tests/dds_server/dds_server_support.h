@@ -47,7 +47,8 @@ std::filesystem::path write_server_scene(const std::filesystem::path& dir, const
 
 /// A replay CSV for the tracker server: sensor 0 (the base sensor) at 200 Hz for
 /// duration_s, with the base at x = -approach_m for hold_s, then moving +x at
-/// approach_mps until it reaches the origin, where it stays.
+/// approach_mps until it reaches the origin, where it stays; and sensor 1, the head of a user
+/// standing 3 m behind (world x = -3), outside the base keep-out.
 void write_approach_replay(const std::filesystem::path& file, const Rig& rig, double duration_s, double hold_s,
                            double approach_m, double approach_mps);
 

@@ -11,7 +11,11 @@
 //                                 holds back the next ones (they arrive bunched)
 //   rate_hz (180), latency_s (0.004), position_sigma_m (0.0025), angle_sigma_deg (0.35),
 //   seed (1)          the IS-900 model and the faults' random numbers
-//   with_head (false) also deliver the head sensor (id 1); the base sensor is id 0
+//   with_head (true)  also deliver the head sensor (id 1); the base sensor is id 0. The
+//                     base guard moves the base only on fresh head data, so a tracker
+//                     without it holds the base still
+//   head_p_W_m ("x y z")  at start, stand the simulated user's head here (the world
+//                         starts it at the origin, inside the base's keep-out)
 //   delivery_log=<path>  at close, one line per delivered sample:
 //                        "timestamp_s arrival_s sequence sensor_id"
 #include "probe_common.h"
@@ -24,6 +28,7 @@
 #include <limits>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <string>
 
@@ -70,7 +75,8 @@ mhd_plugin_instance* open_tracker(const mhd_host* host, const mhd_param* params,
     c.seed = 1;
     double silent = std::numeric_limits<double>::infinity(), resume = std::numeric_limits<double>::infinity();
     double loss = 0.0, delay_ms = 0.0, jitter_ms = 0.0;
-    bool with_head = false;
+    bool with_head = true;
+    std::optional<std::array<double, 3>> head_p_W_m;
     std::string log;
     for (size_t i = 0; i < count; ++i) {
       const std::string name = params[i].name, value = params[i].value;
@@ -85,6 +91,7 @@ mhd_plugin_instance* open_tracker(const mhd_host* host, const mhd_param* params,
       else if (name == "angle_sigma_deg") c.angle_sigma_rad = probe::number(name, value) * std::numbers::pi / 180.0;
       else if (name == "seed") c.seed = static_cast<std::uint64_t>(probe::number(name, value));
       else if (name == "with_head") with_head = value == "true";
+      else if (name == "head_p_W_m") probe::vector3(name, value, head_p_W_m.emplace().data());
       else if (name == "delivery_log") log = value;
       else throw std::invalid_argument("unknown parameter '" + name + "'");
     }
@@ -98,6 +105,10 @@ mhd_plugin_instance* open_tracker(const mhd_host* host, const mhd_param* params,
     t->delay_s = delay_ms * 1e-3;
     t->jitter_s = jitter_ms * 1e-3;
     t->with_head = with_head;
+    if (head_p_W_m) {
+      const double q_W_wxyz[4] = {1.0, 0.0, 0.0, 0.0};
+      host->sim_world->set_head(host->sim_world->context, head_p_W_m->data(), q_W_wxyz);
+    }
     t->delivered.open(log, 1u << 18);
     return t.release();
   });
