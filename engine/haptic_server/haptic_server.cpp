@@ -1,6 +1,7 @@
 #include "haptic_server/haptic_server.h"
 
 #include "haptic_server/haptic_tick.h"
+#include "haptic_server/physical_range.h"
 #include "haptic_server/scene_planner.h"
 #include "haptic_server/tick_histogram.h"
 #include "kinematics/rig.h"
@@ -231,6 +232,11 @@ struct HapticServer::Impl {
     return true;
   }
 
+  /// "plugin 'name': what", for a fault found in what a plugin returned.
+  static std::string plugin_said(const OpenedPlugin& plugin, const std::string& what) {
+    return "plugin '" + plugin.description.name + "': " + what;
+  }
+
   bool deactivated(PluginCallStatus status, const OpenedPlugin& plugin, const char* call) {
     if (status != PluginCallStatus::Deactivate) return false;
     fail(Diagnostic{plugin.description.where,
@@ -292,6 +298,10 @@ void HapticServer::Impl::haptic_thread() {
     if (check(read, *device) || deactivated(read.value(), *device, "device_read")) break;
     if (read.value() == PluginCallStatus::Ok) {
       q_rad = Eigen::Vector3d(state.joint_angles_rad[0], state.joint_angles_rad[1], state.joint_angles_rad[2]);
+      if (!joint_angles_plausible(rig.device().limits, q_rad)) {
+        fail(Diagnostic{device->description.where, plugin_said(*device, joint_angles_fault(q_rad))}.to_string());
+        break;
+      }
     }
 
     const HapticTickOutput out = tick.tick(t_s, dt_s, q_rad);
@@ -417,6 +427,13 @@ void HapticServer::Impl::io_thread() {
         if (backwards || future || !known) {
           tracker_rejected.fetch_add(1, std::memory_order_relaxed);
           continue;
+        }
+        if (const Eigen::Vector3d p_T_m(s.p_T_m[0], s.p_T_m[1], s.p_T_m[2]);
+            !tracked_position_plausible(p_T_m, settings.tracking_range_m)) {
+          fail(Diagnostic{tracker->description.where,
+                          plugin_said(*tracker, tracked_position_fault(s.sensor_id, p_T_m, settings.tracking_range_m))}
+                   .to_string());
+          return std::nullopt;
         }
         it->second = {s.sequence, read_at_s};
         tracker_samples.fetch_add(1, std::memory_order_relaxed);

@@ -2,8 +2,11 @@
 
 #include "scene/param_block_reader.h"
 
+#include <fmt/core.h>
+
 #include <cstdint>
 #include <numbers>
+#include <string_view>
 
 namespace mhd {
 
@@ -33,6 +36,16 @@ ServerSettingsResult server_settings_from(const SceneDescription& scene) {
   s.tick_on_tracker_sample = r.boolean("tick_on_tracker_sample", s.tick_on_tracker_sample);
   s.min_tick_interval_s = r.non_negative("min_tick_interval_s", s.min_tick_interval_s);
   s.plugin_call_timeout_s = r.positive("plugin_call_timeout_s", s.plugin_call_timeout_s);
+  s.tracking_range_m = r.positive("tracking_range_m", s.tracking_range_m);
+  // Rates a host loop can keep (a tiny rate is a near-infinite period, a huge one a busy spin).
+  const auto within = [&r](std::string_view name, double value, double low, double high) {
+    if (value >= low && value <= high) return;
+    r.error(name, fmt::format("param '{}' in <server> must be within [{:g}, {:g}], got {:g}", name, low, high, value));
+  };
+  within("io_rate_hz", s.io_rate_hz, 10.0, 20'000.0);
+  within("base_rate_hz", s.base_rate_hz, 1.0, 1000.0);
+  within("display_rate_hz", s.display_rate_hz, 1.0, 1000.0);
+  within("tracking_range_m", s.tracking_range_m, 1.0, 1000.0);
   if (s.min_tick_interval_s > 1.0 / s.haptic_rate_hz) {
     r.error("min_tick_interval_s", "param 'min_tick_interval_s' in <server> must not exceed the haptic period (1 / rate)");
   }

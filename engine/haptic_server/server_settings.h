@@ -18,6 +18,9 @@
 //   plugin_call_timeout_s (0.1)  a device, tracker or base call that has not returned
 //                             after this long ends the run (the others reach their
 //                             safe state; a stuck device must rely on its own watchdog)
+//   tracking_range_m (50)     a tracked sensor farther than this from the tracker's origin
+//                             is a fault (physical_range.h); within [1, 1000]
+//   io_rate_hz within [10, 20000], base_rate_hz and display_rate_hz within [1, 1000]
 
 #include "haptic_server/haptic_tick.h"
 #include "safety/base_command_guard.h"
@@ -42,6 +45,7 @@ struct ServerSettings {
   bool tick_on_tracker_sample = true;
   double min_tick_interval_s = 0.0002;
   double plugin_call_timeout_s = 0.1;
+  double tracking_range_m = 50.0;
 };
 
 struct ServerSettingsResult {

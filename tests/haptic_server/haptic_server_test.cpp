@@ -181,6 +181,74 @@ TEST(HapticServer, DeviceReturningNanEndsTheRunWithZeroForceAndTheBaseStopped) {
   EXPECT_EQ(base.c, 0.0);
 }
 
+/// Runs `file` to its end and checks, from the plugins' own logs, that the device's last
+/// command was zero torque and the base's last a zero twist.
+void expect_safe_stop_after(const ServerReport& r, const fs::path& device_log, const fs::path& base_log) {
+  EXPECT_EQ(r.ended_by, RunEnd::Fault);  // `mhd run` exits 3
+  EXPECT_TRUE(r.zero_force_sent);
+  EXPECT_TRUE(r.base_stop_sent);
+  const CommandLog device = read_log(device_log);
+  EXPECT_GT(device.count, 0u);
+  EXPECT_EQ(device.a, 0.0);
+  EXPECT_EQ(device.b, 0.0);
+  EXPECT_EQ(device.c, 0.0);
+  const CommandLog base = read_log(base_log);
+  EXPECT_GT(base.count, 0u);
+  EXPECT_EQ(base.a, 0.0);
+  EXPECT_EQ(base.b, 0.0);
+  EXPECT_EQ(base.c, 0.0);
+}
+
+TEST(HapticServer, JointAnglesOf1e30AreAFaultNamingTheDevice) {
+  const fs::path dir = temp_dir();
+  const fs::path device_log = dir / "device.log", base_log = dir / "base.log";
+  const fs::path file = write_scene(dir, fmt::format(R"(
+    <plugin kind="device" name="fault_device">
+      <param name="fail_after_reads" value="200"/>
+      <param name="fault" value="huge"/>
+      <param name="command_log" value="{}"/>
+    </plugin>
+    <plugin kind="tracker" name="sim_is900"/>
+    <plugin kind="base" name="fault_base">
+      <param name="command_log" value="{}"/>
+    </plugin>)", device_log.string(), base_log.string()));
+  Loaded l = load(file);
+  ASSERT_TRUE(l.scene);
+  auto build = HapticServer::open(*l.description, *l.scene, options_for(30.0));
+  ASSERT_TRUE(build.server);
+  const ServerReport r = build.server->run();
+  ASSERT_TRUE(r.error);
+  EXPECT_EQ(*r.error, fmt::format("{}:{}: error: plugin 'fault_device': device_read returned joint angles "
+                                  "(0, 1e+30, 0.2) rad, outside the joint limits by more than 0.35 rad",
+                                  file.string(), scene_line_of(file, "name=\"fault_device\"")));
+  expect_safe_stop_after(r, device_log, base_log);
+}
+
+TEST(HapticServer, ABaseTracked1e9MetresAwayIsAFaultNamingTheTracker) {
+  const fs::path dir = temp_dir();
+  const fs::path device_log = dir / "device.log", base_log = dir / "base.log";
+  const fs::path file = write_scene(dir, fmt::format(R"(
+    <plugin kind="device" name="fault_device">
+      <param name="command_log" value="{}"/>
+    </plugin>
+    <plugin kind="tracker" name="fault_tracker">
+      <param name="pose" value="1e9 0 0 1 0 0 0"/>
+    </plugin>
+    <plugin kind="base" name="fault_base">
+      <param name="command_log" value="{}"/>
+    </plugin>)", device_log.string(), base_log.string()));
+  Loaded l = load(file);
+  ASSERT_TRUE(l.scene);
+  auto build = HapticServer::open(*l.description, *l.scene, options_for(30.0));
+  ASSERT_TRUE(build.server);
+  const ServerReport r = build.server->run();
+  ASSERT_TRUE(r.error);
+  EXPECT_EQ(*r.error, fmt::format("{}:{}: error: plugin 'fault_tracker': tracker_read returned sensor 0 at 1e+09 m "
+                                  "from the tracker, beyond its tracking range of 50 m",
+                                  file.string(), scene_line_of(file, "name=\"fault_tracker\"")));
+  expect_safe_stop_after(r, device_log, base_log);
+}
+
 TEST(HapticServer, DeviceErrorAndDeactivateEndTheRunNamingThePlugin) {
   for (const std::string fault : {"error", "deactivate"}) {
     const fs::path dir = temp_dir() / fault;

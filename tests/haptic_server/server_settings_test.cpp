@@ -6,6 +6,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <string>
+#include <vector>
+
 namespace {
 
 using namespace mhd;
@@ -53,6 +56,26 @@ TEST(ServerSettings, AZeroWatchdogTimeoutIsRefused) {
   EXPECT_FALSE(r.settings);
   ASSERT_EQ(r.diagnostics.size(), 1u);
   EXPECT_THAT(r.diagnostics[0].message, HasSubstr("plugin_call_timeout_s"));
+}
+
+TEST(ServerSettings, AbsurdRatesAndTrackingRangeAreRefusedAtTheirLines) {
+  const ServerSettingsResult r = server_settings_from(scene_with_server(
+      {{"io_rate_hz", "1e-308"}, {"base_rate_hz", "1e9"}, {"display_rate_hz", "0.5"}, {"tracking_range_m", "1e9"}}));
+  EXPECT_FALSE(r.settings);
+  std::vector<std::string> lines;
+  for (const Diagnostic& d : r.diagnostics) lines.push_back(d.to_string());
+  EXPECT_EQ(lines, (std::vector<std::string>{
+                       "scene.xml:7: error: param 'io_rate_hz' in <server> must be within [10, 20000], got 1e-308",
+                       "scene.xml:7: error: param 'base_rate_hz' in <server> must be within [1, 1000], got 1e+09",
+                       "scene.xml:7: error: param 'display_rate_hz' in <server> must be within [1, 1000], got 0.5",
+                       "scene.xml:7: error: param 'tracking_range_m' in <server> must be within [1, 1000], got 1e+09"}));
+}
+
+TEST(ServerSettings, TheTrackingRangeHasADefaultAndIsRead) {
+  EXPECT_DOUBLE_EQ(server_settings_from(SceneDescription{}).settings->tracking_range_m, 50.0);
+  const ServerSettingsResult r = server_settings_from(scene_with_server({{"tracking_range_m", "20"}}));
+  ASSERT_TRUE(r.settings);
+  EXPECT_DOUBLE_EQ(r.settings->tracking_range_m, 20.0);
 }
 
 TEST(PluginCounters, OnlyNonZeroDropsAreShownWithoutTheirPrefix) {

@@ -25,7 +25,7 @@ mhd_status read(mhd_plugin_instance* self, mhd_device_state* out, mhd_error* err
   out->joint_angles_rad[0] = 0.0;
   out->joint_angles_rad[1] = 0.3;
   out->joint_angles_rad[2] = 0.2;
-  if (nan) out->joint_angles_rad[1] = std::numeric_limits<double>::quiet_NaN();
+  if (nan) out->joint_angles_rad[1] = fault_injection::absurd(d.config);
   return MHD_OK;
 }
 

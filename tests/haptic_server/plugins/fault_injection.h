@@ -1,8 +1,9 @@
 #pragma once
 // Shared by the haptic server's fault-injection test plugins: parameters
 //   fail_after_reads=<n>   reads that succeed before the fault (default: never fail)
-//   fault=nan|error|deactivate|block|none   what the read returns from then on (block:
-//                          the first faulty read sleeps block_s, then succeeds)
+//   fault=nan|huge|error|deactivate|block|none   what the read returns from then on (block:
+//                          the first faulty read sleeps block_s, then succeeds; huge: a
+//                          finite but absurd value, 1e30, where nan would be NaN)
 //   block_s=<seconds>      how long a blocking read blocks (default 1)
 //   command_log=<path>     on close, the last command received is written there as
 //                          "<count> <a> <b> <c>\n" (count of commands, then the values)
@@ -14,13 +15,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <new>
 #include <string>
 #include <thread>
 
 namespace fault_injection {
 
-enum class Fault { None, Nan, Error, Deactivate, Block };
+enum class Fault { None, Nan, Huge, Error, Deactivate, Block };
 
 struct Config {
   unsigned long fail_after_reads = ~0ul;
@@ -45,6 +47,7 @@ inline bool parse(Config& c, const mhd_param* params, size_t count, mhd_error* e
       c.fail_after_reads = std::strtoul(value.c_str(), nullptr, 10);
     } else if (name == "fault") {
       if (value == "nan") c.fault = Fault::Nan;
+      else if (value == "huge") c.fault = Fault::Huge;
       else if (value == "error") c.fault = Fault::Error;
       else if (value == "deactivate") c.fault = Fault::Deactivate;
       else if (value == "block") c.fault = Fault::Block;
@@ -66,12 +69,13 @@ inline bool parse(Config& c, const mhd_param* params, size_t count, mhd_error* e
 }
 
 /// What this read returns: MHD_OK, or the fault once fail_after_reads reads have passed.
-/// `nan_out` is set when the read must report NaN.
+/// `nan_out` is set when the read must report NaN (or, with fault=huge, 1e30: see absurd()).
 inline mhd_status next_read(Config& c, bool& nan_out, mhd_error* err) {
   nan_out = false;
   if (++c.reads <= c.fail_after_reads || c.fault == Fault::None) return MHD_OK;
   switch (c.fault) {
-    case Fault::Nan: nan_out = true; return MHD_OK;
+    case Fault::Nan:
+    case Fault::Huge: nan_out = true; return MHD_OK;
     case Fault::Error: fail(err, "injected fault: hardware not responding"); return MHD_ERROR;
     case Fault::Deactivate: return MHD_DEACTIVATE;
     case Fault::Block:
@@ -83,6 +87,11 @@ inline mhd_status next_read(Config& c, bool& nan_out, mhd_error* err) {
     case Fault::None: break;
   }
   return MHD_OK;
+}
+
+/// The value a faulty read reports in place of a good one: NaN, or 1e30 with fault=huge.
+inline double absurd(const Config& c) {
+  return c.fault == Fault::Huge ? 1e30 : std::numeric_limits<double>::quiet_NaN();
 }
 
 inline void record(Config& c, double a, double b, double d) {
