@@ -11,6 +11,7 @@
 #include "plugin_host/plugin_search_path.h"
 #include "realtime/periodic_timer.h"
 #include "realtime/spsc_ring.h"
+#include "realtime/thread_name.h"
 #include "realtime/thread_priority.h"
 #include "realtime/triple_buffer.h"
 #include "realtime/wake_event.h"
@@ -265,6 +266,7 @@ void HapticServer::Impl::haptic_thread() {
     tick_settings.safety.max_force_N = std::min(tick_settings.safety.max_force_N, limits.value().max_force_N);
   }
   HapticTick tick(scene, rig, tick_settings);
+  realtime::name_current_thread(realtime::kHapticThreadName);
   scheduling = realtime::make_current_thread_realtime(80).detail;
   realtime::PeriodicTimer timer(1.0 / settings.haptic_rate_hz);
   Eigen::Vector3d q_rad = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
@@ -377,6 +379,7 @@ void HapticServer::Impl::haptic_thread() {
 // ---- io thread: tracker, base, simulated user -----------------------------------------
 
 void HapticServer::Impl::io_thread() {
+  realtime::name_current_thread("mhd-io");
   std::optional<simulation::SimulatedUser> user;
   if (user_config) user.emplace(*user_config);
   BaseCommandGuardSettings guard_settings = settings.base_guard;
@@ -617,6 +620,7 @@ OpenedPlugin* HapticServer::Impl::stuck_plugin(double now_s) const {
 // ---- planner thread ----------------------------------------------------------------
 
 void HapticServer::Impl::planner_thread() {
+  realtime::name_current_thread("mhd-planner");
   realtime::PeriodicTimer timer(1.0 / settings.base_rate_hz);
   std::uint64_t sequence = 0;
   // The user's walking velocity from the head track, low-passed (time constant 0.2 s):
@@ -657,6 +661,7 @@ void HapticServer::Impl::planner_thread() {
 // ---- display thread ------------------------------------------------------------------
 
 void HapticServer::Impl::display_thread() {
+  realtime::name_current_thread("mhd-display");
   realtime::PeriodicTimer timer(1.0 / settings.display_rate_hz);
   while (!stop.load(std::memory_order_relaxed)) {
     (void)timer.wait_next();
@@ -689,6 +694,7 @@ void HapticServer::Impl::display_thread() {
 // ---- recorder thread ---------------------------------------------------------------
 
 void HapticServer::Impl::recorder_thread() {
+  realtime::name_current_thread("mhd-recorder");
   RecordingRow row;
   auto drain = [&] {
     while (recording_rows.pop(row)) {

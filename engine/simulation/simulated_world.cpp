@@ -41,8 +41,7 @@ void table_set_head(void* context, const double p_W_m[3], const double q_W_wxyz[
 
 }  // namespace
 
-SimulatedWorld::SimulatedWorld() {
-  for (auto& c : hand_W_m_) c.store(0.0, std::memory_order_relaxed);
+SimulatedWorld::SimulatedWorld() : head_({0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0}) {
   table_.context = this;
   table_.get_base_pose = &table_get_base_pose;
   table_.set_base_pose = &table_set_base_pose;
@@ -52,46 +51,35 @@ SimulatedWorld::SimulatedWorld() {
   table_.set_head = &table_set_head;
 }
 
-PlanarPose SimulatedWorld::base_pose() const {
-  const std::lock_guard lock(mutex_);
-  return base_;
+PlanarPose SimulatedWorld::base_pose() const noexcept {
+  const auto v = base_.read();
+  return {v[0], v[1], v[2]};
 }
 
 void SimulatedWorld::set_base_pose(const PlanarPose& pose) {
-  const std::lock_guard lock(mutex_);
-  base_ = pose;
+  const std::lock_guard lock(writer_mutex_);
+  base_.write({pose.x_m, pose.z_m, pose.heading_rad});
 }
 
-HeadPose SimulatedWorld::head() const {
-  const std::lock_guard lock(mutex_);
-  return head_;
+HeadPose SimulatedWorld::head() const noexcept {
+  const auto v = head_.read();
+  return {Eigen::Vector3d(v[0], v[1], v[2]), Eigen::Quaterniond(v[3], v[4], v[5], v[6])};
 }
 
 void SimulatedWorld::set_head(const HeadPose& head) {
-  const std::lock_guard lock(mutex_);
-  head_ = head;
-  head_.q_W.normalize();
+  const Eigen::Quaterniond q = head.q_W.normalized();
+  const std::lock_guard lock(writer_mutex_);
+  head_.write({head.p_W_m.x(), head.p_W_m.y(), head.p_W_m.z(), q.w(), q.x(), q.y(), q.z()});
 }
 
-// Seqlock without standalone fences (which ThreadSanitizer cannot check): a reader that
-// acquires a value a writer released also sees that writer's odd sequence number, so its
-// second look at the sequence catches any write it overlapped.
 Eigen::Vector3d SimulatedWorld::hand() const noexcept {
-  Eigen::Vector3d p;
-  for (;;) {
-    const std::uint64_t before = hand_sequence_.load(std::memory_order_acquire);
-    if ((before & 1u) != 0) continue;  // a write is under way
-    for (int i = 0; i < 3; ++i) p[i] = hand_W_m_[static_cast<std::size_t>(i)].load(std::memory_order_acquire);
-    if (hand_sequence_.load(std::memory_order_relaxed) == before) return p;
-  }
+  const auto v = hand_W_m_.read();
+  return {v[0], v[1], v[2]};
 }
 
 void SimulatedWorld::set_hand(const Eigen::Vector3d& p_W_m) {
-  const std::lock_guard lock(hand_writer_mutex_);
-  const std::uint64_t sequence = hand_sequence_.load(std::memory_order_relaxed);
-  hand_sequence_.store(sequence + 1, std::memory_order_relaxed);
-  for (int i = 0; i < 3; ++i) hand_W_m_[static_cast<std::size_t>(i)].store(p_W_m[i], std::memory_order_release);
-  hand_sequence_.store(sequence + 2, std::memory_order_release);
+  const std::lock_guard lock(writer_mutex_);
+  hand_W_m_.write({p_W_m.x(), p_W_m.y(), p_W_m.z()});
 }
 
 }  // namespace mhd::simulation

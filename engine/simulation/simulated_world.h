@@ -5,19 +5,16 @@
 // moves. World frame W: y up, floor at y = 0; a planar heading h is a rotation about
 // +y_W, forward x = (cos h, 0, -sin h).
 //
-// Threads: base and head sit behind a small mutex; they are read and written at
-// tracker and base rates (<= a few hundred Hz) and the haptic thread must not touch
-// them. The hand is read by the simulated device at 1 kHz, so it is a seqlock:
-// hand() never locks and never allocates (it retries while a write is under way);
-// set_hand() writers are serialised by their own mutex.
+// Threads: the simulated device reads the base and the hand on the haptic thread, so
+// every reader is lock-free (realtime::Seqlock: never locks, never allocates); writers
+// (tracker, base and user at their own rates) are serialised by one writer mutex.
 
 #include <mhd/plugin_abi.h>
 
 #include <Eigen/Geometry>
 
-#include <array>
-#include <atomic>
-#include <cstdint>
+#include "realtime/seqlock.h"
+
 #include <mutex>
 
 namespace mhd::simulation {
@@ -45,14 +42,13 @@ class SimulatedWorld {
   SimulatedWorld& operator=(SimulatedWorld&&) = delete;
   ~SimulatedWorld() = default;
 
-  [[nodiscard]] PlanarPose base_pose() const;
+  [[nodiscard]] PlanarPose base_pose() const noexcept;
   void set_base_pose(const PlanarPose& pose);
 
-  [[nodiscard]] HeadPose head() const;
+  [[nodiscard]] HeadPose head() const noexcept;
   /// The quaternion is stored normalised.
   void set_head(const HeadPose& head);
 
-  /// Lock-free; safe on the haptic thread.
   [[nodiscard]] Eigen::Vector3d hand() const noexcept;
   void set_hand(const Eigen::Vector3d& p_W_m);
 
@@ -60,14 +56,10 @@ class SimulatedWorld {
   [[nodiscard]] const mhd_sim_world& table() const noexcept { return table_; }
 
  private:
-  mutable std::mutex mutex_;
-  PlanarPose base_;
-  HeadPose head_;
-
-  std::mutex hand_writer_mutex_;
-  std::atomic<std::uint64_t> hand_sequence_{0};  ///< odd while a write is under way
-  std::array<std::atomic<double>, 3> hand_W_m_{};
-  static_assert(std::atomic<double>::is_always_lock_free && std::atomic<std::uint64_t>::is_always_lock_free);
+  std::mutex writer_mutex_;
+  realtime::Seqlock<3> base_;      ///< x_m, z_m, heading_rad
+  realtime::Seqlock<7> head_;      ///< p_W_m, then q_W as w, x, y, z
+  realtime::Seqlock<3> hand_W_m_;
 
   mhd_sim_world table_{};
 };

@@ -4,8 +4,8 @@
 
 #include <mhd/plugin_abi.h>
 
+#include <atomic>
 #include <exception>
-#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -54,16 +54,28 @@ mhd_plugin_instance* guarded_open(mhd_error* err, F&& f) noexcept {
 enum class Need { Open, Running };
 
 /// The frame of every instance call of a shell: the plugin's Instance (a struct with
-/// `std::mutex mutex` and `bool started`) is taken from `self`, locked and, for
-/// Need::Running, checked to be started ("<plugin> is not started"); then f(instance)
-/// runs as guarded() does.
+/// `std::atomic<bool> in_call` and `bool started`) is taken from `self`, marked in a call
+/// and, for Need::Running, checked to be started ("<plugin> is not started"); then
+/// f(instance) runs as guarded() does.
+///
+/// No mutex: the device's calls come from the haptic thread, which must never wait on a
+/// lock, and the host makes an instance's calls one at a time (the ABI's rule). A call
+/// that overlaps another one (a host breaking that rule, or the last-gasp path after a
+/// crash inside a call) is refused with "<plugin>: called while another call is under way"
+/// instead of racing the first or deadlocking on it.
 template <class Instance, class F>
 mhd_status with_instance(std::string_view plugin, mhd_plugin_instance* self, Need need, mhd_error* err,
                          F&& f) noexcept {
   return guarded(err, [&]() -> mhd_status {
     if (self == nullptr) throw std::invalid_argument("instance is NULL");
     Instance& instance = *reinterpret_cast<Instance*>(self);
-    const std::lock_guard lock(instance.mutex);
+    if (instance.in_call.exchange(true, std::memory_order_acquire)) {
+      throw std::logic_error(std::string(plugin) + ": called while another call is under way");
+    }
+    struct Leave {
+      std::atomic<bool>& in_call;
+      ~Leave() { in_call.store(false, std::memory_order_release); }
+    } leave{instance.in_call};
     if (need == Need::Running && !instance.started) throw std::logic_error(std::string(plugin) + " is not started");
     return f(instance);
   });

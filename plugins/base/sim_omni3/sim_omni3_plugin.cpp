@@ -14,7 +14,7 @@
 #include <array>
 #include <cmath>
 #include <memory>
-#include <mutex>
+#include <atomic>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -40,13 +40,13 @@ struct Instance {
     }
   }
 
-  std::mutex mutex;
+  std::atomic<bool> in_call{false};  ///< plugin_support::with_instance's
   mhd_host host;
   Omni3Model model;
   bool started = false;
   bool read_once = false;
   double last_read_time_s = 0.0;
-  std::unique_ptr<plugin_support::CommandLog> log;  ///< written only under `mutex`: one producer
+  std::unique_ptr<plugin_support::CommandLog> log;  ///< written inside with_instance only: one producer
 
   void log_event(double t_s, plugin_support::CommandEvent event, const std::array<double, 3>& values = {}) noexcept {
     if (log) log->add(t_s, event, values);

@@ -10,7 +10,7 @@
 
 #include <mhd/plugin_abi.h>
 
-#include <mutex>
+#include <atomic>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -26,7 +26,7 @@ struct Instance {
   Instance(const mhd_host& h, const dds::DdsEndpoint& c)
       : host(h), config(c), participant(c.domain_id, c.config), publisher(participant) {}
 
-  std::mutex mutex;
+  std::atomic<bool> in_call{false};  ///< plugin_support::with_instance's
   mhd_host host;
   dds::DdsEndpoint config;
   dds::Participant participant;

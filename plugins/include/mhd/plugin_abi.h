@@ -6,7 +6,9 @@
  *   open(params) -> start -> [read/write ...] -> stop -> close.
  * read/write never block: they return MHD_NO_DATA when nothing new is there. The one
  * call allowed to block is the optional tracker_wait, which the host calls only from a
- * thread that may wait (never the haptic thread).
+ * thread that may wait (never the haptic thread). The host makes one instance's calls one
+ * at a time (the device's from the haptic thread, which must never wait on a lock), so a
+ * plugin needs no mutex of its own around them.
  * Version 2 added the optional calls tracker_wait and counters at the end of the table.
  * All quantities are SI (metres, radians, seconds, newtons); device-native units
  * (millimetres, encoder counts) stay inside the plugin. Frames follow the engine's

@@ -15,7 +15,7 @@
 #include <array>
 #include <cstdio>
 #include <memory>
-#include <mutex>
+#include <atomic>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -35,7 +35,7 @@ struct Instance {
   Instance(const mhd_host& h, const Config& c)
       : host(h), config(c), participant(c.endpoint.domain_id, c.endpoint.config), subscriber(participant, c.limits) {}
 
-  std::mutex mutex;
+  std::atomic<bool> in_call{false};  ///< plugin_support::with_instance's
   mhd_host host;
   Config config;
   dds::Participant participant;

@@ -9,7 +9,7 @@
 
 #include <mhd/plugin_abi.h>
 
-#include <mutex>
+#include <atomic>
 #include <stdexcept>
 #include <utility>
 
@@ -21,7 +21,7 @@ using plugin_support::guarded_open;
 struct Instance {
   Instance(const mhd_host& h, std::vector<mhd_tracker_sample> samples) : host(h), model(std::move(samples)) {}
 
-  std::mutex mutex;
+  std::atomic<bool> in_call{false};  ///< plugin_support::with_instance's
   mhd_host host;
   ReplayModel model;
   bool started = false;

@@ -8,7 +8,7 @@
 
 #include <mhd/plugin_abi.h>
 
-#include <mutex>
+#include <atomic>
 #include <numbers>
 #include <stdexcept>
 #include <utility>
@@ -63,7 +63,7 @@ WorldTruth read_world(const mhd_sim_world& world) {
 struct Instance {
   Instance(const mhd_host& h, const Is900Config& config) : host(h), model(config) {}
 
-  std::mutex mutex;
+  std::atomic<bool> in_call{false};  ///< plugin_support::with_instance's
   mhd_host host;
   Is900Model model;
   bool started = false;
