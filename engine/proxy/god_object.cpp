@@ -93,9 +93,14 @@ ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMateri
   const std::array<ConstraintPlane, kMaxConstraintPlanes> previous_planes = state.planes;
   const int previous_plane_count = state.plane_count;
 
+  // Part of the budget is kept back for a last look at the HIP should the motion run out
+  // of work: a proxy that has slid a long way round a rim into the open must not end the
+  // tick short of a HIP it can see.
+  const int max_sweeps = std::clamp(settings.max_sweeps_per_tick, 1, kMaxProxySweeps);
+  const int max_triangle_tests = std::max(settings.max_triangle_tests_per_tick, 1);
   TickWork work;
-  work.max_sweeps = std::clamp(settings.max_sweeps_per_tick, 1, kMaxProxySweeps);
-  work.sweep.max_triangle_tests = std::max(settings.max_triangle_tests_per_tick, 1);
+  work.max_sweeps = max_sweeps - std::clamp(max_sweeps / 16, max_sweeps >= 2 ? 1 : 0, 4);
+  work.sweep.max_triangle_tests = max_triangle_tests - max_triangle_tests / 8;
   Motion motion;
   proxy_detail::solve_motion(world, settings.skin_m, start, hip_W, motion, state, work);
   store_active_planes(motion, settings.skin_m, state);
@@ -139,6 +144,15 @@ ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMateri
     }
   }
 
+  if (work.exhausted && motion.p != hip_W) {
+    work.max_sweeps = max_sweeps;
+    work.sweep.max_triangle_tests = max_triangle_tests;
+    work.sweep.exhausted = false;
+    if (proxy_detail::go_if_visible(world, settings.skin_m, hip_W, motion, state, work)) {
+      state.plane_count = 0;
+      sticking = false;
+    }
+  }
   if (work.exhausted && motion.p == start && state.plane_count == 0) {
     // Out of work before the proxy moved: it stays, and so does last tick's contact, so
     // the force goes on as a spring to the HIP instead of dropping to zero.

@@ -339,5 +339,40 @@ TEST(ProxyContract, ATickOutOfWorkStaysCrossingFreeAndKeepsItsForce) {
   for (const V& hip : path) EXPECT_FALSE(ample.step(hip).budget_exhausted);
 }
 
+TEST(ProxyContract, AMotionOutOfWorkStillEndsAtAHipItCanSee) {
+  // Held on an open sheet with the HIP behind it, then the HIP jumps past the sheet's edge:
+  // the proxy needs a sweep into the sheet, a slide past its edge and a sweep to the HIP.
+  // With every budget from 1 to 6 sweeps, a tick that ends with the HIP in free view of the
+  // proxy ends with the proxy at the HIP: a motion that runs out of work past the edge
+  // still has the part of the budget kept back for a last look.
+  int ran_out_and_reached = 0;
+  for (int budget = 1; budget <= 6; ++budget) {
+    Rig rig;
+    rig.settings.max_sweeps_per_tick = budget;
+    rig.add(quad(V(-0.05, -0.05, 0), V(0.05, -0.05, 0), V(0.05, 0.05, 0), V(-0.05, 0.05, 0)));
+    const verify::SurfaceCrossingOracle oracle(rig.world);
+    reset_proxy(rig.state, V(0.03, 0, 0.01));
+    rig.settings.max_sweeps_per_tick = kMaxProxySweeps;  // pressed in with the full budget
+    const ProxyOutput held = rig.move(V(0.03, 0, 0.01), V(0.03, 0, -0.01), 20);
+    ASSERT_TRUE(held.in_contact);
+    rig.settings.max_sweeps_per_tick = budget;
+    const V before = rig.state.proxy_W;
+    const V hip(0.08, 0, -0.002);  // past the edge at x = 0.05, just below the sheet
+    const ProxyOutput out = rig.step(hip);
+    V at = before;
+    for (int k = 1; k < rig.state.path_points; ++k) {
+      const V next = rig.state.path_W[static_cast<std::size_t>(k)];
+      EXPECT_FALSE(oracle.segment_touches_surface(at, next)) << "budget " << budget << ", leg " << k;
+      at = next;
+    }
+    if (!oracle.segment_touches_surface(out.proxy_W, hip)) {
+      EXPECT_EQ(out.proxy_W, hip) << "budget " << budget << ": the HIP in view, the proxy elsewhere";
+      EXPECT_EQ(out.force_W, V::Zero()) << "budget " << budget;
+    }
+    if (out.budget_exhausted && out.proxy_W == hip) ++ran_out_and_reached;
+  }
+  EXPECT_GT(ran_out_and_reached, 0);  // the last look was needed somewhere, and did its work
+}
+
 }  // namespace
 }  // namespace mhd

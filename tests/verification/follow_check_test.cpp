@@ -119,5 +119,36 @@ TEST(FollowCheck, ForceWithTheHipInFreeViewFailsWhereTheStraightWayWasBlocked) {
   EXPECT_TRUE(v.hip_in_free_view);
 }
 
+TEST(FollowCheck, AWayThatBrushesARimCloserThanTheSkinIsNotAFailureAndIsCounted) {
+  const SurfaceCrossingOracle oracle = sheet();
+  // From 1 cm above the sheet to under it, past the rim at x = 0.1 by 1 nm: exactly free,
+  // but no proxy that keeps a 1 µm skin can take that way straight.
+  const Vector3d previous(0.0, 0.0, 0.01);
+  const Vector3d hip(0.2, 0.0, -0.01 + 2e-9);
+  ASSERT_FALSE(oracle.segment_touches_surface(previous, hip));
+  const Vector3d stopped(0.09, 0.0, 1e-6);  // held on the sheet, the HIP behind it
+  const FollowVerdict brushed = check_follow(oracle, previous, hip, stopped, k_N_per_m * (stopped - hip), FollowTolerance{});
+  EXPECT_FALSE(brushed.failed());
+  EXPECT_TRUE(brushed.brushed);
+  // The dual: the same way 10 µm above the rim is clear of the skin, and stopping is a failure.
+  const Vector3d clear_hip(0.2, 0.0, -0.01 + 2e-5);
+  const FollowVerdict stuck = check_follow(oracle, previous, clear_hip, stopped, k_N_per_m * (stopped - clear_hip),
+                                           FollowTolerance{});
+  EXPECT_EQ(stuck.kind, FollowFailureKind::Stuck);
+  EXPECT_FALSE(stuck.brushed);
+}
+
+TEST(FollowCheck, TheFaceTheProxyRestsOnIsNotABrush) {
+  const SurfaceCrossingOracle oracle = sheet();
+  // Resting on the sheet (one skin above it), the HIP lifts off and slides along it just
+  // above the skin: a proxy left behind is stuck, whatever the face under it.
+  const Vector3d resting(0.0, 0.0, kSkin_m);
+  for (const Vector3d& hip : {Vector3d(0.001, 0.0, 0.005), Vector3d(0.05, 0.0, 0.5 * kSkin_m)}) {
+    const FollowVerdict v = check_follow(oracle, resting, hip, resting, k_N_per_m * (resting - hip), FollowTolerance{});
+    EXPECT_EQ(v.kind, FollowFailureKind::Stuck) << hip.transpose();
+    EXPECT_FALSE(v.brushed);
+  }
+}
+
 }  // namespace
 }  // namespace mhd::verify

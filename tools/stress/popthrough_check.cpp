@@ -56,6 +56,7 @@ TickVerdict PopThroughChecker::check_tick(const Eigen::Vector3d& hip_W, std::spa
   const verify::FollowVerdict follow = verify::check_follow(oracle_, previous_, hip_W, proxy_W, force_W, follow_);
   v.follow_failed = follow.failed();
   v.follow_kind = follow.kind;
+  v.follow_brushed = follow.brushed;
   v.follow_gap_m = follow.gap_m;
   v.hip_in_free_view = follow.hip_in_free_view;
   v.force_N = follow.force_N;

@@ -50,6 +50,7 @@ struct TickVerdict {
   /// The proxy did not go to a HIP it could reach (F1 or F2 of follow_check.h).
   bool follow_failed = false;
   verify::FollowFailureKind follow_kind = verify::FollowFailureKind::None;
+  bool follow_brushed = false;  ///< verify::FollowVerdict::brushed
   /// |proxy - HIP| at the end of the tick, and whether the segment between them was free.
   double follow_gap_m = 0.0;
   bool hip_in_free_view = true;

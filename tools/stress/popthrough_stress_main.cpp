@@ -207,9 +207,9 @@ int run(const Options& opt) {
       fmt::print(stderr,
                  "; {} proxy resets; features: {} ridges/rims, {} creases, {} corners; up to {} planes; {} start "
                  "redraws; follow failures: {} ticks ({} stuck), longest {} ticks, force {:.3f} N at the largest "
-                 "free-space gap\n",
+                 "free-space gap; {} ticks whose way brushed a surface closer than the proxy's skin (not failures)\n",
                  r.resets, r.ridges, r.creases, r.corners, r.max_plane_count, r.start_redraws, r.follow_failure_ticks,
-                 r.stuck_ticks, r.longest_follow_failure_ticks, r.force_at_max_free_gap_N);
+                 r.stuck_ticks, r.longest_follow_failure_ticks, r.force_at_max_free_gap_N, r.brushed_ticks);
       if (!r.clean()) {
         any_failure = true;
         for (const auto& f : r.failures) {

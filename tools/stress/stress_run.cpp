@@ -109,6 +109,7 @@ ObjectStressReport run_range(const CompiledScene& scene, const verify::SurfaceCr
       follow_run = v.follow_failed ? follow_run + 1 : 0;
       if (v.follow_failed) ++r.follow_failure_ticks;
       if (v.follow_kind == verify::FollowFailureKind::Stuck) ++r.stuck_ticks;
+      if (v.follow_brushed) ++r.brushed_ticks;
       r.longest_follow_failure_ticks = std::max(r.longest_follow_failure_ticks, follow_run);
       if (v.hip_in_free_view && v.follow_gap_m > r.max_free_gap_m) {
         r.max_free_gap_m = v.follow_gap_m;

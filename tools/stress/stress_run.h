@@ -66,6 +66,7 @@ struct ObjectStressReport {
   /// Exact: the proxy did not go to a HIP it could reach (F1 or F2, follow_check.h) ...
   std::size_t follow_failure_ticks = 0;
   std::size_t stuck_ticks = 0;                ///< ... of which F1 (the straight way was free)
+  std::size_t brushed_ticks = 0;              ///< not failures: the way passed a surface closer than the proxy's skin
   std::size_t longest_follow_failure_ticks = 0;  ///< longest run of consecutive such ticks
   /// Largest |proxy - HIP| on a tick whose segment proxy -> HIP was free, and the force then.
   double max_free_gap_m = 0.0;

@@ -33,9 +33,15 @@ FollowVerdict check_follow(const SurfaceCrossingOracle& oracle, const Eigen::Vec
   const bool away_from_hip = v.gap_m > tolerance.gap_m || v.force_N > tolerance.force_N();
   if (!away_from_hip) return v;
   if (!oracle.segment_touches_surface(previous_proxy_W, hip_W)) {
-    v.kind = FollowFailureKind::Stuck;
-  } else if (v.hip_in_free_view && v.gap_m > tolerance.gap_m) {
-    v.kind = FollowFailureKind::FreeSpaceForce;
+    v.brushed = oracle.segment_brushes_surface(previous_proxy_W, hip_W, tolerance.clearance_m);
+    if (!v.brushed) v.kind = FollowFailureKind::Stuck;
+  }
+  if (v.kind == FollowFailureKind::None && v.hip_in_free_view && v.gap_m > tolerance.gap_m) {
+    if (oracle.segment_brushes_surface(proxy_W, hip_W, tolerance.clearance_m)) {
+      v.brushed = true;
+    } else {
+      v.kind = FollowFailureKind::FreeSpaceForce;
+    }
   }
   return v;
 }

@@ -214,6 +214,57 @@ struct SurfaceCrossingOracle::Impl {
   }
 };
 
+namespace {
+
+// Distance between a segment and a triangle: 0 where they meet, else attained at an
+// endpoint of the segment or on an edge of the triangle.
+double segment_triangle_distance(const Segment& s, const Triangle& t) {
+  if (CGAL::do_intersect(s, t)) return 0.0;
+  double d2 = std::min(CGAL::to_double(CGAL::squared_distance(s.source(), t)),
+                       CGAL::to_double(CGAL::squared_distance(s.target(), t)));
+  for (int e = 0; e < 3; ++e) {
+    d2 = std::min(d2, CGAL::to_double(CGAL::squared_distance(s, Segment(t.vertex(e), t.vertex(e + 1)))));
+  }
+  return std::sqrt(d2);
+}
+
+CGAL::Bbox_3 grown_box(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double r) {
+  const Eigen::Vector3d lo = a.cwiseMin(b).array() - r, hi = a.cwiseMax(b).array() + r;
+  return {lo.x(), lo.y(), lo.z(), hi.x(), hi.y(), hi.z()};
+}
+
+}  // namespace
+
+bool SurfaceCrossingOracle::segment_brushes_surface(const Eigen::Vector3d& a_W, const Eigen::Vector3d& b_W,
+                                                    double clearance_m) const {
+  const Impl& m = *impl_;
+  const Segment s(to_point(a_W), to_point(b_W));
+  const Point a = to_point(a_W);
+  const CGAL::Bbox_3 box = grown_box(a_W, b_W, clearance_m);
+  const double start_clear2 = 4.0 * clearance_m * clearance_m;
+  if (!m.triangle_tree.empty()) {
+    std::vector<TriangleIterator> near;
+    m.triangle_tree.all_intersected_primitives(box, std::back_inserter(near));
+    for (TriangleIterator it : near) {
+      if (a_W != b_W && segment_triangle_distance(s, *it) < clearance_m &&
+          CGAL::to_double(CGAL::squared_distance(a, *it)) > start_clear2) {
+        return true;
+      }
+    }
+  }
+  if (!m.segment_tree.empty() && a_W != b_W) {
+    std::vector<SegmentIterator> near;
+    m.segment_tree.all_intersected_primitives(box, std::back_inserter(near));
+    for (SegmentIterator it : near) {
+      if (CGAL::to_double(CGAL::squared_distance(s, *it)) < clearance_m * clearance_m &&
+          CGAL::to_double(CGAL::squared_distance(a, *it)) > start_clear2) {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
 SurfaceCrossingOracle::SurfaceCrossingOracle(const CollisionWorld& world) : impl_(std::make_unique<Impl>()) {
   std::vector<PlacedMesh> meshes;
   meshes.reserve(static_cast<std::size_t>(world.object_count()));

@@ -55,6 +55,13 @@ class SurfaceCrossingOracle {
   [[nodiscard]] bool segment_touches_surface(const Eigen::Vector3d& a_W, const Eigen::Vector3d& b_W) const;
   [[nodiscard]] bool point_touches_surface(const Eigen::Vector3d& p_W) const;
 
+  /// True when the segment [a_W, b_W] comes within clearance_m of a triangle (or
+  /// degenerate edge) that lies farther than 2 clearance_m from a_W: a brush of the
+  /// surface on the way, not the surface the start rests on. Distances are constructed in
+  /// doubles (for clearances, not for deciding contact).
+  [[nodiscard]] bool segment_brushes_surface(const Eigen::Vector3d& a_W, const Eigen::Vector3d& b_W,
+                                             double clearance_m) const;
+
   /// Every touched triangle, ordered by t (then by object, triangle).
   [[nodiscard]] std::vector<OracleHit> touched_triangles(const Eigen::Vector3d& a_W,
                                                          const Eigen::Vector3d& b_W) const;
