@@ -1,9 +1,17 @@
 #include "haptic_server/haptic_server.h"
 
+#include "haptic_server/base_command_scheduler.h"
 #include "haptic_server/haptic_tick.h"
+#include "haptic_server/head_state.h"
 #include "haptic_server/physical_range.h"
+#include "haptic_server/plugin_watchdog.h"
+#include "haptic_server/safe_stop.h"
 #include "haptic_server/scene_planner.h"
+#include "haptic_server/shared_value.h"
+#include "haptic_server/status_counters.h"
 #include "haptic_server/tick_histogram.h"
+#include "haptic_server/tracker_sample_filter.h"
+#include "haptic_server/user_motion_estimate.h"
 #include "kinematics/rig.h"
 #include "plugin_host/host_services.h"
 #include "plugin_host/open_plugin.h"
@@ -30,7 +38,6 @@
 #include <ctime>
 #include <exception>
 #include <limits>
-#include <map>
 #include <memory>
 #include <mutex>
 #include <thread>
@@ -58,38 +65,6 @@ struct HapticSnapshot {
   Eigen::Vector3d force_W_N = Eigen::Vector3d::Zero();
   bool in_contact = false;
   BasePose base;
-};
-
-struct HeadState {
-  bool known = false;
-  double t_s = 0.0;
-  Eigen::Vector3d p_W_m = Eigen::Vector3d::Zero();
-  Eigen::Quaterniond q_W = Eigen::Quaterniond::Identity();
-};
-
-/// A value shared between non-real-time threads.
-template <typename T>
-class Shared {
- public:
-  void set(const T& value) {
-    const std::lock_guard lock(mutex_);
-    value_ = value;
-  }
-  [[nodiscard]] T get() const {
-    const std::lock_guard lock(mutex_);
-    return value_;
-  }
-
- private:
-  mutable std::mutex mutex_;
-  T value_{};
-};
-
-/// Which call a plugin is inside and since when (host seconds; 0: none), for the
-/// watchdog in run(). Written by the thread making the call, read by run()'s thread.
-struct CallWatch {
-  std::atomic<double> since_s{0.0};
-  std::atomic<const char*> call{nullptr};
 };
 
 struct OpenedPlugin {
@@ -149,11 +124,6 @@ std::string plugin_failure(const PluginDescription& d, const PluginError& e) {
   return Diagnostic{d.where, e.to_string()}.to_string();
 }
 
-double planar_heading_of(const Eigen::Quaterniond& q_W) {
-  const Eigen::Vector3d forward = q_W * Eigen::Vector3d::UnitX();  // line of sight
-  return std::atan2(-forward.z(), forward.x());
-}
-
 }  // namespace
 
 struct HapticServer::Impl {
@@ -178,22 +148,18 @@ struct HapticServer::Impl {
   realtime::TripleBuffer<HapticSnapshot> snapshot_for_planner;
   realtime::TripleBuffer<HapticSnapshot> snapshot_for_display;
   realtime::TripleBuffer<HapticSnapshot> snapshot_for_io;  ///< the base pose the guard judges
-  Shared<HeadState> head;
-  Shared<std::pair<std::uint64_t, BaseTwist>> planned_command;  // sequence, twist
+  SharedValue<HeadState> head;
+  SharedValue<std::pair<std::uint64_t, BaseTwist>> planned_command;  // sequence, twist
   realtime::WakeEvent base_sample_arrived;  ///< io -> haptic: start the tick now
   bool tick_on_tracker_sample = false;      ///< set by run(): the tracker can wake the io thread
 
-  // Status, written by the haptic and io threads, read by run().
-  std::atomic<std::uint64_t> ticks{0}, overruns{0}, missed{0}, contact_ticks{0}, proxy_budget_exhausted_ticks{0};
-  std::atomic<double> force_N{0.0}, safety_gain{0.0}, tracker_age_s{std::numeric_limits<double>::infinity()};
-  std::atomic<bool> in_contact{false};
-  std::atomic<std::uint64_t> tracker_samples{0}, tracker_rejected{0}, recording_dropped{0};
+  // Status, written by the haptic, io and planner threads, read by run().
+  StatusCounters status_counters;
+  // For the report only.
+  std::atomic<std::uint64_t> missed{0}, contact_ticks{0}, proxy_budget_exhausted_ticks{0}, recording_dropped{0};
   std::atomic<std::uint64_t> base_commands{0}, base_stops{0};
-  Shared<BaseStopCounts> base_stop_counts;  ///< the guard's, by cause (io thread)
+  SharedValue<BaseStopCounts> base_stop_counts;  ///< the guard's, by cause (io thread)
   std::atomic<double> base_sample_newest_t_s{-std::numeric_limits<double>::infinity()};  ///< for the planner
-  std::atomic<std::uint64_t> early_ticks{0};
-  Shared<BasePose> status_base;
-  Shared<std::vector<PluginCounter>> tracker_counters;
 
   std::atomic<bool> stop{false};
   std::atomic<int> gasp_state{kGaspIdle};
@@ -248,8 +214,6 @@ struct HapticServer::Impl {
 
   /// Sends the base a zero twist (under its call mutex) and notes whether it took it.
   void stop_base();
-  /// The first plugin inside one call for longer than plugin_call_timeout_s, if any.
-  [[nodiscard]] OpenedPlugin* stuck_plugin(double now_s) const;
 
   void haptic_thread();
   void io_thread();
@@ -355,24 +319,20 @@ void HapticServer::Impl::haptic_thread() {
       if (!recording_rows.push(row)) recording_dropped.fetch_add(1, std::memory_order_relaxed);
     }
 
-    ticks.fetch_add(1, std::memory_order_relaxed);
+    status_counters.ticks.fetch_add(1, std::memory_order_relaxed);
     if (out.in_contact) contact_ticks.fetch_add(1, std::memory_order_relaxed);
     if (out.proxy_budget_exhausted) proxy_budget_exhausted_ticks.fetch_add(1, std::memory_order_relaxed);
-    overruns.store(timer.stats().overruns, std::memory_order_relaxed);
+    status_counters.overruns.store(timer.stats().overruns, std::memory_order_relaxed);
     missed.store(timer.stats().missed_deadlines, std::memory_order_relaxed);
-    early_ticks.store(timer.stats().early_wakes, std::memory_order_relaxed);
-    force_N.store(out.force_W_N.norm(), std::memory_order_relaxed);
-    safety_gain.store(out.safety_gain, std::memory_order_relaxed);
-    tracker_age_s.store(out.tracker_age_s, std::memory_order_relaxed);
-    in_contact.store(out.in_contact, std::memory_order_relaxed);
+    status_counters.early_ticks.store(timer.stats().early_wakes, std::memory_order_relaxed);
+    status_counters.force_N.store(out.force_W_N.norm(), std::memory_order_relaxed);
+    status_counters.safety_gain.store(out.safety_gain, std::memory_order_relaxed);
+    status_counters.tracker_age_s.store(out.tracker_age_s, std::memory_order_relaxed);
+    status_counters.in_contact.store(out.in_contact, std::memory_order_relaxed);
   }
 
   // Safe state: zero torque, whatever ended the loop.
-  if (device->instance.state() == PluginState::Running) {
-    mhd_device_command zero{};
-    zero.timestamp_s = host.now_s();
-    zero_force_sent = device->instance.device_write(zero).ok();
-  }
+  zero_force_sent = send_zero_torque(device->instance, host);
   safety_counters = tick.safety().counters();
 }
 
@@ -390,19 +350,13 @@ void HapticServer::Impl::io_thread() {
   (void)realtime::make_current_thread_realtime(70);
   realtime::PeriodicTimer timer(1.0 / settings.io_rate_hz);
   std::array<mhd_tracker_sample, 64> samples{};
-  struct SensorTrack {
-    std::uint64_t sequence = 0;
-    double accepted_at_s = 0.0;  ///< host time of the last accepted sample
-  };
-  std::map<std::uint32_t, SensorTrack> sensors;
-  // A sensor silent this long may start its sequence again (a restarted tracker server).
-  constexpr double kSequenceRestartAfter_s = 0.25;
+  TrackerSampleFilter filter({.base_sensor_id = settings.base_sensor_id,
+                              .head_sensor_id = settings.head_sensor_id,
+                              .tracking_range_m = settings.tracking_range_m});
   double newest_base_sample_t_s = -std::numeric_limits<double>::infinity();
   std::uint64_t command_sequence_seen = 0;
   BaseTwist planned;
-  double last_base_write_t_s = -1.0;
-  bool last_write_was_zero = false;
-  const double base_period_s = 1.0 / settings.base_rate_hz;
+  BaseCommandScheduler scheduler(1.0 / settings.base_rate_hz);
   BaseStopCounts counts_published;
 
   // Everything the tracker has received since the last read: checked, then base-sensor
@@ -422,28 +376,23 @@ void HapticServer::Impl::io_thread() {
       const double read_at_s = host.now_s();  // after the read: a sample is never newer than this
       for (std::size_t i = 0; i < count; ++i) {
         const mhd_tracker_sample& s = samples[i];
-        auto [it, first] = sensors.emplace(s.sensor_id, SensorTrack{s.sequence, read_at_s});
-        const bool restarted = read_at_s - it->second.accepted_at_s > kSequenceRestartAfter_s;
-        const bool backwards = !first && !restarted && s.sequence <= it->second.sequence;
-        const bool future = s.timestamp_s > read_at_s + 0.01;  // clocks agree; 10 ms of slack
-        const bool known = s.sensor_id == settings.base_sensor_id || s.sensor_id == settings.head_sensor_id;
-        if (backwards || future || !known) {
-          tracker_rejected.fetch_add(1, std::memory_order_relaxed);
-          continue;
-        }
-        if (const Eigen::Vector3d p_T_m(s.p_T_m[0], s.p_T_m[1], s.p_T_m[2]);
-            !tracked_position_plausible(p_T_m, settings.tracking_range_m)) {
+        const Eigen::Vector3d p_T_m(s.p_T_m[0], s.p_T_m[1], s.p_T_m[2]);
+        const TrackerSampleVerdict verdict = filter.check(s, read_at_s);
+        if (verdict == TrackerSampleVerdict::ImplausiblePosition) {
           fail(Diagnostic{tracker->description.where,
                           plugin_said(*tracker, tracked_position_fault(s.sensor_id, p_T_m, settings.tracking_range_m))}
                    .to_string());
           return std::nullopt;
         }
-        it->second = {s.sequence, read_at_s};
-        tracker_samples.fetch_add(1, std::memory_order_relaxed);
-        const Pose X_T_S = pose_from_xyz_quaternion(Eigen::Vector3d(s.p_T_m[0], s.p_T_m[1], s.p_T_m[2]),
+        if (verdict != TrackerSampleVerdict::Accepted) {
+          status_counters.tracker_rejected.fetch_add(1, std::memory_order_relaxed);
+          continue;
+        }
+        status_counters.tracker_samples.fetch_add(1, std::memory_order_relaxed);
+        const Pose X_T_S = pose_from_xyz_quaternion(p_T_m,
                                                     Eigen::Quaterniond(s.q_T_wxyz[0], s.q_T_wxyz[1], s.q_T_wxyz[2], s.q_T_wxyz[3]));
         if (s.sensor_id == settings.base_sensor_id) {
-          if (!base_samples.push({s.timestamp_s, X_T_S})) tracker_rejected.fetch_add(1, std::memory_order_relaxed);
+          if (!base_samples.push({s.timestamp_s, X_T_S})) status_counters.tracker_rejected.fetch_add(1, std::memory_order_relaxed);
           newest_base_sample_t_s = std::max(newest_base_sample_t_s, s.timestamp_s);
           base_sample_newest_t_s.store(newest_base_sample_t_s, std::memory_order_relaxed);
           base_sample = true;
@@ -478,7 +427,7 @@ void HapticServer::Impl::io_thread() {
     std::vector<PluginCounter> out;
     out.reserve(n.value());
     for (std::size_t i = 0; i < n.value(); ++i) out.push_back({counter_buffer[i].name, counter_buffer[i].value});
-    tracker_counters.set(out);
+    status_counters.tracker_plugin_counters.set(out);
     return true;
   };
 
@@ -557,10 +506,7 @@ void HapticServer::Impl::io_thread() {
       counts_published = guard.counts();
       base_stop_counts.set(counts_published);
     }
-    const bool is_zero = guarded.twist_B.vx_mps == 0.0 && guarded.twist_B.vz_mps == 0.0 && guarded.twist_B.omega_radps == 0.0;
-    const bool due = t_s - last_base_write_t_s >= base_period_s;
-    const bool must_stop_now = is_zero && !last_write_was_zero;
-    if (new_plan || due || must_stop_now) {
+    if (scheduler.should_send(t_s, new_plan, guarded.twist_B)) {
       mhd_base_command cmd{};
       cmd.timestamp_s = t_s;
       cmd.vx_mps = guarded.twist_B.vx_mps;
@@ -572,8 +518,7 @@ void HapticServer::Impl::io_thread() {
         return base->instance.base_write(cmd);
       }();
       if (check(bw, *base) || deactivated(bw.value(), *base, "base_write")) break;
-      last_base_write_t_s = t_s;
-      last_write_was_zero = is_zero;
+      scheduler.sent(t_s, guarded.twist_B);
       base_commands.fetch_add(1, std::memory_order_relaxed);
       if (guarded.action == BaseGuardAction::Stopped) base_stops.fetch_add(1, std::memory_order_relaxed);
       if (!commands_to_haptic.push({t_s, guarded.twist_B})) {
@@ -601,20 +546,9 @@ void HapticServer::Impl::stop_base() {
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
   if (base->instance.state() == PluginState::Running) {
-    mhd_base_command zero{};
-    zero.timestamp_s = host.now_s();
-    const InCall in_call(*base, "base_write", zero.timestamp_s);
-    base_stop_sent.store(base->instance.base_write(zero).ok());
+    const InCall in_call(*base, "base_write", host.now_s());
+    base_stop_sent.store(send_base_stop(&base->instance, host));
   }
-}
-
-OpenedPlugin* HapticServer::Impl::stuck_plugin(double now_s) const {
-  for (OpenedPlugin* p : {device, tracker, base}) {
-    if (p == nullptr) continue;
-    const double since_s = p->watch->since_s.load(std::memory_order_acquire);
-    if (since_s > 0.0 && now_s - since_s > settings.plugin_call_timeout_s) return p;
-  }
-  return nullptr;
 }
 
 // ---- planner thread ----------------------------------------------------------------
@@ -623,22 +557,13 @@ void HapticServer::Impl::planner_thread() {
   realtime::name_current_thread("mhd-planner");
   realtime::PeriodicTimer timer(1.0 / settings.base_rate_hz);
   std::uint64_t sequence = 0;
-  // The user's walking velocity from the head track, low-passed (time constant 0.2 s):
-  // head bobbing and tracker noise are not walking.
-  HeadState previous_head;
-  Eigen::Vector2d user_velocity = Eigen::Vector2d::Zero();
+  UserMotionEstimate user_motion;
   while (!stop.load(std::memory_order_relaxed)) {
     (void)timer.wait_next();
     const HapticSnapshot snap = snapshot_for_planner.latest();
-    status_base.set(snap.base);
+    status_counters.base.set(snap.base);
     const HeadState h = head.get();
-    if (h.known && previous_head.known && h.t_s > previous_head.t_s) {
-      const double dt = h.t_s - previous_head.t_s;
-      const Eigen::Vector2d v((h.p_W_m.x() - previous_head.p_W_m.x()) / dt, (h.p_W_m.z() - previous_head.p_W_m.z()) / dt);
-      const double alpha = dt / (0.2 + dt);
-      user_velocity += alpha * (v - user_velocity);
-    }
-    if (h.known) previous_head = h;
+    user_motion.update(h);
     if (!options.plan_base) continue;  // no planner: the base holds still (zero twist)
     BasePlanInput in;
     in.t_s = host.now_s();
@@ -647,8 +572,8 @@ void HapticServer::Impl::planner_thread() {
     in.hip_W_m = snap.hip_W_m;
     in.user_known = h.known;
     in.user_xz_W_m = Eigen::Vector2d(h.p_W_m.x(), h.p_W_m.z());
-    in.user_heading_rad = planar_heading_of(h.q_W);
-    in.user_velocity_W_mps = user_velocity;
+    in.user_heading_rad = user_motion.heading_rad();
+    in.user_velocity_W_mps = user_motion.velocity_W_mps();
     in.max_input_age_s = settings.base_guard.tracker_timeout_s;
     in.hip_age_s = in.t_s - snap.t_s;
     in.base_age_s = in.t_s - base_sample_newest_t_s.load(std::memory_order_relaxed);
@@ -702,7 +627,7 @@ void HapticServer::Impl::recorder_thread() {
       if (h.known) {
         row.user_x_m = h.p_W_m.x();
         row.user_z_m = h.p_W_m.z();
-        row.user_heading_rad = planar_heading_of(h.q_W);
+        row.user_heading_rad = planar_heading_rad(h.q_W);
       } else {
         row.user_x_m = row.user_z_m = row.user_heading_rad = std::numeric_limits<double>::quiet_NaN();
       }
@@ -868,19 +793,19 @@ ServerReport HapticServer::run() {
     // A plugin call that does not come back within plugin_call_timeout_s ends the run.
     // The other threads then reach their safe state; the base gets its stop from here
     // when its own (io) thread is the one stuck, inside the tracker.
-    OpenedPlugin* stuck = nullptr;
+    PluginWatchdog watchdog(m.settings.plugin_call_timeout_s);
+    std::vector<OpenedPlugin*> watched;
+    for (OpenedPlugin* p : {m.device, m.tracker, m.base}) {
+      if (p == nullptr) continue;
+      (void)watchdog.watch(*p->watch);
+      watched.push_back(p);
+    }
     auto watch_calls = [&](double now_s) {
-      if (stuck != nullptr) return;
-      stuck = m.stuck_plugin(now_s);
-      if (stuck == nullptr) return;
-      const char* call = stuck->watch->call.load(std::memory_order_relaxed);
-      m.fail(Diagnostic{stuck->description.where,
-                        fmt::format("plugin '{}': {} has not returned after {:.0f} ms (plugin_call_timeout_s); "
-                                    "the run ends",
-                                    stuck->description.name, call == nullptr ? "a call" : call,
-                                    (now_s - stuck->watch->since_s.load()) * 1e3)}
-                 .to_string());
-      if (stuck == m.tracker) m.stop_base();
+      const std::optional<StuckCall> stuck = watchdog.check(now_s);
+      if (!stuck) return;
+      const OpenedPlugin& plugin = *watched[stuck->index];
+      m.fail(Diagnostic{plugin.description.where, stuck_call_message(plugin.description.name, *stuck)}.to_string());
+      if (&plugin == m.tracker) m.stop_base();
     };
     while (!m.stop.load()) {
       std::this_thread::sleep_for(std::chrono::milliseconds(10));
@@ -894,20 +819,7 @@ ServerReport HapticServer::run() {
         m.stop.store(true);
       }
       if (m.options.on_status && now_s - last_status_t_s >= m.options.status_interval_s) {
-        ServerStatus s;
-        s.elapsed_s = now_s - t0_s;
-        s.ticks = m.ticks.load();
-        s.haptic_rate_hz = static_cast<double>(s.ticks - last_status_ticks) / (now_s - last_status_t_s);
-        s.overruns = m.overruns.load();
-        s.in_contact = m.in_contact.load();
-        s.force_N = m.force_N.load();
-        s.safety_gain = m.safety_gain.load();
-        s.tracker_age_s = m.tracker_age_s.load();
-        s.tracker_samples = m.tracker_samples.load();
-        s.tracker_rejected = m.tracker_rejected.load();
-        s.tracker_plugin_counters = m.tracker_counters.get();
-        s.early_ticks = m.early_ticks.load();
-        s.base = m.status_base.get();
+        const ServerStatus s = m.status_counters.snapshot(now_s - t0_s, last_status_ticks, now_s - last_status_t_s);
         m.options.on_status(s);
         last_status_t_s = now_s;
         last_status_ticks = s.ticks;
@@ -936,7 +848,7 @@ ServerReport HapticServer::run() {
     if (auto n = m.tracker->instance.counters(buffer); n.ok()) {
       std::vector<PluginCounter> out;
       for (std::size_t i = 0; i < n.value(); ++i) out.push_back({buffer[i].name, buffer[i].value});
-      m.tracker_counters.set(out);
+      m.status_counters.tracker_plugin_counters.set(out);
     }
   }
 
@@ -959,19 +871,7 @@ ServerReport HapticServer::run() {
   }
 
   const double elapsed_s = m.host.now_s() - t0_s;
-  report.status.elapsed_s = elapsed_s;
-  report.status.ticks = m.ticks.load();
-  report.status.haptic_rate_hz = elapsed_s > 0.0 ? static_cast<double>(report.status.ticks) / elapsed_s : 0.0;
-  report.status.overruns = m.overruns.load();
-  report.status.in_contact = m.in_contact.load();
-  report.status.force_N = m.force_N.load();
-  report.status.safety_gain = m.safety_gain.load();
-  report.status.tracker_age_s = m.tracker_age_s.load();
-  report.status.tracker_samples = m.tracker_samples.load();
-  report.status.tracker_rejected = m.tracker_rejected.load();
-  report.status.tracker_plugin_counters = m.tracker_counters.get();
-  report.status.early_ticks = m.early_ticks.load();
-  report.status.base = m.status_base.get();
+  report.status = m.status_counters.snapshot(elapsed_s, 0, elapsed_s);
   report.missed_deadlines = m.missed.load();
   report.tick_median_us = m.tick_histogram.quantile_us(0.5);
   report.tick_p99_us = m.tick_histogram.quantile_us(0.99);
@@ -1018,30 +918,12 @@ HapticServer::LastGasp HapticServer::last_gasp() noexcept {
     const timespec one_ms{0, 1000000};
     nanosleep(&one_ms, nullptr);
   }
-  auto zero_torque = [&] {
-    if (m.device->instance.state() != PluginState::Running) return;
-    mhd_device_command zero{};
-    zero.timestamp_s = m.host.now_s();
-    out.zero_torque_sent = m.device->instance.device_write(zero).ok();
-  };
-  auto base_stop = [&] {
-    if (m.base == nullptr) {
-      out.base_stop_sent = true;
-      return;
-    }
-    if (m.base->instance.state() != PluginState::Running) return;
-    mhd_base_command zero{};
-    zero.timestamp_s = m.host.now_s();
-    out.base_stop_sent = m.base->instance.base_write(zero).ok();
-  };
   // The plugin that died mid-call may hang or crash again: the other one goes first.
-  if (t_plugin_in_call == m.device) {
-    base_stop();
-    zero_torque();
-  } else {
-    zero_torque();
-    base_stop();
-  }
+  const SafeStopSent sent =
+      send_safe_stop(m.device->instance, m.base == nullptr ? nullptr : &m.base->instance,
+                     t_plugin_in_call == m.device ? SafeStopOrder::BaseFirst : SafeStopOrder::DeviceFirst, m.host);
+  out.zero_torque_sent = sent.zero_torque;
+  out.base_stop_sent = sent.base_stop;
   out.sent = true;
   m.gasp_state.store(kGaspDone);
   return out;
