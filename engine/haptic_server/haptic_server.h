@@ -18,8 +18,8 @@
 // commands zero torque, the io thread commands a stopped base, every plugin is stopped
 // and closed, and the report carries the error naming the plugin and its scene line.
 
-#include "haptic_server/plugin_counter.h"
 #include "haptic_server/server_settings.h"
+#include "haptic_server/server_status.h"
 #include "kinematics/base_pose.h"
 #include "scene/diagnostic.h"
 #include "scene/scene_description.h"
@@ -63,23 +63,6 @@ struct BasePlanInput {
 
 /// The base twist to command (base frame). The server's guard limits it afterwards.
 using BasePlanFn = std::function<BaseTwist(const BasePlanInput&)>;
-
-/// A live summary, for the status line.
-struct ServerStatus {
-  double elapsed_s = 0.0;
-  std::uint64_t ticks = 0;
-  double haptic_rate_hz = 0.0;  ///< over the last status interval
-  std::uint64_t overruns = 0;
-  bool in_contact = false;
-  double force_N = 0.0;
-  double safety_gain = 0.0;
-  double tracker_age_s = 0.0;
-  std::uint64_t tracker_samples = 0;
-  std::uint64_t tracker_rejected = 0;  ///< dropped: wrong sensor, time from the future, sequence back
-  std::vector<PluginCounter> tracker_plugin_counters;  ///< the tracker plugin's own (e.g. its drops)
-  std::uint64_t early_ticks = 0;  ///< haptic ticks started at once by a new base-sensor sample
-  BasePose base;
-};
 
 struct ServerOptions {
   double duration_s = 0.0;               ///< 0: until request_stop()

@@ -1,0 +1,131 @@
+// The haptic thread: device read -> HapticTick -> device write at the scene rate, to
+// absolute deadlines. No lock, no allocation (haptic_thread_hygiene_tests).
+#include "haptic_server/server_impl.h"
+
+#include "haptic_server/haptic_tick.h"
+#include "haptic_server/physical_range.h"
+#include "haptic_server/safe_stop.h"
+#include "realtime/periodic_timer.h"
+#include "realtime/thread_name.h"
+#include "realtime/thread_priority.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+namespace mhd {
+
+void HapticServer::Impl::haptic_thread() {
+  HapticTickSettings tick_settings = settings.tick;
+  if (auto limits = device->instance.device_limits(); limits.ok()) {
+    tick_settings.safety.max_force_N = std::min(tick_settings.safety.max_force_N, limits.value().max_force_N);
+  }
+  HapticTick tick(scene, rig, tick_settings);
+  realtime::name_current_thread(realtime::kHapticThreadName);
+  scheduling = realtime::make_current_thread_realtime(80).detail;
+  realtime::PeriodicTimer timer(1.0 / settings.haptic_rate_hz);
+  Eigen::Vector3d q_rad = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+  double last_t_s = host.now_s();
+
+  while (!stop.load(std::memory_order_relaxed)) {
+    if (tick_on_tracker_sample) {
+      (void)timer.wait_next_or(base_sample_arrived, settings.min_tick_interval_s);
+    } else {
+      (void)timer.wait_next();
+    }
+    const double t_s = host.now_s();
+    const double dt_s = std::max(0.0, t_s - last_t_s);
+    last_t_s = t_s;
+
+    BaseSensorSample sample;
+    while (base_samples.pop(sample)) (void)tick.add_base_sensor_sample(sample.t_s, sample.X_is900_base_sensor);
+    BaseCommandEvent command;
+    while (commands_to_haptic.pop(command)) tick.add_base_command(command.t_s, command.twist_B);
+
+    if (device->instance.simulates()) {
+      const InCall in_call(*device, "simulate_until", t_s);
+      auto r = device->instance.simulate_until(t_s);
+      if (check(r, *device)) break;
+    }
+    mhd_device_state state{};
+    auto read = [&] {
+      const InCall in_call(*device, "device_read", t_s);
+      return device->instance.device_read(state);
+    }();
+    if (check(read, *device) || deactivated(read.value(), *device, "device_read")) break;
+    if (read.value() == PluginCallStatus::Ok) {
+      q_rad = Eigen::Vector3d(state.joint_angles_rad[0], state.joint_angles_rad[1], state.joint_angles_rad[2]);
+      if (!joint_angles_plausible(rig.device().limits, q_rad)) {
+        fail(Diagnostic{device->description.where, plugin_said(*device, joint_angles_fault(q_rad))}.to_string());
+        break;
+      }
+    }
+
+    const HapticTickOutput out = tick.tick(t_s, dt_s, q_rad);
+
+    mhd_device_command cmd{};
+    cmd.timestamp_s = t_s;
+    for (int j = 0; j < 3; ++j) cmd.joint_torques_Nm[j] = out.torques_Nm[j];
+    auto write = [&] {
+      const InCall in_call(*device, "device_write", t_s);
+      return device->instance.device_write(cmd);
+    }();
+    if (check(write, *device) || deactivated(write.value(), *device, "device_write")) break;
+
+    tick_histogram.add(host.now_s() - t_s);
+
+    HapticSnapshot snap;
+    snap.t_s = t_s;
+    snap.valid = out.hip_W_m.allFinite();
+    if (snap.valid) {
+      snap.hip_W_m = out.hip_W_m;
+      snap.proxy_W_m = out.proxy_W_m;
+    }
+    snap.force_W_N = out.force_W_N;
+    snap.in_contact = out.in_contact;
+    snap.base = out.base;
+    snapshot_for_planner.write(snap);
+    snapshot_for_display.write(snap);
+    snapshot_for_io.write(snap);
+
+    if (!options.recording.empty()) {
+      RecordingRow row;
+      row.t_s = t_s;
+      row.dt_s = dt_s;
+      for (int i = 0; i < 3; ++i) {
+        row.q_rad[static_cast<std::size_t>(i)] = out.q_rad[i];
+        row.hip_W_m[static_cast<std::size_t>(i)] = out.hip_W_m[i];
+        row.proxy_W_m[static_cast<std::size_t>(i)] = out.proxy_W_m[i];
+        row.force_W_N[static_cast<std::size_t>(i)] = out.force_W_N[i];
+        row.cmd_force_W_N[static_cast<std::size_t>(i)] = out.proxy_force_W_N[i];
+        row.torques_Nm[static_cast<std::size_t>(i)] = out.torques_Nm[i];
+      }
+      row.base_x_m = out.base.x_m;
+      row.base_z_m = out.base.z_m;
+      row.base_heading_rad = out.base.heading_rad;
+      row.tracker_age_s = std::isfinite(out.tracker_age_s) ? out.tracker_age_s : -1.0;
+      row.safety_gain = out.safety_gain;
+      row.contact = out.in_contact ? 1 : 0;
+      row.contact_object = out.contact_object;
+      if (!recording_rows.push(row)) recording_dropped.fetch_add(1, std::memory_order_relaxed);
+    }
+
+    status_counters.ticks.fetch_add(1, std::memory_order_relaxed);
+    if (out.in_contact) contact_ticks.fetch_add(1, std::memory_order_relaxed);
+    if (out.proxy_budget_exhausted) proxy_budget_exhausted_ticks.fetch_add(1, std::memory_order_relaxed);
+    status_counters.overruns.store(timer.stats().overruns, std::memory_order_relaxed);
+    missed.store(timer.stats().missed_deadlines, std::memory_order_relaxed);
+    status_counters.early_ticks.store(timer.stats().early_wakes, std::memory_order_relaxed);
+    status_counters.force_N.store(out.force_W_N.norm(), std::memory_order_relaxed);
+    status_counters.safety_gain.store(out.safety_gain, std::memory_order_relaxed);
+    status_counters.tracker_age_s.store(out.tracker_age_s, std::memory_order_relaxed);
+    status_counters.in_contact.store(out.in_contact, std::memory_order_relaxed);
+  }
+
+  // Safe state: zero torque, whatever ended the loop.
+  zero_force_sent = send_zero_torque(device->instance, host);
+  safety_counters = tick.safety().counters();
+}
+
+}  // namespace mhd

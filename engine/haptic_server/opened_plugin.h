@@ -1,0 +1,52 @@
+#pragma once
+// A scene plugin as the server drives it, and the mark a call to it leaves: on its
+// CallWatch for the watchdog (plugin_watchdog.h), and on the calling thread for the last
+// gasp, which names the plugin a dying thread was inside.
+
+#include "haptic_server/plugin_watchdog.h"
+#include "plugin_host/plugin_instance.h"
+#include "scene/scene_description.h"
+
+#include <memory>
+#include <mutex>
+#include <string>
+#include <utility>
+
+namespace mhd {
+
+/// "plugin 'x' (scene.xml:12)", or "plugin 'x' (scene.xml)" without a line.
+[[nodiscard]] std::string culprit_of(const PluginDescription& description);
+
+struct OpenedPlugin {
+  PluginDescription description;
+  PluginInstance instance;
+  /// Made at open: a crash message names the plugin without allocating.
+  std::string culprit = culprit_of(description);
+  std::unique_ptr<CallWatch> watch = std::make_unique<CallWatch>();
+  /// Held around every call to the base from a server thread, so run()'s thread can send
+  /// the base its stop while the io thread is stuck inside another plugin.
+  std::unique_ptr<std::mutex> call_mutex = std::make_unique<std::mutex>();
+};
+
+/// Marks `plugin` as inside `call` for as long as it lives, for the watchdog and, on this
+/// thread, for the last gasp. An exception leaving the call keeps the thread's mark, so
+/// std::terminate can still name the plugin it came from. No lock, no allocation.
+class InCall {
+ public:
+  InCall(OpenedPlugin& plugin, const char* call, double now_s) noexcept;
+  ~InCall();
+  InCall(const InCall&) = delete;
+  InCall& operator=(const InCall&) = delete;
+
+ private:
+  CallWatch& watch_;
+  const OpenedPlugin* outer_plugin_;
+  const char* outer_call_;
+  int exceptions_;
+};
+
+/// The plugin and call an InCall on this thread marks (nulls when none). Async-signal-safe
+/// (reads thread-locals).
+[[nodiscard]] std::pair<const OpenedPlugin*, const char*> plugin_call_on_this_thread() noexcept;
+
+}  // namespace mhd

@@ -1,0 +1,163 @@
+#pragma once
+// The haptic server's shared state (private to engine/haptic_server): the plugins, the
+// hand-offs between the threads, the counters, and the run's end. Each thread's body
+// lives in its own file (haptic_thread.cpp, io_thread.cpp, planner_thread.cpp,
+// display_thread.cpp, recorder_thread.cpp); opening, run() and the last gasp in
+// haptic_server.cpp.
+
+#include "haptic_server/haptic_server.h"
+#include "haptic_server/head_state.h"
+#include "haptic_server/opened_plugin.h"
+#include "haptic_server/shared_value.h"
+#include "haptic_server/status_counters.h"
+#include "haptic_server/tick_histogram.h"
+#include "kinematics/rig.h"
+#include "plugin_host/host_services.h"
+#include "plugin_host/plugin_error.h"
+#include "realtime/spsc_ring.h"
+#include "realtime/triple_buffer.h"
+#include "realtime/wake_event.h"
+#include "recording/csv_recording.h"
+#include "safety/base_command_guard.h"
+#include "safety/force_safety.h"
+#include "simulation/simulated_user_params.h"
+#include "simulation/simulated_world.h"
+
+#include <Eigen/Core>
+
+#include <atomic>
+#include <cstdint>
+#include <limits>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace mhd {
+
+struct HapticServer::Impl {
+  struct BaseSensorSample {
+    double t_s = 0.0;
+    Pose X_is900_base_sensor = Pose::Identity();
+  };
+  struct BaseCommandEvent {
+    double t_s = 0.0;
+    BaseTwist twist_B;
+  };
+  /// State the haptic thread publishes each tick (for the planner and the displays).
+  struct HapticSnapshot {
+    double t_s = 0.0;
+    bool valid = false;  ///< a HIP is known
+    Eigen::Vector3d hip_W_m = Eigen::Vector3d::Zero();
+    Eigen::Vector3d proxy_W_m = Eigen::Vector3d::Zero();
+    Eigen::Vector3d force_W_N = Eigen::Vector3d::Zero();
+    bool in_contact = false;
+    BasePose base;
+  };
+  /// The last gasp's claim on the plugins: run() arms it while plugins may be driven, and
+  /// exactly one of run() (to stop and close them) and a dying thread (to send the zeros) wins.
+  enum GaspState : int { kGaspIdle, kGaspArmed, kGaspSending, kGaspDone };
+
+  const CompiledScene& scene;
+  ServerSettings settings;
+  ServerOptions options;
+  Rig rig;
+  std::optional<simulation::SimulatedUserConfig> user_config;
+
+  simulation::SimulatedWorld world;
+  HostServices host;
+  std::vector<OpenedPlugin> plugins;  // device first, then tracker, base, displays
+  OpenedPlugin* device = nullptr;
+  OpenedPlugin* tracker = nullptr;
+  OpenedPlugin* base = nullptr;
+  std::vector<OpenedPlugin*> displays;
+
+  // Hand-offs.
+  realtime::SpscRing<BaseSensorSample> base_samples{512};
+  realtime::SpscRing<BaseCommandEvent> commands_to_haptic{64};
+  realtime::SpscRing<RecordingRow> recording_rows{1 << 14};
+  realtime::TripleBuffer<HapticSnapshot> snapshot_for_planner;
+  realtime::TripleBuffer<HapticSnapshot> snapshot_for_display;
+  realtime::TripleBuffer<HapticSnapshot> snapshot_for_io;  ///< the base pose the guard judges
+  SharedValue<HeadState> head;
+  SharedValue<std::pair<std::uint64_t, BaseTwist>> planned_command;  // sequence, twist
+  realtime::WakeEvent base_sample_arrived;  ///< io -> haptic: start the tick now
+  bool tick_on_tracker_sample = false;      ///< set by run(): the tracker can wake the io thread
+
+  // Status, written by the haptic, io and planner threads, read by run().
+  StatusCounters status_counters;
+  // For the report only.
+  std::atomic<std::uint64_t> missed{0}, contact_ticks{0}, proxy_budget_exhausted_ticks{0}, recording_dropped{0};
+  std::atomic<std::uint64_t> base_commands{0}, base_stops{0};
+  SharedValue<BaseStopCounts> base_stop_counts;  ///< the guard's, by cause (io thread)
+  std::atomic<double> base_sample_newest_t_s{-std::numeric_limits<double>::infinity()};  ///< for the planner
+
+  std::atomic<bool> stop{false};
+  std::atomic<int> gasp_state{kGaspIdle};
+  std::atomic<bool> recorder_stop{false};  ///< set after the haptic thread has ended
+  std::atomic<int> running_threads{0};     ///< server threads not yet ended (not the recorder)
+  /// A thread never came back from a plugin call: this Impl (and the plugin's library)
+  /// must outlive it, so it is never destroyed.
+  bool abandoned = false;
+  std::mutex error_mutex;
+  std::optional<std::string> error;
+
+  // Filled by the threads before they end.
+  TickHistogram tick_histogram;
+  ForceSafetyCounters safety_counters;
+  std::optional<CsvRecording> recording;  ///< opened by run(), written by the recorder thread
+  bool zero_force_sent = false;
+  std::atomic<bool> base_stop_sent{false};  ///< by the io thread, or run()'s when the io thread is stuck
+  std::string scheduling;  ///< the haptic thread's, as obtained
+  std::uint64_t recording_rows_written = 0;
+
+  Impl(const CompiledScene& s, ServerSettings st, ServerOptions o, Rig r)
+      : scene(s), settings(std::move(st)), options(std::move(o)), rig(std::move(r)), host(&world.table()) {}
+
+  static std::string plugin_failure(const PluginDescription& d, const PluginError& e) {
+    return Diagnostic{d.where, e.to_string()}.to_string();
+  }
+
+  void fail(std::string message) {
+    {
+      const std::lock_guard lock(error_mutex);
+      if (!error) error = std::move(message);
+    }
+    stop.store(true);
+  }
+
+  /// True when the call failed (the run is ending); `what` says which call.
+  template <typename Result>
+  bool check(const Result& result, const OpenedPlugin& plugin) {
+    if (result.ok()) return false;
+    fail(plugin_failure(plugin.description, result.error()));
+    return true;
+  }
+
+  /// "plugin 'name': what", for a fault found in what a plugin returned.
+  static std::string plugin_said(const OpenedPlugin& plugin, const std::string& what) {
+    return "plugin '" + plugin.description.name + "': " + what;
+  }
+
+  bool deactivated(PluginCallStatus status, const OpenedPlugin& plugin, const char* call) {
+    if (status != PluginCallStatus::Deactivate) return false;
+    fail(Diagnostic{plugin.description.where,
+                    "plugin '" + plugin.description.name + "': " + call + " asked to be stopped (MHD_DEACTIVATE)"}
+             .to_string());
+    return true;
+  }
+
+  /// Sends the base a zero twist (under its call mutex) and notes whether it took it
+  /// (io_thread.cpp).
+  void stop_base();
+
+  // Each thread's body, in its own file (<name>.cpp).
+  void haptic_thread();
+  void io_thread();
+  void planner_thread();
+  void display_thread();
+  void recorder_thread();
+};
+
+}  // namespace mhd

@@ -1,0 +1,57 @@
+#pragma once
+// Which tracker samples the server takes (docs/haptic_server.md, "Status line"): the io
+// thread's checks on every sample a tracker plugin returns, as one verdict per sample.
+
+#include <mhd/plugin_abi.h>
+
+#include <cstdint>
+#include <map>
+
+namespace mhd {
+
+/// What becomes of one tracker sample.
+enum class TrackerSampleVerdict {
+  Accepted,
+  SequenceBackwards,   ///< dropped: not newer than the sensor's last accepted sample
+  FromTheFuture,       ///< dropped: measured after it was read (beyond the clock slack)
+  UnknownSensor,       ///< dropped: neither the base's sensor nor the head's
+  ImplausiblePosition, ///< a fault: not finite, or beyond the tracking range (physical_range.h)
+};
+
+/// "accepted", "sequence backwards", "from the future", "unknown sensor", "implausible position".
+[[nodiscard]] const char* to_string(TrackerSampleVerdict verdict) noexcept;
+
+struct TrackerSampleFilterSettings {
+  std::uint32_t base_sensor_id = 0;
+  std::uint32_t head_sensor_id = 1;
+  double tracking_range_m = 50.0;
+  /// A sample may be this much newer than the host clock at its read (the clocks agree).
+  double future_slack_s = 0.01;
+  /// A sensor silent this long may start its sequence again (a restarted tracker server).
+  double sequence_restart_after_s = 0.25;
+};
+
+/// The per-sensor memory behind the checks: the last accepted sequence number and when.
+/// One instance per tracker, driven by one thread.
+class TrackerSampleFilter {
+ public:
+  explicit TrackerSampleFilter(TrackerSampleFilterSettings settings) : settings_(settings) {}
+
+  /// The verdict on `sample`, read from the plugin at host time `read_at_s`. Drops are
+  /// checked before the position, so a dropped sample is never a fault. Only an accepted
+  /// sample moves its sensor's sequence on; the first sample of a sensor, whatever its
+  /// verdict, starts the sensor's memory. Allocates once per new sensor id.
+  [[nodiscard]] TrackerSampleVerdict check(const mhd_tracker_sample& sample, double read_at_s);
+
+  [[nodiscard]] const TrackerSampleFilterSettings& settings() const noexcept { return settings_; }
+
+ private:
+  struct SensorTrack {
+    std::uint64_t sequence = 0;
+    double accepted_at_s = 0.0;  ///< host time of the last accepted sample
+  };
+  TrackerSampleFilterSettings settings_;
+  std::map<std::uint32_t, SensorTrack> sensors_;
+};
+
+}  // namespace mhd
