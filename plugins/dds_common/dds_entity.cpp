@@ -1,5 +1,7 @@
 #include "dds_common/dds_entity.h"
 
+#include "dds_common/participant_security.h"
+
 #include <filesystem>
 
 namespace mhd::dds {
@@ -40,7 +42,29 @@ Qos Qos::reliable(std::int32_t depth, bool transient_local) {
   return q;
 }
 
-Participant::Participant(dds_domainid_t domain_id, const std::string& config) {
+Qos Qos::partition(const std::string& name) {
+  Qos q;
+  dds_qset_partition1(q.qos_, name.c_str());
+  return q;
+}
+
+Qos& Qos::exclusive_ownership() {
+  dds_qset_ownership(qos_, DDS_OWNERSHIP_EXCLUSIVE);
+  return *this;
+}
+
+Qos& Qos::ownership_strength(std::int32_t strength) {
+  dds_qset_ownership_strength(qos_, strength);
+  return *this;
+}
+
+Qos& Qos::automatic_liveliness(dds_duration_t lease_ns) {
+  dds_qset_liveliness(qos_, DDS_LIVELINESS_AUTOMATIC, lease_ns);
+  return *this;
+}
+
+Participant::Participant(dds_domainid_t domain_id, const std::string& config,
+                         const std::optional<std::filesystem::path>& identity_dir) {
   if (!config.empty()) {
     if (domain_id == DDS_DOMAIN_DEFAULT) {
       throw DdsError("a DDS configuration needs an explicit domain id", DDS_RETCODE_BAD_PARAMETER);
@@ -49,7 +73,40 @@ Participant::Participant(dds_domainid_t domain_id, const std::string& config) {
     // PRECONDITION_NOT_MET: this process already has the domain; use it as it is.
     if (domain != DDS_RETCODE_PRECONDITION_NOT_MET) check(domain, "dds_create_domain");
   }
-  participant_ = Entity(check(dds_create_participant(domain_id, nullptr, nullptr), "dds_create_participant"));
+  const std::optional<std::filesystem::path> identity = resolve_identity_dir(identity_dir);
+  if (!identity) {
+    const dds_entity_t participant = dds_create_participant(domain_id, nullptr, nullptr);
+    if (participant < 0) {
+      throw DdsError(std::string("dds_create_participant: ") + dds_strretcode(participant) +
+                         " (no DDS identity given: if the Cyclone configuration has a Security section, such as "
+                         "config/cyclonedds-secure.xml, set " + kIdentityEnv + ")",
+                     participant);
+    }
+    participant_ = Entity(participant);
+    warn_unsecured_once();
+    return;
+  }
+  // Checked here: Cyclone reports any bad identity file as a bare "Error".
+  const IdentityFiles files = IdentityFiles::in_folder(*identity);
+  Qos qos;
+  apply_identity(qos.get_mutable(), files);
+  const dds_entity_t participant = dds_create_participant(domain_id, qos.get(), nullptr);
+  if (participant < 0) {
+    throw DdsError("dds_create_participant with DDS identity '" + identity->string() + "': " +
+                       dds_strretcode(participant) +
+                       " (Cyclone refused it; its log above says why: a certificate or permissions not signed by "
+                       "the CA, or expired)",
+                   participant);
+  }
+  participant_ = Entity(participant);
+  identity_dir_ = *identity;
+}
+
+PartitionGroup::PartitionGroup(const Participant& participant, Side side, const std::string& partition) {
+  const Qos qos = Qos::partition(partition);
+  group_ = Entity(side == Side::Publish
+                      ? check(dds_create_publisher(participant.handle(), qos.get(), nullptr), "dds_create_publisher")
+                      : check(dds_create_subscriber(participant.handle(), qos.get(), nullptr), "dds_create_subscriber"));
 }
 
 Topic::Topic(const Participant& participant, const dds_topic_descriptor_t& descriptor, const char* name,

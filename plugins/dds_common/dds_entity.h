@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -67,8 +68,20 @@ class Qos {
   /// Commands and status: reliable, keep-last `depth`; transient-local keeps the last
   /// samples for late joiners.
   [[nodiscard]] static Qos reliable(std::int32_t depth, bool transient_local = false);
+  /// A publisher's or subscriber's QoS: its endpoints live in partition `name`.
+  [[nodiscard]] static Qos partition(const std::string& name);
+
+  /// Exclusive ownership: a reader takes each instance from its strongest live writer
+  /// only, so a second, weaker writer of the same key cannot interleave.
+  Qos& exclusive_ownership();
+  /// A writer's ownership strength (meaningful with exclusive ownership).
+  Qos& ownership_strength(std::int32_t strength);
+  /// Automatic liveliness with `lease_ns`: a writer whose process died without a word
+  /// is taken for gone (and loses ownership) after the lease, not the participant's 10 s.
+  Qos& automatic_liveliness(dds_duration_t lease_ns);
 
   [[nodiscard]] const dds_qos_t* get() const noexcept { return qos_; }
+  [[nodiscard]] dds_qos_t* get_mutable() noexcept { return qos_; }
 
  private:
   dds_qos_t* qos_;
@@ -80,13 +93,34 @@ class Qos {
 /// until the process ends (deleting it would delete other plugins' participants in it).
 /// Without `config` the domain takes $CYCLONEDDS_URI. `domain_id` DDS_DOMAIN_DEFAULT:
 /// the configuration's.
+/// Security (participant_security.h): the identity folder `identity_dir`, else
+/// $MHD_DDS_IDENTITY's; with neither the participant is unsecured and the process says
+/// so once on stderr. Throws DdsSecurityError naming a missing identity file, DdsError
+/// when Cyclone refuses the identity (its log says why).
 class Participant {
  public:
-  explicit Participant(dds_domainid_t domain_id = DDS_DOMAIN_DEFAULT, const std::string& config = {});
+  explicit Participant(dds_domainid_t domain_id = DDS_DOMAIN_DEFAULT, const std::string& config = {},
+                       const std::optional<std::filesystem::path>& identity_dir = {});
   [[nodiscard]] dds_entity_t handle() const noexcept { return participant_.handle(); }
+  /// The identity folder it authenticated with; empty when unsecured.
+  [[nodiscard]] const std::filesystem::path& identity_dir() const noexcept { return identity_dir_; }
+  [[nodiscard]] bool secured() const noexcept { return !identity_dir_.empty(); }
 
  private:
   Entity participant_;
+  std::filesystem::path identity_dir_;
+};
+
+/// A DDS publisher or subscriber whose endpoints all live in one partition
+/// (rig_partition.h): DDS takes partitions from these, not from writers and readers.
+class PartitionGroup {
+ public:
+  enum class Side { Publish, Subscribe };
+  PartitionGroup(const Participant& participant, Side side, const std::string& partition);
+  [[nodiscard]] dds_entity_t handle() const noexcept { return group_.handle(); }
+
+ private:
+  Entity group_;
 };
 
 /// The topic name, type descriptor and QoS that belong to a sample type.
@@ -105,9 +139,9 @@ class Topic {
 template <class T>
 class Writer {
  public:
-  Writer(const Participant& participant, const Topic& topic, const Qos& qos)
-      : writer_(check(dds_create_writer(participant.handle(), topic.handle(), qos.get(), nullptr),
-                      "dds_create_writer")) {}
+  /// `parent`: a participant or a PartitionGroup (Side::Publish).
+  Writer(dds_entity_t parent, const Topic& topic, const Qos& qos)
+      : writer_(check(dds_create_writer(parent, topic.handle(), qos.get(), nullptr), "dds_create_writer")) {}
   /// Never blocks for a best-effort writer.
   void write(const T& sample) { check(dds_write(writer_.handle(), &sample), "dds_write"); }
   /// Matched readers seen so far (discovery is asynchronous).
@@ -127,9 +161,9 @@ class Writer {
 template <class T>
 class Reader {
  public:
-  Reader(const Participant& participant, const Topic& topic, const Qos& qos, std::size_t batch = 64)
-      : reader_(check(dds_create_reader(participant.handle(), topic.handle(), qos.get(), nullptr),
-                      "dds_create_reader")),
+  /// `parent`: a participant or a PartitionGroup (Side::Subscribe).
+  Reader(dds_entity_t parent, const Topic& topic, const Qos& qos, std::size_t batch = 64)
+      : reader_(check(dds_create_reader(parent, topic.handle(), qos.get(), nullptr), "dds_create_reader")),
         samples_(batch),
         pointers_(batch),
         infos_(batch) {
@@ -154,10 +188,12 @@ class Reader {
   /// Blocks until data is available or `timeout_ns` passes; true when data is there.
   bool wait(dds_duration_t timeout_ns);
   /// Matched writers seen so far.
-  [[nodiscard]] std::uint32_t matched_writers() const {
+  [[nodiscard]] std::uint32_t matched_writers() const { return subscription_matched().current_count; }
+  /// Matched writers now (current_count) and ever (total_count).
+  [[nodiscard]] dds_subscription_matched_status_t subscription_matched() const {
     dds_subscription_matched_status_t status{};
     check(dds_get_subscription_matched_status(reader_.handle(), &status), "dds_get_subscription_matched_status");
-    return status.current_count;
+    return status;
   }
   [[nodiscard]] dds_entity_t handle() const noexcept { return reader_.handle(); }
 

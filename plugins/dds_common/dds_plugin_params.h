@@ -1,5 +1,5 @@
 #pragma once
-// The parameters every DDS plugin takes: rig_id, domain_id and config_file. Header-only
+// The parameters every DDS plugin takes: rig_id, domain_id, config_file and identity_dir. Header-only
 // and for plugins that link mhd_plugin_sim_common (ParamReader).
 
 #include "dds_common/dds_entity.h"
@@ -8,6 +8,7 @@
 #include <mhd/plugin_abi.h>
 
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -18,6 +19,8 @@ struct DdsEndpoint {
   std::uint32_t rig_id = 0;
   dds_domainid_t domain_id = DDS_DOMAIN_DEFAULT;
   std::string config;  ///< Cyclone configuration URI "file://PATH"; empty: $CYCLONEDDS_URI
+  /// DDS Security identity folder; not given: $MHD_DDS_IDENTITY, else unsecured.
+  std::optional<std::filesystem::path> identity_dir;
 };
 
 /// An optional text parameter. ParamReader has no optional_text; required_text marks the
@@ -37,6 +40,8 @@ inline std::optional<std::string> optional_text(plugin_support::ParamReader& rea
 /// Reads rig_id (default 0), domain_id (0..232, which keeps Cyclone's port numbers
 /// 7400 + 250 * id + ... in range; default: the configuration's) and config_file (a
 /// relative path is relative to the scene file). config_file needs domain_id.
+/// identity_dir: a DDS Security identity folder (participant_security.h), a relative
+/// path relative to the scene file's folder.
 inline DdsEndpoint read_endpoint(plugin_support::ParamReader& reader, const mhd_param* params, std::size_t count,
                                  const char* scene_file) {
   constexpr std::uint64_t kNoDomain = UINT64_MAX;
@@ -47,6 +52,13 @@ inline DdsEndpoint read_endpoint(plugin_support::ParamReader& reader, const mhd_
   if (const auto file = optional_text(reader, params, count, "config_file")) {
     if (e.domain_id == DDS_DOMAIN_DEFAULT) throw plugin_support::ParamError("parameter 'config_file' needs 'domain_id'");
     e.config = config_file_uri(*file, scene_file);
+  }
+  if (const auto dir = optional_text(reader, params, count, "identity_dir")) {
+    std::filesystem::path path(*dir);
+    if (path.is_relative() && scene_file != nullptr && scene_file[0] != '\0') {
+      path = std::filesystem::path(scene_file).parent_path() / path;
+    }
+    e.identity_dir = path;
   }
   return e;
 }

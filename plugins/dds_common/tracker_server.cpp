@@ -84,12 +84,15 @@ TrackerServerReport run_tracker_server(const TrackerServerOptions& options, cons
   if (!opened) fail(opened.error());
   PluginInstance& tracker = opened.value();
 
-  const Participant participant(options.domain_id);
-  Publisher<mhd_dds_TrackerSample> publisher(participant);
+  const Participant participant(options.domain_id, {}, options.identity_dir);
+  Publisher<mhd_dds_TrackerSample> publisher(participant, rig_partition(options.rig_id), options.ownership_strength);
 
   if (PluginStatus started = tracker.start(); !started) fail(started.error());
   if (on_started) {
-    on_started(fmt::format("tracker '{}' publishing rig {} on DDS", tracker.name(), options.rig_id));
+    on_started(fmt::format("tracker '{}' publishing rig {} on DDS (partition {}, ownership strength {}, {})",
+                           tracker.name(), options.rig_id, rig_partition(options.rig_id), options.ownership_strength,
+                           participant.secured() ? "secured as " + participant.identity_dir().string()
+                                                 : std::string("unsecured")));
   }
 
   TrackerServerReport report;

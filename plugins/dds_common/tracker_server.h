@@ -7,6 +7,7 @@
 // most one period after the plugin makes it readable.
 
 #include "dds_common/dds_entity.h"
+#include "dds_common/dds_topics.h"
 
 #include <atomic>
 #include <cstdint>
@@ -43,6 +44,12 @@ struct TrackerServerOptions {
   std::vector<std::filesystem::path> plugin_paths;  ///< --plugin-path, searched first
   std::uint64_t user_seed = 0;                      ///< the simulated user's random walk
   double poll_period_s = 0.001;
+  /// DDS Security identity folder (participant_security.h); not given: $MHD_DDS_IDENTITY,
+  /// else unsecured.
+  std::optional<std::filesystem::path> identity_dir;
+  /// The samples' writer strength under exclusive ownership: a second tracker server
+  /// for the same rig must have a different one, and only the stronger is heard.
+  std::int32_t ownership_strength = kDefaultOwnershipStrength;
 };
 
 struct TrackerServerReport {

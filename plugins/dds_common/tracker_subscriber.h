@@ -16,7 +16,7 @@ namespace mhd::dds {
 
 class TrackerSubscriber {
  public:
-  /// `participant` must outlive this.
+  /// Reads rig limits.rig_id's partition. `participant` must outlive this.
   TrackerSubscriber(const Participant& participant, const TrackerValidationLimits& limits);
 
   /// Takes what DDS has, validates it at `now_ns` and writes up to out.size() accepted
@@ -29,7 +29,12 @@ class TrackerSubscriber {
   bool wait(dds_duration_t timeout_ns) { return !pending_.empty() || subscriber_.reader().wait(timeout_ns); }
 
   [[nodiscard]] const DropCounts& counts() const { return validator_.counts(); }
-  [[nodiscard]] std::uint32_t matched_writers() { return subscriber_.reader().matched_writers(); }
+  [[nodiscard]] std::uint32_t matched_writers() const { return subscriber_.reader().matched_writers(); }
+  /// Writers matched now and ever: under DDS Security a refused writer never matches,
+  /// so total_count counts only the writers the rig accepted (docs/networking.md).
+  [[nodiscard]] dds_subscription_matched_status_t writer_matches() const {
+    return subscriber_.reader().subscription_matched();
+  }
 
  private:
   Subscriber<mhd_dds_TrackerSample> subscriber_;

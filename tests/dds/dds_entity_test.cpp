@@ -54,8 +54,8 @@ TEST(DdsEntity, RigStateGoesFromWriterToReader) {
   const std::uint32_t domain = test::use_loopback_and_unique_domain(1);
   const Participant pub_side(domain);
   const Participant sub_side(domain);
-  Subscriber<mhd_dds_RigState> sub(sub_side);
-  Publisher<mhd_dds_RigState> pub(pub_side);
+  Subscriber<mhd_dds_RigState> sub(sub_side, rig_partition(5));
+  Publisher<mhd_dds_RigState> pub(pub_side, rig_partition(5));
   mhd_dds_RigState s{};
   s.rig_id = 5;
   s.force_W_N[1] = 1.5;
@@ -79,8 +79,9 @@ TEST(DdsEntity, ReliableBaseCommandsOfTwoRigsStayApartByKey) {
   const std::uint32_t domain = test::use_loopback_and_unique_domain(2);
   const Participant a(domain);
   const Participant b(domain);
-  Subscriber<mhd_dds_BaseCommand> sub(b);
-  Publisher<mhd_dds_BaseCommand> pub(a);
+  // Both rigs' commands through one writer and one reader: the key keeps them apart.
+  Subscriber<mhd_dds_BaseCommand> sub(b, kAllRigsPartition);
+  Publisher<mhd_dds_BaseCommand> pub(a, rig_partition(1));
   const auto end = std::chrono::steady_clock::now() + 3s;
   while (pub.writer().matched_readers() == 0 && std::chrono::steady_clock::now() < end) std::this_thread::sleep_for(5ms);
   ASSERT_EQ(pub.writer().matched_readers(), 1u);

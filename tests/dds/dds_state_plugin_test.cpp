@@ -35,7 +35,7 @@ TEST(DdsStatePlugin, TheTableIdentifiesADisplayAndUnknownParametersAreRefused) {
 TEST(DdsStatePlugin, EachFrameIsPublishedAsTheRigsState) {
   const std::uint32_t domain = test::use_loopback_and_unique_domain(50);
   const Participant viewer(domain);
-  Subscriber<mhd_dds_RigState> sub(viewer);
+  Subscriber<mhd_dds_RigState> sub(viewer, kAllRigsPartition);
 
   const mhd::test::PluginFile file(MHD_DDS_STATE_PLUGIN);
   mhd::test::FakeHost h;

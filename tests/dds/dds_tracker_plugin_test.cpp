@@ -24,7 +24,7 @@ TEST(DdsTrackerPlugin, BadParametersAreRefusedWithTheirNames) {
   const mhd::test::PluginFile file(MHD_DDS_TRACKER_PLUGIN);
   mhd::test::FakeHost h;
   const std::string unknown = mhd::test::open_plugin(file.api(), h.host, {{"rate_hz", "190"}}).error;
-  EXPECT_EQ(unknown.rfind("unknown parameter 'rate_hz' (known: rig_id, domain_id, config_file, max_position_m", 0), 0u) << unknown;
+  EXPECT_EQ(unknown.rfind("unknown parameter 'rate_hz' (known: rig_id, domain_id, config_file, identity_dir, max_position_m", 0), 0u) << unknown;
   EXPECT_EQ(mhd::test::open_plugin(file.api(), h.host, {{"rig_id", "-1"}}).error,
             "parameter 'rig_id' must be an integer from 0 to 4294967295, got '-1'");
   EXPECT_EQ(mhd::test::open_plugin(file.api(), h.host, {{"max_age_s", "0"}}).error,

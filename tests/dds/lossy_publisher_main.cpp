@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
   }
   try {
     const mhd::dds::Participant participant(domain_id);
-    mhd::dds::Publisher<mhd_dds_TrackerSample> publisher(participant);
+    mhd::dds::Publisher<mhd_dds_TrackerSample> publisher(participant, mhd::dds::rig_partition(rig_id));
     const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(10);
     while (publisher.writer().matched_readers() == 0) {
       if (std::chrono::steady_clock::now() > give_up) {

@@ -99,7 +99,7 @@ TEST(DdsHapticServer, TrackerServerToHapticServerToStateSubscriberCarriesHipForc
   RigSetup s(kPipelineRig);
   ASSERT_TRUE(s.scene.compiled) << (s.scene.errors.empty() ? "" : s.scene.errors.front());
   const dds::Participant participant(s.domain);
-  dds::Subscriber<mhd_dds_RigState> states(participant);
+  dds::Subscriber<mhd_dds_RigState> states(participant, dds::rig_partition(s.rig_id));
 
   ServerThread server(s.scene, s.options());
   ASSERT_TRUE(server.opened()) << server.errors().front();
@@ -147,7 +147,7 @@ TEST(DdsHapticServer, KilledTrackerServerFadesForceIn50MsStopsBaseIn100MsAndTrac
   RigSetup s(kKillRig);
   ASSERT_TRUE(s.scene.compiled) << (s.scene.errors.empty() ? "" : s.scene.errors.front());
   const dds::Participant participant(s.domain);
-  dds::Subscriber<mhd_dds_RigState> states(participant);
+  dds::Subscriber<mhd_dds_RigState> states(participant, dds::rig_partition(s.rig_id));
 
   constexpr double kPlannedVx_mps = 0.05;  // the planner keeps asking the base to move
   ServerThread server(s.scene, s.options([](const BasePlanInput&) { return BaseTwist{kPlannedVx_mps, 0.0, 0.0}; }));

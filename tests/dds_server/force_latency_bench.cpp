@@ -1,5 +1,8 @@
-// mhd-dds-force-latency-bench [--samples N] [--rate-hz R]: tracker sample published ->
-// force computed from it, across processes on loopback (config/cyclonedds-loopback.xml).
+// mhd-dds-force-latency-bench [--samples N] [--rate-hz R] [--security DIR]: tracker
+// sample published -> force computed from it, across processes on loopback
+// (config/cyclonedds-loopback.xml). With --security DIR (make_rig_security.sh DIR 44)
+// under DDS Security too (config/cyclonedds-secure.xml): the publisher as
+// DIR/identities/tracker-rig44, the haptic server as haptic-rig44.
 //
 // A child process (dds_server_step_publisher) publishes base-sensor samples of the
 // thesis rig, the base 0.1 mm further along x in each, stamped with dds_time() just
@@ -34,12 +37,14 @@ namespace fs = std::filesystem;
 int main(int argc, char** argv) {
   long samples = 1900;
   double rate_hz = 190.0;
+  std::string security_dir;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string flag = argv[i];
     if (flag == "--samples") samples = std::strtol(argv[i + 1], nullptr, 10);
     else if (flag == "--rate-hz") rate_hz = std::strtod(argv[i + 1], nullptr);
+    else if (flag == "--security") security_dir = fs::absolute(argv[i + 1]).string();
     else {
-      std::fprintf(stderr, "usage: %s [--samples N] [--rate-hz R]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--samples N] [--rate-hz R] [--security DIR]\n", argv[0]);
       return 2;
     }
   }
@@ -51,6 +56,17 @@ int main(int argc, char** argv) {
     const fs::path dir = fs::temp_directory_path() / fmt::format("mhd-dds-force-latency-{}", ::getpid());
     fs::create_directories(dir);
     const std::uint32_t domain = dds::test::use_loopback_and_unique_domain(31);
+    // Each process's identity through MHD_DDS_IDENTITY: the server's participants are
+    // made when it opens, the publisher's environment is copied when it starts.
+    const auto use_identity = [&](const char* name) {
+      if (!security_dir.empty()) setenv("MHD_DDS_IDENTITY", (fs::path(security_dir) / "identities" / name).c_str(), 1);
+    };
+    if (!security_dir.empty()) {
+      const std::string uri = std::string(std::getenv("CYCLONEDDS_URI")) + ",file://" + MHD_SOURCE_DIR +
+                              "/config/cyclonedds-secure.xml";
+      setenv("CYCLONEDDS_URI", uri.c_str(), 1);
+    }
+    use_identity("haptic-rig44");
     SceneOptions o;
     o.domain_id = domain;
     o.rig_id = 44;
@@ -88,6 +104,7 @@ int main(int argc, char** argv) {
         for (const auto& e : server.errors()) std::fprintf(stderr, "%s\n", e.c_str());
         return 1;
       }
+      use_identity("tracker-rig44");
       dds::test::ChildProcess publisher(args, (dir / "publisher.log").string());
       rc = publisher.wait_for(std::chrono::milliseconds(static_cast<long>(20'000 + 1000.0 * static_cast<double>(samples) / rate_hz)));
       report = server.stop();
@@ -119,7 +136,8 @@ int main(int argc, char** argv) {
     }
     std::sort(us.begin(), us.end());
     const auto at = [&](double p) { return us[std::min(us.size() - 1, static_cast<std::size_t>(p * static_cast<double>(us.size())))]; };
-    std::printf("tracker sample published -> force computed from it (loopback, %.0f Hz, haptic and io at 1 kHz)\n", rate_hz);
+    std::printf("tracker sample published -> force computed from it (loopback, %s, %.0f Hz, haptic and io at 1 kHz)\n",
+                security_dir.empty() ? "unsecured" : "DDS Security", rate_hz);
     std::printf("samples published %ld, seen by the haptic loop %zu\n", samples, us.size());
     std::printf("median %.0f us  p99 %.0f us  min %.0f us  max %.0f us\n", at(0.5), at(0.99), us.front(), us.back());
     std::printf("haptic scheduling: %s\n", report.haptic_scheduling.c_str());

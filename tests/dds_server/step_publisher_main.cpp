@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
   for (int i = 0; i < 10; ++i) v[i] = std::strtod(argv[5 + i], nullptr);
   try {
     const mhd::dds::Participant participant(domain);
-    mhd::dds::Publisher<mhd_dds_TrackerSample> publisher(participant);
+    mhd::dds::Publisher<mhd_dds_TrackerSample> publisher(participant, mhd::dds::rig_partition(rig));
     const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(10);
     while (publisher.writer().matched_readers() == 0) {
       if (std::chrono::steady_clock::now() > give_up) {

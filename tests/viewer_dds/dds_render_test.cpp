@@ -48,7 +48,7 @@ TEST(DdsRender, TheHipIsDrawnWhereThePublishedStatePutsItAndStaysAfterThePublish
   auto source = std::make_shared<DdsStateSource>(o, [&](const std::string& line) { lines.push_back(line); });
   {
     const dds::Participant participant(domain);
-    dds::Publisher<mhd_dds_RigState> publisher(participant);
+    dds::Publisher<mhd_dds_RigState> publisher(participant, dds::rig_partition(2));
     const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(5);
     while (!source->latest() && std::chrono::steady_clock::now() < end) {
       publisher.write(sample);

@@ -42,7 +42,7 @@ struct Fixture {
   explicit Fixture(std::uint32_t salt, std::uint32_t rig = 3)
       : domain(dds::test::use_loopback_and_unique_domain(salt)),
         publisher_participant(domain),
-        publisher(std::make_unique<dds::Publisher<mhd_dds_RigState>>(publisher_participant)) {
+        publisher(std::make_unique<dds::Publisher<mhd_dds_RigState>>(publisher_participant, dds::rig_partition(rig))) {
     DdsStateSourceOptions o;
     o.rig_id = rig;
     o.domain_id = domain;
@@ -108,7 +108,7 @@ TEST(DdsStateSource, StatesOfItsRigArriveAndAreKeptWhenThePublisherVanishes) {
   EXPECT_EQ(f.lines.size(), 1u) << "said once, not every frame";
 
   // A publisher comes back: its state is drawn and that is said once.
-  f.publisher = std::make_unique<dds::Publisher<mhd_dds_RigState>>(f.publisher_participant);
+  f.publisher = std::make_unique<dds::Publisher<mhd_dds_RigState>>(f.publisher_participant, dds::rig_partition(3));
   const std::optional<RigState> back = f.publish_until({rig_state(3, 0, -0.25)}, 112.2);
   ASSERT_TRUE(back.has_value());
   EXPECT_DOUBLE_EQ(back->p_W_hip_m.x(), -0.25);

@@ -22,7 +22,7 @@ int main(int argc, char** argv) {
   const auto rig = static_cast<std::uint32_t>(std::strtoul(argv[2], nullptr, 10));
   const double seconds = std::strtod(argv[3], nullptr);
   mhd::dds::Participant participant(domain);
-  mhd::dds::Publisher<mhd_dds_RigState> publisher(participant);
+  mhd::dds::Publisher<mhd_dds_RigState> publisher(participant, mhd::dds::rig_partition(rig));
   const auto wait_end = std::chrono::steady_clock::now() + std::chrono::seconds(30);
   while (publisher.writer().matched_readers() == 0) {
     if (std::chrono::steady_clock::now() > wait_end) {

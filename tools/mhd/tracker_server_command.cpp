@@ -28,6 +28,8 @@ struct TrackerServerCli {
   std::optional<std::uint32_t> domain_id;
   std::vector<std::string> plugin_paths;
   std::uint64_t seed = 0;
+  std::optional<std::string> identity_dir;
+  std::int32_t ownership_strength = mhd::dds::kDefaultOwnershipStrength;
 };
 
 int run(const TrackerServerCli& cli) {
@@ -39,6 +41,8 @@ int run(const TrackerServerCli& cli) {
   if (cli.domain_id) options.domain_id = *cli.domain_id;
   options.plugin_paths.assign(cli.plugin_paths.begin(), cli.plugin_paths.end());
   options.user_seed = cli.seed;
+  if (cli.identity_dir) options.identity_dir = *cli.identity_dir;
+  options.ownership_strength = cli.ownership_strength;
   g_stop.store(false);
   std::signal(SIGINT, request_stop);
   std::signal(SIGTERM, request_stop);
@@ -79,8 +83,17 @@ void add_tracker_server_command(CLI::App& app) {
       ->type_name("DIR")
       ->allow_extra_args(false);
   cmd->add_option("--seed", cli->seed, "Seed of the simulated user's random walk");
+  cmd->add_option("--dds-identity", cli->identity_dir,
+                  "DDS Security identity folder (tools/dds_security/make_rig_security.sh; default: "
+                  "$MHD_DDS_IDENTITY, else unsecured)")
+      ->type_name("DIR");
+  cmd->add_option("--ownership-strength", cli->ownership_strength,
+                  "Writer strength under exclusive ownership; readers hear only the strongest live writer of a "
+                  "sensor (default 10)")
+      ->check(CLI::Range(0, 1000000));
   cmd->footer(
       "Set CYCLONEDDS_URI to a Cyclone configuration, e.g.\n"
-      "  CYCLONEDDS_URI=file://$PWD/config/cyclonedds-loopback.xml (see docs/networking.md)");
+      "  CYCLONEDDS_URI=file://$PWD/config/cyclonedds-secure.xml, and an identity with --dds-identity\n"
+      "  or MHD_DDS_IDENTITY (see docs/networking.md, \"Security\")");
   cmd->callback([cli] { mhd::cli::exit_with(run(*cli)); });
 }

@@ -19,7 +19,7 @@ struct DdsStateSource::Impl {
   explicit Impl(const DdsStateSourceOptions& o)
       : options(o),
         participant(o.domain_id ? static_cast<dds_domainid_t>(*o.domain_id) : DDS_DOMAIN_DEFAULT),
-        subscriber(participant, 16) {}
+        subscriber(participant, dds::rig_partition(o.rig_id), 16) {}
 
   DdsStateSourceOptions options;
   dds::Participant participant;

@@ -4,11 +4,15 @@
 // `dds` tracker plugin does (TrackerSubscriber), woken by a waitset, and prints the
 // median and p99 of receive time - publish time (CLOCK_REALTIME, same host).
 //
+// With --security DIR (tools/dds_security/make_rig_security.sh DIR 7) both ends run
+// under DDS Security: the parent as DIR/identities/tracker-rig7, the child as
+// DIR/identities/haptic-rig7 (authenticated, access-controlled, payload encrypted).
+//
 // With --poll-us P the child instead polls every P microseconds, as the haptic loop
 // reads the `dds` tracker (1000 at 1 kHz): the figure then includes the wait for the
 // next poll.
 //
-//   mhd-dds-latency-bench [--samples N] [--rate-hz R] [--domain-id D] [--poll-us P]
+//   mhd-dds-latency-bench [--samples N] [--rate-hz R] [--domain-id D] [--poll-us P] [--security DIR]
 
 #include "dds_common/tracker_subscriber.h"
 
@@ -20,6 +24,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -31,13 +37,20 @@ struct Options {
   double rate_hz = 1000.0;
   dds_domainid_t domain_id = 77;
   long poll_us = 0;  ///< 0: woken by a waitset
+  std::string security_dir;  ///< make_rig_security.sh's output; empty: unsecured
 };
+
+/// The identity folder of `name` under --security, or none (unsecured).
+std::optional<std::filesystem::path> identity(const Options& o, const char* name) {
+  if (o.security_dir.empty()) return std::nullopt;
+  return std::filesystem::path(o.security_dir) / "identities" / name;
+}
 
 constexpr std::uint32_t kRig = 7;
 
 int subscriber(const Options& o) {
   using namespace mhd::dds;
-  const Participant participant(o.domain_id);
+  const Participant participant(o.domain_id, {}, identity(o, "haptic-rig7"));
   TrackerValidationLimits limits;
   limits.rig_id = kRig;
   TrackerSubscriber sub(participant, limits);
@@ -68,8 +81,8 @@ int subscriber(const Options& o) {
   const auto at = [&](double q) {
     return latency_us[std::min(latency_us.size() - 1, static_cast<std::size_t>(q * static_cast<double>(latency_us.size())))];
   };
-  std::printf("tracker sample publish -> validated in another process (loopback), %zu of %zu samples at %.0f Hz, %s\n",
-              latency_us.size(), o.samples, o.rate_hz,
+  std::printf("tracker sample publish -> validated in another process (loopback, %s), %zu of %zu samples at %.0f Hz, %s\n",
+              participant.secured() ? "DDS Security" : "unsecured", latency_us.size(), o.samples, o.rate_hz,
               o.poll_us > 0 ? ("polled every " + std::to_string(o.poll_us) + " us").c_str() : "waitset");
   std::printf("  median %.1f us   p99 %.1f us   max %.1f us   (%s)\n", at(0.5), at(0.99), latency_us.back(),
               sub.counts().summary().c_str());
@@ -78,8 +91,8 @@ int subscriber(const Options& o) {
 
 int publisher(const Options& o) {
   using namespace mhd::dds;
-  const Participant participant(o.domain_id);
-  Publisher<mhd_dds_TrackerSample> pub(participant);
+  const Participant participant(o.domain_id, {}, identity(o, "tracker-rig7"));
+  Publisher<mhd_dds_TrackerSample> pub(participant, rig_partition(kRig));
   const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(10);
   while (pub.writer().matched_readers() == 0 && std::chrono::steady_clock::now() < give_up) {
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
@@ -114,8 +127,9 @@ int main(int argc, char** argv) {
     else if (flag == "--rate-hz") o.rate_hz = std::strtod(argv[i + 1], nullptr);
     else if (flag == "--domain-id") o.domain_id = static_cast<dds_domainid_t>(std::strtoul(argv[i + 1], nullptr, 10));
     else if (flag == "--poll-us") o.poll_us = std::strtol(argv[i + 1], nullptr, 10);
+    else if (flag == "--security") o.security_dir = argv[i + 1];
     else {
-      std::fprintf(stderr, "usage: mhd-dds-latency-bench [--samples N] [--rate-hz R] [--domain-id D] [--poll-us P]\n");
+      std::fprintf(stderr, "usage: mhd-dds-latency-bench [--samples N] [--rate-hz R] [--domain-id D] [--poll-us P] [--security DIR]\n");
       return 2;
     }
   }

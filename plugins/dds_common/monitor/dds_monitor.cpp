@@ -34,7 +34,7 @@ int monitor(const Options& o) {
   TrackerValidationLimits limits;
   limits.rig_id = o.rig_id;
   TrackerSubscriber tracker(participant, limits);
-  Subscriber<mhd_dds_RigState> state(participant);
+  Subscriber<mhd_dds_RigState> state(participant, rig_partition(o.rig_id));
 
   const auto start = std::chrono::steady_clock::now();
   auto next_print = start + std::chrono::seconds(1);

@@ -24,7 +24,10 @@ using plugin_support::guarded_open;
 
 struct Instance {
   Instance(const mhd_host& h, const dds::DdsEndpoint& c)
-      : host(h), config(c), participant(c.domain_id, c.config), publisher(participant) {}
+      : host(h),
+        config(c),
+        participant(c.domain_id, c.config, c.identity_dir),
+        publisher(participant, dds::rig_partition(c.rig_id)) {}
 
   std::atomic<bool> in_call{false};  ///< plugin_support::with_instance's
   mhd_host host;

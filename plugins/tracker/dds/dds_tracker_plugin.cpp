@@ -33,7 +33,8 @@ struct Config {
 
 struct Instance {
   Instance(const mhd_host& h, const Config& c)
-      : host(h), config(c), participant(c.endpoint.domain_id, c.endpoint.config), subscriber(participant, c.limits) {}
+      : host(h), config(c), participant(c.endpoint.domain_id, c.endpoint.config, c.endpoint.identity_dir),
+        subscriber(participant, c.limits) {}
 
   std::atomic<bool> in_call{false};  ///< plugin_support::with_instance's
   mhd_host host;
@@ -80,8 +81,10 @@ mhd_status start_instance(mhd_plugin_instance* self, mhd_error* err) {
 mhd_status stop_instance(mhd_plugin_instance* self, mhd_error* err) {
   return call(self, plugin_support::Need::Open, err, [&](Instance& s) {
     if (s.started) {
-      std::fprintf(stderr, "dds tracker (rig %u): %s\n", static_cast<unsigned>(s.config.limits.rig_id),
-                   s.subscriber.counts().summary().c_str());
+      std::fprintf(stderr, "dds tracker (rig %u): %s; writers matched: %u now, %u ever\n",
+                   static_cast<unsigned>(s.config.limits.rig_id), s.subscriber.counts().summary().c_str(),
+                   static_cast<unsigned>(s.subscriber.writer_matches().current_count),
+                   static_cast<unsigned>(s.subscriber.writer_matches().total_count));
     }
     s.started = false;
     return MHD_OK;
@@ -106,17 +109,25 @@ mhd_status tracker_wait(mhd_plugin_instance* self, double timeout_s, mhd_error* 
   });
 }
 
-// Counter names in DropReason order, after "accepted"; static strings, as the ABI asks.
-constexpr std::array<const char*, 1 + dds::kDropReasonCount> kCounterNames = {
+// Counter names in DropReason order, after "accepted", then the writers matched now and
+// ever (under DDS Security a refused writer never matches); static strings, as the ABI asks.
+constexpr std::array<const char*, 1 + dds::kDropReasonCount + 2> kCounterNames = {
     "accepted",        "dropped_unknown_rig", "dropped_non_finite",       "dropped_out_of_range",
-    "dropped_bad_quaternion", "dropped_stale", "dropped_future", "dropped_sequence_backwards"};
+    "dropped_bad_quaternion", "dropped_stale", "dropped_future", "dropped_sequence_backwards",
+    "writers_matched", "writers_matched_total"};
 
 mhd_status counters(mhd_plugin_instance* self, mhd_counter* out, size_t capacity, size_t* count, mhd_error* err) {
   return call(self, plugin_support::Need::Open, err, [&](Instance& s) {
     if (count == nullptr || (out == nullptr && capacity > 0)) throw std::invalid_argument("counters: NULL output");
     const dds::DropCounts& c = s.subscriber.counts();
+    const dds_subscription_matched_status_t matched = s.subscriber.writer_matches();
     for (std::size_t i = 0; i < kCounterNames.size() && i < capacity; ++i) {
-      out[i] = {kCounterNames[i], i == 0 ? c.accepted : c.dropped[i - 1]};
+      std::uint64_t value = 0;
+      if (i == 0) value = c.accepted;
+      else if (i <= dds::kDropReasonCount) value = c.dropped[i - 1];
+      else if (i == dds::kDropReasonCount + 1) value = matched.current_count;
+      else value = matched.total_count;
+      out[i] = {kCounterNames[i], value};
     }
     *count = kCounterNames.size();
     return MHD_OK;

@@ -1,0 +1,380 @@
+// DDS Security with real processes on loopback (docs/networking.md, "Security"): the
+// certificates are made at test time by tools/dds_security/make_rig_security.sh; rig 1's
+// haptic side is the `dds` tracker plugin through dlopen, as haptic-rig1; `mhd
+// tracker-server` publishes as tracker-rig1; intruders are dds_security_rig_writer
+// processes writing rig 1's base sensor at a marker position with higher sequence
+// numbers (the attack of issue 14). Each test takes a domain of its own.
+
+#include "../sim_backends/plugin_file.h"
+#include "dds_common/participant_security.h"
+#include "dds_test_support.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <optional>
+#include <string>
+#include <system_error>
+#include <thread>
+#include <vector>
+
+namespace mhd::dds {
+namespace {
+
+using namespace std::chrono_literals;
+using test::ChildProcess;
+
+constexpr double kMarker_m = 3.21;  // the intruders' x; the simulated tracker never sits exactly there
+
+const std::string kLoopbackUri = std::string("file://") + MHD_SOURCE_DIR + "/config/cyclonedds-loopback.xml";
+const std::string kSecureUri = kLoopbackUri + ",file://" + MHD_SOURCE_DIR + "/config/cyclonedds-secure.xml";
+
+/// make_rig_security.sh's output for rigs 1 and 2, made once per test process.
+class SecurityFiles : public ::testing::Environment {
+ public:
+  static const std::filesystem::path& dir() { return dir_; }
+  static std::filesystem::path identity(const char* name) { return dir_ / "identities" / name; }
+
+  void SetUp() override {
+    dir_ = std::filesystem::path(MHD_DDS_SECURITY_TEST_DIR) / ("certs_" + std::to_string(getpid()));
+    const std::string command = std::string(MHD_SOURCE_DIR) + "/tools/dds_security/make_rig_security.sh '" +
+                                dir_.string() + "' 1 2 > '" + dir_.string() + ".log' 2>&1";
+    ASSERT_EQ(std::system(command.c_str()), 0) << test::read_file(dir_.string() + ".log");
+  }
+  void TearDown() override {
+    std::error_code ec;
+    std::filesystem::remove_all(dir_, ec);
+    std::filesystem::remove(dir_.string() + ".log", ec);
+  }
+
+ private:
+  static inline std::filesystem::path dir_;
+};
+[[maybe_unused]] ::testing::Environment* const kSecurityFiles = ::testing::AddGlobalTestEnvironment(new SecurityFiles);
+
+double steady_s() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+/// Sets an environment variable for the children started while it lives (posix_spawn
+/// copies this process's environment).
+class ScopedEnv {
+ public:
+  ScopedEnv(const char* name, const std::string& value) : name_(name) {
+    if (const char* old = std::getenv(name)) old_ = old;
+    setenv(name, value.c_str(), 1);
+  }
+  ~ScopedEnv() {
+    if (old_) {
+      setenv(name_, old_->c_str(), 1);
+    } else {
+      unsetenv(name_);
+    }
+  }
+  ScopedEnv(const ScopedEnv&) = delete;
+  ScopedEnv& operator=(const ScopedEnv&) = delete;
+
+ private:
+  const char* name_;
+  std::optional<std::string> old_;
+};
+
+/// A child's output file, removed when the test ends.
+class OutputFile {
+ public:
+  explicit OutputFile(const char* name)
+      : path_((std::filesystem::path(MHD_DDS_SECURITY_TEST_DIR) /
+               ("out_" + std::to_string(getpid()) + "_" + name + ".log"))
+                  .string()) {}
+  ~OutputFile() {
+    std::error_code ec;
+    std::filesystem::remove(path_, ec);
+  }
+  OutputFile(const OutputFile&) = delete;
+  OutputFile& operator=(const OutputFile&) = delete;
+  [[nodiscard]] const std::string& path() const { return path_; }
+  [[nodiscard]] std::string text() const { return test::read_file(path_); }
+
+ private:
+  std::string path_;
+};
+
+/// Rig `rig`'s haptic side: the `dds` tracker plugin through dlopen, as `identity`.
+class RigServer {
+ public:
+  RigServer(std::uint32_t domain, std::uint32_t rig, const std::filesystem::path& identity)
+      : file_(MHD_DDS_TRACKER_PLUGIN) {
+    const std::string d = std::to_string(domain);
+    const std::string r = std::to_string(rig);
+    const std::string id = identity.string();
+    host_.now_s = steady_s();
+    const mhd::test::Opened opened = mhd::test::open_plugin(
+        file_.api(), host_.host_without_world, {{"domain_id", d.c_str()}, {"rig_id", r.c_str()}, {"identity_dir", id.c_str()}});
+    if (opened.instance == nullptr) throw std::runtime_error(opened.error);
+    instance_ = opened.instance;
+    mhd_error err{};
+    if (file_.api().start(instance_, &err) != MHD_OK) throw std::runtime_error(err.message);
+  }
+  ~RigServer() {
+    mhd_error err{};
+    file_.api().stop(instance_, &err);
+    file_.api().close(instance_);
+  }
+  RigServer(const RigServer&) = delete;
+  RigServer& operator=(const RigServer&) = delete;
+
+  /// Reads as the haptic loop does, every millisecond, for `duration` or until `want` came.
+  std::vector<mhd_tracker_sample> read_for(std::chrono::milliseconds duration, std::size_t want = SIZE_MAX) {
+    std::vector<mhd_tracker_sample> got;
+    mhd_tracker_sample buffer[16];
+    const auto end = std::chrono::steady_clock::now() + duration;
+    while (got.size() < want && std::chrono::steady_clock::now() < end) {
+      host_.now_s = steady_s();
+      std::size_t count = 0;
+      mhd_error err{};
+      const mhd_status status = file_.api().tracker_read(instance_, buffer, 16, &count, &err);
+      EXPECT_TRUE(status == MHD_OK || status == MHD_NO_DATA) << err.message;
+      got.insert(got.end(), buffer, buffer + count);
+      std::this_thread::sleep_for(1ms);
+    }
+    return got;
+  }
+
+  /// The plugin's counters by name (accepted, dropped_*, writers_matched, writers_matched_total).
+  std::map<std::string, std::uint64_t> counters() {
+    mhd_counter out[32];
+    std::size_t count = 0;
+    mhd_error err{};
+    EXPECT_EQ(file_.api().counters(instance_, out, 32, &count, &err), MHD_OK) << err.message;
+    std::map<std::string, std::uint64_t> by_name;
+    for (std::size_t i = 0; i < count && i < 32; ++i) by_name[out[i].name] = out[i].value;
+    return by_name;
+  }
+
+ private:
+  mhd::test::PluginFile file_;
+  mhd::test::FakeHost host_;
+  mhd_plugin_instance* instance_ = nullptr;
+};
+
+std::size_t markers(const std::vector<mhd_tracker_sample>& samples) {
+  std::size_t n = 0;
+  for (const mhd_tracker_sample& s : samples) n += s.p_T_m[0] == kMarker_m ? 1 : 0;
+  return n;
+}
+
+std::uint64_t dropped(const std::map<std::string, std::uint64_t>& c) {
+  std::uint64_t n = 0;
+  for (const auto& [name, value] : c) n += name.rfind("dropped_", 0) == 0 ? value : 0;
+  return n;
+}
+
+std::vector<std::string> tracker_server_args(std::uint32_t domain, const std::filesystem::path& identity,
+                                             double duration_s) {
+  return {MHD_DDS_TEST_TRACKER_SERVER, "tracker-server", std::string(MHD_SOURCE_DIR) + "/tests/dds/data/sim_tracker_rig1.xml",
+          "--domain-id", std::to_string(domain), "--rig-id", "1", "--duration", std::to_string(duration_s),
+          "--plugin-path", MHD_DDS_TEST_PLUGIN_DIR, "--dds-identity", identity.string()};
+}
+
+std::vector<std::string> writer_args(std::uint32_t domain, const std::string& identity, double seconds,
+                                     int strength = 10) {
+  return {MHD_DDS_SECURITY_RIG_WRITER, "--domain-id", std::to_string(domain), "--rig-id", "1",
+          "--identity", identity, "--seconds", std::to_string(seconds), "--strength", std::to_string(strength),
+          "--x-m", "3.21"};
+}
+
+/// A secured domain for this test: loopback plus config/cyclonedds-secure.xml.
+std::uint32_t secured_domain(std::uint32_t salt) {
+  const std::uint32_t domain = test::use_loopback_and_unique_domain(salt);
+  setenv("CYCLONEDDS_URI", kSecureUri.c_str(), 1);
+  unsetenv(kIdentityEnv);
+  return domain;
+}
+
+/// Rig 1's tracker server running and heard by the rig's server (the good input).
+struct SecuredRig {
+  explicit SecuredRig(std::uint32_t salt)
+      : domain(secured_domain(salt)),
+        server(domain, 1, SecurityFiles::identity("haptic-rig1")),
+        tracker(tracker_server_args(domain, SecurityFiles::identity("tracker-rig1"), 20.0), tracker_log.path()) {}
+
+  std::uint32_t domain;
+  RigServer server;
+  OutputFile tracker_log{"tracker"};
+  ChildProcess tracker;
+};
+
+TEST(DdsSecurity, SecuredTrackerServerFeedsTheRigsServerWithoutAnyRefusal) {
+  SecuredRig rig(1);
+  const std::vector<mhd_tracker_sample> got = rig.server.read_for(8s, 300);
+  ASSERT_GE(got.size(), 300u) << rig.tracker_log.text();
+  EXPECT_EQ(markers(got), 0u);
+  const auto c = rig.server.counters();
+  EXPECT_EQ(dropped(c), 0u);
+  EXPECT_EQ(c.at("writers_matched"), 1u);
+  EXPECT_EQ(c.at("writers_matched_total"), 1u);
+  EXPECT_NE(rig.tracker_log.text().find("secured as " + SecurityFiles::identity("tracker-rig1").string()),
+            std::string::npos)
+      << rig.tracker_log.text();
+  EXPECT_EQ(rig.tracker_log.text().find("DDS: unsecured"), std::string::npos) << rig.tracker_log.text();
+}
+
+TEST(DdsSecurity, UnauthenticatedParticipantPublishingRig1ReachesNothing) {
+  SecuredRig rig(2);
+  ASSERT_GE(rig.server.read_for(8s, 50).size(), 50u) << rig.tracker_log.text();
+  const OutputFile log("intruder");
+  std::optional<ChildProcess> intruder;
+  {
+    const ScopedEnv open_config("CYCLONEDDS_URI", kLoopbackUri);  // an intruder's own, unsecured configuration
+    intruder.emplace(writer_args(rig.domain, "none", 2.0), log.path());
+  }
+  const std::vector<mhd_tracker_sample> during = rig.server.read_for(2500ms);
+  ASSERT_EQ(intruder->wait_for(5s), std::optional<int>(0)) << log.text();
+  EXPECT_NE(log.text().find(kUnsecuredWarning), std::string::npos) << log.text();
+  EXPECT_NE(log.text().find("matched readers: 0"), std::string::npos) << log.text();
+  EXPECT_EQ(markers(during), 0u);
+  EXPECT_GE(during.size(), 200u) << "the real tracker kept arriving";
+  const auto c = rig.server.counters();
+  EXPECT_EQ(dropped(c), 0u);
+  EXPECT_EQ(c.at("writers_matched_total"), 1u) << "the intruder's writer never matched";
+}
+
+TEST(DdsSecurity, Rig2sPermissionsCannotPublishRig1sSamples) {
+  SecuredRig rig(3);
+  ASSERT_GE(rig.server.read_for(8s, 50).size(), 50u) << rig.tracker_log.text();
+  const OutputFile log("intruder");
+  ChildProcess intruder(writer_args(rig.domain, SecurityFiles::identity("tracker-rig2").string(), 2.0), log.path());
+  const std::vector<mhd_tracker_sample> during = rig.server.read_for(1500ms);
+  ASSERT_EQ(intruder.wait_for(5s), std::optional<int>(3)) << log.text();
+  EXPECT_NE(log.text().find("refused: dds_create_writer: Not Allowed By Security"), std::string::npos) << log.text();
+  EXPECT_EQ(markers(during), 0u);
+  const auto c = rig.server.counters();
+  EXPECT_EQ(dropped(c), 0u);
+  EXPECT_EQ(c.at("writers_matched_total"), 1u);
+}
+
+/// `name` with rig 2's real certificate and key, but permissions for rig 1 and a
+/// governance signed by a CA of the intruder's own: its local checks pass, so only the
+/// rig's side can refuse it.
+std::filesystem::path forged_identity(const char* name) {
+  const std::filesystem::path dir = SecurityFiles::dir() / "forged" / name;
+  const std::filesystem::path real = SecurityFiles::identity("tracker-rig2");
+  std::filesystem::create_directories(dir);
+  for (const char* f : {"identity_ca.pem", "cert.pem", "key.pem"}) {
+    std::filesystem::copy_file(real / f, dir / f, std::filesystem::copy_options::overwrite_existing);
+  }
+  std::string permissions = test::read_file((SecurityFiles::identity("tracker-rig1") / "permissions.xml").string());
+  const std::string subject = "CN=tracker-rig1";
+  permissions.replace(permissions.find(subject), subject.size(), "CN=tracker-rig2");
+  std::ofstream(dir / "permissions.xml") << permissions;
+  const std::string d = "'" + dir.string() + "'";
+  const std::string gov = "'" + (SecurityFiles::dir() / "governance.xml").string() + "'";
+  const std::string command =
+      "(cd " + d + " && openssl ecparam -name prime256v1 -genkey -noout -out ca_key.pem"
+      " && openssl req -x509 -new -key ca_key.pem -days 10 -subj /CN=intruder -out permissions_ca.pem"
+      " && openssl smime -sign -text -in " + gov + " -out governance.p7s -signer permissions_ca.pem -inkey ca_key.pem"
+      " && openssl smime -sign -text -in permissions.xml -out permissions.p7s -signer permissions_ca.pem"
+      " -inkey ca_key.pem) > " + d + "/forge.log 2>&1";
+  EXPECT_EQ(std::system(command.c_str()), 0) << test::read_file((dir / "forge.log").string());
+  return dir;
+}
+
+TEST(DdsSecurity, PermissionsForgedForRig1AreRefusedByTheRig) {
+  SecuredRig rig(4);
+  ASSERT_GE(rig.server.read_for(8s, 50).size(), 50u) << rig.tracker_log.text();
+  const OutputFile log("intruder");
+  ChildProcess intruder(writer_args(rig.domain, forged_identity("tracker-rig2").string(), 2.0), log.path());
+  const std::vector<mhd_tracker_sample> during = rig.server.read_for(2500ms);
+  ASSERT_EQ(intruder.wait_for(5s), std::optional<int>(0)) << log.text();
+  EXPECT_NE(log.text().find("matched readers: 0"), std::string::npos) << "its own side let it write: " << log.text();
+  EXPECT_EQ(markers(during), 0u);
+  EXPECT_GE(during.size(), 200u);
+  const auto c = rig.server.counters();
+  EXPECT_EQ(dropped(c), 0u);
+  EXPECT_EQ(c.at("writers_matched_total"), 1u);
+}
+
+TEST(DdsSecurity, AWeakerSecondWriterForRig1DoesNotInterleaveAndTakesOverOnlyWhenTheTrackerLeaves) {
+  SecuredRig rig(5);
+  ASSERT_GE(rig.server.read_for(8s, 50).size(), 50u) << rig.tracker_log.text();
+  const OutputFile log("second");
+  // Authorised for rig 1 (tracker-rig1), weaker than the tracker server's 10.
+  ChildProcess second(writer_args(rig.domain, SecurityFiles::identity("tracker-rig1").string(), 6.0, 5), log.path());
+  const std::vector<mhd_tracker_sample> while_owned = rig.server.read_for(2500ms);
+  EXPECT_EQ(markers(while_owned), 0u);
+  EXPECT_GE(while_owned.size(), 200u);
+  auto c = rig.server.counters();
+  EXPECT_EQ(c.at("writers_matched"), 2u) << "the second writer is authorised and matched";
+  EXPECT_EQ(c.at("dropped_sequence_backwards"), 0u);
+
+  // The dual: once the stronger writer is gone, the same writer is heard. SIGKILL: no
+  // goodbye on the wire, so the owner is given up when its 0.5 s liveliness lease ends.
+  rig.tracker.kill_now();
+  const auto killed = std::chrono::steady_clock::now();
+  std::vector<mhd_tracker_sample> after;
+  while (markers(after) == 0 && std::chrono::steady_clock::now() < killed + 3s) {
+    const std::vector<mhd_tracker_sample> more = rig.server.read_for(10ms);
+    after.insert(after.end(), more.begin(), more.end());
+  }
+  const double takeover_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - killed).count();
+  ASSERT_GT(markers(after), 0u) << log.text();
+  EXPECT_GT(takeover_s, 0.3) << "not before the lease ran out";
+  EXPECT_LT(takeover_s, 1.5);
+  std::cout << "weaker writer heard " << takeover_s << " s after the owner was killed\n";
+  EXPECT_GT(markers(rig.server.read_for(1000ms)), 50u);
+  ASSERT_EQ(second.wait_for(8s), std::optional<int>(0)) << log.text();
+}
+
+TEST(DdsSecurity, UnsecuredProcessSaysSoAndSecureConfigurationWithoutIdentityRefusesToStart) {
+  const std::uint32_t domain = test::use_loopback_and_unique_domain(6);
+  unsetenv(kIdentityEnv);
+  {
+    const OutputFile log("open");
+    ChildProcess open_writer({MHD_DDS_SECURITY_RIG_WRITER, "--domain-id", std::to_string(domain), "--rig-id", "1",
+                              "--identity", "none", "--seconds", "0.2"},
+                             log.path());
+    ASSERT_EQ(open_writer.wait_for(10s), std::optional<int>(0)) << log.text();
+    EXPECT_NE(log.text().find(std::string(kUnsecuredWarning) + "\n"), std::string::npos) << log.text();
+  }
+  const ScopedEnv secure("CYCLONEDDS_URI", kSecureUri);
+  const OutputFile log("refused");
+  ChildProcess refused({MHD_DDS_SECURITY_RIG_WRITER, "--domain-id", std::to_string(domain), "--rig-id", "1",
+                        "--identity", "none", "--seconds", "0.2"},
+                       log.path());
+  ASSERT_EQ(refused.wait_for(10s), std::optional<int>(1)) << log.text();
+  EXPECT_NE(log.text().find("no DDS identity given: if the Cyclone configuration has a Security section, such as "
+                            "config/cyclonedds-secure.xml, set MHD_DDS_IDENTITY"),
+            std::string::npos)
+      << log.text();
+  EXPECT_EQ(log.text().find(kUnsecuredWarning), std::string::npos) << "it never ran unsecured: " << log.text();
+}
+
+TEST(DdsSecurity, AMissingIdentityFileIsNamed) {
+  const std::uint32_t domain = secured_domain(7);
+  const std::filesystem::path dir = SecurityFiles::dir() / "no_key";
+  std::filesystem::copy(SecurityFiles::identity("haptic-rig1"), dir);
+  std::filesystem::remove(dir / "key.pem");
+  try {
+    RigServer server(domain, 1, dir);
+    FAIL() << "opened without a key";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "DDS identity '" + dir.string() + "': cannot read " + (dir / "key.pem").string() + " (no such file)");
+  }
+  try {
+    RigServer server(domain, 1, dir / "nowhere");
+    FAIL() << "opened without an identity folder";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), "DDS identity '" + (dir / "nowhere").string() +
+                                         "' is not a folder (make one with tools/dds_security/make_rig_security.sh)");
+  }
+}
+
+}  // namespace
+}  // namespace mhd::dds
