@@ -144,47 +144,10 @@ TEST(HapticServer, CountsTheTicksWhoseProxyRanOutOfItsWorkBudget) {
   EXPECT_LE(r.proxy_budget_exhausted_ticks, r.status.ticks);
 }
 
-TEST(HapticServer, DeviceReturningNanEndsTheRunWithZeroForceAndTheBaseStopped) {
-  const fs::path dir = temp_dir();
-  const fs::path device_log = dir / "device.log", base_log = dir / "base.log";
-  const fs::path file = write_scene(dir, fmt::format(R"(
-    <plugin kind="device" name="fault_device">
-      <param name="fail_after_reads" value="200"/>
-      <param name="fault" value="nan"/>
-      <param name="command_log" value="{}"/>
-    </plugin>
-    <plugin kind="tracker" name="sim_is900"/>
-    <plugin kind="base" name="fault_base">
-      <param name="command_log" value="{}"/>
-    </plugin>)", device_log.string(), base_log.string()));
-  Loaded l = load(file);
-  ASSERT_TRUE(l.scene);
-  auto build = HapticServer::open(*l.description, *l.scene, options_for(30.0));
-  ASSERT_TRUE(build.server);
-  const ServerReport r = build.server->run();
-  ASSERT_TRUE(r.error);
-  EXPECT_EQ(*r.error, fmt::format("{}:{}: error: plugin 'fault_device': device_read returned a non-finite "
-                                  "joint_angles_rad[1]",
-                                  file.string(), scene_line_of(file, "name=\"fault_device\"")));
-  EXPECT_EQ(r.ended_by, RunEnd::Fault);  // not by the 30 s duration
-  EXPECT_TRUE(r.zero_force_sent);
-  EXPECT_TRUE(r.base_stop_sent);
-  const CommandLog device = read_log(device_log);
-  EXPECT_GT(device.count, 1u);
-  EXPECT_EQ(device.a, 0.0);
-  EXPECT_EQ(device.b, 0.0);
-  EXPECT_EQ(device.c, 0.0);
-  const CommandLog base = read_log(base_log);
-  EXPECT_GT(base.count, 0u);
-  EXPECT_EQ(base.a, 0.0);
-  EXPECT_EQ(base.b, 0.0);
-  EXPECT_EQ(base.c, 0.0);
-}
-
 /// Runs `file` to its end and checks, from the plugins' own logs, that the device's last
 /// command was zero torque and the base's last a zero twist.
 void expect_safe_stop_after(const ServerReport& r, const fs::path& device_log, const fs::path& base_log) {
-  EXPECT_EQ(r.ended_by, RunEnd::Fault);  // `mhd run` exits 3
+  EXPECT_EQ(r.ended_by, RunEnd::Fault);  // `mhd run` exits 3, not ended by the 30 s duration
   EXPECT_TRUE(r.zero_force_sent);
   EXPECT_TRUE(r.base_stop_sent);
   const CommandLog device = read_log(device_log);
@@ -199,29 +162,61 @@ void expect_safe_stop_after(const ServerReport& r, const fs::path& device_log, c
   EXPECT_EQ(base.c, 0.0);
 }
 
-TEST(HapticServer, JointAnglesOf1e30AreAFaultNamingTheDevice) {
+/// fault_device turning to `fault` (nan, huge) after 200 reads, with sim_is900 and
+/// fault_base, both logging their commands; the run's report and the scene's line.
+struct DeviceFaultRun {
+  ServerReport report;
+  fs::path file, device_log, base_log;
+  int device_line = 0;
+};
+
+DeviceFaultRun run_device_fault(const std::string& fault) {
+  DeviceFaultRun run;
   const fs::path dir = temp_dir();
-  const fs::path device_log = dir / "device.log", base_log = dir / "base.log";
-  const fs::path file = write_scene(dir, fmt::format(R"(
+  run.device_log = dir / "device.log";
+  run.base_log = dir / "base.log";
+  run.file = write_scene(dir, fmt::format(R"(
     <plugin kind="device" name="fault_device">
       <param name="fail_after_reads" value="200"/>
-      <param name="fault" value="huge"/>
+      <param name="fault" value="{}"/>
       <param name="command_log" value="{}"/>
     </plugin>
     <plugin kind="tracker" name="sim_is900"/>
     <plugin kind="base" name="fault_base">
       <param name="command_log" value="{}"/>
-    </plugin>)", device_log.string(), base_log.string()));
-  Loaded l = load(file);
-  ASSERT_TRUE(l.scene);
+    </plugin>)", fault, run.device_log.string(), run.base_log.string()));
+  run.device_line = scene_line_of(run.file, "name=\"fault_device\"");
+  Loaded l = load(run.file);
+  if (!l.scene) {
+    ADD_FAILURE() << "scene did not load";
+    return run;
+  }
   auto build = HapticServer::open(*l.description, *l.scene, options_for(30.0));
-  ASSERT_TRUE(build.server);
-  const ServerReport r = build.server->run();
-  ASSERT_TRUE(r.error);
-  EXPECT_EQ(*r.error, fmt::format("{}:{}: error: plugin 'fault_device': device_read returned joint angles "
-                                  "(0, 1e+30, 0.2) rad, outside the joint limits by more than 0.35 rad",
-                                  file.string(), scene_line_of(file, "name=\"fault_device\"")));
-  expect_safe_stop_after(r, device_log, base_log);
+  if (!build.server) {
+    ADD_FAILURE() << "server did not open";
+    return run;
+  }
+  run.report = build.server->run();
+  return run;
+}
+
+TEST(HapticServer, DeviceReturningNanEndsTheRunWithZeroForceAndTheBaseStopped) {
+  const DeviceFaultRun run = run_device_fault("nan");
+  ASSERT_TRUE(run.report.error);
+  EXPECT_EQ(*run.report.error, fmt::format("{}:{}: error: plugin 'fault_device': device_read returned a non-finite "
+                                           "joint_angles_rad[1]",
+                                           run.file.string(), run.device_line));
+  expect_safe_stop_after(run.report, run.device_log, run.base_log);
+  EXPECT_GT(read_log(run.device_log).count, 1u);
+}
+
+TEST(HapticServer, JointAnglesOf1e30AreAFaultNamingTheDevice) {
+  const DeviceFaultRun run = run_device_fault("huge");
+  ASSERT_TRUE(run.report.error);
+  EXPECT_EQ(*run.report.error, fmt::format("{}:{}: error: plugin 'fault_device': device_read returned joint angles "
+                                           "(0, 1e+30, 0.2) rad, outside the joint limits by more than 0.35 rad",
+                                           run.file.string(), run.device_line));
+  expect_safe_stop_after(run.report, run.device_log, run.base_log);
 }
 
 TEST(HapticServer, ABaseTracked1e9MetresAwayIsAFaultNamingTheTracker) {
