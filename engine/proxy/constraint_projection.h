@@ -16,7 +16,7 @@ struct HalfSpace {
 };
 
 /// Largest number of half-spaces project_onto_half_spaces accepts.
-inline constexpr int kMaxHalfSpaces = 6;
+inline constexpr int kMaxHalfSpaces = 8;
 
 /// Nearest point to `goal` that satisfies every half-space within `tolerance`.
 /// Returns nullopt if none is found (numerically empty or degenerate set);
