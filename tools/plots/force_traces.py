@@ -79,7 +79,7 @@ def plot_forces(data, out, title):
     has_cmd = all(f"cmd_force_{a}_N" in data for a in AXES)
     spans = contact_spans(t, data["contact"]) if "contact" in data else []
     startup = contact_spans(t, data["startup"])
-    fig, axes = plt.subplots(3, 1, figsize=(10, 7.5), sharex=True)
+    fig, axes = plt.subplots(3, 1, figsize=(12, 7.5), sharex=True)
     for ax, a in zip(axes, AXES):
         for k, (t0, t1) in enumerate(startup):
             ax.axvspan(t0, t1, facecolor="tab:orange", alpha=0.2, hatch="//", edgecolor="tab:orange", linewidth=0,
@@ -91,7 +91,7 @@ def plot_forces(data, out, title):
             ax.plot(t, data[f"cmd_force_{a}_N"], color="black", linewidth=0.8, linestyle="--", label="commanded")
         ax.set_ylabel(f"F{a} (N)")
         ax.grid(True, alpha=0.3)
-        ax.legend(loc="upper right", fontsize=8)
+        ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8)  # outside: never over a trace
     axes[-1].set_xlabel("time (s)")
     axes[0].set_title(f"{title}: force on the hand per axis (world frame)")
     fig.tight_layout()
