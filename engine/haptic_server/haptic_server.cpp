@@ -263,6 +263,7 @@ ServerReport HapticServer::run() {
   report.tick_max_us = m.tick_histogram.max_us();
   report.contact_ticks = m.contact_ticks.load();
   report.proxy_budget_exhausted_ticks = m.proxy_budget_exhausted_ticks.load();
+  report.startup_ticks = m.startup_ticks;
   report.stale_ticks = m.safety_counters.stale_ticks;
   report.fault_ticks = m.safety_counters.fault_ticks;
   report.hip_jumps = m.safety_counters.jumps;

@@ -87,6 +87,8 @@ struct ServerReport {
   double tick_median_us = 0.0, tick_p99_us = 0.0, tick_p999_us = 0.0, tick_max_us = 0.0;
   std::uint64_t contact_ticks = 0;
   std::uint64_t proxy_budget_exhausted_ticks = 0;  ///< ticks whose proxy ran out of its work budget
+  /// Ticks before the first base pose (no HIP, no force): a normal start, not a fault.
+  std::uint64_t startup_ticks = 0;
   std::uint64_t stale_ticks = 0, fault_ticks = 0, hip_jumps = 0, clamped_ticks = 0;
   std::uint64_t base_commands = 0, base_stops = 0;  ///< commands sent; of them zero by a guard stop
   BaseStopCounts base_stops_by_cause;  ///< stop episodes by cause, and keep-out deflections

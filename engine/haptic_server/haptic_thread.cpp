@@ -126,6 +126,7 @@ void HapticServer::Impl::haptic_thread() {
   // Safe state: zero torque, whatever ended the loop.
   zero_force_sent = send_zero_torque(device->instance, host);
   safety_counters = tick.safety().counters();
+  startup_ticks = tick.startup_ticks();
 }
 
 }  // namespace mhd

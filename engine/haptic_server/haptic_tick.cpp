@@ -75,8 +75,16 @@ HapticTickOutput HapticTick::render(double t_s, double dt_s, const Eigen::Vector
     out.clamped = s.clamped;
     out.torques_Nm = rig_.joint_torques_Nm(X_W_robot, q_rad, out.force_W_N);
     if (!out.torques_Nm.allFinite()) out.torques_Nm.setZero();
+  } else if (!base.has_value() && q_rad.allFinite()) {
+    // Start-up: no base pose yet, so no HIP and no force. Normal, not a fault; the safety
+    // stage starts from zero gain when the first pose arrives.
+    ++startup_ticks_;
+    safety_.reset();
+    out.startup = true;
+    out.hip_W_m.setConstant(std::numeric_limits<double>::quiet_NaN());
+    out.proxy_W_m = out.hip_W_m;
   } else {
-    // No base pose yet, or the device gave no angles: nothing is known, nothing is pushed.
+    // The device gave no angles: nothing is known, nothing is pushed; a fault.
     safety_in.force_W_N.setConstant(std::numeric_limits<double>::quiet_NaN());
     safety_in.hip_W_m.setConstant(std::numeric_limits<double>::quiet_NaN());
     const ForceSafetyOutput s = safety_.apply(safety_in);

@@ -42,6 +42,7 @@ struct HapticTickOutput {
   double safety_gain = 0.0;
   int contact_object = -1;
   bool in_contact = false;
+  bool startup = false;  ///< no base pose yet (start-up): no HIP, no force; neither stale nor a fault
   bool stale = false;
   bool jump = false;
   bool clamped = false;
@@ -70,6 +71,9 @@ class HapticTick {
                           double tracker_age_s) noexcept;
 
   [[nodiscard]] const ForceSafety& safety() const noexcept { return safety_; }
+  /// Ticks with no base pose yet (before the first tracker sample): counted here, not by
+  /// the safety stage, so a normal start is not reported as stale or faulty.
+  [[nodiscard]] std::uint64_t startup_ticks() const noexcept { return startup_ticks_; }
   [[nodiscard]] const BasePosePredictor& predictor() const noexcept { return predictor_; }
   [[nodiscard]] const ProxyState& proxy_state() const noexcept { return proxy_; }
 
@@ -81,6 +85,7 @@ class HapticTick {
   ForceSafety safety_;
   ProxyState proxy_;
   bool has_measurement_ = false;
+  std::uint64_t startup_ticks_ = 0;
   double last_measurement_t_s_ = 0.0;
   BasePose last_measurement_;
 };

@@ -106,6 +106,7 @@ struct HapticServer::Impl {
   // Filled by the threads before they end.
   TickHistogram tick_histogram;
   ForceSafetyCounters safety_counters;
+  std::uint64_t startup_ticks = 0;  ///< ticks before the first base pose (HapticTick::startup_ticks)
   std::optional<CsvRecording> recording;  ///< opened by run(), written by the recorder thread
   bool zero_force_sent = false;
   std::atomic<bool> base_stop_sent{false};  ///< by the io thread, or run()'s when the io thread is stuck

@@ -1,5 +1,6 @@
 #include "mesh_io/mesh_cache.h"
 
+#include "mesh_io/mesh_cache_eviction.h"
 #include "mesh_io/regular_file.h"
 
 #include <fcntl.h>
@@ -318,7 +319,8 @@ std::optional<MeshCacheKey> mesh_cache_key(const std::filesystem::path& file, co
   return MeshCacheKey{h.low64, h.high64};
 }
 
-MeshCache::MeshCache(std::optional<std::filesystem::path> dir) : dir_(std::move(dir)) {
+MeshCache::MeshCache(std::optional<std::filesystem::path> dir)
+    : dir_(std::move(dir)), limit_bytes_(mesh_cache_limit_bytes()) {
   if (!dir_) return;
   std::error_code ec;
   std::filesystem::create_directories(*dir_, ec);
@@ -358,6 +360,9 @@ CachedMesh MeshCache::load(const std::filesystem::path& file, const Eigen::Vecto
       result.outcome = CacheOutcome::Hit;
       result.bvh = std::shared_ptr<const MeshBvh>(std::move(bvh));
       spdlog::debug("mesh cache: hit for '{}' ({})", file.string(), result.cache_file.string());
+      // Recently used: eviction goes by modification time. Best effort (read-only folder).
+      std::error_code touch_ec;
+      std::filesystem::last_write_time(result.cache_file, std::filesystem::file_time_type::clock::now(), touch_ec);
       return result;
     }
     if (why.empty()) {
@@ -497,6 +502,11 @@ void MeshCache::store(const std::filesystem::path& target, const MeshCacheKey& k
   ++stats_.writes;
   result.written = true;
   spdlog::debug("mesh cache: wrote '{}'", target.string());
+  const MeshCacheRemoval evicted = evict_mesh_cache(*dir_, limit_bytes_, target);
+  if (evicted.removed > 0)
+    spdlog::info("mesh cache: removed {} least recently used entries ({:.1f} MiB) to stay within {:.0f} MiB",
+                 evicted.removed, static_cast<double>(evicted.freed_bytes) / 1048576.0,
+                 static_cast<double>(limit_bytes_) / 1048576.0);
 }
 
 }  // namespace mhd

@@ -8,7 +8,9 @@
 // checksum), then vertices (double), triangles (uint32), vertex normals (double) and
 // Bullet's serialized BVH, each section 16-byte aligned. Files are written to a temp
 // file and renamed into place; a file that fails any check (size, counts, checksums,
-// key, index ranges, BVH leaves) is ignored and rebuilt, never trusted.
+// key, index ranges, BVH leaves) is ignored and rebuilt, never trusted. The folder is kept
+// under a size limit (mesh_cache_eviction.h): a hit touches its file, and each write
+// removes the least recently used entries beyond the limit.
 
 #include "collision/mesh_bvh.h"
 #include "geometry/triangle_mesh.h"
@@ -91,6 +93,8 @@ class MeshCache {
   [[nodiscard]] const std::optional<std::filesystem::path>& dir() const { return dir_; }
   [[nodiscard]] bool writable() const { return writable_; }
   [[nodiscard]] const MeshCacheStats& stats() const { return stats_; }
+  /// Size limit of the folder (default mesh_cache_limit_bytes()), applied after each write.
+  void set_limit_bytes(std::uint64_t limit_bytes) { limit_bytes_ = limit_bytes; }
   /// Where the entry for `key` lives (requires dir()).
   [[nodiscard]] std::filesystem::path file_for(const MeshCacheKey& key) const;
 
@@ -99,6 +103,7 @@ class MeshCache {
 
   std::optional<std::filesystem::path> dir_;
   bool writable_ = false;
+  std::uint64_t limit_bytes_;
   MeshCacheStats stats_;
 };
 

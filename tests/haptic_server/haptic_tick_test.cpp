@@ -76,7 +76,18 @@ TEST(HapticTick, NoForceAndNoHipBeforeTheFirstBasePose) {
   EXPECT_FALSE(out.hip_W_m.allFinite());
   EXPECT_EQ(out.force_W_N, Eigen::Vector3d::Zero());
   EXPECT_EQ(out.torques_Nm, Eigen::Vector3d::Zero());
-  EXPECT_TRUE(out.stale);
+  // Start-up, counted apart: not stale tracking and not a fault.
+  EXPECT_TRUE(out.startup);
+  EXPECT_FALSE(out.stale);
+  EXPECT_EQ(tick.startup_ticks(), 1u);
+  EXPECT_EQ(tick.safety().counters().stale_ticks, 0u);
+  EXPECT_EQ(tick.safety().counters().fault_ticks, 0u);
+  // The first pose ends start-up.
+  ASSERT_NE(tick.add_base_sensor_sample(0.001, f.rig->X_is900_base_sensor_from_base({})), BaseSampleStatus::Invalid);
+  const auto tracked = tick.tick(0.002, 0.001, kQ);
+  EXPECT_FALSE(tracked.startup);
+  EXPECT_TRUE(tracked.hip_W_m.allFinite());
+  EXPECT_EQ(tick.startup_ticks(), 1u);
 }
 
 TEST(HapticTick, HipFollowsTheRigChainFromTheTrackedBasePose) {
@@ -211,6 +222,9 @@ TEST(HapticTick, NonFiniteJointAnglesGiveZeroForce) {
   const auto out = tick.tick(0.001, 0.001, nan_q);
   EXPECT_EQ(out.force_W_N, Eigen::Vector3d::Zero());
   EXPECT_EQ(out.torques_Nm, Eigen::Vector3d::Zero());
+  EXPECT_EQ(tick.safety().counters().fault_ticks, 1u);  // a fault, not start-up
+  EXPECT_EQ(tick.startup_ticks(), 0u);
+  EXPECT_FALSE(out.startup);
 }
 
 }  // namespace

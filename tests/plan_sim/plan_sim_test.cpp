@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <filesystem>
 #include <fstream>
@@ -74,26 +75,21 @@ TEST(PlanSim, TableFormats) {
   EXPECT_NE(text.find("1.000 1.500  1.50"), std::string::npos) << text;
 }
 
-TEST(PlanSim, WritesAPng) {
+TEST(PlanSim, MapCsvDescribesTheSceneAndListsFollowedCells) {
   MapSpec spec;
   spec.cell_m = 0.1;
-  const FollowMap map = simulate_map(PlannerKind::Predictive, PlannerSettings{}, spec);
-  const Image img = render_map(map, PlannerSettings{}, MapStyle{3});
-  EXPECT_EQ(img.width, 90);
-  EXPECT_EQ(img.rgb.size(), 90u * 90u * 3u);
-  const Image tiled = tile({img, img, img}, 2, 4);
-  EXPECT_EQ(tiled.width, 2 * 90 + 3 * 4);
-  EXPECT_EQ(tiled.height, 2 * 90 + 3 * 4);
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mhd_plan_sim_test";
-  std::filesystem::create_directories(dir);
-  const std::filesystem::path file = dir / "map.png";
-  ASSERT_EQ(write_png(file, img), "");
-  std::ifstream in(file, std::ios::binary);
-  std::array<char, 8> sig{};
-  in.read(sig.data(), 8);
-  EXPECT_EQ(std::string(sig.data() + 1, 3), "PNG");
-  EXPECT_NE(write_png(dir / "no_such_dir" / "x.png", img), "");
-  std::filesystem::remove_all(dir);
+  const PlannerSettings settings;
+  const FollowMap map = simulate_map(PlannerKind::Predictive, settings, spec);
+  ASSERT_GT(map.followed_cells, 0);
+  const std::string csv = map_csv(map, PlannerKind::Predictive, settings, spec);
+  EXPECT_EQ(csv.rfind("# mhd plan-sim follow map", 0), 0u);
+  EXPECT_NE(csv.find("\n# planner=predictive\n"), std::string::npos);
+  EXPECT_NE(csv.find("\n# cell_m=0.1\n"), std::string::npos);
+  EXPECT_NE(csv.find("\n# base_start_x_m=0.675\n"), std::string::npos) << csv;
+  const auto header = csv.find("\nx_m,z_m,follow_time_s\n");
+  ASSERT_NE(header, std::string::npos);
+  const std::string body = csv.substr(header + 23);
+  EXPECT_EQ(static_cast<int>(std::count(body.begin(), body.end(), '\n')), map.followed_cells);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // registered here by its add_*_command(app); a subcommand's callback does the work
 // and reports failure through mhd::cli::exit_with (command_exit.h).
 
+#include "cache_command.h"
 #include "calibrate_command.h"
 #include "command_exit.h"
 #include "plan_sim_command.h"
@@ -48,6 +49,7 @@ int main(int argc, char** argv) {
   add_run_command(app);
   add_plugins_command(app);
   add_plan_sim_command(app);
+  add_cache_command(app);
   add_calibrate_command(app);
   add_replay_command(app);
   add_viewer_command(app);

@@ -30,7 +30,7 @@ struct PlanSimOptions {
   double cell_mm = 25.0;
   double half_size_m = 1.5;
   std::vector<std::string> sets;
-  bool no_png = false;
+  bool no_maps = false;
 };
 
 int fail(const std::string& message) {
@@ -63,13 +63,17 @@ int run(const PlanSimOptions& o) {
   std::error_code ec;
   std::filesystem::create_directories(o.out, ec);
   if (ec) return fail("cannot create '" + o.out + "': " + ec.message());
+  const std::filesystem::path maps_dir = std::filesystem::path(o.out) / "maps";
+  if (!o.no_maps) {
+    std::filesystem::create_directories(maps_dir, ec);
+    if (ec) return fail("cannot create '" + maps_dir.string() + "': " + ec.message());
+  }
 
   std::vector<mhd::plan_sim::TableRow> rows;
   double simulated_s = 0.0;
   const auto start = std::chrono::steady_clock::now();
   for (const mhd::PlannerKind kind : kinds) {
     for (const double facing : o.facing_deg) {
-      std::vector<mhd::plan_sim::Image> tiles;
       for (const double v : o.v_mps) {
         for (const double w : o.omega_degps) {
           mhd::PlannerSettings settings = parsed.settings;
@@ -84,20 +88,13 @@ int run(const PlanSimOptions& o) {
           simulated_s += spec.horizon_s * map.cells_per_side * map.cells_per_side;
           rows.push_back({kind, spec.facing_change_rad, v, w * kDeg, map.followed_area_m2(), map.followed_cells,
                           map.base_entries});
-          if (o.no_png) continue;
-          tiles.push_back(mhd::plan_sim::render_map(map, settings));
+          if (o.no_maps) continue;
           const std::filesystem::path file =
-              std::filesystem::path(o.out) / fmt::format("planner_{}_f{:.0f}_v{:.1f}_w{:.0f}.png",
-                                                         mhd::to_string(kind), facing, v, w);
-          if (const std::string err = mhd::plan_sim::write_png(file, tiles.back()); !err.empty()) return fail(err);
+              maps_dir / fmt::format("planner_{}_f{:.0f}_v{:.1f}_w{:.0f}.csv", mhd::to_string(kind), facing, v, w);
+          std::ofstream map_out(file);
+          map_out << mhd::plan_sim::map_csv(map, kind, settings, spec);
+          if (!map_out) return fail("cannot write '" + file.string() + "'");
         }
-      }
-      if (!o.no_png) {
-        const std::filesystem::path file =
-            std::filesystem::path(o.out) / fmt::format("planner_{}_f{:.0f}.png", mhd::to_string(kind), facing);
-        const int columns = static_cast<int>(o.omega_degps.size());
-        if (const std::string err = mhd::plan_sim::write_png(file, mhd::plan_sim::tile(tiles, columns)); !err.empty())
-          return fail(err);
       }
     }
   }
@@ -112,7 +109,9 @@ int run(const PlanSimOptions& o) {
   for (const auto& r : rows) entries += r.base_entries;
   fmt::print("simulated {:.0f} s of planner time in {:.2f} s ({:.0f}x real time); base moved into the user: {}\n",
              simulated_s, wall_s, simulated_s / wall_s, entries);
-  fmt::print("wrote {}{}\n", csv.string(), o.no_png ? "" : " and the PNG maps in " + o.out);
+  fmt::print("wrote {}{}\n", csv.string(), o.no_maps ? "" : " and the follow maps in " + maps_dir.string());
+  // The pictures need a plotting library: matplotlib draws them from the CSVs.
+  if (!o.no_maps) fmt::print("draw them: /usr/bin/python3 tools/plots/plan_sim_maps.py {}\n", o.out);
   return 0;
 }
 
@@ -122,7 +121,7 @@ void add_plan_sim_command(CLI::App& app) {
   auto o = std::make_shared<PlanSimOptions>();
   CLI::App* cmd = app.add_subcommand(
       "plan-sim", "Planner simulator (thesis ch. 3.6): maps of user moves the base follows within 1 s");
-  cmd->add_option("--out", o->out, "Output folder for the CSV table and PNG maps")->capture_default_str();
+  cmd->add_option("--out", o->out, "Output folder for the area table and the follow maps (CSV)")->capture_default_str();
   cmd->add_option("--planner", o->planner, "seed, predictive or both")->capture_default_str();
   cmd->add_option("--v-mps", o->v_mps, "Maximum linear speeds")->capture_default_str();
   cmd->add_option("--omega-degps", o->omega_degps, "Maximum angular speeds")->capture_default_str();
@@ -131,6 +130,6 @@ void add_plan_sim_command(CLI::App& app) {
   cmd->add_option("--half-size-m", o->half_size_m, "The grid covers +-this around the user's start")
       ->capture_default_str();
   cmd->add_option("--set", o->sets, "Planner setting NAME=VALUE (e.g. step_angle_deg=30)")->type_name("NAME=VALUE");
-  cmd->add_flag("--no-png", o->no_png, "Only the table");
+  cmd->add_flag("--no-maps", o->no_maps, "Only the area table, no follow-map CSVs");
   cmd->callback([o] { mhd::cli::exit_with(run(*o)); });
 }

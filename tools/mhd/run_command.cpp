@@ -161,8 +161,12 @@ void print_summary(const RunOptions& opt, const mhd::CompiledScene& scene, const
   fmt::print("haptic thread: {}\n", r.haptic_scheduling);
   fmt::print("tick (device read to device write): median {:.1f} us, p99 {:.1f} us, p99.9 {:.1f} us, max {:.1f} us\n",
              r.tick_median_us, r.tick_p99_us, r.tick_p999_us, r.tick_max_us);
-  fmt::print("contact ticks {}; safety: {} stale, {} fault, {} HIP jumps, {} clamped ticks\n", r.contact_ticks,
-             r.stale_ticks, r.fault_ticks, r.hip_jumps, r.clamped_ticks);
+  fmt::print("contact ticks {}; safety: {} start-up, {} stale, {} fault, {} HIP jumps, {} clamped ticks\n",
+             r.contact_ticks, r.startup_ticks, r.stale_ticks, r.fault_ticks, r.hip_jumps, r.clamped_ticks);
+  // Each count in words: a reader should not have to know the safety stage to read them.
+  fmt::print("  start-up: before the first tracker sample, no force (normal); stale: tracking too old, force "
+             "faded out; fault: non-finite angles, HIP or force, force cut; HIP jump: force step faded in; "
+             "clamped: force cut to the device's limit\n");
   fmt::print("proxy work budget ({} sweeps, {} triangle tests per tick): exhausted on {} ticks\n",
              scene.proxy.max_sweeps_per_tick, scene.proxy.max_triangle_tests_per_tick,
              r.proxy_budget_exhausted_ticks);

@@ -3,6 +3,7 @@
 #include "command_exit.h"
 #include "scene_compiler/scene_compiler.h"
 #include "scene_xml/scene_reader.h"
+#include "world_size_check.h"
 
 #include <fmt/core.h>
 #include <spdlog/spdlog.h>
@@ -39,6 +40,17 @@ bool compile_and_report(const std::string& file, const mhd::SceneDescription& sc
   if (!compiled.ok()) return false;
   fmt::print("{}: ok ({} objects, {} triangles)\n", file, scene.objects.size(),
              compiled.scene->triangle_count);
+  const mhd::cli::WorldSize size = mhd::cli::check_world_size(scene, *compiled.scene);
+  for (const mhd::cli::ObjectExtents& o : size.objects) {
+    fmt::print("  {}: {:.4g} x {:.4g} x {:.4g} m (x, y, z in its own frame)\n", o.name, o.size_m.x(), o.size_m.y(),
+               o.size_m.z());
+  }
+  if (size.warning) {
+    // Diagnostic::to_string says "error"; this one only warns.
+    const mhd::Diagnostic& w = *size.warning;
+    fmt::print(stderr, "{}{}: warning: {}\n", w.where.file, w.where.line > 0 ? fmt::format(":{}", w.where.line) : "",
+               w.message);
+  }
   return true;
 }
 
@@ -72,7 +84,9 @@ void add_validate_command(CLI::App& app) {
                      "Neither read nor write the BVH cache while compiling");
   validate->footer(
       "Diagnostics go to stderr as FILE:LINE: error: MESSAGE; each good file prints\n"
-      "FILE: ok (N objects, M triangles). Exit status 0 if every file is good, else 1.");
+      "FILE: ok (N objects, M triangles), then each object's extents in metres. A world whose\n"
+      "objects are all under 1 cm or all over 1 km gets FILE:LINE: warning: (a unit mistake?).\n"
+      "Exit status 0 if every file is good (warnings included), else 1.");
   validate->callback([options] {
     bool all_good = true;
     for (const std::string& file : options->files) {

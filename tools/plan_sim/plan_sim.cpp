@@ -2,8 +2,6 @@
 
 #include "planner/planner_geometry.h"
 
-#include <png.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -85,12 +83,15 @@ FollowMap simulate_map(PlannerKind kind, const PlannerSettings& settings, const 
   map.half_size_m = spec.half_size_m;
   map.cell_m = spec.cell_m;
   map.cells_per_side = static_cast<int>(std::lround(2.0 * spec.half_size_m / spec.cell_m));
-  map.followed.assign(static_cast<std::size_t>(map.cells_per_side) * static_cast<std::size_t>(map.cells_per_side), 0);
+  const std::size_t cells = static_cast<std::size_t>(map.cells_per_side) * static_cast<std::size_t>(map.cells_per_side);
+  map.followed.assign(cells, 0);
+  map.follow_time_s.assign(cells, 0.0);
   for (int iz = 0; iz < map.cells_per_side; ++iz) {
     for (int ix = 0; ix < map.cells_per_side; ++ix) {
       const CaseResult r = simulate_case(kind, settings, spec, map.cell_center(ix, iz));
       if (r.followed) {
         map.followed[static_cast<std::size_t>(iz * map.cells_per_side + ix)] = 1;
+        map.follow_time_s[static_cast<std::size_t>(iz * map.cells_per_side + ix)] = r.time_s;
         ++map.followed_cells;
       }
       if (r.base_entered) ++map.base_entries;
@@ -161,102 +162,47 @@ std::string table_text(const std::vector<TableRow>& rows) {
   return out.str();
 }
 
-Image render_map(const FollowMap& map, const PlannerSettings& settings, const MapStyle& style) {
-  const int px = std::max(1, style.pixels_per_cell);
-  Image img;
-  img.width = img.height = map.cells_per_side * px;
-  img.rgb.assign(static_cast<std::size_t>(img.width) * static_cast<std::size_t>(img.height) * 3u, 255);
-  const auto set = [&](int x, int y, std::uint8_t r, std::uint8_t gr, std::uint8_t b) {
-    if (x < 0 || y < 0 || x >= img.width || y >= img.height) return;
-    const std::size_t i = (static_cast<std::size_t>(y) * static_cast<std::size_t>(img.width) + static_cast<std::size_t>(x)) * 3u;
-    img.rgb[i] = r;
-    img.rgb[i + 1] = gr;
-    img.rgb[i + 2] = b;
+std::string map_csv(const FollowMap& map, PlannerKind kind, const PlannerSettings& settings, const MapSpec& spec) {
+  const Eigen::Vector2d user_W(0.0, 0.0);
+  const Eigen::Vector2d base_W =
+      g::follow_target(user_W, {settings.arm_length_m, 0.0}, 0.0, settings.target_distance_m());
+  const double base_heading_rad = g::facing_heading(base_W, user_W, settings.facing_angle_rad);
+  std::ostringstream out;
+  char line[160];
+  const auto meta = [&](const char* name, double value) {
+    std::snprintf(line, sizeof line, "# %s=%.6g\n", name, value);
+    out << line;
   };
-  // World (x, z) -> pixel: x to the right, z down.
-  const double scale = px / map.cell_m;
-  const auto to_px = [&](const Eigen::Vector2d& p) {
-    return Eigen::Vector2i(static_cast<int>(std::floor((p.x() + map.half_size_m) * scale)),
-                           static_cast<int>(std::floor((p.y() + map.half_size_m) * scale)));
-  };
-  for (int iz = 0; iz < map.cells_per_side; ++iz)
-    for (int ix = 0; ix < map.cells_per_side; ++ix)
-      if (map.followed[static_cast<std::size_t>(iz * map.cells_per_side + ix)])
-        for (int y = 0; y < px; ++y)
-          for (int x = 0; x < px; ++x) set(ix * px + x, iz * px + y, 60, 110, 220);
-  const Eigen::Vector2i origin = to_px({0.0, 0.0});
-  for (int i = 0; i < img.width; ++i) {
-    if (i % 4 < 2) {
-      set(i, origin.y(), 150, 150, 150);
-      set(origin.x(), i, 150, 150, 150);
+  out << "# mhd plan-sim follow map (thesis ch. 3.6); draw with tools/plots/plan_sim_maps.py\n";
+  out << "# planner=" << to_string(kind) << "\n";
+  meta("max_linear_speed_mps", settings.max_linear_speed_mps);
+  meta("max_angular_speed_degps", settings.max_angular_speed_radps / kDeg);
+  meta("facing_change_deg", spec.facing_change_rad / kDeg);
+  meta("horizon_s", spec.horizon_s);
+  meta("half_size_m", map.half_size_m);
+  meta("cell_m", map.cell_m);
+  meta("user_start_x_m", user_W.x());
+  meta("user_start_z_m", user_W.y());
+  meta("user_start_heading_deg", 0.0);
+  meta("arm_length_m", settings.arm_length_m);
+  meta("collision_radius_m", settings.collision_radius_m());
+  meta("base_start_x_m", base_W.x());
+  meta("base_start_z_m", base_W.y());
+  meta("base_start_heading_deg", base_heading_rad / kDeg);
+  meta("followed_cells", map.followed_cells);
+  meta("followed_area_m2", map.followed_area_m2());
+  meta("base_entries", map.base_entries);
+  out << "x_m,z_m,follow_time_s\n";
+  for (int iz = 0; iz < map.cells_per_side; ++iz) {
+    for (int ix = 0; ix < map.cells_per_side; ++ix) {
+      const std::size_t i = static_cast<std::size_t>(iz * map.cells_per_side + ix);
+      if (!map.followed[i]) continue;
+      const Eigen::Vector2d c = map.cell_center(ix, iz);
+      std::snprintf(line, sizeof line, "%.4f,%.4f,%.3f\n", c.x(), c.y(), map.follow_time_s[i]);
+      out << line;
     }
   }
-  // The user's cylinder (collision radius) and d' circle at the start.
-  for (int a = 0; a < 720; ++a) {
-    const Eigen::Vector2d dir = g::direction(a * std::numbers::pi / 360.0);
-    const Eigen::Vector2i c = to_px(settings.collision_radius_m() * dir);
-    set(c.x(), c.y(), 0, 0, 0);
-  }
-  const Eigen::Vector2i base = to_px({settings.target_distance_m(), 0.0});
-  for (int y = -3; y <= 3; ++y)
-    for (int x = -3; x <= 3; ++x) {
-      set(base.x() + x, base.y() + y, 220, 30, 30);
-      set(origin.x() + x / 2, origin.y() + y / 2, 0, 0, 0);
-    }
-  return img;
-}
-
-Image tile(const std::vector<Image>& images, int columns, int gap_px) {
-  Image out;
-  if (images.empty() || columns <= 0) return out;
-  const int w = images.front().width;
-  const int h = images.front().height;
-  const int rows = (static_cast<int>(images.size()) + columns - 1) / columns;
-  out.width = columns * w + (columns + 1) * gap_px;
-  out.height = rows * h + (rows + 1) * gap_px;
-  out.rgb.assign(static_cast<std::size_t>(out.width) * static_cast<std::size_t>(out.height) * 3u, 255);
-  for (std::size_t k = 0; k < images.size(); ++k) {
-    const int col = static_cast<int>(k) % columns;
-    const int row = static_cast<int>(k) / columns;
-    const int x0 = gap_px + col * (w + gap_px);
-    const int y0 = gap_px + row * (h + gap_px);
-    const Image& im = images[k];
-    for (int y = 0; y < std::min(h, im.height); ++y)
-      std::copy_n(im.rgb.begin() + static_cast<std::ptrdiff_t>(y) * im.width * 3, std::min(w, im.width) * 3,
-                  out.rgb.begin() + (static_cast<std::ptrdiff_t>(y0 + y) * out.width + x0) * 3);
-  }
-  return out;
-}
-
-std::string write_png(const std::filesystem::path& path, const Image& image) {
-  if (image.width <= 0 || image.height <= 0) return "empty image";
-  std::FILE* file = std::fopen(path.string().c_str(), "wb");
-  if (file == nullptr) return "cannot open '" + path.string() + "' for writing";
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-  png_infop info = png != nullptr ? png_create_info_struct(png) : nullptr;
-  if (png == nullptr || info == nullptr) {
-    png_destroy_write_struct(&png, &info);
-    std::fclose(file);
-    return "libpng: out of memory";
-  }
-  std::vector<png_bytep> rows(static_cast<std::size_t>(image.height));
-  for (int y = 0; y < image.height; ++y)
-    rows[static_cast<std::size_t>(y)] = const_cast<png_bytep>(image.rgb.data()) +
-                                        static_cast<std::ptrdiff_t>(y) * image.width * 3;
-  if (setjmp(png_jmpbuf(png))) {
-    png_destroy_write_struct(&png, &info);
-    std::fclose(file);
-    return "libpng: error writing '" + path.string() + "'";
-  }
-  png_init_io(png, file);
-  png_set_IHDR(png, info, static_cast<png_uint_32>(image.width), static_cast<png_uint_32>(image.height), 8,
-               PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-  png_write_info(png, info);
-  png_write_image(png, rows.data());
-  png_write_end(png, nullptr);
-  png_destroy_write_struct(&png, &info);
-  const bool closed = std::fclose(file) == 0;
-  return closed ? std::string() : "cannot close '" + path.string() + "'";
+  return out.str();
 }
 
 }  // namespace mhd::plan_sim

@@ -9,14 +9,13 @@
 // acceleration limit, as in the thesis's simulator). The position is "followed" when the
 // HIP (the hand) is inside the planar usable workspace at some check time t <= 1 s (checks
 // every period / substeps). The followed area is the number of followed cells times the
-// cell area. Deterministic; nothing here touches files except the writers.
+// cell area. Deterministic; nothing here touches files.
 
 #include "planner/planner.h"
 
 #include <Eigen/Core>
 
 #include <cstdint>
-#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -45,6 +44,7 @@ struct FollowMap {
   double half_size_m = 0.0;
   double cell_m = 0.0;
   std::vector<std::uint8_t> followed;  ///< row-major: row = z index (z ascending), column = x index
+  std::vector<double> follow_time_s;   ///< same layout: when the HIP was first inside (followed cells)
   int followed_cells = 0;
   int base_entries = 0;
 
@@ -71,24 +71,12 @@ struct TableRow {
 /// (rows) and angular speed (columns) for each planner, and predictive / seed.
 [[nodiscard]] std::string table_text(const std::vector<TableRow>& rows);
 
-/// Colours of the map images.
-struct MapStyle {
-  int pixels_per_cell = 4;
-};
-
-/// An RGB image.
-struct Image {
-  int width = 0;
-  int height = 0;
-  std::vector<std::uint8_t> rgb;  ///< row-major, 3 bytes per pixel
-};
-
-/// Top view (x to the right, z down): followed cells blue, others white, the axes grey, the
-/// user's start black, the base's start red, the user's cylinder at the start outlined.
-[[nodiscard]] Image render_map(const FollowMap& map, const PlannerSettings& settings, const MapStyle& style = {});
-/// Tiles images in a grid (row-major, `columns` per row) with a white gap.
-[[nodiscard]] Image tile(const std::vector<Image>& images, int columns, int gap_px = 8);
-/// Writes a PNG (libpng). Returns an error message, empty on success.
-[[nodiscard]] std::string write_png(const std::filesystem::path& path, const Image& image);
+/// One follow map as CSV, for tools/plots/plan_sim_maps.py to draw (titles, axes, legend and
+/// scale need a plotting library, so the pictures are drawn there from these numbers):
+/// "# name=value" lines describe the scene (planner, limits, facing change, grid, the user's
+/// and the base's start, the user's cylinder), then "x_m,z_m,follow_time_s" for each
+/// followed cell (world x, z of its centre; when the HIP was first back inside).
+[[nodiscard]] std::string map_csv(const FollowMap& map, PlannerKind kind, const PlannerSettings& settings,
+                                  const MapSpec& spec);
 
 }  // namespace mhd::plan_sim

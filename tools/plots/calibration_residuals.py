@@ -25,8 +25,13 @@ class InputError(Exception):
     pass
 
 
-def read_columns(path, required, optional=()):
-    """Returns {column: [float, ...]} for the required and present optional columns."""
+def read_columns(path, required, optional=(), nan_allowed=(), with_lines=False):
+    """Returns {column: [float, ...]} for the required and present optional columns.
+
+    Columns in nan_allowed may hold 'nan' (the caller decides which rows may); any other
+    non-finite value is an error naming file:line. with_lines adds data["line"]: the file
+    line of each row, so the caller's own checks can name it too.
+    """
     try:
         with open(path, newline="") as f:
             rows = [(n + 1, line) for n, line in enumerate(f) if line.strip() and not line.lstrip().startswith("#")]
@@ -44,7 +49,9 @@ def read_columns(path, required, optional=()):
     wanted = list(required) + [c for c in optional if c in header]
     index = {c: header.index(c) for c in wanted}
     data = {c: [] for c in wanted}
+    lines = []
     for line_number, text in rows[1:]:
+        lines.append(line_number)
         fields = next(csv.reader([text]))
         if len(fields) != len(header):
             raise InputError(f"{path}:{line_number}: expected {len(header)} fields, found {len(fields)}")
@@ -54,11 +61,13 @@ def read_columns(path, required, optional=()):
                 value = float({"true": "1", "false": "0"}.get(text.lower(), text))
             except ValueError:
                 raise InputError(f"{path}:{line_number}: column '{c}': '{text}' is not a number")
-            if not math.isfinite(value):
+            if not math.isfinite(value) and not (c in nan_allowed and math.isnan(value)):
                 raise InputError(f"{path}:{line_number}: column '{c}' is not finite")
             data[c].append(value)
     if not data[wanted[0]]:
         raise InputError(f"{path}: no data rows")
+    if with_lines:
+        data["line"] = lines
     return data
 
 
@@ -90,12 +99,13 @@ def plot(data, out, title):
         ax.legend(loc="best", fontsize=9, framealpha=0.9)
     if has_base:
         ax = grid[0][1]
-        ax.scatter(data["base_x_m"], data["base_z_m"], s=12, color="tab:gray")
+        ax.scatter(data["base_x_m"], data["base_z_m"], s=12, color="tab:gray", label="base at a sample")
         ax.set_title("base positions (world x, z)")
         ax.set_xlabel("x (m)")
         ax.set_ylabel("z (m)")
         ax.set_aspect("equal", adjustable="datalim")
         ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=9)
         ax = grid[1][1]
         for a in AXES:
             ax.hist([v * 1e3 for v in data[f"after_{a}_m"]], bins=15, histtype="step", color=COLOURS[a], label=a)
@@ -104,8 +114,7 @@ def plot(data, out, title):
         ax.set_ylabel("samples")
         ax.legend(fontsize=9)
         ax.grid(True, alpha=0.3)
-    if title:
-        fig.suptitle(title)
+    fig.suptitle(title)
     fig.tight_layout()
     fig.savefig(out, dpi=110)
     plt.close(fig)
@@ -115,7 +124,7 @@ def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("residuals", help="CSV from mhd calibrate --residuals")
     parser.add_argument("-o", "--out", default="calibration_residuals.png", help="PNG to write")
-    parser.add_argument("--title", default="", help="figure title")
+    parser.add_argument("--title", default="Rig calibration residuals", help="figure title")
     args = parser.parse_args(argv)
     required = [f"{phase}_{a}_m" for phase in ("before", "after") for a in AXES]
     try:
