@@ -10,7 +10,7 @@ constexpr std::size_t kPendingCapacity = 256;
 }
 
 TrackerSubscriber::TrackerSubscriber(const Participant& participant, const TrackerValidationLimits& limits)
-    : subscriber_(participant, rig_partition(limits.rig_id)), validator_(limits) {
+    : subscriber_(participant, rig_partition(limits.rig_id)), validator_(limits), peers_(participant) {
   pending_.reserve(kPendingCapacity);
 }
 

@@ -4,6 +4,8 @@
 // ABI's mhd_tracker_sample with host-clock timestamps. Used by the `dds` tracker plugin.
 
 #include "dds_common/dds_topics.h"
+#include "dds_common/peer_watch.h"
+#include "dds_common/security_refusal_log.h"
 #include "dds_common/sample_validation.h"
 
 #include <mhd/plugin_abi.h>
@@ -35,11 +37,17 @@ class TrackerSubscriber {
   [[nodiscard]] dds_subscription_matched_status_t writer_matches() const {
     return subscriber_.reader().subscription_matched();
   }
+  /// Remote participants heard, admitted and refused (peer_watch.h), as of `now_ns`.
+  [[nodiscard]] PeerWatch::Counts peers(std::int64_t now_ns) const { return peers_.counts(now_ns); }
+  /// Refusals Cyclone logged in this process (security_refusal_log.h).
+  [[nodiscard]] static std::uint64_t security_refusals() { return SecurityRefusalLog::refusals(); }
 
  private:
   Subscriber<mhd_dds_TrackerSample> subscriber_;
   TrackerSampleValidator validator_;
   std::vector<mhd_dds_TrackerSample> pending_;  ///< accepted, not yet handed out
+  SecurityRefusalLog refusal_log_;
+  PeerWatch peers_;
 };
 
 }  // namespace mhd::dds

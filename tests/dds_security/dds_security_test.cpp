@@ -146,7 +146,8 @@ class RigServer {
     return got;
   }
 
-  /// The plugin's counters by name (accepted, dropped_*, writers_matched, writers_matched_total).
+  /// The plugin's counters by name (accepted, dropped_*, writers_matched, writers_matched_total,
+  /// peers_heard, peers_refused, security_refusals).
   std::map<std::string, std::uint64_t> counters() {
     mhd_counter out[32];
     std::size_t count = 0;
@@ -162,6 +163,19 @@ class RigServer {
   mhd::test::FakeHost host_;
   mhd_plugin_instance* instance_ = nullptr;
 };
+
+/// The counters once `name` reaches `at_least`, or after `timeout` (a refused peer is
+/// counted once it has gone unadmitted for the plugin's 2 s grace).
+std::map<std::string, std::uint64_t> counters_once(RigServer& server, const char* name, std::uint64_t at_least,
+                                                   std::chrono::milliseconds timeout = 6s) {
+  const auto end = std::chrono::steady_clock::now() + timeout;
+  std::map<std::string, std::uint64_t> c = server.counters();
+  while (c.at(name) < at_least && std::chrono::steady_clock::now() < end) {
+    std::this_thread::sleep_for(100ms);
+    c = server.counters();
+  }
+  return c;
+}
 
 std::size_t markers(const std::vector<mhd_tracker_sample>& samples) {
   std::size_t n = 0;
@@ -219,6 +233,13 @@ TEST(DdsSecurity, SecuredTrackerServerFeedsTheRigsServerWithoutAnyRefusal) {
   EXPECT_EQ(dropped(c), 0u);
   EXPECT_EQ(c.at("writers_matched"), 1u);
   EXPECT_EQ(c.at("writers_matched_total"), 1u);
+  // The dual of the refusal counts below: an admitted peer is heard and never refused,
+  // even long past the grace.
+  std::this_thread::sleep_for(2500ms);
+  const auto later = rig.server.counters();
+  EXPECT_GE(later.at("peers_heard"), 1u);
+  EXPECT_EQ(later.at("peers_refused"), 0u);
+  EXPECT_EQ(later.at("security_refusals"), 0u);
   EXPECT_NE(rig.tracker_log.text().find("secured as " + SecurityFiles::identity("tracker-rig1").string()),
             std::string::npos)
       << rig.tracker_log.text();
@@ -243,6 +264,10 @@ TEST(DdsSecurity, UnauthenticatedParticipantPublishingRig1ReachesNothing) {
   const auto c = rig.server.counters();
   EXPECT_EQ(dropped(c), 0u);
   EXPECT_EQ(c.at("writers_matched_total"), 1u) << "the intruder's writer never matched";
+  // The refusal is counted: heard, never admitted.
+  const auto counted = counters_once(rig.server, "peers_refused", 1);
+  EXPECT_EQ(counted.at("peers_refused"), 1u);
+  EXPECT_GE(counted.at("peers_heard"), 2u) << "the tracker server and the intruder";
 }
 
 TEST(DdsSecurity, Rig2sPermissionsCannotPublishRig1sSamples) {
@@ -298,6 +323,10 @@ TEST(DdsSecurity, PermissionsForgedForRig1AreRefusedByTheRig) {
   const auto c = rig.server.counters();
   EXPECT_EQ(dropped(c), 0u);
   EXPECT_EQ(c.at("writers_matched_total"), 1u);
+  // Counted twice over: Cyclone logged the permissions it could not verify, and the peer
+  // was heard but never admitted.
+  EXPECT_GE(c.at("security_refusals"), 1u);
+  EXPECT_EQ(counters_once(rig.server, "peers_refused", 1).at("peers_refused"), 1u);
 }
 
 TEST(DdsSecurity, AWeakerSecondWriterForRig1DoesNotInterleaveAndTakesOverOnlyWhenTheTrackerLeaves) {
@@ -311,6 +340,7 @@ TEST(DdsSecurity, AWeakerSecondWriterForRig1DoesNotInterleaveAndTakesOverOnlyWhe
   EXPECT_GE(while_owned.size(), 200u);
   auto c = rig.server.counters();
   EXPECT_EQ(c.at("writers_matched"), 2u) << "the second writer is authorised and matched";
+  EXPECT_EQ(c.at("peers_refused"), 0u) << "an authorised peer is not a refusal";
   EXPECT_EQ(c.at("dropped_sequence_backwards"), 0u);
 
   // The dual: once the stronger writer is gone, the same writer is heard. SIGKILL: no

@@ -81,10 +81,14 @@ mhd_status start_instance(mhd_plugin_instance* self, mhd_error* err) {
 mhd_status stop_instance(mhd_plugin_instance* self, mhd_error* err) {
   return call(self, plugin_support::Need::Open, err, [&](Instance& s) {
     if (s.started) {
-      std::fprintf(stderr, "dds tracker (rig %u): %s; writers matched: %u now, %u ever\n",
+      const dds::PeerWatch::Counts peers = s.subscriber.peers(dds_time());
+      std::fprintf(stderr,
+                   "dds tracker (rig %u): %s; writers matched: %u now, %u ever; peers: %u heard, %u refused; "
+                   "security refusals logged: %llu\n",
                    static_cast<unsigned>(s.config.limits.rig_id), s.subscriber.counts().summary().c_str(),
                    static_cast<unsigned>(s.subscriber.writer_matches().current_count),
-                   static_cast<unsigned>(s.subscriber.writer_matches().total_count));
+                   static_cast<unsigned>(s.subscriber.writer_matches().total_count), peers.heard, peers.refused,
+                   static_cast<unsigned long long>(dds::TrackerSubscriber::security_refusals()));
     }
     s.started = false;
     return MHD_OK;
@@ -110,23 +114,30 @@ mhd_status tracker_wait(mhd_plugin_instance* self, double timeout_s, mhd_error* 
 }
 
 // Counter names in DropReason order, after "accepted", then the writers matched now and
-// ever (under DDS Security a refused writer never matches); static strings, as the ABI asks.
-constexpr std::array<const char*, 1 + dds::kDropReasonCount + 2> kCounterNames = {
+// ever (under DDS Security a refused writer never matches), then the remote participants
+// heard and refused (peer_watch.h) and Cyclone's logged refusals (security_refusal_log.h);
+// static strings, as the ABI asks.
+constexpr std::size_t kPeerCounters = 3;
+constexpr std::array<const char*, 1 + dds::kDropReasonCount + 2 + kPeerCounters> kCounterNames = {
     "accepted",        "dropped_unknown_rig", "dropped_non_finite",       "dropped_out_of_range",
     "dropped_bad_quaternion", "dropped_stale", "dropped_future", "dropped_sequence_backwards",
-    "writers_matched", "writers_matched_total"};
+    "writers_matched", "writers_matched_total", "peers_heard", "peers_refused", "security_refusals"};
 
 mhd_status counters(mhd_plugin_instance* self, mhd_counter* out, size_t capacity, size_t* count, mhd_error* err) {
   return call(self, plugin_support::Need::Open, err, [&](Instance& s) {
     if (count == nullptr || (out == nullptr && capacity > 0)) throw std::invalid_argument("counters: NULL output");
     const dds::DropCounts& c = s.subscriber.counts();
     const dds_subscription_matched_status_t matched = s.subscriber.writer_matches();
+    const dds::PeerWatch::Counts peers = s.subscriber.peers(dds_time());
     for (std::size_t i = 0; i < kCounterNames.size() && i < capacity; ++i) {
       std::uint64_t value = 0;
       if (i == 0) value = c.accepted;
       else if (i <= dds::kDropReasonCount) value = c.dropped[i - 1];
       else if (i == dds::kDropReasonCount + 1) value = matched.current_count;
-      else value = matched.total_count;
+      else if (i == dds::kDropReasonCount + 2) value = matched.total_count;
+      else if (i == dds::kDropReasonCount + 3) value = peers.heard;
+      else if (i == dds::kDropReasonCount + 4) value = peers.refused;
+      else value = dds::TrackerSubscriber::security_refusals();
       out[i] = {kCounterNames[i], value};
     }
     *count = kCounterNames.size();

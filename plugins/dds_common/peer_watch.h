@@ -1,0 +1,58 @@
+#pragma once
+// Who knocked on a participant's door, and who was let in (docs/networking.md,
+// "Counting refusals"). Cyclone 0.10 has no status for a peer that DDS Security
+// refuses, so MHD counts refusals from what it does show:
+// - its DCPSParticipant builtin topic lists every remote participant heard, refused or
+//   not (checked on Cyclone 0.10.2: an unauthenticated one and one with forged
+//   permissions both appear);
+// - with discovery protection (our governance), a peer's endpoints appear in
+//   DCPSPublication / DCPSSubscription only once it is authenticated and permitted.
+// A peer heard for longer than a grace period without one visible endpoint is counted
+// as refused. Every MHD process has endpoints, so an admitted MHD peer never counts.
+
+#include "dds_common/dds_entity.h"
+
+#include <dds/dds.h>
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <mutex>
+
+namespace mhd::dds {
+
+class PeerWatch {
+ public:
+  struct Counts {
+    std::uint32_t heard = 0;     ///< remote participants heard of, ever
+    std::uint32_t admitted = 0;  ///< of these, with an endpoint visible to us
+    std::uint32_t refused = 0;   ///< heard for longer than the grace, no endpoint visible
+  };
+
+  /// Watches `participant`'s discovery (it must outlive this). Listener callbacks run
+  /// on Cyclone's threads; counts() may be called from any other thread.
+  explicit PeerWatch(const Participant& participant, std::int64_t grace_ns = 2'000'000'000);
+  PeerWatch(const PeerWatch&) = delete;
+  PeerWatch& operator=(const PeerWatch&) = delete;
+  ~PeerWatch();
+
+  /// The counts as of `now_ns` (dds_time() clock), this participant itself left out.
+  [[nodiscard]] Counts counts(std::int64_t now_ns) const;
+
+ private:
+  struct Peer {
+    std::int64_t first_heard_ns = -1;  ///< -1: known only from an endpoint so far
+    bool has_endpoint = false;
+  };
+  static void on_participants(dds_entity_t reader, void* self);
+  static void on_endpoints(dds_entity_t reader, void* self);
+  void take(dds_entity_t reader, bool endpoints);
+
+  std::int64_t grace_ns_;
+  dds_guid_t own_{};
+  mutable std::mutex mutex_;  // Cyclone's listener threads against counts(); never the haptic thread
+  std::map<std::array<std::uint8_t, 16>, Peer> peers_;
+  Entity participants_, publications_, subscriptions_;
+};
+
+}  // namespace mhd::dds
