@@ -149,10 +149,33 @@ void drop_violated_planes(Motion& m, double skin_m) {
   }
 }
 
-// Records a surface the proxy ran into. Returns false when the store is full, which
-// ends the motion with the proxy where it is.
+// A plane the proxy is further from than this (fraction of the skin) does not hold it now.
+constexpr double kInactivePerSkin = 1e-2;
+
+// Makes room in a full store by dropping the plane the proxy is furthest from, if that
+// plane does not hold it now. Its triangles are swept again from then on, so no later
+// leg can cross them; what is lost is only the memory that they were met. Returns
+// false when every plane holds the proxy.
+bool drop_farthest_inactive_plane(Motion& m, double skin_m) {
+  int farthest = -1;
+  double farthest_gap = kInactivePerSkin * skin_m;
+  for (int i = 0; i < m.plane_count; ++i) {
+    const HalfSpace& h = m.planes[at(i)];
+    const double gap = h.normal.dot(m.p) - h.offset;
+    if (gap > farthest_gap) {
+      farthest_gap = gap;
+      farthest = i;
+    }
+  }
+  if (farthest < 0) return false;
+  drop_plane(m, farthest);
+  return true;
+}
+
+// Records a surface the proxy ran into. Returns false when the store is full of planes
+// that all hold the proxy, which ends the motion with the proxy where it is.
 bool add_constraint(Motion& m, const SweepHit& hit, double skin_m) {
-  if (m.ignored_count == kMaxIgnored) return false;
+  if (m.ignored_count == kMaxIgnored && !drop_farthest_inactive_plane(m, skin_m)) return false;
   const double offset = hit.plane_offset_m + skin_m;
   int plane = -1;
   for (int i = 0; i < m.plane_count && plane < 0; ++i) {
@@ -163,7 +186,7 @@ bool add_constraint(Motion& m, const SweepHit& hit, double skin_m) {
     }
   }
   if (plane < 0) {
-    if (m.plane_count == kMaxHalfSpaces) return false;
+    if (m.plane_count == kMaxHalfSpaces && !drop_farthest_inactive_plane(m, skin_m)) return false;
     plane = m.plane_count++;
     m.planes[at(plane)] = HalfSpace{hit.normal_W, offset};
     m.plane_triangles[at(plane)] = hit.where;
