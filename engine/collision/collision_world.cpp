@@ -120,6 +120,22 @@ std::optional<SweepHit> CollisionWorld::sweep(const Eigen::Vector3d& a_W, const 
   return std::nullopt;
 }
 
+std::optional<SweepHit> CollisionWorld::sweep_triangle(const TriangleRef& ref, const Eigen::Vector3d& a_W,
+                                                       const Eigen::Vector3d& b_W, double skin_m) const {
+  const Object& o = objects_.at(static_cast<std::size_t>(ref.object));
+  const TriangleMesh& mesh = o.shape->mesh();
+  const TriangleIndices& t = mesh.triangles.at(ref.triangle);
+  const auto hit = sweep_point_triangle(o.X_OW * a_W, o.X_OW * b_W, mesh.vertices_m[t[0]], mesh.vertices_m[t[1]],
+                                        mesh.vertices_m[t[2]], skin_m, kInflatePerSkin * skin_m);
+  if (!hit) return std::nullopt;
+  SweepHit h;
+  h.where = ref;
+  h.t_stop = hit->t_stop;
+  h.normal_W = o.X_WO.linear() * hit->normal;
+  h.plane_offset_m = h.normal_W.dot(o.X_WO * mesh.vertices_m[t[0]]);
+  return h;
+}
+
 std::array<Eigen::Vector3d, 3> CollisionWorld::triangle_W(const TriangleRef& ref) const {
   const Object& o = objects_.at(static_cast<std::size_t>(ref.object));
   const TriangleMesh& mesh = o.shape->mesh();

@@ -65,6 +65,11 @@ class CollisionWorld {
                                               double skin_m, std::span<const TriangleRef> ignore = {},
                                               SweepWork* work = nullptr) const;
 
+  /// sweep() against the one triangle `t` (nothing else is tested, the segment is not cut
+  /// into pieces): whether, and where, the segment a_W -> b_W meets it.
+  [[nodiscard]] std::optional<SweepHit> sweep_triangle(const TriangleRef& t, const Eigen::Vector3d& a_W,
+                                                       const Eigen::Vector3d& b_W, double skin_m) const;
+
   /// True if p_W's projection onto the triangle's plane lies inside the triangle grown
   /// by margin_m on every edge (the proxy is "over" this triangle).
   [[nodiscard]] bool projects_onto_triangle(const TriangleRef& t, const Eigen::Vector3d& p_W, double margin_m) const;

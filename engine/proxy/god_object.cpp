@@ -102,7 +102,9 @@ ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMateri
   work.max_sweeps = max_sweeps - std::clamp(max_sweeps / 16, max_sweeps >= 2 ? 1 : 0, 4);
   work.sweep.max_triangle_tests = max_triangle_tests - max_triangle_tests / 8;
   Motion motion;
-  proxy_detail::solve_motion(world, settings.skin_m, start, hip_W, motion, state, work);
+  const TriangleRef resting_on = previous_planes[0].triangle;
+  proxy_detail::solve_motion(world, settings.skin_m, start, hip_W, motion, state, work,
+                             previous_plane_count > 0 ? &resting_on : nullptr);
   store_active_planes(motion, settings.skin_m, state);
 
   bool sticking = false;

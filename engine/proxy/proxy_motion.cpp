@@ -289,14 +289,27 @@ bool go_if_visible(const CollisionWorld& world, double skin_m, const Eigen::Vect
 // surface. Planes are never carried over from the last tick: they are found again by
 // the first sweep, so a plane that no longer blocks cannot hold the proxy.
 void solve_motion(const CollisionWorld& world, double skin_m, const Eigen::Vector3d& start,
-                  const Eigen::Vector3d& goal, Motion& m, ProxyState& state, TickWork& work) {
+                  const Eigen::Vector3d& goal, Motion& m, ProxyState& state, TickWork& work,
+                  const TriangleRef* resting_on) {
   const double min_step = kMinStepPerSkin * skin_m;
   m.p = start;
   state.path_points = 0;
   append_path(state, start);
   std::optional<SweepHit> hit;
   // The straight segment first, nothing ignored: if it is free the proxy is at the goal.
-  if (!sweep_past_grazes(world, work, m.p, goal, skin_m, {}, hit)) return;
+  // A proxy pressed onto the face it rested on finds that face in the way at once (t_stop
+  // 0, no earlier hit exists), and that needs no sweep of the whole world: the constraint
+  // is a real one (not a graze), and the proxy does not move before the next, full, sweeps.
+  // It counts as a sweep of the budget all the same: what a tick may do stays the same.
+  if (resting_on != nullptr && (goal - m.p).norm() > min_step && work.sweeps < work.max_sweeps) {
+    hit = world.sweep_triangle(*resting_on, m.p, goal, skin_m);
+    if (hit && (hit->t_stop != 0.0 || only_grazes(world, *resting_on, m.p, goal, skin_m))) hit.reset();
+    if (hit) {
+      ++work.sweeps;
+      ++work.sweep.triangle_tests;
+    }
+  }
+  if (!hit && !sweep_past_grazes(world, work, m.p, goal, skin_m, {}, hit)) return;
   advance(m, goal, hit, state);
   if (!hit) return;
   if (!add_constraint(m, *hit, skin_m)) {

@@ -44,8 +44,12 @@ struct Motion {
 // Every leg is swept; on return m.p is crossing-free-reachable from start and either
 // the goal, a local minimum of the distance to it, or (work.exhausted) where the
 // budget ran out.
+// `resting_on`: a triangle the proxy rested on at the end of the last tick, or null. If the
+// segment to the goal runs into it at once, that is the motion's first hit, found without
+// a sweep of the whole world (an earlier hit than at once there cannot be).
 void solve_motion(const CollisionWorld& world, double skin_m, const Eigen::Vector3d& start,
-                  const Eigen::Vector3d& goal, Motion& m, ProxyState& state, TickWork& work);
+                  const Eigen::Vector3d& goal, Motion& m, ProxyState& state, TickWork& work,
+                  const TriangleRef* resting_on = nullptr);
 
 // If the straight segment from m.p to `goal` crosses nothing (one sweep within the
 // budget), moves the proxy there (recorded in state.path_W), clears the planes and
