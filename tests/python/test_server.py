@@ -1,14 +1,18 @@
 """The haptic server on simulated plugins from Python: a run for N seconds with its report
-and recording, a fault that names the plugin and its scene line, and a scene the server
-cannot open."""
+and recording, a fault that names the plugin and its scene line, a scene the server
+cannot open, and Ctrl-C."""
 
 import re
+import signal
+import subprocess
+import sys
+import time
 
 import numpy as np
 import pytest
 
 import mhd
-from conftest import needed_env, repo_path
+from conftest import REPO, needed_env, repo_path
 
 
 def test_run_the_dolphin_on_simulated_hardware(tmp_path):
@@ -49,3 +53,24 @@ def test_a_scene_without_plugins_cannot_run(cube_wall):
 def test_duration_must_be_positive(cube_wall):
     with pytest.raises(ValueError, match="duration_s must be finite and > 0"):
         mhd.run_server(cube_wall, duration_s=0.0)
+
+
+def test_ctrl_c_stops_the_run_safely_and_raises_keyboard_interrupt():
+    script = (
+        "import sys, time, mhd\n"
+        "scene = mhd.load_scene('scenes/dolphin.xml')\n"
+        "print('running', flush=True)\n"
+        "t0 = time.monotonic()\n"
+        "try:\n"
+        "    mhd.run_server(scene, duration_s=60.0)\n"
+        "except KeyboardInterrupt:\n"
+        "    print(f'interrupted after {time.monotonic() - t0:.1f} s', flush=True)\n"
+        "    sys.exit(7)\n")
+    run = subprocess.Popen([sys.executable, "-c", script], cwd=REPO, stdout=subprocess.PIPE, text=True)
+    assert run.stdout.readline() == "running\n"
+    time.sleep(1.0)
+    run.send_signal(signal.SIGINT)
+    out, _ = run.communicate(timeout=30)
+    assert run.returncode == 7
+    assert re.fullmatch(r"interrupted after [0-9.]+ s\n", out)
+    assert float(out.split()[2]) < 30.0  # stopped by the signal, not the 60 s
