@@ -10,7 +10,7 @@
 #include "command_exit.h"
 #include "staged_output_file.h"
 
-#include "collision/point_containment.h"
+#include "proxy/proxy_start.h"
 #include "recording/hip_path_csv.h"
 #include "scene_compiler/scene_compiler.h"
 #include "scene_xml/scene_reader.h"
@@ -46,22 +46,6 @@ void print_error(const mhd::Diagnostic& d) {
   } else {
     fmt::print(stderr, "mhd proxy-replay: error: {}: {}\n", d.where.file, d.message);
   }
-}
-
-/// Why the proxy cannot start at p_W (inside a closed object, or within the skin of a
-/// surface), or nullopt when p_W is in free space. The skin test sweeps a skin's length
-/// along each axis: a sweep that must stop at once started within the skin.
-std::optional<std::string> not_free_space(const mhd::CollisionWorld& world, const Eigen::Vector3d& p_W,
-                                          double skin_m) {
-  if (mhd::point_inside_surface(world, p_W)) return std::string("is inside an object");
-  for (int axis = 0; axis < 3; ++axis) {
-    for (const double sign : {1.0, -1.0}) {
-      const Eigen::Vector3d step = sign * skin_m * Eigen::Vector3d::Unit(axis);
-      const auto hit = world.sweep(p_W, p_W + step, skin_m);
-      if (hit && hit->t_stop == 0.0) return fmt::format("touches a surface (closer than skin_m = {} m)", skin_m);
-    }
-  }
-  return std::nullopt;
 }
 
 struct ReplayTotals {
@@ -109,7 +93,7 @@ int proxy_replay(const ProxyReplayOptions& opt) {
   if (!compiled.ok()) return 1;
   const mhd::CompiledScene& scene = *compiled.scene;
 
-  if (const auto why = not_free_space(scene.world, previous->p_W_hip_m, scene.proxy.skin_m)) {
+  if (const auto why = mhd::proxy_start_blocked(scene.world, previous->p_W_hip_m, scene.proxy.skin_m)) {
     const Eigen::Vector3d& p = previous->p_W_hip_m;
     fmt::print(stderr, "mhd proxy-replay: error: {}:{}: the first HIP ({}, {}, {}) m {} in {}; the proxy must start in "
                "free space\n", opt.hip_csv, previous->line, p.x(), p.y(), p.z(), *why, opt.scene);
