@@ -49,6 +49,13 @@ fs::path write_server_scene(const fs::path& dir, const SceneOptions& o) {
       <param name="domain_id" value="{1}"/>
     </plugin>)", o.rig_id, o.domain_id);
   }
+  if (o.ros2_display) {
+    plugins += fmt::format(R"(
+    <plugin kind="display" name="ros2_state">
+      <param name="rig_id" value="{0}"/>
+      <param name="domain_id" value="{1}"/>
+    </plugin>)", o.rig_id, o.domain_id);
+  }
   const fs::path file = dir / "haptic_server.xml";
   std::ofstream(file) << fmt::format(R"(<?xml version="1.0"?>
 <scene version="1" unit="m">

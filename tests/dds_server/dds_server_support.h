@@ -37,6 +37,7 @@ struct SceneOptions {
   bool log_base = true;            ///< the dds_server_log_base base, logging to base_log
   std::filesystem::path base_log;
   bool state_display = true;       ///< the dds_state display
+  bool ros2_display = false;       ///< the ros2_state display (ROS 2 topics, namespace mhd/rig<rig_id>)
   std::string server_params;       ///< extra <param .../> lines for <server>
 };
 

@@ -11,7 +11,7 @@
 #       governance.p7s                      the governance, signed by the CA
 #       cert.pem key.pem                    the identity (EC prime256v1), CN=NAME
 #       permissions.xml permissions.p7s     what NAME may do, and the signed copy
-# Identities: tracker-rigN and haptic-rigN for each RIG_ID N, and viewer.
+# Identities: tracker-rigN and haptic-rigN for each RIG_ID N, viewer and ros2-viewer.
 # Access control grants topics per partition, not per key: rig N's endpoints all live
 # in partition "mhd_rigN" (plugins/dds_common/rig_partition.h), so tracker-rigN may
 # publish mhd_tracker_sample in mhd_rigN only. An identity folder is what a process
@@ -92,14 +92,16 @@ cat >"$out/governance.xml" <<EOF
 EOF
 sign "$out/governance.xml" "$out/governance.p7s"
 
-# rule KIND PARTITION TOPIC...: one <publish> or <subscribe> element.
+# rule KIND PARTITION TOPIC...: one <publish> or <subscribe> element. PARTITION '':
+# the default partition (no <partitions> element), where ROS 2 puts its topics.
 rule() {
   kind=$1 partition=$2
   shift 2
   printf '        <%s>\n          <topics>\n' "$kind"
   for topic in "$@"; do printf '            <topic>%s</topic>\n' "$topic"; done
-  printf '          </topics>\n          <partitions><partition>%s</partition></partitions>\n        </%s>\n' \
-    "$partition" "$kind"
+  printf '          </topics>\n'
+  [ -z "$partition" ] || printf '          <partitions><partition>%s</partition></partitions>\n' "$partition"
+  printf '        </%s>\n' "$kind"
 }
 
 # identity NAME RULES: key, certificate, permissions (RULES: the <publish>/<subscribe>
@@ -141,13 +143,22 @@ for rig in "$@"; do
   # The tracker server publishes its rig's samples and nothing else.
   identity "tracker-rig$rig" "$(rule publish "$p" mhd_tracker_sample)
 "
-  # The haptic server reads its rig's samples and base commands, publishes its state.
+  # The haptic server reads its rig's samples and base commands, publishes its state,
+  # and (the ros2_state display) its ROS 2 topics, which live in the default partition.
   identity "haptic-rig$rig" "$(rule subscribe "$p" mhd_tracker_sample mhd_base_command)
 $(rule publish "$p" mhd_rig_state mhd_rig_status)
+$(rule publish '' "rt/mhd/rig$rig/*")
 "
 done
 # Viewers and the monitor read every rig and publish nothing.
 identity viewer "$(rule subscribe 'mhd_rig*' mhd_tracker_sample mhd_rig_state mhd_rig_status mhd_base_command)
+$(rule subscribe '' 'rt/mhd/rig*')
+"
+# A ROS 2 node (ros2 topic echo, rviz2) on rmw_cyclonedds: reads every rig's ROS 2
+# topics and may use the topics every ROS 2 node has (its graph, rosout, parameter
+# events, its parameter services), and nothing of MHD's own.
+identity ros2-viewer "$(rule subscribe '' 'rt/mhd/rig*' ros_discovery_info rt/parameter_events 'rq/*' 'rr/*')
+$(rule publish '' ros_discovery_info rt/rosout rt/parameter_events 'rq/*' 'rr/*')
 "
 rm -f "$out/.openssl.log" "$out/ca/ca_cert.srl"
 echo "$0: CA, governance and identities for rig(s) $* in $out"
