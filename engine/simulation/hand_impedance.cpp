@@ -1,0 +1,62 @@
+#include "simulation/hand_impedance.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace mhd::simulation {
+namespace {
+
+void require_positive(double value, const char* name) {
+  if (!(value > 0.0) || !std::isfinite(value)) throw std::invalid_argument(std::string(name) + " must be a positive number");
+}
+
+}  // namespace
+
+HandImpedance::HandImpedance(const HandImpedanceParams& params) : params_(params) {
+  require_positive(params.mass_kg, "hand mass_kg");
+  require_positive(params.stiffness_N_per_m, "hand stiffness_N_per_m");
+  require_positive(params.damping_Ns_per_m, "hand damping_Ns_per_m");
+  require_positive(params.max_substep_s, "hand max_substep_s");
+  require_positive(params.intent_velocity_time_constant_s, "hand intent_velocity_time_constant_s");
+  require_positive(params.max_step_s, "hand max_step_s");
+}
+
+void HandImpedance::reset(const Eigen::Vector3d& p_W_m) noexcept {
+  p_W_m_ = p_W_m;
+  p_W_intended_m_ = p_W_m;
+  v_W_mps_.setZero();
+  v_W_intended_mps_.setZero();
+}
+
+Eigen::Vector3d HandImpedance::equilibrium_W_m(const Eigen::Vector3d& F_W_N) const noexcept {
+  return p_W_intended_m_ + F_W_N / params_.stiffness_N_per_m;
+}
+
+void HandImpedance::advance(double dt_s, const Eigen::Vector3d& p_W_intended_m, const Eigen::Vector3d& F_W_N) noexcept {
+  if (!(dt_s > 0.0)) return;
+  const Eigen::Vector3d p_start = p_W_intended_m_;
+  if (dt_s > params_.max_step_s) {
+    // Too long to integrate step by step; by then a damped hand has settled.
+    reset(p_W_intended_m);
+    p_W_m_ = equilibrium_W_m(F_W_N);
+    return;
+  }
+  const double alpha = 1.0 - std::exp(-dt_s / params_.intent_velocity_time_constant_s);
+  v_W_intended_mps_ += alpha * ((p_W_intended_m - p_start) / dt_s - v_W_intended_mps_);
+  p_W_intended_m_ = p_W_intended_m;
+
+  const double m = params_.mass_kg;
+  const double k = params_.stiffness_N_per_m;
+  const double b = params_.damping_Ns_per_m;
+  const int n = static_cast<int>(std::ceil(dt_s / params_.max_substep_s - 1e-9));
+  const double h = dt_s / n;
+  for (int i = 1; i <= n; ++i) {
+    const Eigen::Vector3d p_intended = p_start + (static_cast<double>(i) / n) * (p_W_intended_m - p_start);
+    const Eigen::Vector3d a = (F_W_N + k * (p_intended - p_W_m_) + b * (v_W_intended_mps_ - v_W_mps_)) / m;
+    v_W_mps_ += h * a;  // semi-implicit: the new velocity moves the hand
+    p_W_m_ += h * v_W_mps_;
+  }
+}
+
+}  // namespace mhd::simulation
