@@ -20,6 +20,7 @@ HandImpedance::HandImpedance(const HandImpedanceParams& params) : params_(params
   require_positive(params.max_substep_s, "hand max_substep_s");
   require_positive(params.intent_velocity_time_constant_s, "hand intent_velocity_time_constant_s");
   require_positive(params.max_step_s, "hand max_step_s");
+  require_positive(params.max_intent_jump_m, "hand max_intent_jump_m");
 }
 
 void HandImpedance::reset(const Eigen::Vector3d& p_W_m) noexcept {
@@ -36,6 +37,10 @@ Eigen::Vector3d HandImpedance::equilibrium_W_m(const Eigen::Vector3d& F_W_N) con
 void HandImpedance::advance(double dt_s, const Eigen::Vector3d& p_W_intended_m, const Eigen::Vector3d& F_W_N) noexcept {
   if (!(dt_s > 0.0)) return;
   const Eigen::Vector3d p_start = p_W_intended_m_;
+  if ((p_W_intended_m - p_start).norm() > params_.max_intent_jump_m) {
+    reset(p_W_intended_m);
+    return;
+  }
   if (dt_s > params_.max_step_s) {
     // Too long to integrate step by step; by then a damped hand has settled.
     reset(p_W_intended_m);

@@ -23,6 +23,9 @@ struct HandImpedanceParams {
   double intent_velocity_time_constant_s = 0.02;
   /// A longer step (a stalled host) restarts the hand at rest in equilibrium.
   double max_step_s = 0.1;
+  /// An intended hand that leaps further in one step was placed anew (the world's hand is
+  /// the origin until the user first writes it), not moved: the hand restarts there at rest.
+  double max_intent_jump_m = 0.1;
 };
 
 class HandImpedance {

@@ -84,6 +84,18 @@ TEST(HandImpedance, AStepLongerThanTheLimitRestartsTheHandInEquilibrium) {
   EXPECT_EQ(hand.v_W_mps(), V::Zero());
 }
 
+TEST(HandImpedance, AnIntendedHandPlacedFarAwayMovesTheHandThereAtRest) {
+  HandImpedance hand(HandImpedanceParams{});
+  hand.reset(V::Zero());  // the world's hand before the user first writes it
+  hand.advance(1e-3, V(0.4, 1.0, -0.3), V::Zero());
+  EXPECT_EQ(hand.p_W_m(), V(0.4, 1.0, -0.3));
+  EXPECT_EQ(hand.v_W_mps(), V::Zero());
+  EXPECT_EQ(hand.v_W_intended_mps(), V::Zero());
+  // A move within reach of one step is a move: the mass lags it.
+  hand.advance(1e-3, V(0.45, 1.0, -0.3), V::Zero());
+  EXPECT_LT(hand.p_W_m().x(), 0.401);
+}
+
 TEST(HandImpedance, RejectsNonPositiveParametersByName) {
   HandImpedanceParams params;
   params.damping_Ns_per_m = 0.0;
