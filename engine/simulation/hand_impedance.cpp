@@ -56,11 +56,17 @@ void HandImpedance::advance(double dt_s, const Eigen::Vector3d& p_W_intended_m, 
   const double b = params_.damping_Ns_per_m;
   const int n = static_cast<int>(std::ceil(dt_s / params_.max_substep_s - 1e-9));
   const double h = dt_s / n;
-  for (int i = 1; i <= n; ++i) {
-    const Eigen::Vector3d p_intended = p_start + (static_cast<double>(i) / n) * (p_W_intended_m - p_start);
-    const Eigen::Vector3d a = (F_W_N + k * (p_intended - p_W_m_) + b * (v_W_intended_mps_ - v_W_mps_)) / m;
-    v_W_mps_ += h * a;  // semi-implicit: the new velocity moves the hand
-    p_W_m_ += h * v_W_mps_;
+  // Trapezoidal rule, solved in closed form (the model is linear): second order and
+  // symmetric in time. Semi-implicit Euler would place the position h/2 early, a phase
+  // lead that hides part of the sampled wall's delay and overstates its stable stiffness.
+  const double c = h / (2.0 * m);
+  const double g = k * h / 2.0 + b;
+  for (int i = 0; i < n; ++i) {
+    const double mid = (static_cast<double>(i) + 0.5) / n;
+    const Eigen::Vector3d u = F_W_N + k * (p_start + mid * (p_W_intended_m - p_start)) + b * v_W_intended_mps_;
+    const Eigen::Vector3d v_next = (v_W_mps_ + c * (2.0 * u - 2.0 * k * p_W_m_ - g * v_W_mps_)) / (1.0 + c * g);
+    p_W_m_ += 0.5 * h * (v_W_mps_ + v_next);
+    v_W_mps_ = v_next;
   }
 }
 

@@ -4,7 +4,7 @@
 // force at the handle it holds:
 //   m a = F_handle + k (p_intended - p) + b (v_intended - v).
 // It is the equilibrium-point model of the arm; docs/simulated_hand.md cites the
-// parameters. Integrated by semi-implicit Euler in sub-steps no longer than
+// parameters. Integrated by the trapezoidal rule in sub-steps no longer than
 // max_substep_s, the intended position interpolated linearly across a step. The
 // intended path arrives as samples (the user thread writes it), so its velocity is their
 // finite difference, low-passed with time constant intent_velocity_time_constant_s.
