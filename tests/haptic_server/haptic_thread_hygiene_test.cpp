@@ -94,6 +94,7 @@ TEST(HapticThreadHygiene, TheServerOnSimulatedHardwareNeverLocksAllocatesOrWrite
   <plugins>
     <plugin kind="device" name="sim_phantom">
       <param name="command_log" value="{1}/device.csv"/>
+      <param name="hand_model" value="impedance"/>
     </plugin>
     <plugin kind="tracker" name="sim_is900"/>
     <plugin kind="base" name="sim_omni3">

@@ -56,8 +56,17 @@ TEST(SimPhantomPlugin, OpenRejectsUnknownAndMalformedParameters) {
   const PluginFile file(MHD_SIM_PHANTOM_PLUGIN);
   FakeHost h;
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"stiffness", "1"}}).error,
-            "unknown parameter 'stiffness' (known: hand_stiffness_N_per_m, command_timeout_s, position_resolution_m, "
-            "phantom_position_m, phantom_rpy_deg, base_position_m, base_rpy_deg, hand_P_m, command_log)");
+            "unknown parameter 'stiffness' (known: hand_model, hand_stiffness_N_per_m, command_timeout_s, "
+            "position_resolution_m, phantom_position_m, phantom_rpy_deg, base_position_m, base_rpy_deg, hand_P_m, "
+            "command_log)");
+  EXPECT_EQ(open_plugin(file.api(), h.host, {{"hand_model", "spring"}}).error,
+            "parameter 'hand_model' must be 'kinematic' or 'impedance', got 'spring'");
+  // The mass and damping belong to the impedance hand only.
+  EXPECT_EQ(open_plugin(file.api(), h.host, {{"hand_mass_kg", "0.5"}}).error.rfind(
+                "unknown parameter 'hand_mass_kg' (known: hand_model, hand_stiffness_N_per_m, ", 0),
+            0u);
+  EXPECT_EQ(open_plugin(file.api(), h.host, {{"hand_model", "impedance"}, {"hand_damping_Ns_per_m", "0"}}).error,
+            "parameter 'hand_damping_Ns_per_m' must be a positive number, got '0'");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"command_log", "/nonexistent/dir/log.csv"}}).error,
             "cannot write the command log '/nonexistent/dir/log.csv': No such file or directory");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"command_timeout_s", "0"}}).error,
@@ -135,6 +144,49 @@ TEST(SimPhantomPlugin, FollowsTheWorldsHandAndIsPushedByTorques) {
   ASSERT_EQ(api.stop(device, &err), MHD_OK);
   EXPECT_EQ(api.device_read(device, &state, &err), MHD_ERROR);
   EXPECT_STREQ(err.message, "sim_phantom is not started");
+  api.close(device);
+}
+
+TEST(SimPhantomPlugin, TheImpedanceHandIsPushedBackByTheForceAndSettlesAtForceOverItsStiffness) {
+  const PluginFile file(MHD_SIM_PHANTOM_PLUGIN);
+  const mhd_plugin_api& api = file.api();
+  const Rig rig = pomhi_rig();
+  FakeHost h;
+  const BasePose base{0.5, -0.3, 0.4};  // turned: the hand integrates in W, the force comes in P
+  h.world.set_base_pose({base.x_m, base.z_m, base.heading_rad});
+  const Pose X_W_P = rig.X_W_phantom(rig.X_W_robot_from_base(base));
+  const Eigen::Vector3d hand_P(0.03, 0.12, -0.02);
+  h.world.set_hand(X_W_P * hand_P);
+  const Opened opened = open_plugin(api, h.host,
+                                    {{"position_resolution_m", "0"}, {"hand_model", "impedance"},
+                                     {"hand_mass_kg", "0.5"}, {"hand_stiffness_N_per_m", "200"},
+                                     {"hand_damping_Ns_per_m", "8"}});
+  ASSERT_NE(opened.instance, nullptr) << opened.error;
+  mhd_plugin_instance* device = opened.instance;
+  mhd_error err{};
+  h.now_s = 1.0;
+  ASSERT_EQ(api.start(device, &err), MHD_OK) << err.message;
+  mhd_device_state state{};
+  ASSERT_EQ(api.device_read(device, &state, &err), MHD_OK) << err.message;
+  EXPECT_LT((hip_of(state) - hand_P).norm(), 1e-9);  // the hand starts where it is meant to be
+
+  // The host holds 2 N along P's (1, 0, -1) direction, re-sent every millisecond as tau = J^T F.
+  const Eigen::Vector3d F_P = 2.0 * Eigen::Vector3d(1.0, 0.0, -1.0).normalized();
+  double after_one_tick_m = 0.0;
+  for (int tick = 1; tick <= 3000; ++tick) {
+    const Eigen::Vector3d tau = phantom_joint_torques(rig.device().geometry, angles_of(state), F_P);
+    const mhd_device_command command{h.now_s, {tau[0], tau[1], tau[2]}};
+    ASSERT_EQ(api.device_write(device, &command, &err), MHD_OK) << err.message;
+    h.now_s = 1.0 + 0.001 * tick;
+    ASSERT_EQ(api.simulate_until(device, h.now_s, &err), MHD_OK) << err.message;
+    ASSERT_EQ(api.device_read(device, &state, &err), MHD_OK) << err.message;
+    if (tick == 1) after_one_tick_m = (hip_of(state) - hand_P).norm();
+  }
+  // The hand has mass: one millisecond of 2 N moves it by F t^2 / 2m = 2 µm, not F / k = 10 mm.
+  EXPECT_NEAR(after_one_tick_m, 2.0 * 1e-6 / (2.0 * 0.5), 0.2e-6);
+  // Settled against the arm's spring, the tool sits F / k from where the user means the hand.
+  EXPECT_LT((hip_of(state) - (hand_P + F_P / 200.0)).norm(), 20e-6);
+  ASSERT_EQ(api.stop(device, &err), MHD_OK);
   api.close(device);
 }
 

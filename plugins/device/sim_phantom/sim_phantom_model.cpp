@@ -41,6 +41,7 @@ PhantomSimModel::PhantomSimModel(const PhantomSimConfig& config) : config_(confi
   if (!finite_pose(config.X_robot_phantom) || !finite_pose(config.X_robot_base)) {
     throw std::invalid_argument("rig transforms must be finite");
   }
+  if (config.hand_model == HandModel::Impedance) hand_.emplace(config.hand_impedance);
   const PhantomGeometry& g = config.device.geometry;
   require_positive(g.l1_m, "l1_m");
   require_positive(g.l2_m, "l2_m");
@@ -66,6 +67,7 @@ void PhantomSimModel::start(double t_s) {
   time_s_ = t_s;
   tau_command_.reset();
   watchdog_stopped_ = true;
+  hand_placed_ = false;
   tau_applied_.setZero();
   force_P_.setZero();
 }
@@ -97,11 +99,54 @@ Eigen::Vector3d PhantomSimModel::quantise(const Eigen::Vector3d& q) const {
   return (q / angle_step_rad_).array().round().matrix() * angle_step_rad_;
 }
 
+Eigen::Vector3d PhantomSimModel::tool_force_P(const Eigen::Vector3d& p_P) const {
+  if (tau_applied_.isZero(0.0)) return Eigen::Vector3d::Zero();
+  // The force the motors make at the tool: tau = J^T F.
+  bool ignored = false;
+  const Eigen::Vector3d q = solve(p_P, ignored);
+  const Eigen::FullPivLU<Eigen::Matrix3d> lu(phantom_position_jacobian(config_.device.geometry, q).transpose());
+  if (!lu.isInvertible()) return Eigen::Vector3d::Zero();
+  const Eigen::Vector3d F = lu.solve(tau_applied_);
+  return F.allFinite() ? F : Eigen::Vector3d::Zero();
+}
+
+Eigen::Vector3d PhantomSimModel::kinematic_tool_P(const Eigen::Vector3d& hand_P_m, bool& clamped) {
+  const Eigen::Vector3d hand = clamp(hand_P_m, clamped);
+  force_P_ = tool_force_P(hand);
+  return clamp(hand + force_P_ / config_.hand_stiffness_N_per_m, clamped);
+}
+
+Eigen::Vector3d PhantomSimModel::impedance_tool_P(double dt_s, const BasePose& base, const Eigen::Vector3d& hand_W_m,
+                                                  bool& clamped) {
+  const Eigen::Isometry3d X_W_P = X_W_phantom(base);
+  if (!hand_placed_) {
+    hand_->reset(hand_W_m);
+    hand_placed_ = true;
+    dt_s = 0.0;
+  }
+  // The torques held since the last evaluation push the tool where the hand was then.
+  bool ignored = false;
+  force_P_ = tool_force_P(clamp(X_W_P.inverse(Eigen::Isometry) * hand_->p_W_m(), ignored));
+  hand_->advance(dt_s, hand_W_m, X_W_P.linear() * force_P_);
+  return clamp(X_W_P.inverse(Eigen::Isometry) * hand_->p_W_m(), clamped);
+}
+
+void PhantomSimModel::simulate_until(double t_s, const BasePose& base, const Eigen::Vector3d& hand_W_m) {
+  if (!hand_W_m.allFinite()) throw std::invalid_argument("hand position must be finite");
+  evaluate(t_s, base, hand_W_m, p_P_from_W(base, hand_W_m));
+}
+
 void PhantomSimModel::simulate_until(double t_s, const Eigen::Vector3d& hand_P_m) {
+  if (!hand_P_m.allFinite()) throw std::invalid_argument("hand position must be finite");
+  evaluate(t_s, BasePose{}, X_W_phantom(BasePose{}) * hand_P_m, hand_P_m);
+}
+
+void PhantomSimModel::evaluate(double t_s, const BasePose& base, const Eigen::Vector3d& hand_W_m,
+                               const Eigen::Vector3d& hand_P_m) {
   if (!started_) throw std::logic_error("simulate_until before start");
   if (!std::isfinite(t_s)) throw std::invalid_argument("simulation time must be finite");
-  if (!hand_P_m.allFinite()) throw std::invalid_argument("hand position must be finite");
   if (t_s < time_s_) return;
+  const double dt_s = t_s - time_s_;
   time_s_ = t_s;
 
   // Torques in effect: the latest command, unless it is older than command_timeout_s.
@@ -111,19 +156,8 @@ void PhantomSimModel::simulate_until(double t_s, const Eigen::Vector3d& hand_P_m
   tau_applied_ = fresh ? *tau_command_ : Eigen::Vector3d::Zero();
 
   bool clamped = false;
-  const Eigen::Vector3d hand = clamp(hand_P_m, clamped);
-  force_P_.setZero();
-  if (!tau_applied_.isZero(0.0)) {
-    // The force the motors make at the tool where the hand holds it: tau = J^T F.
-    bool ignored = false;
-    const Eigen::Vector3d q_hand = solve(hand, ignored);
-    const Eigen::FullPivLU<Eigen::Matrix3d> lu(phantom_position_jacobian(config_.device.geometry, q_hand).transpose());
-    if (lu.isInvertible()) {
-      const Eigen::Vector3d F = lu.solve(tau_applied_);
-      if (F.allFinite()) force_P_ = F;
-    }
-  }
-  const Eigen::Vector3d target = clamp(hand + force_P_ / config_.hand_stiffness_N_per_m, clamped);
+  const Eigen::Vector3d target =
+      hand_ ? impedance_tool_P(dt_s, base, hand_W_m, clamped) : kinematic_tool_P(hand_P_m, clamped);
   if (clamped) ++workspace_clamps_;
 
   bool failed = false;

@@ -1,7 +1,8 @@
 // The sim_phantom device plugin: the C ABI over PhantomSimModel. Torques are stamped with
 // the host clock when they arrive; the host advances the device with simulate_until(),
 // which reads the hand and the base pose from the simulated world (without a world: a
-// fixed hand, parameter hand_P_m, in the device frame). With command_log, every command
+// fixed hand, parameter hand_P_m, in the device frame). hand_model selects the kinematic
+// hand (a stiff spring) or the impedance hand (a mass-spring-damper pushed by the force). With command_log, every command
 // and every firing of the command watchdog goes to a CSV (sim_common/command_log.h).
 // docs/sim_phantom.md.
 
@@ -57,15 +58,19 @@ struct Instance {
     if (log) log->add(t_s, event, values);
   }
 
-  /// The hand in P: the world's hand seen from the device at the world's base pose.
-  Eigen::Vector3d hand_P() const {
-    if (host.sim_world == nullptr) return rest_hand_P_m;
+  /// Evaluates the device at t_s with the world's hand (where the user means it to be)
+  /// and base pose, or without a world with the hand resting at rest_hand_P_m.
+  void simulate(double t_s) {
+    if (host.sim_world == nullptr) {
+      model.simulate_until(t_s, rest_hand_P_m);
+      return;
+    }
     const mhd_sim_world& w = *host.sim_world;
     BasePose base;
     w.get_base_pose(w.context, &base.x_m, &base.z_m, &base.heading_rad);
     Eigen::Vector3d p_W;
     w.get_hand(w.context, p_W.data());
-    return model.p_P_from_W(base, p_W);
+    model.simulate_until(t_s, base, p_W);
   }
 };
 
@@ -83,7 +88,18 @@ Config read_config(const mhd_param* params, std::size_t count) {
   plugin_support::ParamReader reader(params, count);
   Config c;
   PhantomSimConfig& m = c.model;
-  m.hand_stiffness_N_per_m = reader.positive("hand_stiffness_N_per_m", m.hand_stiffness_N_per_m);
+  const std::string hand_model = reader.optional_text("hand_model").value_or("kinematic");
+  if (hand_model == "impedance") {
+    m.hand_model = HandModel::Impedance;
+    simulation::HandImpedanceParams& h = m.hand_impedance;
+    h.mass_kg = reader.positive("hand_mass_kg", h.mass_kg);
+    h.stiffness_N_per_m = reader.positive("hand_stiffness_N_per_m", h.stiffness_N_per_m);
+    h.damping_Ns_per_m = reader.positive("hand_damping_Ns_per_m", h.damping_Ns_per_m);
+  } else if (hand_model == "kinematic") {
+    m.hand_stiffness_N_per_m = reader.positive("hand_stiffness_N_per_m", m.hand_stiffness_N_per_m);
+  } else {
+    throw plugin_support::ParamError("parameter 'hand_model' must be 'kinematic' or 'impedance', got '" + hand_model + "'");
+  }
   m.command_timeout_s = reader.positive("command_timeout_s", m.command_timeout_s);
   m.position_resolution_m = reader.non_negative("position_resolution_m", m.position_resolution_m);
   m.X_robot_phantom = read_pose(reader, "phantom_position_m", "phantom_rpy_deg", m.X_robot_phantom);
@@ -113,7 +129,7 @@ mhd_status start_instance(mhd_plugin_instance* self, mhd_error* err) {
   return call(self, plugin_support::Need::Open, err, [&](Instance& s) {
     const double now = plugin_support::host_now(s.host);
     s.model.start(now);
-    s.model.simulate_until(now, s.hand_P());
+    s.simulate(now);
     s.started = true;
     s.read_once = false;
     s.log_event(now, plugin_support::CommandEvent::Start);
@@ -168,7 +184,7 @@ mhd_status device_write(mhd_plugin_instance* self, const mhd_device_command* com
 mhd_status simulate_until(mhd_plugin_instance* self, double t_s, mhd_error* err) {
   return call(self, plugin_support::Need::Running, err, [&](Instance& s) {
     const bool was_commanded = !s.model.watchdog_stopped();
-    s.model.simulate_until(t_s, s.hand_P());
+    s.simulate(t_s);
     if (was_commanded && s.model.watchdog_stopped()) {
       // The device's own watchdog fired: the last torques expired command_timeout_s after they came.
       s.log_event(s.model.command_time_s() + s.model.config().command_timeout_s, plugin_support::CommandEvent::Timeout);
@@ -183,7 +199,7 @@ constexpr mhd_plugin_api kApi = {
     MHD_PLUGIN_KIND,
     MHD_PLUGIN_NAME,  // both from mhd_add_plugin, so the table matches the file name
     "1.0.0",
-    "Simulated PHANToM Premium 1.5 held by the simulated hand: IK, hand spring, torque watchdog",
+    "Simulated PHANToM Premium 1.5 held by the simulated hand (spring or impedance): IK, torque watchdog",
     open_instance,
     start_instance,
     stop_instance,
