@@ -1,30 +1,33 @@
 # Building MHD plugins: shared libraries that speak the plugin ABI
-# (plugins/include/mhd/plugin_abi.h, docs/plugins.md).
+# (plugins/include/mhd/plugin_abi.h, docs/plugins.md). The same file serves the MHD tree
+# (through MhdPluginAbi.cmake) and out-of-tree projects (installed; find_package(MHD)
+# includes it), which is why it needs only what both provide: MHD_PLUGIN_ABI_VERSION,
+# MHD_PLUGIN_INSTALL_DIR and the target MHD::plugin_abi.
 #
 # mhd_add_plugin(NAME <name> KIND <device|tracker|base|display> SOURCES ...
 #                [DEPS ...] [OUTPUT_DIRECTORY <dir>] [NO_INSTALL])
-# builds the MODULE library libmhd_<name>.so (target mhd_<name>) into
-# ${MHD_PLUGIN_BUILD_DIR} (or OUTPUT_DIRECTORY), where the host's search path finds it.
-# Symbols are hidden except the entry point; warnings are errors as for all MHD code.
+# builds the MODULE library libmhd_<name>.so (target mhd_<name>), from C or C++ sources,
+# into ${MHD_PLUGIN_BUILD_DIR} (or OUTPUT_DIRECTORY), where the host's search path finds
+# it. Symbols are hidden except the entry point; MHD's warnings are on (per language), and
+# are errors when MHD_WERROR is ON (always in the MHD tree; off unless set out of tree).
 # The sources see MHD_PLUGIN_NAME ("<name>") and MHD_PLUGIN_KIND (MHD_KIND_<KIND>) so
 # the table and the file name cannot disagree. Installed to ${MHD_PLUGIN_INSTALL_DIR}
-# unless NO_INSTALL (test plugins).
-include_guard(GLOBAL)
+# (relative to the install prefix; the folder an mhd installed in the same prefix
+# searches) unless NO_INSTALL (test plugins).
+# No include guard: find_package(MHD) in several folders includes this file in each, and
+# each folder needs the variables set here.
+include("${CMAKE_CURRENT_LIST_DIR}/MhdWarnings.cmake")
 
-set(MHD_PLUGIN_INCLUDE_DIR "${CMAKE_CURRENT_LIST_DIR}/../plugins/include")
-cmake_path(NORMAL_PATH MHD_PLUGIN_INCLUDE_DIR)
-file(STRINGS "${MHD_PLUGIN_INCLUDE_DIR}/mhd/plugin_abi.h" _mhd_abi_line
-     REGEX "^#define MHD_PLUGIN_ABI_VERSION [0-9]+u?$")
-string(REGEX REPLACE "^#define MHD_PLUGIN_ABI_VERSION ([0-9]+)u?$" "\\1" MHD_PLUGIN_ABI_VERSION "${_mhd_abi_line}")
-if(NOT MHD_PLUGIN_ABI_VERSION MATCHES "^[0-9]+$")
-  message(FATAL_ERROR "cannot read MHD_PLUGIN_ABI_VERSION from plugin_abi.h")
+foreach(_mhd_required MHD_PLUGIN_ABI_VERSION MHD_PLUGIN_INSTALL_DIR)
+  if(NOT DEFINED ${_mhd_required})
+    message(FATAL_ERROR "MhdPlugin.cmake: ${_mhd_required} is not set (use find_package(MHD), not include())")
+  endif()
+endforeach()
+if(NOT TARGET MHD::plugin_abi)
+  message(FATAL_ERROR "MhdPlugin.cmake: no target MHD::plugin_abi (use find_package(MHD), not include())")
 endif()
-# The ABI version is part of the folder, so a host only ever sees plugins of its ABI.
 set(MHD_PLUGIN_SUBDIR "mhd/plugins-abi${MHD_PLUGIN_ABI_VERSION}")
 set(MHD_PLUGIN_BUILD_DIR "${CMAKE_BINARY_DIR}/lib/${MHD_PLUGIN_SUBDIR}")
-set(MHD_PLUGIN_INSTALL_DIR "lib/${MHD_PLUGIN_SUBDIR}")
-
-install(FILES "${MHD_PLUGIN_INCLUDE_DIR}/mhd/plugin_abi.h" DESTINATION include/mhd)
 
 function(mhd_add_plugin)
   cmake_parse_arguments(ARG "NO_INSTALL" "NAME;KIND;OUTPUT_DIRECTORY" "SOURCES;DEPS" ${ARGN})
@@ -47,8 +50,7 @@ function(mhd_add_plugin)
   string(TOUPPER "${ARG_KIND}" kind_upper)
   target_compile_definitions(${target} PRIVATE
     MHD_PLUGIN_NAME="${ARG_NAME}" MHD_PLUGIN_KIND=MHD_KIND_${kind_upper})
-  target_include_directories(${target} PRIVATE "${MHD_PLUGIN_INCLUDE_DIR}")
-  target_link_libraries(${target} PRIVATE ${ARG_DEPS})
+  target_link_libraries(${target} PRIVATE MHD::plugin_abi ${ARG_DEPS})
   set_target_properties(${target} PROPERTIES
     PREFIX "lib"
     OUTPUT_NAME "mhd_${ARG_NAME}"

@@ -11,8 +11,8 @@
 #include <system_error>
 #include <utility>
 
-#ifndef MHD_BUILD_PLUGIN_DIR
-#error "MHD_BUILD_PLUGIN_DIR must be defined by CMake"
+#if !defined(MHD_BUILD_PLUGIN_DIR) || !defined(MHD_INSTALLED_PLUGIN_DIR_FROM_BINDIR)
+#error "MHD_BUILD_PLUGIN_DIR and MHD_INSTALLED_PLUGIN_DIR_FROM_BINDIR must be defined by CMake"
 #endif
 
 namespace mhd {
@@ -52,6 +52,8 @@ fs::path versioned_plugin_subdir() { return fs::path("mhd") / fmt::format("plugi
 
 fs::path build_tree_plugin_dir() { return fs::path(MHD_BUILD_PLUGIN_DIR); }
 
+fs::path installed_plugin_dir_from_bindir() { return fs::path(MHD_INSTALLED_PLUGIN_DIR_FROM_BINDIR); }
+
 std::vector<PluginFolder> plugin_folders(const std::vector<fs::path>& command_line, std::string_view env_value,
                                          const fs::path& executable) {
   std::vector<PluginFolder> folders;
@@ -66,11 +68,15 @@ std::vector<PluginFolder> plugin_folders(const std::vector<fs::path>& command_li
     add(fs::path(env_value.substr(0, colon)), PluginFolderSource::Environment);
     env_value = colon == std::string_view::npos ? std::string_view() : env_value.substr(colon + 1);
   }
+  bool installed = false;
   if (!executable.empty()) {
-    add((executable.parent_path() / ".." / "lib" / versioned_plugin_subdir()).lexically_normal(),
-        PluginFolderSource::Executable);
+    const fs::path dir = (executable.parent_path() / installed_plugin_dir_from_bindir()).lexically_normal();
+    add(dir, PluginFolderSource::Executable);
+    std::error_code ec;
+    installed = fs::is_directory(dir, ec);
   }
-  add(build_tree_plugin_dir(), PluginFolderSource::BuildTree);
+  // An installed mhd must not pick up plugins from whatever build tree it was made in.
+  if (!installed) add(build_tree_plugin_dir(), PluginFolderSource::BuildTree);
   return folders;
 }
 

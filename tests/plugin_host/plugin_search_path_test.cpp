@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <cstdlib>
+#include <iterator>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -56,7 +57,8 @@ TEST(PluginFolders, CommandLineThenEnvironmentThenInstalledThenBuildTree) {
   const auto folders = plugin_folders({"/cmd/a", "/cmd/b"}, "/env/c::/env/d", "/opt/mhd/bin/mhd");
   ASSERT_EQ(folders.size(), 6u);
   EXPECT_EQ(dirs_of(folders), (std::vector<fs::path>{"/cmd/a", "/cmd/b", "/env/c", "/env/d",
-                                                     "/opt/mhd/lib/mhd/plugins-abi" + std::to_string(MHD_PLUGIN_ABI_VERSION), build_tree_plugin_dir()}));
+                                                     ("/opt/mhd/bin" / installed_plugin_dir_from_bindir()).lexically_normal(),
+                                                     build_tree_plugin_dir()}));
   EXPECT_EQ(folders[0].source, PluginFolderSource::CommandLine);
   EXPECT_EQ(folders[2].source, PluginFolderSource::Environment);
   EXPECT_EQ(folders[4].source, PluginFolderSource::Executable);
@@ -70,6 +72,13 @@ TEST(PluginFolders, AFolderNamedTwiceKeepsItsFirstPlace) {
 
 TEST(PluginFolders, VersionedFolders) {
   EXPECT_EQ(versioned_plugin_subdir(), fs::path("mhd/plugins-abi" + std::to_string(MHD_PLUGIN_ABI_VERSION)));
+  // bin/ and lib/ are siblings under the prefix (GNUInstallDirs), whatever the libdir.
+  const fs::path installed = installed_plugin_dir_from_bindir();
+  ASSERT_GE(std::distance(installed.begin(), installed.end()), 4) << installed;
+  EXPECT_EQ(*installed.begin(), "..") << installed;
+  EXPECT_EQ(*std::next(installed.begin()), "lib") << installed;
+  EXPECT_EQ(installed.filename(), versioned_plugin_subdir().filename()) << installed;
+  EXPECT_EQ(installed.parent_path().filename(), "mhd") << installed;
   EXPECT_EQ(build_tree_plugin_dir().filename(), "plugins-abi" + std::to_string(MHD_PLUGIN_ABI_VERSION));
   EXPECT_EQ(build_tree_plugin_dir().parent_path().filename(), "mhd");
 }
@@ -81,8 +90,21 @@ TEST(PluginFolders, StandardReadsTheEnvironmentAndTheExecutable) {
   const fs::path executable = fs::read_symlink("/proc/self/exe");
   EXPECT_EQ(dirs_of(search.folders()),
             (std::vector<fs::path>{"/cmd", "/env/one", "/env/two",
-                                   (executable.parent_path() / ("../lib/mhd/plugins-abi" + std::to_string(MHD_PLUGIN_ABI_VERSION))).lexically_normal(),
+                                   (executable.parent_path() / installed_plugin_dir_from_bindir()).lexically_normal(),
                                    build_tree_plugin_dir()}));
+}
+
+TEST_F(PluginSearchPathTest, AnInstalledExecutableNeverSearchesTheBuildTree) {
+  const fs::path prefix = folder("prefix");
+  const fs::path executable = prefix / "bin" / "mhd";
+  const fs::path installed = (executable.parent_path() / installed_plugin_dir_from_bindir()).lexically_normal();
+  EXPECT_EQ(dirs_of(plugin_folders({}, "", executable)), (std::vector<fs::path>{installed, build_tree_plugin_dir()}))
+      << "no installed plugin folder yet: the executable runs from a tree";
+  fs::create_directories(installed);
+  const auto folders = plugin_folders({}, "", executable);
+  EXPECT_EQ(dirs_of(folders), (std::vector<fs::path>{installed}));
+  ASSERT_EQ(folders.size(), 1u);
+  EXPECT_EQ(folders[0].source, PluginFolderSource::Executable);
 }
 
 TEST_F(PluginSearchPathTest, CommandLineBeforeEnvironmentBeforeBuildTree) {

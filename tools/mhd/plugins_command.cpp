@@ -86,7 +86,8 @@ void add_plugins_command(CLI::App& app) {
   const std::string versioned = mhd::versioned_plugin_subdir().string();
   plugins->footer(
       "Folders are searched in this order: --plugin-path, $MHD_PLUGIN_PATH (colon-separated),\n"
-      "<mhd's folder>/../lib/" + versioned + ", then the build tree's lib/" + versioned + ".\n"
+      "<mhd's folder>/" + mhd::installed_plugin_dir_from_bindir().string() + ", then (only if that folder\n"
+      "does not exist) the build tree's lib/" + versioned + ".\n"
       "Plugin NAME is the file libmhd_NAME.so; the first folder holding it wins.\n"
       "Exit status 0 if every plugin file loads, 1 if any is broken (errors on stderr).");
   plugins->callback([options] {

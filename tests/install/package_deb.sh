@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# cpack -G DEB makes the two packages of cmake/MhdPackaging.cmake, and each says what
+# it needs: mhd's Depends (from dpkg-shlibdeps) name the shared libraries its programs
+# and plugins load; mhd-dev's name mhd of the same version and the -dev packages
+# MHDConfig.cmake finds. Their contents sit where the installed mhd looks.
+# Usage: package_deb.sh <cpack> <build dir> <version> <libdir>
+set -euo pipefail
+cpack_exe="$1" build="$2" version="$3" libdir="$4"
+scratch="$(mktemp -d "${TMPDIR:-/tmp}/mhd_package_test.XXXXXX")"
+trap 'rm -rf "$scratch"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+"$cpack_exe" --config "$build/CPackConfig.cmake" -G DEB -B "$scratch" >"$scratch/cpack.log" 2>&1 \
+  || { cat "$scratch/cpack.log"; fail "cpack"; }
+arch="$(dpkg --print-architecture)"
+runtime="$scratch/mhd_${version}_${arch}.deb"
+dev="$scratch/mhd-dev_${version}_${arch}.deb"
+[ -f "$runtime" ] && [ -f "$dev" ] || { ls "$scratch"; fail "expected mhd_${version}_${arch}.deb and mhd-dev_${version}_${arch}.deb"; }
+
+depends="$(dpkg-deb -f "$runtime" Depends)"
+echo "mhd Depends: $depends"
+for lib in libc6 libstdc\\+\\+6 libassimp5 libtinyxml2-9 libspdlog1 libfmt9 libbullet; do
+  grep -qE "(^|, )$lib" <<<"$depends" || fail "mhd's Depends lacks $lib"
+done
+dev_depends="$(dpkg-deb -f "$dev" Depends)"
+echo "mhd-dev Depends: $dev_depends"
+grep -qF "mhd (= $version)" <<<"$dev_depends" || fail "mhd-dev does not depend on mhd (= $version)"
+for pkg in libeigen3-dev libassimp-dev libbullet-dev; do
+  grep -qF "$pkg" <<<"$dev_depends" || fail "mhd-dev's Depends lacks $pkg"
+done
+
+runtime_files="$(dpkg-deb -c "$runtime")"
+dev_files="$(dpkg-deb -c "$dev")"
+for f in ./usr/bin/mhd "./usr/$libdir/mhd/plugins-abi2/libmhd_sim_phantom.so" ./usr/share/mhd/scenes/scene.xsd \
+         ./usr/share/doc/mhd/LICENSE; do
+  grep -qF " $f" <<<"$runtime_files" || fail "mhd lacks $f"
+done
+for f in ./usr/include/mhd/plugin_abi.h "./usr/$libdir/cmake/MHD/MHDConfig.cmake" "./usr/$libdir/pkgconfig/mhd-plugin.pc"; do
+  grep -qF " $f" <<<"$dev_files" || fail "mhd-dev lacks $f"
+done
+if grep -qF "include/mhd" <<<"$runtime_files"; then fail "mhd (runtime) holds headers"; fi
+echo "packages: ok"
