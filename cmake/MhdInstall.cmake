@@ -16,7 +16,8 @@ set(MHD_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/MHD")
 set(MHD_INSTALL_DATADIR "${CMAKE_INSTALL_DATADIR}/mhd")
 
 # ---- runtime: programs, plugins (mhd_add_plugin installs each), data, docs --------------
-set(_mhd_programs mhd mhd-mesh-gen mhd-popthrough-stress mhd-proxy-bench mhd-load-bench mhd-server-bench)
+set(_mhd_programs mhd mhd-mesh-gen mhd-popthrough-stress mhd-proxy-bench mhd-load-bench mhd-server-bench
+  mhd-hand-stability)
 foreach(program IN LISTS _mhd_programs)
   if(TARGET ${program})  # partial builds (MHD_SKIP_DIRS, MHD_BUILD_BENCHMARKS=OFF) lack some
     install(TARGETS ${program} RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}" COMPONENT runtime)
