@@ -44,7 +44,7 @@ class SceneFixture : public ::testing::Test {
   /// Ticks that ended with the proxy inside or on a closed object.
   [[nodiscard]] std::size_t count_ticks_inside(const TickRecord& records) const;
 
-  /// The ANCHORS.md strokes and the fast stress strokes over the loaded scene.
+  /// The benchmark protocol's strokes (docs/benchmarks.md) and the fast stress strokes over the loaded scene.
   [[nodiscard]] StrokeSet anchor_strokes(std::uint64_t seed, int count, const AnchorStrokeParams& params = {}) const;
   [[nodiscard]] StrokeSet fast_strokes(std::uint64_t seed, int count, const FastStrokeParams& params = {}) const;
 

@@ -1,4 +1,4 @@
-// mhd-proxy-bench: the ANCHORS.md protocol on each benchmark scene. 200 random strokes
+// mhd-proxy-bench: the stroke protocol (docs/benchmarks.md) on each benchmark scene. 200 random strokes
 // at 0.5 m/s and 1 kHz; per-update times (median / p99 / p99.9 / max, one core) over the
 // ticks in contact and over all ticks (free-space transit included), the ticks that ran
 // out of the proxy's work budget, the most sweeps in one tick, and the exact pop-through
@@ -21,7 +21,7 @@
 
 namespace {
 
-// The ANCHORS.md protocol's continuous path: the strokes joined, never reset, by moves
+// The stroke protocol's continuous path: the strokes joined, never reset, by moves
 // through free space round and behind the object at the strokes' speed. A join leaves
 // along the last stroke's surface normal to a sphere round the object, follows the
 // sphere and comes in along the next stroke's normal; if a leg of that touches the
@@ -118,7 +118,7 @@ int main(int argc, char** argv) {
   std::uint64_t seed = 1;
   double speed = 0.5;
   double rate = 1000.0;
-  CLI::App app{"Proxy update benchmark over the ANCHORS.md stroke protocol", "mhd-proxy-bench"};
+  CLI::App app{"Proxy update benchmark over the stroke protocol of docs/benchmarks.md", "mhd-proxy-bench"};
   app.add_option("scenes", scenes, "Scene files (default: scenes/benchmarks/*)");
   app.add_option("--strokes", strokes, "Strokes per scene");
   app.add_option("--seed", seed, "Stroke seed");

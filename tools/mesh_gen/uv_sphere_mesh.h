@@ -1,5 +1,5 @@
 #pragma once
-// Latitude/longitude ("UV") sphere: the benchmark sphere of ../shared/ANCHORS.md, whose
+// Latitude/longitude ("UV") sphere: the benchmark sphere (docs/benchmarks.md), whose
 // triangles shrink to slivers at the poles.
 
 #include "geometry/triangle_mesh.h"

@@ -1,4 +1,4 @@
-// `mhd strokes SCENE`: loads a scene and drives the scripted stroke set (the ANCHORS.md
+// `mhd strokes SCENE`: loads a scene and drives the scripted stroke set (the benchmark protocol of docs/benchmarks.md,
 // protocol) through the god-object proxy at the haptic rate, without plugins or threads,
 // then prints contacts, forces, update timings, an exact pop-through count (CGAL) and
 // an exact follow-failure count (the proxy did not go to a HIP it could reach).

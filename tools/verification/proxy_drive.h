@@ -65,7 +65,7 @@ struct Crossing {
 [[nodiscard]] std::vector<Crossing> find_crossings(const SurfaceCrossingOracle& oracle, const TickRecord& records);
 /// find_crossings(...).size(): the number of legs that touch the surface.
 [[nodiscard]] std::size_t count_crossings(const SurfaceCrossingOracle& oracle, const TickRecord& records);
-/// Ticks that ended with the proxy inside or on a closed object (ANCHORS.md's "ended
+/// Ticks that ended with the proxy inside or on a closed object (the benchmark protocol's "ended
 /// inside the surface"). Open objects have no inside and never count.
 [[nodiscard]] std::size_t count_ticks_inside(const SurfaceCrossingOracle& oracle, const TickRecord& records);
 

@@ -1,8 +1,9 @@
 #pragma once
-// HIP trajectories for tests and benchmarks. make_anchor_strokes() is the stroke
-// protocol of ANCHORS.md (approach from 20 mm outside to 5 mm inside along the surface
-// normal, slide 50 mm 5 mm deep, retract); make_fast_strokes() is a stress variant:
-// straight pokes through the surface at random speeds and grazing angles.
+// HIP trajectories for tests and benchmarks. make_anchor_strokes() is the benchmark
+// stroke protocol (docs/benchmarks.md, "The stroke protocol": approach from 20 mm
+// outside to 5 mm inside along the surface normal, slide 50 mm 5 mm deep, retract);
+// make_fast_strokes() is a stress variant: straight pokes through the surface at random
+// speeds and grazing angles.
 // Both are deterministic for a seed (std::mt19937_64 and our own number mapping, so
 // the same on every platform) and start every stroke in free space.
 
@@ -78,7 +79,7 @@ struct FastStrokeParams {
   int max_attempts_per_stroke = 10000;
 };
 
-/// The ANCHORS.md strokes. The start (outside_m along the face normal) is kept only if
+/// The benchmark protocol's strokes. The start (outside_m along the face normal) is kept only if
 /// it is at least min_start_clearance_m from every triangle, not inside a closed object,
 /// and the approach segment meets no surface before the anchor point.
 /// Throws std::runtime_error if a stroke cannot be placed (e.g. an empty surface).
