@@ -302,16 +302,18 @@ TEST(DdsHapticServer, LossyTrackerStreamNeverMakesTheHipLeap) {
   // where its output follows a least-squares fit and may jump by design
   // (base_pose_predictor.h, startup_samples). A tick whose tracker_age_s fell took in
   // at least one new sample, so the check starts after the 10th such tick.
-  // The server's own count of HIP jumps (ForceSafety: over hip_jump_m, 10 mm, in one
-  // tick, whatever the tick's length) must match the recording's: on a loaded machine
-  // the first samples come in bursts and the start-up fit may leap, and a tick 12 ms late
-  // sees the base 7 mm further (none of either seen unloaded).
+  // The server's own count of HIP jumps must match the recording's, judged as ForceSafety
+  // judges them: a step over hip_jump_m (10 mm) per millisecond of the tick, never less
+  // than 10 mm (force_safety.h). On a loaded machine the first samples come in bursts and
+  // the start-up fit may leap, and a tick 12 ms late sees the base 7 mm further (none of
+  // either seen unloaded); a 12 mm step in a 2 ms tick is no jump to either.
   int arrivals = 0;
   double hip_travel_m = 0.0;
   std::size_t steps = 0, recorded_jumps = 0;
   for (auto it = first + 1; it != rows.end(); ++it) {
     const auto prev = it - 1;
-    if ((it->hip_W_m - prev->hip_W_m).norm() > 0.01) ++recorded_jumps;
+    const double jump_threshold_m = 0.01 * std::max(1.0, (it->t_s - prev->t_s) / 0.001);
+    if ((it->hip_W_m - prev->hip_W_m).norm() > jump_threshold_m) ++recorded_jumps;
     if (arrivals < 10) {
       if (it->tracker_age_s < prev->tracker_age_s) ++arrivals;
       continue;
