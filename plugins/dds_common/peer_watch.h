@@ -9,6 +9,11 @@
 //   DCPSPublication / DCPSSubscription only once it is authenticated and permitted.
 // A peer heard for longer than a grace period without one visible endpoint is counted
 // as refused. Every MHD process has endpoints, so an admitted MHD peer never counts.
+// The builtin topics are read when the counts are asked for, on the caller's thread, not
+// in Cyclone's listener threads: those synchronise through Cyclone's own locks, which a
+// thread checker cannot see (it reported our mutex as raced). When a peer was first heard
+// is its announcement's source timestamp (never later than now), so the grace does not
+// depend on how often the counts are read.
 
 #include "dds_common/dds_entity.h"
 
@@ -29,28 +34,27 @@ class PeerWatch {
     std::uint32_t refused = 0;   ///< heard for longer than the grace, no endpoint visible
   };
 
-  /// Watches `participant`'s discovery (it must outlive this). Listener callbacks run
-  /// on Cyclone's threads; counts() may be called from any other thread.
+  /// Watches `participant`'s discovery (it must outlive this).
   explicit PeerWatch(const Participant& participant, std::int64_t grace_ns = 2'000'000'000);
   PeerWatch(const PeerWatch&) = delete;
   PeerWatch& operator=(const PeerWatch&) = delete;
   ~PeerWatch();
 
-  /// The counts as of `now_ns` (dds_time() clock), this participant itself left out.
-  [[nodiscard]] Counts counts(std::int64_t now_ns) const;
+  /// Reads what discovery has heard since the last call and returns the counts as of
+  /// `now_ns` (dds_time() clock), this participant itself left out. Any thread; calls are
+  /// serialised.
+  [[nodiscard]] Counts counts(std::int64_t now_ns);
 
  private:
   struct Peer {
     std::int64_t first_heard_ns = -1;  ///< -1: known only from an endpoint so far
     bool has_endpoint = false;
   };
-  static void on_participants(dds_entity_t reader, void* self);
-  static void on_endpoints(dds_entity_t reader, void* self);
-  void take(dds_entity_t reader, bool endpoints);
+  void take(dds_entity_t reader, bool endpoints, std::int64_t now_ns);
 
   std::int64_t grace_ns_;
   dds_guid_t own_{};
-  mutable std::mutex mutex_;  // Cyclone's listener threads against counts(); never the haptic thread
+  std::mutex mutex_;  // callers of counts(); never the haptic thread
   std::map<std::array<std::uint8_t, 16>, Peer> peers_;
   Entity participants_, publications_, subscriptions_;
 };

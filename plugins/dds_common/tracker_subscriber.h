@@ -38,7 +38,7 @@ class TrackerSubscriber {
     return subscriber_.reader().subscription_matched();
   }
   /// Remote participants heard, admitted and refused (peer_watch.h), as of `now_ns`.
-  [[nodiscard]] PeerWatch::Counts peers(std::int64_t now_ns) const { return peers_.counts(now_ns); }
+  [[nodiscard]] PeerWatch::Counts peers(std::int64_t now_ns) { return peers_.counts(now_ns); }
   /// Refusals Cyclone logged in this process (security_refusal_log.h).
   [[nodiscard]] static std::uint64_t security_refusals() { return SecurityRefusalLog::refusals(); }
 
