@@ -90,7 +90,7 @@ TEST(ThreeProcessExample, SecuredTrackerServerMeasuresTheBaseTheHapticServerMove
   EXPECT_GT(moved_m, 0.3) << report.status.base.x_m << " " << report.status.base.z_m;
   EXPECT_GT(std::hypot(report.status.base.x_m, report.status.base.z_m), 0.1);
   EXPECT_NE(log.find("measuring the simulated world the rig's haptic server publishes"), std::string::npos) << log;
-  EXPECT_EQ(log.find("0 states measured"), std::string::npos) << log;
+  EXPECT_EQ(log.find("shared world: 0 states measured"), std::string::npos) << log;
   EXPECT_NE(log.find(", 0 refused"), std::string::npos) << log;
 
   std::error_code ec;
