@@ -1,7 +1,8 @@
 #pragma once
 // MHD's topics: one name, type and QoS per sample type (mhd_dds_types.idl).
 // Poses and rig state are best-effort keep-last (a late pose is worthless, a resent one
-// arrives late); base commands and rig status are reliable. Tracker samples and base
+// arrives late); base commands and rig status are reliable. The simulated world
+// (simulation only) is best-effort keep-last like a pose. Tracker samples and base
 // commands are owned exclusively: per (rig, sensor) instance a reader takes samples
 // from the strongest live writer only (docs/networking.md, "Security"). Every endpoint
 // lives in its rig's partition (rig_partition.h).
@@ -53,6 +54,13 @@ struct TopicTraits<mhd_dds_RigStatus> {
   static constexpr const char* name = "mhd_rig_status";
   static const dds_topic_descriptor_t& descriptor() { return mhd_dds_RigStatus_desc; }
   static Qos qos() { return Qos::reliable(1, /*transient_local=*/true); }
+};
+
+template <>
+struct TopicTraits<mhd_dds_SimWorld> {
+  static constexpr const char* name = "mhd_sim_world";
+  static const dds_topic_descriptor_t& descriptor() { return mhd_dds_SimWorld_desc; }
+  static Qos qos() { return Qos::best_effort(4); }
 };
 
 /// The topic of T in `participant`, with T's name, type and QoS.

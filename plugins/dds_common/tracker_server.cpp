@@ -2,6 +2,7 @@
 
 #include "dds_common/dds_convert.h"
 #include "dds_common/dds_topics.h"
+#include "dds_common/shared_sim_world.h"
 #include "plugin_host/host_services.h"
 #include "plugin_host/open_plugin.h"
 #include "plugin_host/plugin_search_path.h"
@@ -15,6 +16,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <optional>
 #include <thread>
 
 namespace mhd::dds {
@@ -65,19 +67,22 @@ TrackerServerReport run_tracker_server(const TrackerServerOptions& options, cons
   const PluginDescription description = tracker_of(scene, options.scene_file, options);
 
   simulation::SimulatedWorld world;
-  // The scene's <simulated_user> when it has one (the same walker the haptic server's
-  // scene names), else a random walk seeded by --seed.
-  simulation::SimulatedUserConfig user_config;
-  user_config.seed = options.user_seed;
-  if (scene.simulated_user) {
-    auto parsed = simulation::simulated_user_config_from(*scene.simulated_user);
-    if (!parsed.config) throw TrackerServerError(parsed.diagnostics.front().to_string());
-    user_config = std::move(*parsed.config);
+  // Not shared: the scene's <simulated_user> when it has one, else a random walk seeded
+  // by --seed. Shared: the haptic server's user and base, received below.
+  std::optional<simulation::SimulatedUser> user;
+  if (!options.shared_world) {
+    simulation::SimulatedUserConfig user_config;
+    user_config.seed = options.user_seed;
+    if (scene.simulated_user) {
+      auto parsed = simulation::simulated_user_config_from(*scene.simulated_user);
+      if (!parsed.config) throw TrackerServerError(parsed.diagnostics.front().to_string());
+      user_config = std::move(*parsed.config);
+    }
+    user.emplace(user_config);
   }
-  simulation::SimulatedUser user(user_config);
   HostServices host(&world.table());
   host.set_scene_file(std::filesystem::absolute(options.scene_file));
-  user.update(host.now_s(), world);
+  if (user) user->update(host.now_s(), world);
 
   const PluginSearchPath search = PluginSearchPath::standard(options.plugin_paths);
   PluginResult<PluginInstance> opened = open_plugin(search, description, host.abi());
@@ -87,25 +92,43 @@ TrackerServerReport run_tracker_server(const TrackerServerOptions& options, cons
   const Participant participant(options.domain_id, {}, options.identity_dir);
   Publisher<mhd_dds_TrackerSample> publisher(participant, rig_partition(options.rig_id), options.ownership_strength);
 
-  if (PluginStatus started = tracker.start(); !started) fail(started.error());
-  if (on_started) {
-    on_started(fmt::format("tracker '{}' publishing rig {} on DDS (partition {}, ownership strength {}, {})",
-                           tracker.name(), options.rig_id, rig_partition(options.rig_id), options.ownership_strength,
-                           participant.secured() ? "secured as " + participant.identity_dir().string()
-                                                 : std::string("unsecured")));
-  }
-
   TrackerServerReport report;
   report.plugin = tracker.name();
-  std::array<mhd_tracker_sample, 64> samples{};
+  // The duration counts from here, the wait for a shared world included.
   const double t0_s = host.now_s();
+  std::optional<SimWorldSubscriber> shared;
+  if (options.shared_world) {
+    shared.emplace(participant, options.rig_id);
+    while (!shared->apply_newest(world.table())) {
+      if (stop.load(std::memory_order_relaxed) ||
+          (options.duration_s && host.now_s() - t0_s >= *options.duration_s)) {
+        report.elapsed_s = host.now_s() - t0_s;
+        report.world_states_rejected = shared->rejected();
+        if (PluginStatus closed = tracker.close(); !closed) fail(closed.error());
+        return report;
+      }
+      (void)shared->wait(DDS_MSECS(50));
+    }
+  }
+
+  if (PluginStatus started = tracker.start(); !started) fail(started.error());
+  if (on_started) {
+    on_started(fmt::format("tracker '{}' publishing rig {} on DDS (partition {}, ownership strength {}, {}){}",
+                           tracker.name(), options.rig_id, rig_partition(options.rig_id), options.ownership_strength,
+                           participant.secured() ? "secured as " + participant.identity_dir().string()
+                                                 : std::string("unsecured"),
+                           shared ? ", measuring the simulated world the rig's haptic server publishes" : ""));
+  }
+
+  std::array<mhd_tracker_sample, 64> samples{};
   const auto period = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
       std::chrono::duration<double>(options.poll_period_s));
   auto next = std::chrono::steady_clock::now();
   while (!stop.load(std::memory_order_relaxed)) {
     const double now_s = host.now_s();
     if (options.duration_s && now_s - t0_s >= *options.duration_s) break;
-    user.update(now_s, world);
+    if (user) user->update(now_s, world);
+    if (shared) (void)shared->apply_newest(world.table());
     if (tracker.simulates()) {
       if (auto r = tracker.simulate_until(now_s); !r) fail(r.error());
     }
@@ -129,6 +152,10 @@ TrackerServerReport run_tracker_server(const TrackerServerOptions& options, cons
     std::this_thread::sleep_until(next);
   }
   report.elapsed_s = host.now_s() - t0_s;
+  if (shared) {
+    report.world_states = shared->applied();
+    report.world_states_rejected = shared->rejected();
+  }
   if (PluginStatus stopped = tracker.close(); !stopped) fail(stopped.error());
   return report;
 }

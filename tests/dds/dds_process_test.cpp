@@ -334,5 +334,22 @@ TEST(DdsProcesses, TheTrackerServerPrintsTheDiagnosticsOfASceneThatDoesNotRead) 
       << log.text();
 }
 
+TEST(DdsProcesses, WithoutAHapticServerASharedWorldTrackerPublishesNothingAndSaysWhy) {
+  // --shared-world measures only a world that arrived: the simulated user of the scene is
+  // not run, and before a world there is no base to measure.
+  const std::uint32_t domain = test::use_loopback_and_unique_domain(42);
+  const OutputFile log("shared_world_alone");
+  std::vector<std::string> args = server_args("sim_tracker_rig1.xml", domain, 1, 1.0);
+  args.emplace_back("--shared-world");
+  ChildProcess server(args, log.path());
+  ASSERT_EQ(server.wait_for(10s), std::optional<int>(0)) << log.text();
+  EXPECT_NE(log.text().find("published 0 samples of 'sim_is900'"), std::string::npos) << log.text();
+  EXPECT_NE(log.text().find("shared world: 0 states measured, 0 refused (none arrived: does the rig's dds tracker "
+                            "set publish_sim_world?)"),
+            std::string::npos)
+      << log.text();
+  EXPECT_EQ(log.text().find("publishing rig 1"), std::string::npos) << log.text();
+}
+
 }  // namespace
 }  // namespace mhd::dds

@@ -11,12 +11,13 @@
 namespace mhd::dds {
 namespace {
 
-TEST(DdsTrackerPlugin, TheTableIdentifiesATrackerThatDoesNotSimulate) {
+// simulate_until publishes the host's simulated world when asked (publish_sim_world).
+TEST(DdsTrackerPlugin, TheTableIdentifiesATrackerThatCanPublishTheSimulatedWorld) {
   const mhd::test::PluginFile file(MHD_DDS_TRACKER_PLUGIN);
   EXPECT_EQ(file.api().kind, MHD_KIND_TRACKER);
   EXPECT_STREQ(file.api().name, "dds");
   EXPECT_NE(file.api().tracker_read, nullptr);
-  EXPECT_EQ(file.api().simulate_until, nullptr);
+  EXPECT_NE(file.api().simulate_until, nullptr);
   EXPECT_EQ(file.entry(MHD_PLUGIN_ABI_VERSION + 1), nullptr);
 }
 
@@ -31,6 +32,10 @@ TEST(DdsTrackerPlugin, BadParametersAreRefusedWithTheirNames) {
             "parameter 'max_age_s' must be a positive number, got '0'");
   EXPECT_EQ(mhd::test::open_plugin(file.api(), h.host, {{"config_file", "config/cyclonedds-loopback.xml"}}).error,
             "parameter 'config_file' needs 'domain_id'");
+  EXPECT_EQ(mhd::test::open_plugin(file.api(), h.host, {{"publish_sim_world", "yes"}}).error,
+            "parameter 'publish_sim_world' must be 'true' or 'false', got 'yes'");
+  EXPECT_EQ(mhd::test::open_plugin(file.api(), h.host_without_world, {{"publish_sim_world", "true"}}).error,
+            "publish_sim_world: the host has no simulated world (sim_world is NULL)");
 }
 
 TEST(DdsTrackerPlugin, OpensWithAConfigFileAndReadsOnlyWhenStarted) {

@@ -116,12 +116,15 @@ std::vector<std::string> tracker_server_args(const fs::path& scene, std::uint32_
           MHD_DDS_TEST_PLUGIN_DIR};
 }
 
-LoadedScene load_scene(const fs::path& file) {
+LoadedScene load_scene(const fs::path& file) { return load_scene(file, {}); }
+
+LoadedScene load_scene(const fs::path& file, const std::function<void(SceneDescription&)>& edit) {
   LoadedScene l;
   auto read = read_scene_file(file);
   for (const auto& d : read.diagnostics) l.errors.push_back(d.to_string());
   if (!read.ok()) return l;
   l.description = *read.scene;
+  if (edit) edit(*l.description);
   auto compiled = compile_scene(*l.description);
   for (const auto& d : compiled.diagnostics) l.errors.push_back(d.to_string());
   if (compiled.ok()) l.compiled = std::move(*compiled.scene);

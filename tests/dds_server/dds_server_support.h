@@ -67,6 +67,10 @@ struct LoadedScene {
   std::vector<std::string> errors;
 };
 [[nodiscard]] LoadedScene load_scene(const std::filesystem::path& file);
+/// The same, with the description changed by `edit` before it is compiled (a test's
+/// domain id or identity in a shipped scene's plugins).
+[[nodiscard]] LoadedScene load_scene(const std::filesystem::path& file,
+                                     const std::function<void(SceneDescription&)>& edit);
 
 /// The plugin folders: this folder's test plugins, fault_device's, the build's.
 [[nodiscard]] std::vector<std::filesystem::path> plugin_dirs();

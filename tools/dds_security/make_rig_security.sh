@@ -140,13 +140,16 @@ EOF
 
 for rig in "$@"; do
   p=mhd_rig$rig
-  # The tracker server publishes its rig's samples and nothing else.
+  # The tracker server publishes its rig's samples and nothing else; in simulation
+  # (--shared-world) it reads the simulated world its rig's haptic server publishes.
   identity "tracker-rig$rig" "$(rule publish "$p" mhd_tracker_sample)
+$(rule subscribe "$p" mhd_sim_world)
 "
   # The haptic server reads its rig's samples and base commands, publishes its state,
-  # and (the ros2_state display) its ROS 2 topics, which live in the default partition.
+  # in simulation (the dds tracker's publish_sim_world) its simulated world, and (the
+  # ros2_state display) its ROS 2 topics, which live in the default partition.
   identity "haptic-rig$rig" "$(rule subscribe "$p" mhd_tracker_sample mhd_base_command)
-$(rule publish "$p" mhd_rig_state mhd_rig_status)
+$(rule publish "$p" mhd_rig_state mhd_rig_status mhd_sim_world)
 $(rule publish '' "rt/mhd/rig$rig/*")
 "
 done

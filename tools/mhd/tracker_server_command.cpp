@@ -30,6 +30,7 @@ struct TrackerServerCli {
   std::uint64_t seed = 0;
   std::optional<std::string> identity_dir;
   std::int32_t ownership_strength = mhd::dds::kDefaultOwnershipStrength;
+  bool shared_world = false;
 };
 
 int run(const TrackerServerCli& cli) {
@@ -43,6 +44,7 @@ int run(const TrackerServerCli& cli) {
   options.user_seed = cli.seed;
   if (cli.identity_dir) options.identity_dir = *cli.identity_dir;
   options.ownership_strength = cli.ownership_strength;
+  options.shared_world = cli.shared_world;
   g_stop.store(false);
   std::signal(SIGINT, request_stop);
   std::signal(SIGTERM, request_stop);
@@ -54,6 +56,11 @@ int run(const TrackerServerCli& cli) {
         });
     fmt::print("mhd tracker-server: published {} samples of '{}' in {:.2f} s\n", report.published, report.plugin,
                report.elapsed_s);
+    if (cli.shared_world) {
+      fmt::print("mhd tracker-server: shared world: {} states measured, {} refused{}\n", report.world_states,
+                 report.world_states_rejected,
+                 report.world_states == 0 ? " (none arrived: does the rig's dds tracker set publish_sim_world?)" : "");
+    }
     return 0;
   } catch (const mhd::dds::TrackerServerSceneError& e) {
     fmt::print(stderr, "{}\n", e.what());  // "FILE:LINE: error: ..." as `mhd validate` prints them
@@ -91,6 +98,10 @@ void add_tracker_server_command(CLI::App& app) {
                   "Writer strength under exclusive ownership; readers hear only the strongest live writer of a "
                   "sensor (default 10)")
       ->check(CLI::Range(0, 1000000));
+  cmd->add_flag("--shared-world", cli->shared_world,
+               "Simulation: measure the world the rig's haptic server publishes (its dds tracker's "
+               "publish_sim_world: its user and the base it moves) instead of a user simulated here; "
+               "starts on the first world received");
   cmd->footer(
       "Set CYCLONEDDS_URI to a Cyclone configuration, e.g.\n"
       "  CYCLONEDDS_URI=file://$PWD/config/cyclonedds-secure.xml, and an identity with --dds-identity\n"

@@ -4,6 +4,8 @@
 // samples are dropped and counted; the host reads the counts through counters (its
 // status line shows them) and they are printed to stderr when the plugin stops.
 
+#include "dds_common/dds_convert.h"
+#include "dds_common/shared_sim_world.h"
 #include "dds_common/tracker_subscriber.h"
 #include "dds_common/dds_plugin_params.h"
 #include "sim_common/plugin_params.h"
@@ -29,18 +31,22 @@ using plugin_support::guarded_open;
 struct Config {
   dds::DdsEndpoint endpoint;
   dds::TrackerValidationLimits limits;
+  bool publish_sim_world = false;
 };
 
 struct Instance {
   Instance(const mhd_host& h, const Config& c)
       : host(h), config(c), participant(c.endpoint.domain_id, c.endpoint.config, c.endpoint.identity_dir),
-        subscriber(participant, c.limits) {}
+        subscriber(participant, c.limits) {
+    if (c.publish_sim_world) sim_world.emplace(participant, c.endpoint.rig_id);
+  }
 
   std::atomic<bool> in_call{false};  ///< plugin_support::with_instance's
   mhd_host host;
   Config config;
   dds::Participant participant;
   dds::TrackerSubscriber subscriber;
+  std::optional<dds::SimWorldPublisher> sim_world;
   bool started = false;
 };
 
@@ -54,6 +60,12 @@ Config read_config(const mhd_param* params, std::size_t count, const char* scene
   c.limits.max_future_s = reader.non_negative("max_future_s", c.limits.max_future_s);
   c.limits.restart_after_s = reader.positive("restart_after_s", c.limits.restart_after_s);
   c.limits.quaternion_tolerance = reader.positive("quaternion_tolerance", c.limits.quaternion_tolerance);
+  if (const auto publish = reader.optional_text("publish_sim_world")) {
+    if (*publish != "true" && *publish != "false") {
+      throw plugin_support::ParamError("parameter 'publish_sim_world' must be 'true' or 'false', got '" + *publish + "'");
+    }
+    c.publish_sim_world = *publish == "true";
+  }
   reader.reject_unknown();
   return c;
 }
@@ -62,6 +74,9 @@ mhd_plugin_instance* open_instance(const mhd_host* host, const mhd_param* params
   return guarded_open(err, [&] {
     plugin_support::check_host(host);
     const Config config = read_config(params, param_count, host->scene_file);
+    if (config.publish_sim_world && host->sim_world == nullptr) {
+      throw std::runtime_error("publish_sim_world: the host has no simulated world (sim_world is NULL)");
+    }
     return reinterpret_cast<mhd_plugin_instance*>(new Instance(*host, config));
   });
 }
@@ -103,6 +118,18 @@ mhd_status tracker_read(mhd_plugin_instance* self, mhd_tracker_sample* out, size
     if (count == nullptr || (out == nullptr && capacity > 0)) throw std::invalid_argument("tracker_read: NULL output");
     *count = s.subscriber.poll(std::span(out, capacity), plugin_support::host_now(s.host), dds::realtime_ns());
     return *count > 0 ? MHD_OK : MHD_NO_DATA;
+  });
+}
+
+// The host calls this after its simulated user and base have moved to t_s: the world
+// the remote simulated tracker measures is this one, at this moment.
+mhd_status simulate_until(mhd_plugin_instance* self, double t_s, mhd_error* err) {
+  return call(self, plugin_support::Need::Running, err, [&](Instance& s) {
+    if (s.sim_world) {
+      s.sim_world->publish(*s.host.sim_world,
+                           dds::realtime_from_host(t_s, plugin_support::host_now(s.host), dds::realtime_ns()));
+    }
+    return MHD_OK;
   });
 }
 
@@ -163,7 +190,7 @@ constexpr mhd_plugin_api kApi = {
     nullptr,  // base_read
     nullptr,  // base_write
     nullptr,  // display_write
-    nullptr,  // simulate_until
+    simulate_until,
     tracker_wait,
     counters,
 };
