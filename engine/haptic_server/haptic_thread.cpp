@@ -18,14 +18,16 @@ namespace mhd {
 
 void HapticServer::Impl::haptic_thread() {
   HapticTickSettings tick_settings = settings.tick;
-  if (auto limits = device->instance.device_limits(); limits.ok()) {
-    tick_settings.safety.max_force_N = std::min(tick_settings.safety.max_force_N, limits.value().max_force_N);
+  mhd_device_info info{};
+  if (auto reported = device->instance.device_info(); reported.ok()) {
+    info = reported.value();
+    tick_settings.safety.max_force_N = std::min(tick_settings.safety.max_force_N, info.max_force_N);
   }
   HapticTick tick(scene, rig, tick_settings);
   realtime::name_current_thread(realtime::kHapticThreadName);
   scheduling = realtime::make_current_thread_realtime(80).detail;
   realtime::PeriodicTimer timer(1.0 / settings.haptic_rate_hz);
-  Eigen::Vector3d q_rad = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+  Eigen::Vector3d p_D_tool_m = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
   double last_t_s = host.now_s();
 
   while (!stop.load(std::memory_order_relaxed)) {
@@ -55,18 +57,18 @@ void HapticServer::Impl::haptic_thread() {
     }();
     if (check(read, *device) || deactivated(read.value(), *device, "device_read")) break;
     if (read.value() == PluginCallStatus::Ok) {
-      q_rad = Eigen::Vector3d(state.joint_angles_rad[0], state.joint_angles_rad[1], state.joint_angles_rad[2]);
-      if (!joint_angles_plausible(rig.device().limits, q_rad)) {
-        fail(Diagnostic{device->description.where, plugin_said(*device, joint_angles_fault(q_rad))}.to_string());
+      p_D_tool_m = Eigen::Vector3d(state.p_D_tool_m[0], state.p_D_tool_m[1], state.p_D_tool_m[2]);
+      if (!tool_position_plausible(info, p_D_tool_m)) {
+        fail(Diagnostic{device->description.where, plugin_said(*device, tool_position_fault(p_D_tool_m))}.to_string());
         break;
       }
     }
 
-    const HapticTickOutput out = tick.tick(t_s, dt_s, q_rad);
+    const HapticTickOutput out = tick.tick(t_s, dt_s, p_D_tool_m);
 
     mhd_device_command cmd{};
     cmd.timestamp_s = t_s;
-    for (int j = 0; j < 3; ++j) cmd.joint_torques_Nm[j] = out.torques_Nm[j];
+    for (int j = 0; j < 3; ++j) cmd.force_D_N[j] = out.force_D_N[j];
     auto write = [&] {
       const InCall in_call(*device, "device_write", t_s);
       return device->instance.device_write(cmd);
@@ -94,12 +96,12 @@ void HapticServer::Impl::haptic_thread() {
       row.t_s = t_s;
       row.dt_s = dt_s;
       for (int i = 0; i < 3; ++i) {
-        row.q_rad[static_cast<std::size_t>(i)] = out.q_rad[i];
+        row.p_D_tool_m[static_cast<std::size_t>(i)] = out.p_D_tool_m[i];
         row.hip_W_m[static_cast<std::size_t>(i)] = out.hip_W_m[i];
         row.proxy_W_m[static_cast<std::size_t>(i)] = out.proxy_W_m[i];
         row.force_W_N[static_cast<std::size_t>(i)] = out.force_W_N[i];
         row.cmd_force_W_N[static_cast<std::size_t>(i)] = out.proxy_force_W_N[i];
-        row.torques_Nm[static_cast<std::size_t>(i)] = out.torques_Nm[i];
+        row.force_D_N[static_cast<std::size_t>(i)] = out.force_D_N[i];
       }
       row.base_x_m = out.base.x_m;
       row.base_z_m = out.base.z_m;

@@ -25,28 +25,28 @@ void HapticTick::add_base_command(double t_s, const BaseTwist& twist_B) noexcept
   (void)predictor_.add_command(t_s, twist_B);
 }
 
-HapticTickOutput HapticTick::tick(double t_s, double dt_s, const Eigen::Vector3d& q_rad) noexcept {
+HapticTickOutput HapticTick::tick(double t_s, double dt_s, const Eigen::Vector3d& p_D_tool_m) noexcept {
   std::optional<BasePose> base;
   if (has_measurement_) base = settings_.predict_base_pose ? predictor_.predict(t_s) : last_measurement_;
-  return render(t_s, dt_s, q_rad, base, predictor_.age_s(t_s));
+  return render(t_s, dt_s, p_D_tool_m, base, predictor_.age_s(t_s));
 }
 
-HapticTickOutput HapticTick::render(double t_s, double dt_s, const Eigen::Vector3d& q_rad,
+HapticTickOutput HapticTick::render(double t_s, double dt_s, const Eigen::Vector3d& p_D_tool_m,
                                     const std::optional<BasePose>& base, double tracker_age_s) noexcept {
   HapticTickOutput out;
   out.t_s = t_s;
-  out.q_rad = q_rad;
+  out.p_D_tool_m = p_D_tool_m;
   out.tracker_age_s = tracker_age_s;
 
   ForceSafetyInput safety_in;
   safety_in.dt_s = dt_s;
   safety_in.tracker_age_s = out.tracker_age_s;
 
-  const bool can_render = base.has_value() && q_rad.allFinite();
+  const bool can_render = base.has_value() && p_D_tool_m.allFinite();
   if (can_render) {
     out.base = *base;
     const Pose X_W_robot = rig_.X_W_robot_from_base(out.base);
-    out.hip_W_m = rig_.p_W_hip(X_W_robot, q_rad);
+    out.hip_W_m = rig_.p_W_from_device(X_W_robot, p_D_tool_m);
     if (!proxy_.initialised) {
       // The proxy starts only with the hand in free space: started inside an object it
       // would render the object inside out and pull the hand in. Until then, no force.
@@ -73,9 +73,9 @@ HapticTickOutput HapticTick::render(double t_s, double dt_s, const Eigen::Vector
     out.stale = s.stale;
     out.jump = s.jump;
     out.clamped = s.clamped;
-    out.torques_Nm = rig_.joint_torques_Nm(X_W_robot, q_rad, out.force_W_N);
-    if (!out.torques_Nm.allFinite()) out.torques_Nm.setZero();
-  } else if (!base.has_value() && q_rad.allFinite()) {
+    out.force_D_N = rig_.force_P_from_W(X_W_robot, out.force_W_N);
+    if (!out.force_D_N.allFinite()) out.force_D_N.setZero();
+  } else if (!base.has_value() && p_D_tool_m.allFinite()) {
     // Start-up: no base pose yet, so no HIP and no force. Normal, not a fault; the safety
     // stage starts from zero gain when the first pose arrives.
     ++startup_ticks_;
@@ -84,7 +84,7 @@ HapticTickOutput HapticTick::render(double t_s, double dt_s, const Eigen::Vector
     out.hip_W_m.setConstant(std::numeric_limits<double>::quiet_NaN());
     out.proxy_W_m = out.hip_W_m;
   } else {
-    // The device gave no angles: nothing is known, nothing is pushed; a fault.
+    // The device gave no position: nothing is known, nothing is pushed; a fault.
     safety_in.force_W_N.setConstant(std::numeric_limits<double>::quiet_NaN());
     safety_in.hip_W_m.setConstant(std::numeric_limits<double>::quiet_NaN());
     const ForceSafetyOutput s = safety_.apply(safety_in);

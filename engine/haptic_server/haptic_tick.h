@@ -1,8 +1,9 @@
 #pragma once
 // One tick of the haptic loop, free of threads and plugins so that it can be tested and
 // benchmarked alone (the server's 1 kHz thread calls it):
-//   joint angles + predicted base pose -> HIP in the world (Rig) -> god-object proxy ->
-//   force -> safety (clamp, stale fade, jump fade) -> joint torques tau = J^T F.
+//   tool position in the device frame + predicted base pose -> HIP in the world (Rig) ->
+//   god-object proxy -> force -> safety (clamp, stale fade, jump fade) -> the force in the
+//   device frame (a Cartesian device, ABI 3, maps it to its motors itself).
 // Base poses arrive from the tracker (~100-190 Hz) as base-sensor measurements and the
 // commanded base twist from the planner (10 Hz); between them BasePosePredictor gives a
 // pose for every tick, so the HIP does not leap when a sample arrives.
@@ -31,12 +32,12 @@ struct HapticTickSettings {
 
 struct HapticTickOutput {
   double t_s = 0.0;
-  Eigen::Vector3d q_rad = Eigen::Vector3d::Zero();
+  Eigen::Vector3d p_D_tool_m = Eigen::Vector3d::Zero();  ///< what the device reported, in its frame
   Eigen::Vector3d hip_W_m = Eigen::Vector3d::Zero();
   Eigen::Vector3d proxy_W_m = Eigen::Vector3d::Zero();
   Eigen::Vector3d force_W_N = Eigen::Vector3d::Zero();  ///< after safety: what the device gets
   Eigen::Vector3d proxy_force_W_N = Eigen::Vector3d::Zero();  ///< before safety
-  Eigen::Vector3d torques_Nm = Eigen::Vector3d::Zero();
+  Eigen::Vector3d force_D_N = Eigen::Vector3d::Zero();  ///< force_W_N in the device frame: what is sent
   BasePose base;  ///< the base pose this tick used
   double tracker_age_s = 0.0;
   double safety_gain = 0.0;
@@ -60,14 +61,14 @@ class HapticTick {
   /// The base twist the planner commanded at t_s.
   void add_base_command(double t_s, const BaseTwist& twist_B) noexcept;
 
-  /// The tick at t_s with the device's joint angles; dt_s is the time since the last tick.
-  /// Non-finite angles give zero force (and count as a fault).
-  HapticTickOutput tick(double t_s, double dt_s, const Eigen::Vector3d& q_rad) noexcept;
+  /// The tick at t_s with the device's tool position in its frame; dt_s is the time since
+  /// the last tick. A non-finite position gives zero force (and counts as a fault).
+  HapticTickOutput tick(double t_s, double dt_s, const Eigen::Vector3d& p_D_tool_m) noexcept;
 
   /// The tick's second half, with the base pose and tracker age given instead of
-  /// predicted: HIP, proxy, safety and torques. tick() is render() with the predictor's
+  /// predicted: HIP, proxy, safety and the device's force. tick() is render() with the predictor's
   /// pose; replay calls it with a recording's. `base` empty: no base pose known yet.
-  HapticTickOutput render(double t_s, double dt_s, const Eigen::Vector3d& q_rad, const std::optional<BasePose>& base,
+  HapticTickOutput render(double t_s, double dt_s, const Eigen::Vector3d& p_D_tool_m, const std::optional<BasePose>& base,
                           double tracker_age_s) noexcept;
 
   [[nodiscard]] const ForceSafety& safety() const noexcept { return safety_; }

@@ -4,19 +4,14 @@
 
 namespace mhd {
 
-bool joint_angles_plausible(const PhantomJointLimits& limits, const Eigen::Vector3d& q_rad) noexcept {
-  if (!q_rad.allFinite()) return false;
-  const double m = kJointLimitMargin_rad;
-  const double difference = q_rad.z() - q_rad.y();
-  return (q_rad.array() >= limits.lower_rad.array() - m).all() &&
-         (q_rad.array() <= limits.upper_rad.array() + m).all() &&
-         difference >= limits.min_link_difference_rad - m && difference <= limits.max_link_difference_rad + m;
+bool tool_position_plausible(const mhd_device_info& info, const Eigen::Vector3d& p_D_tool_m) noexcept {
+  return p_D_tool_m.allFinite() && distance_outside_workspace_m(info, p_D_tool_m.data()) <= kWorkspaceMargin_m;
 }
 
-std::string joint_angles_fault(const Eigen::Vector3d& q_rad) {
-  return fmt::format("device_read returned joint angles ({:g}, {:g}, {:g}) rad, outside the joint limits by more "
-                     "than {:g} rad",
-                     q_rad.x(), q_rad.y(), q_rad.z(), kJointLimitMargin_rad);
+std::string tool_position_fault(const Eigen::Vector3d& p_D_tool_m) {
+  return fmt::format("device_read returned the tool at ({:g}, {:g}, {:g}) m, outside the device's workspace by more "
+                     "than {:g} m",
+                     p_D_tool_m.x(), p_D_tool_m.y(), p_D_tool_m.z(), kWorkspaceMargin_m);
 }
 
 bool tracked_position_plausible(const Eigen::Vector3d& p_T_m, double tracking_range_m) noexcept {

@@ -1,10 +1,12 @@
 #pragma once
-// Readings no hardware can give: joint angles past the device's joint limits by more than
-// a margin, a tracked sensor farther from the tracker than its tracking range. The server
+// Readings no hardware can give: a tool position outside the device's reported workspace
+// by more than a margin, a tracked sensor farther from the tracker than its tracking range. The server
 // treats them as faults (zero torque, base stop, the plugin named). Allocation-free checks;
 // the messages are built only once a reading has failed them.
 
-#include "kinematics/phantom_kinematics.h"
+#include "plugin_host/device_info_check.h"
+
+#include <mhd/plugin_abi.h>
 
 #include <Eigen/Core>
 
@@ -12,15 +14,16 @@
 
 namespace mhd {
 
-/// How far past MHD's modelled joint limits a real arm may be pushed (end stops, cable
-/// stretch, the modelled limits being MHD's and not SensAble's) before a reading is absurd.
-inline constexpr double kJointLimitMargin_rad = 0.35;  // 20 degrees
+/// How far outside the workspace a device reports (mhd_device_info) a real tool may be
+/// (end stops, cable stretch, a conservative box) before a reading is absurd.
+inline constexpr double kWorkspaceMargin_m = 0.1;
 
-/// False when any angle (or theta3 - theta2) lies outside `limits` widened by the margin.
-[[nodiscard]] bool joint_angles_plausible(const PhantomJointLimits& limits, const Eigen::Vector3d& q_rad) noexcept;
+/// False when p_D_tool_m is not finite or lies farther than the margin outside the union
+/// of the device's workspace boxes.
+[[nodiscard]] bool tool_position_plausible(const mhd_device_info& info, const Eigen::Vector3d& p_D_tool_m) noexcept;
 
-/// "device_read returned joint angles (a, b, c) rad, outside the joint limits by more than 0.35 rad"
-[[nodiscard]] std::string joint_angles_fault(const Eigen::Vector3d& q_rad);
+/// "device_read returned the tool at (a, b, c) m, outside the device's workspace by more than 0.1 m"
+[[nodiscard]] std::string tool_position_fault(const Eigen::Vector3d& p_D_tool_m);
 
 /// False when the sensor position p_T_m (in the tracker frame T) lies farther from T's
 /// origin than `tracking_range_m`.

@@ -35,14 +35,14 @@ ReplayResult replay_recording(const CompiledScene& scene, const Rig& rig, const 
     std::optional<BasePose> base;
     if (in.tracker_age_s >= 0.0) base = BasePose{in.base_x_m, in.base_z_m, in.base_heading_rad};
     const double age_s = in.tracker_age_s >= 0.0 ? in.tracker_age_s : std::numeric_limits<double>::infinity();
-    const HapticTickOutput out = tick.render(in.t_s, in.dt_s, vec(in.q_rad), base, age_s);
+    const HapticTickOutput out = tick.render(in.t_s, in.dt_s, vec(in.p_D_tool_m), base, age_s);
 
     RecordingRow r = in;
     r.hip_W_m = arr(out.hip_W_m);
     r.proxy_W_m = arr(out.proxy_W_m);
     r.force_W_N = arr(out.force_W_N);
     r.cmd_force_W_N = arr(out.proxy_force_W_N);
-    r.torques_Nm = arr(out.torques_Nm);
+    r.force_D_N = arr(out.force_D_N);
     r.safety_gain = out.safety_gain;
     r.contact = out.in_contact ? 1 : 0;
     r.contact_object = out.contact_object;
@@ -50,10 +50,10 @@ ReplayResult replay_recording(const CompiledScene& scene, const Rig& rig, const 
 
     const double df = difference(out.force_W_N, vec(in.force_W_N));
     const double dp = difference(out.proxy_W_m, vec(in.proxy_W_m));
-    const double dt = difference(out.torques_Nm, vec(in.torques_Nm));
+    const double dt = difference(out.force_D_N, vec(in.force_D_N));
     result.max_force_difference_N = std::max(result.max_force_difference_N, df);
     result.max_proxy_difference_m = std::max(result.max_proxy_difference_m, dp);
-    result.max_torque_difference_Nm = std::max(result.max_torque_difference_Nm, dt);
+    result.max_device_force_difference_N = std::max(result.max_device_force_difference_N, dt);
     if (df > 0.0 || dp > 0.0 || dt > 0.0) {
       if (result.differing_rows == 0) result.first_differing_row = i;
       ++result.differing_rows;

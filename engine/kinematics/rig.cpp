@@ -147,6 +147,14 @@ Eigen::Vector3d Rig::p_W_hip(const Pose& X_W_robot, const Eigen::Vector3d& q_rad
   return X_W_phantom(X_W_robot) * phantom_tool_position(device_.geometry, q_rad);
 }
 
+Eigen::Vector3d Rig::p_W_from_device(const Pose& X_W_robot, const Eigen::Vector3d& p_P_m) const noexcept {
+  return X_W_phantom(X_W_robot) * p_P_m;
+}
+
+Eigen::Vector3d Rig::force_P_from_W(const Pose& X_W_robot, const Eigen::Vector3d& force_W_N) const noexcept {
+  return X_W_phantom(X_W_robot).linear().transpose() * force_W_N;
+}
+
 Eigen::Vector3d Rig::p_P_from_W(const Pose& X_W_robot, const Eigen::Vector3d& p_W) const noexcept {
   return X_W_phantom(X_W_robot).inverse(Eigen::Isometry) * p_W;
 }

@@ -100,6 +100,12 @@ class Rig {
   [[nodiscard]] Pose X_W_phantom(const Pose& X_W_robot) const noexcept;
   [[nodiscard]] Pose X_W_tool(const Pose& X_W_robot, const Eigen::Vector3d& q_rad) const noexcept;
   [[nodiscard]] Eigen::Vector3d p_W_hip(const Pose& X_W_robot, const Eigen::Vector3d& q_rad) const noexcept;
+  /// A point the device reports in its frame P (a Cartesian device's tool, ABI 3) in the world.
+  [[nodiscard]] Eigen::Vector3d p_W_from_device(const Pose& X_W_robot, const Eigen::Vector3d& p_P_m) const noexcept;
+  /// A force given in the world, in the device frame P (what a Cartesian device receives).
+  /// Thesis ch. 5.2: with the base position-controlled and much heavier than the arm, the
+  /// base's motion does not enter the force command.
+  [[nodiscard]] Eigen::Vector3d force_P_from_W(const Pose& X_W_robot, const Eigen::Vector3d& force_W_N) const noexcept;
   /// A world point in the device frame P (e.g. the user's hand, for the simulated device's IK).
   [[nodiscard]] Eigen::Vector3d p_P_from_W(const Pose& X_W_robot, const Eigen::Vector3d& p_W) const noexcept;
 

@@ -12,6 +12,7 @@ std::string_view to_string(PluginErrorKind kind) {
     case PluginErrorKind::StructSizeMismatch: return "struct-size-mismatch";
     case PluginErrorKind::WrongKind: return "wrong-kind";
     case PluginErrorKind::BadTable: return "bad-table";
+    case PluginErrorKind::BadParameter: return "bad-parameter";
     case PluginErrorKind::OpenFailed: return "open-failed";
     case PluginErrorKind::StartFailed: return "start-failed";
     case PluginErrorKind::StopFailed: return "stop-failed";

@@ -18,6 +18,7 @@ enum class PluginErrorKind {
   StructSizeMismatch,  ///< the table's struct_size is not sizeof(mhd_plugin_api)
   WrongKind,           ///< unknown kind, or not the kind the caller asked for
   BadTable,            ///< missing name or mandatory function pointers
+  BadParameter,        ///< a scene parameter the plugin's declarations refuse (checked before open)
   OpenFailed,          ///< open() returned NULL
   StartFailed,         ///< start() returned MHD_ERROR
   StopFailed,          ///< stop() returned MHD_ERROR

@@ -1,6 +1,8 @@
 #include "plugin_host/plugin_instance.h"
 
+#include "plugin_host/device_info_check.h"
 #include "plugin_host/plugin_kind.h"
+#include "plugin_host/scene_plugin_check.h"
 
 #include <fmt/core.h>
 
@@ -40,7 +42,7 @@ std::string failed(std::string_view call, const mhd_error& err) {
   return text.empty() ? fmt::format("{} failed (no message)", call) : fmt::format("{} failed: {}", call, text);
 }
 
-/// One checked group of doubles in a struct: "timestamp_s" or "joint_angles_rad[3]".
+/// One checked group of doubles in a struct: "timestamp_s" or "p_T_m[3]".
 struct Field {
   std::string_view name;
   const double* values;
@@ -59,18 +61,9 @@ std::optional<std::string> first_non_finite(std::initializer_list<Field> fields,
   return std::nullopt;
 }
 
-std::optional<std::string> non_finite_in(const mhd_device_state& s) {
-  return first_non_finite({{"timestamp_s", &s.timestamp_s, 1},
-                           {"joint_angles_rad", s.joint_angles_rad, 3},
-                           {"p_D_hip_m", s.p_D_hip_m, 3}});
-}
-
 std::optional<std::string> non_finite_in(const mhd_device_command& c) {
-  return first_non_finite({{"timestamp_s", &c.timestamp_s, 1}, {"joint_torques_Nm", c.joint_torques_Nm, 3}});
-}
-
-std::optional<std::string> non_finite_in(const mhd_device_limits& l) {
-  return first_non_finite({{"max_force_N", &l.max_force_N, 1}, {"max_joint_torque_Nm", l.max_joint_torque_Nm, 3}});
+  return first_non_finite(
+      {{"timestamp_s", &c.timestamp_s, 1}, {"force_D_N", c.force_D_N, 3}, {"torque_D_Nm", c.torque_D_Nm, 3}});
 }
 
 std::optional<std::string> non_finite_in(const mhd_tracker_sample& s, std::string_view prefix) {
@@ -131,7 +124,7 @@ PluginInstance::PluginInstance(PluginInstance&& other) noexcept
     : library_(std::move(other.library_)),
       handle_(std::exchange(other.handle_, nullptr)),
       state_(std::exchange(other.state_, PluginState::Closed)),
-      limits_(other.limits_) {}
+      info_(other.info_) {}
 
 PluginInstance& PluginInstance::operator=(PluginInstance&& other) noexcept {
   if (this != &other) {
@@ -139,7 +132,7 @@ PluginInstance& PluginInstance::operator=(PluginInstance&& other) noexcept {
     library_ = std::move(other.library_);
     handle_ = std::exchange(other.handle_, nullptr);
     state_ = std::exchange(other.state_, PluginState::Closed);
-    limits_ = other.limits_;
+    info_ = other.info_;
   }
   return *this;
 }
@@ -187,46 +180,41 @@ PluginStatus PluginInstance::open(const std::map<std::string, std::string>& para
   abi_params.reserve(params.size());
   for (const auto& [key, value] : params) abi_params.push_back(mhd_param{key.c_str(), value.c_str()});
 
+  // The plugin's declarations decide first, as `mhd validate` does: open() never sees a
+  // parameter the plugin did not declare or a value its declaration refuses.
+  if (auto problems = declared_param_problems(*library_, params)) {
+    return error(PluginErrorKind::BadParameter, std::move(*problems));
+  }
+
   mhd_error err{};
   handle_ = library_->api().open(&host, abi_params.data(), abi_params.size(), &err);
   if (handle_ == nullptr) return error(PluginErrorKind::OpenFailed, failed("open", err));
   state_ = PluginState::Open;
 
   if (kind() == PluginKind::Device) {
-    PluginStatus limits = read_device_limits();
-    if (!limits) {
+    PluginStatus info = read_device_info();
+    if (!info) {
       close_handle();
       state_ = PluginState::Loaded;
-      return limits;
+      return info;
     }
   }
   return {};
 }
 
-PluginStatus PluginInstance::read_device_limits() {
+PluginStatus PluginInstance::read_device_info() {
   mhd_error err{};
-  mhd_device_limits limits{};
-  const StatusCode code = static_cast<StatusCode>(library_->api().device_limits(handle_, &limits, &err));
-  if (code == MHD_ERROR) return error(PluginErrorKind::CallFailed, failed("device_limits", err));
+  mhd_device_info info{};
+  const StatusCode code = static_cast<StatusCode>(library_->api().device_info(handle_, &info, &err));
+  if (code == MHD_ERROR) return error(PluginErrorKind::CallFailed, failed("device_info", err));
   if (code != MHD_OK) {
     return error(PluginErrorKind::InvalidData,
-                 fmt::format("device_limits returned {}; expected MHD_OK or MHD_ERROR", status_name(code)));
+                 fmt::format("device_info returned {}; expected MHD_OK or MHD_ERROR", status_name(code)));
   }
-  if (auto field = non_finite_in(limits)) {
-    return error(PluginErrorKind::InvalidData, fmt::format("device_limits returned a non-finite {}", *field));
+  if (auto problem = device_info_problem(info)) {
+    return error(PluginErrorKind::InvalidData, fmt::format("device_info returned {}", *problem));
   }
-  if (!(limits.max_force_N > 0.0)) {
-    return error(PluginErrorKind::InvalidData,
-                 fmt::format("device_limits returned max_force_N = {}, which must be > 0", limits.max_force_N));
-  }
-  for (std::size_t i = 0; i < 3; ++i) {
-    if (!(limits.max_joint_torque_Nm[i] > 0.0)) {
-      return error(PluginErrorKind::InvalidData,
-                   fmt::format("device_limits returned max_joint_torque_Nm[{}] = {}, which must be > 0", i,
-                               limits.max_joint_torque_Nm[i]));
-    }
-  }
-  limits_ = limits;
+  info_ = info;
   return {};
 }
 
@@ -275,14 +263,14 @@ void PluginInstance::close_handle() noexcept {
   handle_ = nullptr;
 }
 
-PluginResult<mhd_device_limits> PluginInstance::device_limits() const {
-  if (PluginStatus s = check_call("device_limits", PluginKind::Device); !s) return s.error();
+PluginResult<mhd_device_info> PluginInstance::device_info() const {
+  if (PluginStatus s = check_call("device_info", PluginKind::Device); !s) return s.error();
   if (state_ != PluginState::Open && state_ != PluginState::Running && state_ != PluginState::Stopped) {
     return error(PluginErrorKind::WrongState,
-                 fmt::format("device_limits called while the plugin is {}; it must be open, running or stopped",
+                 fmt::format("device_info called while the plugin is {}; it must be open, running or stopped",
                              to_string(state_)));
   }
-  return limits_;
+  return info_;
 }
 
 namespace {
@@ -311,8 +299,8 @@ PluginResult<PluginCallStatus> PluginInstance::device_read(mhd_device_state& out
   PluginResult<PluginCallStatus> outcome =
       call_outcome(name(), "device_read", static_cast<StatusCode>(library_->api().device_read(handle_, &state, &err)), err);
   if (!outcome || outcome.value() != PluginCallStatus::Ok) return outcome;
-  if (auto field = non_finite_in(state)) {
-    return error(PluginErrorKind::InvalidData, fmt::format("device_read returned a non-finite {}", *field));
+  if (auto problem = device_state_problem(state)) {
+    return error(PluginErrorKind::InvalidData, fmt::format("device_read returned {}", *problem));
   }
   out = state;
   return outcome;
@@ -324,11 +312,7 @@ PluginResult<PluginCallStatus> PluginInstance::device_write(const mhd_device_com
   if (auto field = non_finite_in(command)) {
     return error(PluginErrorKind::InvalidData, fmt::format("refused to send a non-finite {} to device_write", *field));
   }
-  mhd_device_command clamped = command;
-  for (std::size_t i = 0; i < 3; ++i) {
-    const double limit = limits_.max_joint_torque_Nm[i];
-    clamped.joint_torques_Nm[i] = std::clamp(clamped.joint_torques_Nm[i], -limit, limit);
-  }
+  const mhd_device_command clamped = clamp_to_device(info_, command);
   mhd_error err{};
   return call_outcome(name(), "device_write", static_cast<StatusCode>(library_->api().device_write(handle_, &clamped, &err)), err);
 }

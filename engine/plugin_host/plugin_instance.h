@@ -4,12 +4,12 @@
 //   any state --close--> Closed (a running plugin is stopped first; the destructor closes)
 // Calls out of this order are refused with WrongState before the plugin sees them.
 // Kind-specific calls are refused with WrongKind on a plugin of another kind, so no
-// null pointer is ever called. Reads and writes need Running; device_limits needs an
+// null pointer is ever called. Reads and writes need Running; device_info needs an
 // opened plugin. What a plugin returns is checked (finite numbers, unit quaternions,
 // count <= capacity, known statuses) and a violation is an InvalidData error naming the
 // call and the field; an out-parameter is written only when the call returns Ok.
 // What the host sends is checked too: a non-finite command never reaches a plugin, and
-// device torques are clamped to the limits the device reported at open.
+// device forces and torques are clamped to what the device reported at open.
 // An instance is driven by one thread at a time; wrappers allocate only on error.
 
 #include "plugin_host/plugin_library.h"
@@ -49,7 +49,7 @@ class PluginInstance {
   PluginInstance& operator=(const PluginInstance&) = delete;
 
   /// Loaded -> Open: calls open(params) with `host`, which must outlive this instance
-  /// (the plugin may keep the pointer). A device's limits are read and checked here.
+  /// (the plugin may keep the pointer). A device's info is read and checked here.
   /// On failure the instance stays Loaded.
   PluginStatus open(const std::map<std::string, std::string>& params, const mhd_host& host);
   /// Open or Stopped -> Running. On failure the state does not change.
@@ -72,10 +72,12 @@ class PluginInstance {
   /// True when the plugin provides counters.
   [[nodiscard]] bool counts() const noexcept;
 
-  /// Device: the limits read at open (Open, Running or Stopped).
-  [[nodiscard]] PluginResult<mhd_device_limits> device_limits() const;
+  /// Device: what it reported at open (Open, Running or Stopped), checked
+  /// (plugin_host/device_info_check.h).
+  [[nodiscard]] PluginResult<mhd_device_info> device_info() const;
   [[nodiscard]] PluginResult<PluginCallStatus> device_read(mhd_device_state& out);
-  /// Torques beyond the device's max_joint_torque_Nm are clamped before the plugin sees them.
+  /// The force (torque) is scaled down to the device's max_force_N (max_torque_Nm) before
+  /// the plugin sees it; a 3-DOF-out device gets a zero torque.
   [[nodiscard]] PluginResult<PluginCallStatus> device_write(const mhd_device_command& command);
   /// Tracker: up to out.size() samples; `count` is how many were written (0 unless Ok).
   [[nodiscard]] PluginResult<PluginCallStatus> tracker_read(std::span<mhd_tracker_sample> out, std::size_t& count);
@@ -96,13 +98,13 @@ class PluginInstance {
   [[nodiscard]] PluginError error(PluginErrorKind kind, std::string message) const;
   [[nodiscard]] PluginStatus check_call(std::string_view call, PluginKind needed_kind) const;
   [[nodiscard]] PluginStatus check_running(std::string_view call) const;
-  PluginStatus read_device_limits();
+  PluginStatus read_device_info();
   void close_handle() noexcept;
 
   std::shared_ptr<const PluginLibrary> library_;
   mhd_plugin_instance* handle_ = nullptr;
   PluginState state_ = PluginState::Loaded;
-  mhd_device_limits limits_{};
+  mhd_device_info info_{};
 };
 
 }  // namespace mhd

@@ -3,6 +3,8 @@
 #include "plugin_host/plugin_kind.h"
 #include "plugin_host/plugin_name.h"
 
+#include <mhd/plugin_params.hpp>
+
 #include <fmt/core.h>
 
 #include <dlfcn.h>
@@ -45,7 +47,7 @@ std::vector<std::string_view> missing_functions(const mhd_plugin_api& api, Plugi
   need(api.close != nullptr, "close");
   switch (kind) {
     case PluginKind::Device:
-      need(api.device_limits != nullptr, "device_limits");
+      need(api.device_info != nullptr, "device_info");
       need(api.device_read != nullptr, "device_read");
       need(api.device_write != nullptr, "device_write");
       break;
@@ -101,6 +103,17 @@ PluginResult<std::shared_ptr<const PluginLibrary>> PluginLibrary::load(const fs:
 
   const mhd_plugin_api* api = entry(MHD_PLUGIN_ABI_VERSION);
   if (api == nullptr) {
+    // A plugin built for another ABI refuses this host's version. Asking for the older
+    // versions (each answer is a static table or NULL) tells the user which it speaks.
+    for (std::uint32_t older = MHD_PLUGIN_ABI_VERSION - 1; older >= 1; --older) {
+      const mhd_plugin_api* old_api = entry(older);
+      if (old_api != nullptr && old_api->abi_version == older) {
+        return fail(PluginErrorKind::AbiVersionMismatch,
+                    fmt::format("built for plugin ABI {}, this host speaks ABI {}: rebuild it against this MHD's "
+                                "mhd/plugin_abi.h (docs/plugins.md, \"Porting a plugin to ABI {}\")",
+                                older, MHD_PLUGIN_ABI_VERSION, MHD_PLUGIN_ABI_VERSION));
+      }
+    }
     return fail(PluginErrorKind::EntryReturnedNull,
                 fmt::format("refused this host ({}({}) returned NULL)", MHD_PLUGIN_ENTRY_SYMBOL, MHD_PLUGIN_ABI_VERSION));
   }
@@ -134,6 +147,10 @@ PluginResult<std::shared_ptr<const PluginLibrary>> PluginLibrary::load(const fs:
   if (!missing.empty()) {
     return fail(PluginErrorKind::BadTable,
                 fmt::format("the table lacks {} (mandatory for a {} plugin)", join(missing), to_string(*kind)), name);
+  }
+
+  if (auto problem = sdk::check_declarations(api->params, api->param_count)) {
+    return fail(PluginErrorKind::BadTable, *problem, name);
   }
 
   PluginInfo info{*kind, name, or_empty(api->version), or_empty(api->description)};

@@ -10,9 +10,9 @@
 namespace mhd {
 
 std::string_view recording_csv_header() noexcept {
-  return "t_s,dt_s,q1_rad,q2_rad,q3_rad,hip_x_m,hip_y_m,hip_z_m,proxy_x_m,proxy_y_m,proxy_z_m,"
+  return "t_s,dt_s,tool_D_x_m,tool_D_y_m,tool_D_z_m,hip_x_m,hip_y_m,hip_z_m,proxy_x_m,proxy_y_m,proxy_z_m,"
          "force_x_N,force_y_N,force_z_N,cmd_force_x_N,cmd_force_y_N,cmd_force_z_N,"
-         "tau1_Nm,tau2_Nm,tau3_Nm,base_x_m,base_z_m,base_heading_rad,"
+         "force_D_x_N,force_D_y_N,force_D_z_N,base_x_m,base_z_m,base_heading_rad,"
          "user_x_m,user_z_m,user_heading_rad,tracker_age_s,safety_gain,contact,contact_object";
 }
 
@@ -38,12 +38,12 @@ void CsvRecording::write(const RecordingRow& r) {
   // Shortest text that reads back to the same double: a replay gets the very inputs.
   fmt::format_to(out, "{},{}", r.t_s, r.dt_s);
   const auto put3 = [&](const std::array<double, 3>& v) { fmt::format_to(out, ",{},{},{}", v[0], v[1], v[2]); };
-  put3(r.q_rad);
+  put3(r.p_D_tool_m);
   put3(r.hip_W_m);
   put3(r.proxy_W_m);
   put3(r.force_W_N);
   put3(r.cmd_force_W_N);
-  put3(r.torques_Nm);
+  put3(r.force_D_N);
   fmt::format_to(out, ",{},{},{},{},{},{},{},{},{},{}\n", r.base_x_m, r.base_z_m,
                  r.base_heading_rad, r.user_x_m, r.user_z_m, r.user_heading_rad, r.tracker_age_s, r.safety_gain,
                  static_cast<int>(r.contact), r.contact_object);

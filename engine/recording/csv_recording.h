@@ -4,8 +4,8 @@
 // killed process leaves a readable file up to its last flush; a partial last line is the
 // only damage. Not for the real-time thread: the server feeds it from its recorder thread.
 //
-// Columns: t_s, dt_s, q1_rad, q2_rad, q3_rad, hip_{x,y,z}_m, proxy_{x,y,z}_m, force_{x,y,z}_N,
-// cmd_force_{x,y,z}_N, tau{1,2,3}_Nm, base_x_m, base_z_m, base_heading_rad, user_x_m,
+// Columns: t_s, dt_s, tool_D_{x,y,z}_m (the device frame), hip_{x,y,z}_m, proxy_{x,y,z}_m, force_{x,y,z}_N,
+// cmd_force_{x,y,z}_N, force_D_{x,y,z}_N (what the device got, its frame), base_x_m, base_z_m, base_heading_rad, user_x_m,
 // user_z_m, user_heading_rad, tracker_age_s, safety_gain, contact, contact_object.
 // Numbers are written in the shortest form that reads back to the same double, so a
 // replay (recording_replay.h) feeds the engine exactly the recorded inputs.

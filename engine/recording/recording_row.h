@@ -10,12 +10,12 @@ namespace mhd {
 struct RecordingRow {
   double t_s = 0.0;   ///< host clock
   double dt_s = 0.0;  ///< time since the previous tick, as the tick used it
-  std::array<double, 3> q_rad{};
+  std::array<double, 3> p_D_tool_m{};  ///< the tool as the device reported it, device frame
   std::array<double, 3> hip_W_m{};
   std::array<double, 3> proxy_W_m{};
   std::array<double, 3> force_W_N{};      ///< rendered: what the device was told
   std::array<double, 3> cmd_force_W_N{};  ///< the proxy's force before the safety stage
-  std::array<double, 3> torques_Nm{};
+  std::array<double, 3> force_D_N{};  ///< force_W_N in the device frame: what was sent
   double base_x_m = 0.0, base_z_m = 0.0, base_heading_rad = 0.0;
   double user_x_m = 0.0, user_z_m = 0.0, user_heading_rad = 0.0;
   double tracker_age_s = 0.0;

@@ -5,6 +5,10 @@
 #include "dds_common/dds_entity.h"
 #include "sim_common/plugin_params.h"
 
+#include <mhd/plugin_params.hpp>
+
+#include <array>
+
 #include <mhd/plugin_abi.h>
 
 #include <cstdint>
@@ -42,6 +46,15 @@ inline std::optional<std::string> optional_text(plugin_support::ParamReader& rea
 /// relative path is relative to the scene file). config_file needs domain_id.
 /// identity_dir: a DDS Security identity folder (participant_security.h), a relative
 /// path relative to the scene file's folder.
+/// The parameters read_endpoint reads, for a DDS plugin's declarations (sdk::join).
+inline constexpr std::array kEndpointParams{
+    sdk::integer("rig_id", "", "0", "the rig whose topics this plugin uses (a DDS partition)",
+                 sdk::between(0, 4294967295.0)),
+    sdk::integer("domain_id", "", nullptr, "the DDS domain (default: Cyclone's)", sdk::between(0, 232)),
+    sdk::text("config_file", nullptr, "a Cyclone XML configuration, relative to the scene (needs domain_id)"),
+    sdk::text("identity_dir", nullptr, "DDS Security identity folder, relative to the scene (docs/networking.md)"),
+};
+
 inline DdsEndpoint read_endpoint(plugin_support::ParamReader& reader, const mhd_param* params, std::size_t count,
                                  const char* scene_file) {
   constexpr std::uint64_t kNoDomain = UINT64_MAX;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <stdexcept>
 #include <string_view>
 
 namespace mhd::plugin_support {
@@ -30,8 +31,14 @@ std::optional<double> parse_view(std::string_view text) {
 
 }  // namespace
 
-ParamReader::ParamReader(const mhd_param* params, std::size_t count) {
-  if (params == nullptr && count != 0) throw ParamError("parameter array is NULL but its count is not zero");
+ParamReader::ParamReader(std::span<const mhd_param_decl> decls, const mhd_param* params, std::size_t count)
+    : decls_(decls) {
+  const std::vector<std::string> problems = sdk::check_params(decls.data(), decls.size(), params, count);
+  if (!problems.empty()) {
+    std::string message = problems.front();
+    if (message.size() >= MHD_ERROR_MESSAGE_SIZE) message = message.substr(0, MHD_ERROR_MESSAGE_SIZE - 5) + "...)";
+    throw ParamError(message);
+  }
   for (std::size_t i = 0; i < count; ++i) {
     if (params[i].name == nullptr || params[i].value == nullptr) {
       throw ParamError("parameter " + std::to_string(i) + " has a NULL name or value");
@@ -44,6 +51,9 @@ ParamReader::ParamReader(const mhd_param* params, std::size_t count) {
 }
 
 const std::string* ParamReader::find(const char* name) {
+  if (sdk::find_declaration(decls_.data(), decls_.size(), name) == nullptr) {
+    throw std::logic_error("the plugin reads parameter '" + std::string(name) + "', which it does not declare");
+  }
   if (std::find(known_.begin(), known_.end(), name) == known_.end()) known_.emplace_back(name);
   for (const Entry& e : entries_) {
     if (e.name == name) return &e.value;
@@ -138,6 +148,8 @@ std::string ParamReader::required_text(const char* name) {
   if (value->empty()) fail(name, "a non-empty string", *value);
   return *value;
 }
+
+bool ParamReader::given(const char* name) { return find(name) != nullptr; }
 
 std::optional<std::string> ParamReader::optional_text(const char* name) {
   if (find(name) == nullptr) return std::nullopt;

@@ -1,15 +1,19 @@
 #pragma once
-// Reading a plugin's <param> strings for open(): typed and range-checked, and a
-// parameter the plugin never asked for is an error. The messages are the ones open()
+// Reading a plugin's <param> strings for open(): first checked against the plugin's
+// declarations (mhd/plugin_params.hpp, the parser the host's `mhd validate` applies too),
+// then read typed; a parameter the plugin never declared is an error, and so is a getter
+// asking for an undeclared name (a plugin bug, caught by the plugin's tests). The messages are the ones open()
 // returns, e.g. "parameter 'rate_hz' must be a positive number, got 'abc'".
 
 #include <mhd/plugin_abi.h>
+#include <mhd/plugin_params.hpp>
 
 #include <Eigen/Geometry>
 
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -26,9 +30,10 @@ class ParamError : public std::runtime_error {
 /// blanks. Every getter throws ParamError with the message open() returns.
 class ParamReader {
  public:
-  /// Throws ParamError for a NULL array with a non-zero count, a NULL name or value,
-  /// or a name given twice.
-  ParamReader(const mhd_param* params, std::size_t count);
+  /// Throws ParamError with the first problem sdk::check_params finds (a NULL array with
+  /// a non-zero count, a NULL name or value, a name given twice, an unknown name, a value
+  /// its declaration refuses, a required parameter missing). `decls` must outlive this.
+  ParamReader(std::span<const mhd_param_decl> decls, const mhd_param* params, std::size_t count);
 
   [[nodiscard]] std::optional<double> optional_number(const char* name);
   [[nodiscard]] double number(const char* name, double fallback);
@@ -44,6 +49,8 @@ class ParamReader {
   [[nodiscard]] std::optional<Eigen::Quaterniond> optional_quaternion(const char* name);
   /// A non-empty string.
   [[nodiscard]] std::string required_text(const char* name);
+  /// Whether the scene gives `name` (marks it as known).
+  [[nodiscard]] bool given(const char* name);
   /// A non-empty string, when given.
   [[nodiscard]] std::optional<std::string> optional_text(const char* name);
 
@@ -61,6 +68,7 @@ class ParamReader {
   /// `count` blank-separated finite numbers; `what` names the form in the error.
   std::optional<std::vector<double>> numbers(const char* name, std::size_t count, const char* what);
 
+  std::span<const mhd_param_decl> decls_;
   std::vector<Entry> entries_;
   std::vector<std::string> known_;
 };

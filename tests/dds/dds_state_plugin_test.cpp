@@ -27,7 +27,7 @@ TEST(DdsStatePlugin, TheTableIdentifiesADisplayAndUnknownParametersAreRefused) {
   EXPECT_EQ(opened.instance, nullptr);
   EXPECT_EQ(opened.error.rfind("unknown parameter 'rate' (known: rig_id", 0), 0u) << opened.error;
   EXPECT_EQ(mhd::test::open_plugin(file.api(), h.host, {{"domain_id", "233"}}).error,
-            "parameter 'domain_id' must be an integer from 0 to 232, got '233'");
+            "parameter 'domain_id' must be a non-negative integer in [0, 232], got '233'");
   EXPECT_EQ(mhd::test::open_plugin(file.api(), h.host, {{"config_file", "x.xml"}}).error,
             "parameter 'config_file' needs 'domain_id'");
 }

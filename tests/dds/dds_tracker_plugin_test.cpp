@@ -27,13 +27,13 @@ TEST(DdsTrackerPlugin, BadParametersAreRefusedWithTheirNames) {
   const std::string unknown = mhd::test::open_plugin(file.api(), h.host, {{"rate_hz", "190"}}).error;
   EXPECT_EQ(unknown.rfind("unknown parameter 'rate_hz' (known: rig_id, domain_id, config_file, identity_dir, max_position_m", 0), 0u) << unknown;
   EXPECT_EQ(mhd::test::open_plugin(file.api(), h.host, {{"rig_id", "-1"}}).error,
-            "parameter 'rig_id' must be an integer from 0 to 4294967295, got '-1'");
+            "parameter 'rig_id' must be a non-negative integer in [0, 4294967295], got '-1'");
   EXPECT_EQ(mhd::test::open_plugin(file.api(), h.host, {{"max_age_s", "0"}}).error,
-            "parameter 'max_age_s' must be a positive number, got '0'");
+            "parameter 'max_age_s' must be a number > 0 (s), got '0'");
   EXPECT_EQ(mhd::test::open_plugin(file.api(), h.host, {{"config_file", "config/cyclonedds-loopback.xml"}}).error,
             "parameter 'config_file' needs 'domain_id'");
   EXPECT_EQ(mhd::test::open_plugin(file.api(), h.host, {{"publish_sim_world", "yes"}}).error,
-            "parameter 'publish_sim_world' must be 'true' or 'false', got 'yes'");
+            "parameter 'publish_sim_world' must be true or false, got 'yes'");
   EXPECT_EQ(mhd::test::open_plugin(file.api(), h.host_without_world, {{"publish_sim_world", "true"}}).error,
             "publish_sim_world: the host has no simulated world (sim_world is NULL)");
 }

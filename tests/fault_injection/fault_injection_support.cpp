@@ -69,6 +69,9 @@ PressGeometry press_geometry(double depth_m) {
     if (g.hip_free_W_m.y() - g.hip_press_W_m.y() >= 0.015) break;
   }
   g.block_top_y_m = g.hip_press_W_m.y() + depth_m;
+  // What a Cartesian device reports for those angles (ABI 3): the tool in its frame P.
+  g.p_free_P_m = phantom_tool_position(rig.rig->device().geometry, g.q_free_rad);
+  g.p_press_P_m = phantom_tool_position(rig.rig->device().geometry, g.q_press_rad);
   return g;
 }
 
@@ -97,13 +100,13 @@ fs::path write_scene(const fs::path& dir, const PressGeometry& g, const std::str
 
 std::string fi_device_xml(const PressGeometry& g, const fs::path& log, double press_at_s, const std::string& extra) {
   return fmt::format(R"(    <plugin kind="device" name="fi_device">
-      <param name="q_free_rad" value="{:.9f} {:.9f} {:.9f}"/>
-      <param name="q_press_rad" value="{:.9f} {:.9f} {:.9f}"/>
+      <param name="p_free_m" value="{:.9f} {:.9f} {:.9f}"/>
+      <param name="p_press_m" value="{:.9f} {:.9f} {:.9f}"/>
       <param name="press_at_s" value="{}"/>
       <param name="command_log" value="{}"/>
 {}    </plugin>)",
-                     g.q_free_rad.x(), g.q_free_rad.y(), g.q_free_rad.z(), g.q_press_rad.x(), g.q_press_rad.y(),
-                     g.q_press_rad.z(), press_at_s, log.string(), extra);
+                     g.p_free_P_m.x(), g.p_free_P_m.y(), g.p_free_P_m.z(), g.p_press_P_m.x(), g.p_press_P_m.y(),
+                     g.p_press_P_m.z(), press_at_s, log.string(), extra);
 }
 
 Loaded load(const fs::path& file) {

@@ -31,6 +31,8 @@ fs::path temp_dir();
 struct PressGeometry {
   Eigen::Vector3d q_free_rad;
   Eigen::Vector3d q_press_rad;
+  Eigen::Vector3d p_free_P_m;   ///< the tool at q_free_rad, device frame: what fi_device reports
+  Eigen::Vector3d p_press_P_m;  ///< likewise at q_press_rad
   Eigen::Vector3d hip_free_W_m;
   Eigen::Vector3d hip_press_W_m;
   double block_top_y_m = 0.0;

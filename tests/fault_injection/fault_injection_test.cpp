@@ -94,7 +94,7 @@ double max_hip_step_per_ms(const std::vector<RecordingRow>& rows) {
 bool row_finite(const RecordingRow& r) {
   for (int i = 0; i < 3; ++i) {
     const auto k = static_cast<std::size_t>(i);
-    if (!std::isfinite(r.hip_W_m[k]) || !std::isfinite(r.force_W_N[k]) || !std::isfinite(r.torques_Nm[k])) return false;
+    if (!std::isfinite(r.hip_W_m[k]) || !std::isfinite(r.force_W_N[k]) || !std::isfinite(r.force_D_N[k])) return false;
   }
   return std::isfinite(r.safety_gain);
 }
@@ -528,7 +528,7 @@ TEST(DeviceFaults, DeviceNanWhilePushingEndsTheRunInTheSafeState) {
   const InContactRun f = run_fault_in_contact(param("fault", "nan") + param("fault_after_s", "0.35"), "");
   ASSERT_TRUE(f.run.opened);
   ASSERT_TRUE(f.run.report.error);
-  EXPECT_EQ(*f.run.report.error, where(f, "fi_device") + ": device_read returned a non-finite joint_angles_rad[1]");
+  EXPECT_EQ(*f.run.report.error, where(f, "fi_device") + ": device_read returned a non-finite p_D_tool_m[1]");
   const auto fault_s = marker_time(f.device);
   ASSERT_TRUE(fault_s);
   expect_safe_end(f, *fault_s, "device_read NaN");

@@ -204,17 +204,17 @@ TEST(HapticServer, DeviceReturningNanEndsTheRunWithZeroForceAndTheBaseStopped) {
   const DeviceFaultRun run = run_device_fault("nan");
   ASSERT_TRUE(run.report.error);
   EXPECT_EQ(*run.report.error, fmt::format("{}:{}: error: plugin 'fault_device': device_read returned a non-finite "
-                                           "joint_angles_rad[1]",
+                                           "p_D_tool_m[1]",
                                            run.file.string(), run.device_line));
   expect_safe_stop_after(run.report, run.device_log, run.base_log);
   EXPECT_GT(read_log(run.device_log).count, 1u);
 }
 
-TEST(HapticServer, JointAnglesOf1e30AreAFaultNamingTheDevice) {
+TEST(HapticServer, AToolAt1e30MetresIsAFaultNamingTheDevice) {
   const DeviceFaultRun run = run_device_fault("huge");
   ASSERT_TRUE(run.report.error);
-  EXPECT_EQ(*run.report.error, fmt::format("{}:{}: error: plugin 'fault_device': device_read returned joint angles "
-                                           "(0, 1e+30, 0.2) rad, outside the joint limits by more than 0.35 rad",
+  EXPECT_EQ(*run.report.error, fmt::format("{}:{}: error: plugin 'fault_device': device_read returned the tool at "
+                                           "(0, 1e+30, 0.0322719) m, outside the device's workspace by more than 0.1 m",
                                            run.file.string(), run.device_line));
   expect_safe_stop_after(run.report, run.device_log, run.base_log);
 }

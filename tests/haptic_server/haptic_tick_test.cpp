@@ -19,6 +19,9 @@ using namespace mhd;
 
 const Eigen::Vector3d kQ(0.0, 0.3, 0.2);  // the PHANToM near mid-workspace
 
+/// What a Cartesian PHANToM reports for joint angles q (ABI 3): its tool in the device frame.
+Eigen::Vector3d tool(const Eigen::Vector3d& q_rad) { return phantom_tool_position(phantom_premium_1_5().geometry, q_rad); }
+
 struct Fixture {
   std::optional<SceneDescription> description;
   std::optional<CompiledScene> scene;
@@ -72,10 +75,10 @@ HapticTickSettings no_fade_in() {
 TEST(HapticTick, NoForceAndNoHipBeforeTheFirstBasePose) {
   Fixture f = make_fixture(0.005);
   HapticTick tick(*f.scene, *f.rig, no_fade_in());
-  const auto out = tick.tick(0.0, 0.001, kQ);
+  const auto out = tick.tick(0.0, 0.001, tool(kQ));
   EXPECT_FALSE(out.hip_W_m.allFinite());
   EXPECT_EQ(out.force_W_N, Eigen::Vector3d::Zero());
-  EXPECT_EQ(out.torques_Nm, Eigen::Vector3d::Zero());
+  EXPECT_EQ(out.force_D_N, Eigen::Vector3d::Zero());
   // Start-up, counted apart: not stale tracking and not a fault.
   EXPECT_TRUE(out.startup);
   EXPECT_FALSE(out.stale);
@@ -84,7 +87,7 @@ TEST(HapticTick, NoForceAndNoHipBeforeTheFirstBasePose) {
   EXPECT_EQ(tick.safety().counters().fault_ticks, 0u);
   // The first pose ends start-up.
   ASSERT_NE(tick.add_base_sensor_sample(0.001, f.rig->X_is900_base_sensor_from_base({})), BaseSampleStatus::Invalid);
-  const auto tracked = tick.tick(0.002, 0.001, kQ);
+  const auto tracked = tick.tick(0.002, 0.001, tool(kQ));
   EXPECT_FALSE(tracked.startup);
   EXPECT_TRUE(tracked.hip_W_m.allFinite());
   EXPECT_EQ(tick.startup_ticks(), 1u);
@@ -95,7 +98,7 @@ TEST(HapticTick, HipFollowsTheRigChainFromTheTrackedBasePose) {
   HapticTick tick(*f.scene, *f.rig, no_fade_in());
   const BasePose base{0.0, 0.0, 0.0};
   ASSERT_NE(tick.add_base_sensor_sample(0.0, f.rig->X_is900_base_sensor_from_base(base)), BaseSampleStatus::Invalid);
-  const auto out = tick.tick(0.001, 0.001, kQ);
+  const auto out = tick.tick(0.001, 0.001, tool(kQ));
   const Eigen::Vector3d expected = f.rig->p_W_hip(f.rig->X_W_robot_from_base(base), kQ);
   EXPECT_LT((out.hip_W_m - expected).norm(), 1e-9);
   EXPECT_FALSE(out.in_contact);
@@ -106,7 +109,7 @@ TEST(HapticTick, PressingIntoTheBoxGivesTheSpringForceAndItsJointTorques) {
   Fixture f = make_fixture(0.002);
   HapticTick tick(*f.scene, *f.rig, no_fade_in());
   ASSERT_NE(tick.add_base_sensor_sample(0.0, f.rig->X_is900_base_sensor_from_base({})), BaseSampleStatus::Invalid);
-  (void)tick.tick(0.001, 0.001, kQ);  // free, 2 mm above the top face
+  (void)tick.tick(0.001, 0.001, tool(kQ));  // free, 2 mm above the top face
   // Lower the arm (theta2 down) until the HIP is below the face.
   Eigen::Vector3d q = kQ;
   HapticTickOutput out;
@@ -115,12 +118,12 @@ TEST(HapticTick, PressingIntoTheBoxGivesTheSpringForceAndItsJointTorques) {
   for (int i = 0; i < 40 && !out.in_contact; ++i) {
     q.y() -= 0.001;
     (void)tick.add_base_sensor_sample(t, sensor);  // fresh tracking throughout
-    out = tick.tick(t += 0.001, 0.001, q);
+    out = tick.tick(t += 0.001, 0.001, tool(q));
   }
   for (int i = 0; i < 20; ++i) {
     q.y() -= 0.0005;
     (void)tick.add_base_sensor_sample(t, sensor);
-    out = tick.tick(t += 0.001, 0.001, q);
+    out = tick.tick(t += 0.001, 0.001, tool(q));
   }
   ASSERT_TRUE(out.in_contact);
   const double face_y = out.proxy_W_m.y();
@@ -129,10 +132,11 @@ TEST(HapticTick, PressingIntoTheBoxGivesTheSpringForceAndItsJointTorques) {
   EXPECT_NEAR(out.force_W_N.y(), 500.0 * depth, 500.0 * 2e-6 + 1e-9);  // k * depth (skin 1 um)
   EXPECT_NEAR(out.force_W_N.x(), 0.0, 1e-9);
   EXPECT_NEAR(out.force_W_N.z(), 0.0, 1e-9);
-  const Eigen::Vector3d expected_torques =
-      f.rig->joint_torques_Nm(f.rig->X_W_robot_from_base({}), q, out.force_W_N);
-  EXPECT_LT((out.torques_Nm - expected_torques).norm(), 1e-12);
-  EXPECT_GT(out.torques_Nm.norm(), 0.0);
+  // What the device gets: the same force in its own frame.
+  const Eigen::Vector3d expected_force_D = f.rig->force_P_from_W(f.rig->X_W_robot_from_base({}), out.force_W_N);
+  EXPECT_LT((out.force_D_N - expected_force_D).norm(), 1e-12);
+  EXPECT_NEAR(out.force_D_N.norm(), out.force_W_N.norm(), 1e-12);
+  EXPECT_GT(out.force_D_N.norm(), 0.0);
 }
 
 TEST(HapticTick, ForceFadesToZeroWhenTheBasePoseGoesStale) {
@@ -142,18 +146,18 @@ TEST(HapticTick, ForceFadesToZeroWhenTheBasePoseGoesStale) {
   Eigen::Vector3d q = kQ;
   q.y() -= 0.03;  // into the box (the proxy starts above it and is caught on the way)
   ASSERT_NE(tick.add_base_sensor_sample(0.0, sensor), BaseSampleStatus::Invalid);
-  (void)tick.tick(0.0005, 0.001, kQ);
+  (void)tick.tick(0.0005, 0.001, tool(kQ));
   HapticTickOutput out;
   for (int i = 1; i <= 60; ++i) {
     const double t = 0.001 * i;
-    out = tick.tick(t, 0.001, q);
+    out = tick.tick(t, 0.001, tool(q));
     if (t <= 0.03 + 1e-9) {
       EXPECT_GT(out.force_W_N.norm(), 1.0) << "t = " << t;  // no samples since t = 0
     }
   }
   EXPECT_TRUE(out.stale);
   EXPECT_EQ(out.force_W_N, Eigen::Vector3d::Zero());
-  EXPECT_EQ(out.torques_Nm, Eigen::Vector3d::Zero());
+  EXPECT_EQ(out.force_D_N, Eigen::Vector3d::Zero());
 }
 
 TEST(HapticTick, AHandStartingInsideAnObjectGetsNoForceUntilItLeaves) {
@@ -165,7 +169,7 @@ TEST(HapticTick, AHandStartingInsideAnObjectGetsNoForceUntilItLeaves) {
   HapticTickOutput out;
   for (int i = 0; i < 20; ++i) {
     (void)tick.add_base_sensor_sample(t, sensor);
-    out = tick.tick(t += 0.001, 0.001, q);
+    out = tick.tick(t += 0.001, 0.001, tool(q));
     EXPECT_TRUE(out.hip_inside_object);
     EXPECT_EQ(out.force_W_N, Eigen::Vector3d::Zero());  // never pulled further in
   }
@@ -173,7 +177,7 @@ TEST(HapticTick, AHandStartingInsideAnObjectGetsNoForceUntilItLeaves) {
   for (int i = 0; i < 200 && out.hip_inside_object; ++i) {
     q.y() += 0.001;
     (void)tick.add_base_sensor_sample(t, sensor);
-    out = tick.tick(t += 0.001, 0.001, q);
+    out = tick.tick(t += 0.001, 0.001, tool(q));
   }
   ASSERT_FALSE(out.hip_inside_object);
   EXPECT_FALSE(out.in_contact);
@@ -181,7 +185,7 @@ TEST(HapticTick, AHandStartingInsideAnObjectGetsNoForceUntilItLeaves) {
   for (int i = 0; i < 60; ++i) {
     q.y() -= 0.0005;
     (void)tick.add_base_sensor_sample(t, sensor);
-    out = tick.tick(t += 0.001, 0.001, q);
+    out = tick.tick(t += 0.001, 0.001, tool(q));
   }
   ASSERT_TRUE(out.in_contact);
   EXPECT_GT(out.force_W_N.y(), 0.0);
@@ -202,7 +206,7 @@ TEST(HapticTick, CarriesTheProxyWorkBudgetFlagOfEveryTick) {
   for (int i = 0; i < 120; ++i) {
     q.y() -= 0.0005;
     (void)tick.add_base_sensor_sample(t, sensor);
-    const auto out = tick.tick(t += 0.001, 0.001, q);
+    const auto out = tick.tick(t += 0.001, 0.001, tool(q));
     ASSERT_TRUE(out.hip_W_m.allFinite());
     if (!twin.initialised) reset_proxy(twin, out.hip_W_m);
     const ProxyOutput direct =
@@ -219,9 +223,9 @@ TEST(HapticTick, NonFiniteJointAnglesGiveZeroForce) {
   HapticTick tick(*f.scene, *f.rig, no_fade_in());
   ASSERT_NE(tick.add_base_sensor_sample(0.0, f.rig->X_is900_base_sensor_from_base({})), BaseSampleStatus::Invalid);
   const Eigen::Vector3d nan_q(0.0, std::numeric_limits<double>::quiet_NaN(), 0.2);
-  const auto out = tick.tick(0.001, 0.001, nan_q);
+  const auto out = tick.tick(0.001, 0.001, tool(nan_q));
   EXPECT_EQ(out.force_W_N, Eigen::Vector3d::Zero());
-  EXPECT_EQ(out.torques_Nm, Eigen::Vector3d::Zero());
+  EXPECT_EQ(out.force_D_N, Eigen::Vector3d::Zero());
   EXPECT_EQ(tick.safety().counters().fault_ticks, 1u);  // a fault, not start-up
   EXPECT_EQ(tick.startup_ticks(), 0u);
   EXPECT_FALSE(out.startup);

@@ -1,5 +1,5 @@
 // The physical-range checks (issue 14, item 5) on both sides of each bound: a reading
-// just inside the joint limits plus the margin, or the tracking range, passes; just
+// just inside the device's workspace plus the margin, or the tracking range, passes; just
 // outside, or not finite, fails.
 #include "haptic_server/physical_range.h"
 
@@ -11,33 +11,35 @@ namespace {
 
 using namespace mhd;
 
-PhantomJointLimits limits() {
-  PhantomJointLimits l;
-  l.lower_rad = Eigen::Vector3d(-1.0, -0.2, -0.5);
-  l.upper_rad = Eigen::Vector3d(1.0, 1.5, 1.2);
-  l.min_link_difference_rad = -0.6;
-  l.max_link_difference_rad = 0.9;
-  return l;
+/// Two boxes, as a device whose workspace is an L reports it.
+mhd_device_info info() {
+  mhd_device_info d{};
+  d.max_force_N = 8.5;
+  d.max_stiffness_N_per_m = 1000.0;
+  d.dof_in = d.dof_out = 3;
+  d.workspace_box_count = 2;
+  d.workspace[0] = mhd_box_D{{-0.1, -0.1, -0.1}, {0.1, 0.1, 0.1}};
+  d.workspace[1] = mhd_box_D{{0.1, -0.1, -0.1}, {0.3, 0.0, 0.1}};
+  return d;
 }
 
-TEST(PhysicalRange, JointAnglesWithinTheLimitsPlusTheMarginPass) {
-  const double m = kJointLimitMargin_rad, e = 1e-9;
-  EXPECT_TRUE(joint_angles_plausible(limits(), {0.0, 0.3, 0.2}));
-  EXPECT_TRUE(joint_angles_plausible(limits(), {1.0 + m - e, 0.3, 0.2}));   // past the limit, within the margin
-  EXPECT_TRUE(joint_angles_plausible(limits(), {-1.0 - m + e, 0.3, 0.2}));
-  EXPECT_TRUE(joint_angles_plausible(limits(), {0.0, 0.3, 0.3 + 0.9 + m - e}));  // theta3 - theta2 at its bound
+TEST(PhysicalRange, ToolPositionsWithinTheWorkspacePlusTheMarginPass) {
+  const double m = kWorkspaceMargin_m, e = 1e-9;
+  EXPECT_TRUE(tool_position_plausible(info(), {0.0, 0.0, 0.0}));
+  EXPECT_TRUE(tool_position_plausible(info(), {0.25, -0.05, 0.0}));      // in the second box only
+  EXPECT_TRUE(tool_position_plausible(info(), {0.0, 0.1 + m - e, 0.0}));  // past the box, within the margin
+  EXPECT_TRUE(tool_position_plausible(info(), {0.3 + m - e, -0.05, 0.0}));
 }
 
-TEST(PhysicalRange, JointAnglesPastTheMarginOrNotFiniteFail) {
-  const double m = kJointLimitMargin_rad, e = 1e-9;
-  EXPECT_FALSE(joint_angles_plausible(limits(), {1.0 + m + e, 0.3, 0.2}));
-  EXPECT_FALSE(joint_angles_plausible(limits(), {0.0, -0.2 - m - e, -0.2}));
-  EXPECT_FALSE(joint_angles_plausible(limits(), {0.0, 0.3, 0.3 + 0.9 + m + e}));
-  EXPECT_FALSE(joint_angles_plausible(limits(), {0.0, 0.3, 0.3 - 0.6 - m - e}));
-  EXPECT_FALSE(joint_angles_plausible(limits(), {0.0, 1e30, 0.2}));
-  EXPECT_FALSE(joint_angles_plausible(limits(), {0.0, std::numeric_limits<double>::quiet_NaN(), 0.2}));
-  EXPECT_EQ(joint_angles_fault({0.0, 1e30, 0.2}),
-            "device_read returned joint angles (0, 1e+30, 0.2) rad, outside the joint limits by more than 0.35 rad");
+TEST(PhysicalRange, ToolPositionsPastTheMarginOrNotFiniteFail) {
+  const double m = kWorkspaceMargin_m, e = 1e-9;
+  EXPECT_FALSE(tool_position_plausible(info(), {0.0, 0.1 + m + e, 0.0}));
+  EXPECT_FALSE(tool_position_plausible(info(), {0.25, 0.0 + m + e, 0.0}));  // above the second box, beside the first
+  EXPECT_FALSE(tool_position_plausible(info(), {0.3 + m + e, -0.05, 0.0}));
+  EXPECT_FALSE(tool_position_plausible(info(), {0.0, 1e30, 0.0}));
+  EXPECT_FALSE(tool_position_plausible(info(), {0.0, std::numeric_limits<double>::quiet_NaN(), 0.0}));
+  EXPECT_EQ(tool_position_fault({0.0, 1e30, 0.2}),
+            "device_read returned the tool at (0, 1e+30, 0.2) m, outside the device's workspace by more than 0.1 m");
 }
 
 TEST(PhysicalRange, TrackedPositionsWithinTheRangePassBeyondItFail) {

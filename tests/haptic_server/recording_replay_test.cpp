@@ -77,13 +77,13 @@ TEST_F(RecordingReplay, TheSameInputsGiveTheSameForcesBitForBit) {
   EXPECT_EQ(r.differing_rows, 0u);
   EXPECT_EQ(r.max_force_difference_N, 0.0);
   EXPECT_EQ(r.max_proxy_difference_m, 0.0);
-  EXPECT_EQ(r.max_torque_difference_Nm, 0.0);
+  EXPECT_EQ(r.max_device_force_difference_N, 0.0);
 }
 
 TEST_F(RecordingReplay, AChangedInputIsFoundAtItsRow) {
   RecordingReadResult read = read_recording(*recording_);
   ASSERT_TRUE(read.ok());
-  // Move the arm 1 mrad in the middle of a contact stretch.
+  // Move the tool 0.1 mm in the middle of a contact stretch.
   std::size_t k = 0;
   for (std::size_t i = read.rows.size() / 3; i < read.rows.size(); ++i) {
     if (read.rows[i].contact != 0) {
@@ -92,7 +92,7 @@ TEST_F(RecordingReplay, AChangedInputIsFoundAtItsRow) {
     }
   }
   ASSERT_GT(k, 0u);
-  read.rows[k].q_rad[1] += 1e-3;
+  read.rows[k].p_D_tool_m[1] += 1e-4;
   const ReplayResult r = replay(read.rows);
   EXPECT_GT(r.differing_rows, 0u);
   EXPECT_EQ(r.first_differing_row, k);
@@ -104,7 +104,7 @@ TEST(RecordingReader, RefusesAMissingColumnAndABadNumberAtTheirLines) {
   std::ofstream(missing) << "t_s,dt_s\n0,0.001\n";
   const auto a = read_recording(missing);
   ASSERT_FALSE(a.ok());
-  EXPECT_EQ(a.diagnostics.front().to_string(), missing.string() + ":1: error: missing column 'q1_rad'");
+  EXPECT_EQ(a.diagnostics.front().to_string(), missing.string() + ":1: error: missing column 'tool_D_x_m'");
 
   // A good recording with one number spoiled on its third data line (file line 4).
   const RecordingReadResult good = read_recording(std::string(MHD_SOURCE_DIR) + "/tests/data/server/recording_head.csv");

@@ -60,8 +60,8 @@ TEST_F(SafeStopTest, ARunningDeviceGetsZeroTorqueAfterAForce) {
   PluginInstance device = open(PluginKind::Device, "fault_device", log);
   ASSERT_TRUE(device.start().ok());
   mhd_device_command push{};
-  push.joint_torques_Nm[0] = 0.5;
-  push.joint_torques_Nm[2] = -0.25;
+  push.force_D_N[0] = 0.5;
+  push.force_D_N[2] = -0.25;
   ASSERT_TRUE(device.device_write(push).ok());
   EXPECT_TRUE(send_zero_torque(device, host_));
   (void)device.close();
@@ -114,7 +114,7 @@ TEST_F(SafeStopTest, BothAreSentInEitherOrder) {
     ASSERT_TRUE(device.start().ok());
     ASSERT_TRUE(base.start().ok());
     mhd_device_command push{};
-    push.joint_torques_Nm[1] = 1.0;
+    push.force_D_N[1] = 1.0;
     ASSERT_TRUE(device.device_write(push).ok());
     mhd_base_command move{};
     move.vz_mps = 0.2;

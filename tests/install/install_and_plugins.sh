@@ -27,13 +27,13 @@ step() { echo "---- [${SECONDS} s] $*"; }
 step "cmake --install $build --prefix $prefix"
 "$cmake_exe" --install "$build" --prefix "$prefix" >"$scratch/install.log" || { cat "$scratch/install.log"; fail "install"; }
 
-plugin_dir="$prefix/$libdir/mhd/plugins-abi2"
+plugin_dir="$prefix/$libdir/mhd/plugins-abi3"
 for f in bin/mhd bin/mhd-mesh-gen \
-         "$libdir/mhd/plugins-abi2/libmhd_sim_phantom.so" "$libdir/mhd/plugins-abi2/libmhd_null_display.so" \
+         "$libdir/mhd/plugins-abi3/libmhd_sim_phantom.so" "$libdir/mhd/plugins-abi3/libmhd_null_display.so" \
          share/mhd/scenes/dolphin.xml share/mhd/scenes/scene.xsd share/mhd/scenes/common/materials.xml \
          share/mhd/assets/dolphin.ply share/mhd/plots/force_traces.py \
          share/doc/mhd/README.md share/doc/mhd/LICENSE share/doc/mhd/plugins.md share/doc/mhd/licensing.md \
-         include/mhd/plugin_abi.h include/mhd/engine/proxy/god_object.h \
+         include/mhd/plugin_abi.h include/mhd/plugin_params.hpp include/mhd/engine/proxy/god_object.h \
          "$libdir/libmhd_proxy.a" "$libdir/cmake/MHD/MHDConfig.cmake" "$libdir/cmake/MHD/MHDConfigVersion.cmake" \
          "$libdir/cmake/MHD/MhdPlugin.cmake" "$libdir/pkgconfig/mhd-plugin.pc"; do
   [ -f "$prefix/$f" ] || fail "not installed: $f"

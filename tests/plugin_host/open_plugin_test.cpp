@@ -24,14 +24,14 @@ class OpenPluginTest : public ::testing::Test {
 };
 
 TEST_F(OpenPluginTest, OpensWithTheSceneParams) {
-  auto opened = open_plugin(search_, describe(PluginKind::Device, "good_device", {{"joint0_rad", "0.75"}}), host_.abi());
+  auto opened = open_plugin(search_, describe(PluginKind::Device, "good_device", {{"tool_x_m", "0.075"}}), host_.abi());
   ASSERT_TRUE(opened.ok()) << opened.error().to_string();
   PluginInstance& device = opened.value();
   EXPECT_EQ(device.state(), PluginState::Open);
   ASSERT_TRUE(device.start().ok());
   mhd_device_state state{};
   ASSERT_TRUE(device.device_read(state).ok());
-  EXPECT_EQ(state.joint_angles_rad[0], 0.75);
+  EXPECT_EQ(state.p_D_tool_m[0], 0.075);
 }
 
 TEST_F(OpenPluginTest, WrongKindForTheScene) {
@@ -52,7 +52,7 @@ TEST_F(OpenPluginTest, ErrorsPassThrough) {
       open_plugin(search_, describe(PluginKind::Device, "rejects_unknown_param", {{"x", "1"}}), host_.abi())
           .error()
           .to_string(),
-      "plugin 'rejects_unknown_param': open failed: unknown parameter 'x'");
+      "plugin 'rejects_unknown_param': unknown parameter 'x' (known: none)");
 }
 
 }  // namespace

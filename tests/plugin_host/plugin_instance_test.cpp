@@ -120,8 +120,8 @@ TEST_F(PluginInstanceTest, CallsOutOfOrderAreRefusedBeforeThePluginSeesThem) {
                "plugin 'good_device': start called while the plugin is loaded; it must be open or stopped");
   expect_error(device.device_read(state).error(), PluginErrorKind::WrongState,
                "plugin 'good_device': device_read called while the plugin is loaded; it must be running");
-  expect_error(device.device_limits().error(), PluginErrorKind::WrongState,
-               "plugin 'good_device': device_limits called while the plugin is loaded; it must be open, running or "
+  expect_error(device.device_info().error(), PluginErrorKind::WrongState,
+               "plugin 'good_device': device_info called while the plugin is loaded; it must be open, running or "
                "stopped");
   ASSERT_TRUE(device.open({}, host_.abi()).ok());
   expect_error(device.open({}, host_.abi()).error(), PluginErrorKind::WrongState,
@@ -159,92 +159,121 @@ TEST_F(PluginInstanceTest, CallsOfAnotherKindAreRefused) {
 }
 
 TEST_F(PluginInstanceTest, DeviceReadsFixedDataWithParamsAndTheHostClock) {
-  PluginInstance device = running("good_device", {{"joint0_rad", "1.5"}});
+  PluginInstance device = running("good_device", {{"tool_x_m", "0.075"}});
   const double before_s = host_.now_s();
   mhd_device_state state{};
   auto read = device.device_read(state);
   ASSERT_TRUE(read.ok()) << read.error().to_string();
   EXPECT_EQ(read.value(), PluginCallStatus::Ok);
-  EXPECT_EQ(state.joint_angles_rad[0], 1.5);
-  EXPECT_EQ(state.joint_angles_rad[1], 0.5);
-  EXPECT_EQ(state.joint_angles_rad[2], -0.5);
+  EXPECT_EQ(state.p_D_tool_m[0], 0.075);
+  EXPECT_EQ(state.p_D_tool_m[1], 0.02);
+  EXPECT_EQ(state.p_D_tool_m[2], -0.02);
+  EXPECT_EQ(state.q_D_tool_wxyz[0], 1.0);
   EXPECT_GE(state.timestamp_s, before_s);
   EXPECT_LE(state.timestamp_s, host_.now_s());
   EXPECT_EQ(state.buttons, 1u);
 }
 
-TEST_F(PluginInstanceTest, DeviceLimitsAreReadAtOpen) {
+TEST_F(PluginInstanceTest, DeviceInfoIsReadAtOpen) {
   PluginInstance device(load_test("good_device"));
-  ASSERT_TRUE(device.open({{"max_torque_Nm", "0.75"}}, host_.abi()).ok());
-  auto limits = device.device_limits();
-  ASSERT_TRUE(limits.ok());
-  EXPECT_EQ(limits.value().max_force_N, 8.5);
-  EXPECT_EQ(limits.value().max_joint_torque_Nm[2], 0.75);
+  ASSERT_TRUE(device.open({{"max_force_N", "3.25"}}, host_.abi()).ok());
+  auto info = device.device_info();
+  ASSERT_TRUE(info.ok());
+  EXPECT_EQ(info.value().max_force_N, 3.25);
+  EXPECT_EQ(info.value().dof_in, 3u);
+  EXPECT_EQ(info.value().workspace_box_count, 1u);
+  EXPECT_EQ(info.value().workspace[0].max_m[2], 0.1);
 }
 
-TEST_F(PluginInstanceTest, BadDeviceLimitsFailTheOpen) {
+TEST_F(PluginInstanceTest, BadDeviceInfoFailsTheOpen) {
   PluginInstance device(load_test("good_device"));
   CallLog log(*device.library());
-  expect_error(device.open({{"max_torque_Nm", "0"}}, host_.abi()).error(), PluginErrorKind::InvalidData,
-               "plugin 'good_device': device_limits returned max_joint_torque_Nm[0] = 0, which must be > 0");
+  expect_error(device.open({{"max_force_N", "0"}}, host_.abi()).error(), PluginErrorKind::InvalidData,
+               "plugin 'good_device': device_info returned max_force_N = 0, which must be > 0");
   EXPECT_EQ(device.state(), PluginState::Loaded);
-  expect_error(device.open({{"max_torque_Nm", "nan"}}, host_.abi()).error(), PluginErrorKind::InvalidData,
-               "plugin 'good_device': device_limits returned a non-finite max_joint_torque_Nm[0]");
+  expect_error(device.open({{"max_force_N", "-1e300"}}, host_.abi()).error(), PluginErrorKind::InvalidData,
+               "plugin 'good_device': device_info returned max_force_N = -1e+300, which must be > 0");
   EXPECT_EQ(log.calls(), "open close open close ");
 }
 
-TEST_F(PluginInstanceTest, TorquesAreClampedToTheDeviceLimits) {
-  PluginInstance device = running("good_device", {{"max_torque_Nm", "0.5"}});
+TEST_F(PluginInstanceTest, UndeclaredOrBadParametersAreRefusedBeforeOpen) {
+  PluginInstance device(load_test("good_device"));
+  CallLog log(*device.library());
+  expect_error(device.open({{"max_torque_Nm", "0.5"}}, host_.abi()).error(), PluginErrorKind::BadParameter,
+               "plugin 'good_device': unknown parameter 'max_torque_Nm' (known: tool_x_m, max_force_N, read_status, "
+               "fail)");
+  expect_error(device.open({{"read_status", "sometimes"}, {"tool_x_m", "x"}}, host_.abi()).error(),
+               PluginErrorKind::BadParameter,
+               "plugin 'good_device': parameter 'read_status' must be one of ok|no_data|deactivate|error|bogus, got "
+               "'sometimes'; parameter 'tool_x_m' must be a number (m), got 'x'");
+  EXPECT_EQ(log.calls(), "");  // open() never saw them
+  // The dual: declared parameters with good values reach open().
+  ASSERT_TRUE(device.open({{"read_status", "ok"}, {"tool_x_m", " 0.01 "}}, host_.abi()).ok());
+  EXPECT_EQ(log.calls(), "open ");
+}
+
+TEST_F(PluginInstanceTest, ForceIsScaledToTheDeviceLimitKeepingItsDirection) {
+  PluginInstance device = running("good_device", {{"max_force_N", "5"}});
   mhd_device_command command{};
-  command.joint_torques_Nm[0] = 2.0;
-  command.joint_torques_Nm[1] = -2.0;
-  command.joint_torques_Nm[2] = 0.125;
+  command.force_D_N[0] = 6.0;
+  command.force_D_N[1] = -8.0;  // |F| = 10 N: halved
+  command.torque_D_Nm[2] = 1.0;  // a 3-DOF-out device gets no torque
   ASSERT_TRUE(device.device_write(command).ok());
   mhd_device_state state{};
   ASSERT_TRUE(device.device_read(state).ok());
-  EXPECT_EQ(state.p_D_hip_m[0], 0.5);  // good_device echoes the torques it got
-  EXPECT_EQ(state.p_D_hip_m[1], -0.5);
-  EXPECT_EQ(state.p_D_hip_m[2], 0.125);
+  EXPECT_DOUBLE_EQ(state.v_D_tool_mps[0], 3.0);  // good_device echoes the force it got
+  EXPECT_DOUBLE_EQ(state.v_D_tool_mps[1], -4.0);
+  EXPECT_EQ(state.v_D_tool_mps[2], 0.0);
+  // The dual: a force within the limit passes unchanged.
+  command = mhd_device_command{};
+  command.force_D_N[2] = 4.5;
+  ASSERT_TRUE(device.device_write(command).ok());
+  ASSERT_TRUE(device.device_read(state).ok());
+  EXPECT_EQ(state.v_D_tool_mps[2], 4.5);
 }
 
 TEST_F(PluginInstanceTest, NonFiniteCommandsNeverReachThePlugin) {
   PluginInstance device = running("good_device");
   mhd_device_command command{};
-  command.joint_torques_Nm[1] = kNaN;
+  command.force_D_N[1] = kNaN;
   expect_error(device.device_write(command).error(), PluginErrorKind::InvalidData,
-               "plugin 'good_device': refused to send a non-finite joint_torques_Nm[1] to device_write");
+               "plugin 'good_device': refused to send a non-finite force_D_N[1] to device_write");
+  command.force_D_N[1] = 0.0;
+  command.torque_D_Nm[0] = kNaN;
+  expect_error(device.device_write(command).error(), PluginErrorKind::InvalidData,
+               "plugin 'good_device': refused to send a non-finite torque_D_Nm[0] to device_write");
   expect_error(device.simulate_until(kNaN).error(), PluginErrorKind::InvalidData,
                "plugin 'good_device': refused to send a non-finite t_s to simulate_until");
   mhd_device_state state{};
   ASSERT_TRUE(device.device_read(state).ok());
-  EXPECT_EQ(state.p_D_hip_m[1], 0.0);
+  EXPECT_EQ(state.v_D_tool_mps[1], 0.0);
 }
 
 TEST_F(PluginInstanceTest, NonFiniteDeviceStateIsInvalidData) {
   PluginInstance device = running("nan_device");
   mhd_device_state state{};
-  state.joint_angles_rad[0] = 42.0;
+  state.p_D_tool_m[0] = 42.0;
   expect_error(device.device_read(state).error(), PluginErrorKind::InvalidData,
-               "plugin 'nan_device': device_read returned a non-finite joint_angles_rad[1]");
-  EXPECT_EQ(state.joint_angles_rad[0], 42.0);  // untouched
+               "plugin 'nan_device': device_read returned a non-finite p_D_tool_m[1]");
+  EXPECT_EQ(state.p_D_tool_m[0], 42.0);  // untouched
 }
 
 TEST_F(PluginInstanceTest, ReadStatuses) {
   mhd_device_state state{};
-  state.joint_angles_rad[0] = 42.0;
+  state.p_D_tool_m[0] = 42.0;
   {
     PluginInstance device = running("good_device", {{"read_status", "no_data"}});
     auto read = device.device_read(state);
     ASSERT_TRUE(read.ok());
     EXPECT_EQ(read.value(), PluginCallStatus::NoData);
-    EXPECT_EQ(state.joint_angles_rad[0], 42.0);  // untouched
+    EXPECT_EQ(state.p_D_tool_m[0], 42.0);  // untouched
   }
   {
     PluginInstance device = running("good_device", {{"read_status", "deactivate"}});
     auto read = device.device_read(state);
     ASSERT_TRUE(read.ok());
     EXPECT_EQ(read.value(), PluginCallStatus::Deactivate);
-    EXPECT_EQ(state.joint_angles_rad[0], 42.0);
+    EXPECT_EQ(state.p_D_tool_m[0], 42.0);
   }
   {
     PluginInstance device = running("good_device", {{"read_status", "error"}});
@@ -256,7 +285,7 @@ TEST_F(PluginInstanceTest, ReadStatuses) {
     expect_error(device.device_read(state).error(), PluginErrorKind::InvalidData,
                  "plugin 'good_device': device_read returned status 7, which is not an mhd_status");
   }
-  EXPECT_EQ(state.joint_angles_rad[0], 42.0);
+  EXPECT_EQ(state.p_D_tool_m[0], 42.0);
 }
 
 TEST_F(PluginInstanceTest, OpenFailureSaysWhy) {
@@ -267,9 +296,10 @@ TEST_F(PluginInstanceTest, OpenFailureSaysWhy) {
 }
 
 TEST_F(PluginInstanceTest, UnknownParameterFailsTheOpen) {
+  // The plugin declares no parameters: the host refuses any before open() sees it.
   PluginInstance device(load_test("rejects_unknown_param"));
-  expect_error(device.open({{"x", "1"}}, host_.abi()).error(), PluginErrorKind::OpenFailed,
-               "plugin 'rejects_unknown_param': open failed: unknown parameter 'x'");
+  expect_error(device.open({{"x", "1"}}, host_.abi()).error(), PluginErrorKind::BadParameter,
+               "plugin 'rejects_unknown_param': unknown parameter 'x' (known: none)");
   EXPECT_TRUE(device.open({}, host_.abi()).ok());
 }
 
@@ -429,8 +459,8 @@ TEST_F(PluginInstanceTest, DisplayFrames) {
   expect_error(display.display_write(frame).error(), PluginErrorKind::InvalidData,
                "plugin 'null_display': refused to send a non-finite q_W_head_wxyz[3] to display_write");
   PluginInstance other(load(test::null_display_plugin()));
-  expect_error(other.open({{"colour", "red"}}, host_.abi()).error(), PluginErrorKind::OpenFailed,
-               "plugin 'null_display': open failed: unknown parameter 'colour'");
+  expect_error(other.open({{"colour", "red"}}, host_.abi()).error(), PluginErrorKind::BadParameter,
+               "plugin 'null_display': unknown parameter 'colour' (known: verbose)");
 }
 
 }  // namespace

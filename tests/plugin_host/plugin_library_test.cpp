@@ -92,6 +92,27 @@ TEST(PluginLibrary, WrongAbiVersion) {
   EXPECT_FALSE(is_loaded(test_plugin("wrong_abi_version")));
 }
 
+TEST(PluginLibrary, AnAbi2PluginIsRefusedNamingItsVersion) {
+  // abi2_device is built against the frozen ABI 2 header and, as every v2 plugin does,
+  // returns NULL to a host that asks for version 3.
+  const PluginError e = load_error("abi2_device");
+  EXPECT_EQ(e.kind, PluginErrorKind::AbiVersionMismatch);
+  EXPECT_EQ(e.to_string(), where("abi2_device") +
+                               "built for plugin ABI 2, this host speaks ABI 3: rebuild it against this MHD's "
+                               "mhd/plugin_abi.h (docs/plugins.md, \"Porting a plugin to ABI 3\")");
+  EXPECT_FALSE(is_loaded(test_plugin("abi2_device")));
+}
+
+TEST(PluginLibrary, ADeclarationWhoseDefaultBreaksItsRangeIsABadTable) {
+  const PluginError e = load_error("bad_param_decl");
+  EXPECT_EQ(e.kind, PluginErrorKind::BadTable);
+  EXPECT_EQ(e.to_string(), where("bad_param_decl") +
+                               "parameter declaration 0: its default is invalid: parameter 'rate_hz' must be a "
+                               "number > 0 (Hz), got '0'");
+  // The dual: good_device's declarations pass, and it loads.
+  EXPECT_TRUE(PluginLibrary::load(test_plugin("good_device")).ok());
+}
+
 TEST(PluginLibrary, WrongStructSize) {
   const PluginError e = load_error("wrong_struct_size");
   EXPECT_EQ(e.kind, PluginErrorKind::StructSizeMismatch);

@@ -37,7 +37,7 @@ def test_a_fault_raises_mhd_error_naming_plugin_and_scene_line():
     with pytest.raises(mhd.MhdError) as caught:
         mhd.run_server(scene, duration_s=20.0, plugin_path=[needed_env("MHD_TEST_FAULT_PLUGIN_DIR")])
     assert re.fullmatch(r"tests/data/server/device_fault\.xml:[0-9]+: error: plugin 'fault_device': device_read "
-                        r"returned a non-finite joint_angles_rad\[1\]", str(caught.value))
+                        r"returned a non-finite p_D_tool_m\[1\]", str(caught.value))
     report = caught.value.report
     assert report.ended_by == "fault"
     assert report.status.elapsed_s < 5.0  # ended by the fault, not the 20 s

@@ -180,10 +180,10 @@ TEST_F(SceneXmlReader, PluginsWithParams) {
   EXPECT_EQ(s.plugins[0].kind, PluginKind::Device);
   EXPECT_EQ(s.plugins[0].name, "sim_phantom");
   EXPECT_EQ(s.plugins[0].params,
-            (std::map<std::string, std::string>{{"link_mm", "209.55"}, {"serial", ""}}));
+            (std::map<std::string, std::string>{{"position_resolution_m", "3e-05"}, {"hand_model", "kinematic"}}));
   EXPECT_EQ(s.plugins[0].where.line, 31);
   EXPECT_EQ(s.plugins[1].kind, PluginKind::Tracker);
-  EXPECT_EQ(s.plugins[1].name, "sim_tracker");
+  EXPECT_EQ(s.plugins[1].name, "sim_is900");
   EXPECT_TRUE(s.plugins[1].params.empty());
 }
 

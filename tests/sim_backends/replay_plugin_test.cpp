@@ -21,7 +21,7 @@ TEST(ReplayPlugin, TheTableIdentifiesATrackerWithoutSimulation) {
 TEST(ReplayPlugin, OpenNamesTheFileAndLineOfABadRow) {
   const PluginFile file(MHD_REPLAY_PLUGIN);
   FakeHost h;
-  EXPECT_EQ(open_plugin(file.api(), h.host, {}).error, "missing parameter 'file'");
+  EXPECT_EQ(open_plugin(file.api(), h.host, {}).error, "parameter 'file' is required");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"file", "tests/data/replay/nan.csv"}}).error,
             "tests/data/replay/nan.csv:3: column 'py' is not finite: 'nan'");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"file", "tests/data/replay/valid.csv"}, {"loop", "1"}}).error,

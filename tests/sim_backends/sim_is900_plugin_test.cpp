@@ -25,13 +25,13 @@ TEST(SimIs900Plugin, OpenNeedsTheSimulatedWorldAndValidParameters) {
   EXPECT_EQ(open_plugin(file.api(), h.host_without_world, {}).error,
             "sim_is900 measures the simulated world, but the host gives none (sim_world is NULL)");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"rate_hz", "abc"}}).error,
-            "parameter 'rate_hz' must be a positive number, got 'abc'");
+            "parameter 'rate_hz' must be a number > 0 (Hz), got 'abc'");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"base_sensor_id", "1"}}).error,
             "parameters 'base_sensor_id' and 'head_sensor_id' must differ, both are 1");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"tracker_position_m", "0 2.624"}}).error,
-            "parameter 'tracker_position_m' must be three numbers 'x y z', got '0 2.624'");
+            "parameter 'tracker_position_m' must be three numbers 'x y z' (m), got '0 2.624'");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"buffer_capacity", "0"}}).error,
-            "parameter 'buffer_capacity' must be at least 1, got '0'");
+            "parameter 'buffer_capacity' must be a non-negative integer in [1, 1048576], got '0'");
   mhd_sim_world broken = *h.host.sim_world;
   broken.get_head = nullptr;
   mhd_host broken_host = h.host;
@@ -40,15 +40,15 @@ TEST(SimIs900Plugin, OpenNeedsTheSimulatedWorldAndValidParameters) {
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"noise", "0"}}).error,
             "unknown parameter 'noise' (known: rate_hz, latency_s, position_sigma_m, angle_sigma_deg, base_sensor_id, "
             "head_sensor_id, base_sensor_position_m, base_sensor_rpy_deg, base_sensor_quaternion_wxyz, "
-            "tracker_position_m, tracker_rpy_deg, ...)");
+            "tracker_position_m, tracker_rpy_deg, tracker_quaternion_...)");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"tracker_rpy_deg", "0 0 90"}, {"tracker_quaternion_wxyz", "1 0 0 0"}}).error,
             "parameters 'tracker_rpy_deg' and 'tracker_quaternion_wxyz' exclude each other");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"dropout_sensor", "hand"}}).error,
-            "parameter 'dropout_sensor' must be 'head' or 'base', got 'hand'");
+            "parameter 'dropout_sensor' must be one of head|base, got 'hand'");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"dropout_duration_s", "-1"}}).error,
-            "parameter 'dropout_duration_s' must be a non-negative number, got '-1'");
+            "parameter 'dropout_duration_s' must be a number >= 0 (s), got '-1'");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"base_sensor_quaternion_wxyz", "0 0 0 0"}}).error,
-            "parameter 'base_sensor_quaternion_wxyz' must be a quaternion 'w x y z' of non-zero norm, got '0 0 0 0'");
+            "parameter 'base_sensor_quaternion_wxyz' must be four numbers 'w x y z' of non-zero norm, got '0 0 0 0'");
 }
 
 TEST(SimIs900Plugin, ReportsTheWorldsBaseAndHead) {

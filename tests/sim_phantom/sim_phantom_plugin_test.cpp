@@ -19,9 +19,11 @@
 namespace mhd::test {
 namespace {
 
-Eigen::Vector3d hip_of(const mhd_device_state& s) { return {s.p_D_hip_m[0], s.p_D_hip_m[1], s.p_D_hip_m[2]}; }
-Eigen::Vector3d angles_of(const mhd_device_state& s) {
-  return {s.joint_angles_rad[0], s.joint_angles_rad[1], s.joint_angles_rad[2]};
+Eigen::Vector3d hip_of(const mhd_device_state& s) { return {s.p_D_tool_m[0], s.p_D_tool_m[1], s.p_D_tool_m[2]}; }
+
+/// A force command in the device frame P, as the ABI 3 host sends it.
+mhd_device_command force_command(double t_s, const Eigen::Vector3d& F_P_N) {
+  return mhd_device_command{t_s, {F_P_N[0], F_P_N[1], F_P_N[2]}, {0.0, 0.0, 0.0}};
 }
 
 Rig pomhi_rig() {
@@ -41,9 +43,10 @@ TEST(SimPhantomPlugin, TheTableIdentifiesADevice) {
   EXPECT_EQ(api.struct_size, sizeof(mhd_plugin_api));
   EXPECT_EQ(api.kind, MHD_KIND_DEVICE);
   EXPECT_STREQ(api.name, "sim_phantom");
-  EXPECT_STREQ(api.version, "1.0.0");
+  EXPECT_STREQ(api.version, "3.0.0");
   EXPECT_NE(api.description, nullptr);
-  EXPECT_NE(api.device_limits, nullptr);
+  EXPECT_NE(api.device_info, nullptr);
+  EXPECT_GT(api.param_count, 0u);
   EXPECT_NE(api.device_read, nullptr);
   EXPECT_NE(api.device_write, nullptr);
   EXPECT_NE(api.simulate_until, nullptr);
@@ -56,27 +59,26 @@ TEST(SimPhantomPlugin, OpenRejectsUnknownAndMalformedParameters) {
   const PluginFile file(MHD_SIM_PHANTOM_PLUGIN);
   FakeHost h;
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"stiffness", "1"}}).error,
-            "unknown parameter 'stiffness' (known: hand_model, hand_stiffness_N_per_m, command_timeout_s, "
-            "position_resolution_m, phantom_position_m, phantom_rpy_deg, base_position_m, base_rpy_deg, hand_P_m, "
-            "command_log)");
+            "unknown parameter 'stiffness' (known: hand_model, hand_mass_kg, hand_stiffness_N_per_m, "
+            "hand_damping_Ns_per_m, command_timeout_s, position_resolution_m, phantom_position_m, phantom_rpy_deg, "
+            "base_position_m, base_rpy_deg, hand_P_m, command_log)");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"hand_model", "spring"}}).error,
-            "parameter 'hand_model' must be 'kinematic' or 'impedance', got 'spring'");
+            "parameter 'hand_model' must be one of kinematic|impedance, got 'spring'");
   // The mass and damping belong to the impedance hand only.
-  EXPECT_EQ(open_plugin(file.api(), h.host, {{"hand_mass_kg", "0.5"}}).error.rfind(
-                "unknown parameter 'hand_mass_kg' (known: hand_model, hand_stiffness_N_per_m, ", 0),
-            0u);
+  EXPECT_EQ(open_plugin(file.api(), h.host, {{"hand_mass_kg", "0.5"}}).error,
+            "parameter 'hand_mass_kg' applies only to hand_model 'impedance'");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"hand_model", "impedance"}, {"hand_damping_Ns_per_m", "0"}}).error,
-            "parameter 'hand_damping_Ns_per_m' must be a positive number, got '0'");
+            "parameter 'hand_damping_Ns_per_m' must be a number > 0 (N s/m), got '0'");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"command_log", "/nonexistent/dir/log.csv"}}).error,
             "cannot write the command log '/nonexistent/dir/log.csv': No such file or directory");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"command_timeout_s", "0"}}).error,
-            "parameter 'command_timeout_s' must be a positive number, got '0'");
+            "parameter 'command_timeout_s' must be a number > 0 (s), got '0'");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"hand_stiffness_N_per_m", "-5"}}).error,
-            "parameter 'hand_stiffness_N_per_m' must be a positive number, got '-5'");
+            "parameter 'hand_stiffness_N_per_m' must be a number > 0 (N/m), got '-5'");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"position_resolution_m", "fine"}}).error,
-            "parameter 'position_resolution_m' must be a non-negative number, got 'fine'");
+            "parameter 'position_resolution_m' must be a number >= 0 (m), got 'fine'");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"hand_P_m", "0 0.1"}}).error,
-            "parameter 'hand_P_m' must be three numbers 'x y z', got '0 0.1'");
+            "parameter 'hand_P_m' must be three numbers 'x y z' (m), got '0 0.1'");
   mhd_host old_host = h.host;
   old_host.abi_version = 0;
   EXPECT_EQ(open_plugin(file.api(), old_host, {}).error, "host ABI version 0 is not " + std::to_string(MHD_PLUGIN_ABI_VERSION));
@@ -97,12 +99,16 @@ TEST(SimPhantomPlugin, FollowsTheWorldsHandAndIsPushedByTorques) {
   ASSERT_NE(opened.instance, nullptr) << opened.error;
   mhd_plugin_instance* device = opened.instance;
   mhd_error err{};
-  mhd_device_limits limits{};
-  ASSERT_EQ(api.device_limits(device, &limits, &err), MHD_OK) << err.message;
-  EXPECT_EQ(limits.max_force_N, 8.5);
-  for (const double tau : limits.max_joint_torque_Nm) {
-    EXPECT_GT(tau, 0.5);
-    EXPECT_LT(tau, 8.5 * 0.42);
+  mhd_device_info info{};
+  ASSERT_EQ(api.device_info(device, &info, &err), MHD_OK) << err.message;
+  EXPECT_EQ(info.max_force_N, 8.5);
+  EXPECT_EQ(info.max_torque_Nm, 0.0);
+  EXPECT_EQ(info.dof_in, 3u);
+  EXPECT_EQ(info.dof_out, 3u);
+  ASSERT_EQ(info.workspace_box_count, 1u);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(info.workspace[0].min_m[i], rig.device().workspace.min_P_m[i]);
+    EXPECT_EQ(info.workspace[0].max_m[i], rig.device().workspace.max_P_m[i]);
   }
 
   h.now_s = 1.0;
@@ -111,7 +117,6 @@ TEST(SimPhantomPlugin, FollowsTheWorldsHandAndIsPushedByTorques) {
   ASSERT_EQ(api.device_read(device, &state, &err), MHD_OK) << err.message;
   EXPECT_EQ(state.timestamp_s, 1.0);
   EXPECT_LT((hip_of(state) - hand_P).norm(), 1e-9);
-  EXPECT_LT((phantom_tool_position(rig.device().geometry, angles_of(state)) - hip_of(state)).norm(), 1e-15);
   EXPECT_EQ(api.device_read(device, &state, &err), MHD_NO_DATA);
 
   // The hand moves in the world.
@@ -122,11 +127,11 @@ TEST(SimPhantomPlugin, FollowsTheWorldsHandAndIsPushedByTorques) {
   EXPECT_EQ(state.timestamp_s, 1.001);
   EXPECT_LT((hip_of(state) - hand2_P).norm(), 1e-9);
 
-  // A force of (2, 0, -1) N in P, as the host commands it: tau = J^T F.
+  // A force of (2, 0, -1) N in P, as the host commands it; the plugin maps it to its
+  // motors (tau = J^T F), and the motors push the tool by F over the hand's stiffness.
   const Eigen::Vector3d F(2.0, 0.0, -1.0);
-  const Eigen::Vector3d tau = phantom_joint_torques(rig.device().geometry, angles_of(state), F);
   h.now_s = 1.001;
-  const mhd_device_command command{h.now_s, {tau[0], tau[1], tau[2]}};
+  const mhd_device_command command = force_command(h.now_s, F);
   ASSERT_EQ(api.device_write(device, &command, &err), MHD_OK) << err.message;
   ASSERT_EQ(api.simulate_until(device, 1.002, &err), MHD_OK);
   ASSERT_EQ(api.device_read(device, &state, &err), MHD_OK);
@@ -137,9 +142,9 @@ TEST(SimPhantomPlugin, FollowsTheWorldsHandAndIsPushedByTorques) {
   ASSERT_EQ(api.device_read(device, &state, &err), MHD_OK);
   EXPECT_LT((hip_of(state) - hand2_P).norm(), 1e-9);
 
-  const mhd_device_command bad{h.now_s, {0.0, std::nan(""), 0.0}};
+  const mhd_device_command bad = force_command(h.now_s, Eigen::Vector3d(0.0, std::nan(""), 0.0));
   EXPECT_EQ(api.device_write(device, &bad, &err), MHD_ERROR);
-  EXPECT_STREQ(err.message, "device command has a non-finite value");
+  EXPECT_STREQ(err.message, "device_write: the force is not finite");
 
   ASSERT_EQ(api.stop(device, &err), MHD_OK);
   EXPECT_EQ(api.device_read(device, &state, &err), MHD_ERROR);
@@ -170,12 +175,11 @@ TEST(SimPhantomPlugin, TheImpedanceHandIsPushedBackByTheForceAndSettlesAtForceOv
   ASSERT_EQ(api.device_read(device, &state, &err), MHD_OK) << err.message;
   EXPECT_LT((hip_of(state) - hand_P).norm(), 1e-9);  // the hand starts where it is meant to be
 
-  // The host holds 2 N along P's (1, 0, -1) direction, re-sent every millisecond as tau = J^T F.
+  // The host holds 2 N along P's (1, 0, -1) direction, re-sent every millisecond.
   const Eigen::Vector3d F_P = 2.0 * Eigen::Vector3d(1.0, 0.0, -1.0).normalized();
   double after_one_tick_m = 0.0;
   for (int tick = 1; tick <= 3000; ++tick) {
-    const Eigen::Vector3d tau = phantom_joint_torques(rig.device().geometry, angles_of(state), F_P);
-    const mhd_device_command command{h.now_s, {tau[0], tau[1], tau[2]}};
+    const mhd_device_command command = force_command(h.now_s, F_P);
     ASSERT_EQ(api.device_write(device, &command, &err), MHD_OK) << err.message;
     h.now_s = 1.0 + 0.001 * tick;
     ASSERT_EQ(api.simulate_until(device, h.now_s, &err), MHD_OK) << err.message;
@@ -253,7 +257,7 @@ TEST(SimPhantomPlugin, LogsEveryCommandAndItsOwnWatchdogFiring) {
   for (int k = 1; k <= 5; ++k) {
     h.now_s = 1.0 + 0.001 * k;
     ASSERT_EQ(api.simulate_until(opened.instance, h.now_s, &err), MHD_OK) << err.message;
-    const mhd_device_command command{h.now_s, {0.1 * k, -0.2, 0.0}};
+    const mhd_device_command command = force_command(h.now_s, Eigen::Vector3d(0.1 * k, -0.2, 0.0));
     ASSERT_EQ(api.device_write(opened.instance, &command, &err), MHD_OK) << err.message;
   }
   // Commands stop; the device's watchdog fires 20 ms after the last one, once.
@@ -266,7 +270,7 @@ TEST(SimPhantomPlugin, LogsEveryCommandAndItsOwnWatchdogFiring) {
   std::string header;
   const std::vector<CommandLogRow> rows = read_command_log(log, &header);
   std::filesystem::remove(log);
-  EXPECT_EQ(header, "t_s,event,tau1_Nm,tau2_Nm,tau3_Nm");
+  EXPECT_EQ(header, "t_s,event,force_x_N,force_y_N,force_z_N");
   ASSERT_EQ(rows.size(), 1u + 5u + 1u + 1u);
   EXPECT_EQ(rows[0].event, "start");
   EXPECT_DOUBLE_EQ(rows[0].t_s, 1.0);
@@ -292,7 +296,7 @@ TEST(SimPhantomPlugin, FlushesTheCommandLogWhileOpen) {
   ASSERT_NE(opened.instance, nullptr) << opened.error;
   mhd_error err{};
   ASSERT_EQ(api.start(opened.instance, &err), MHD_OK) << err.message;
-  const mhd_device_command command{0.0, {0.0, 0.0, 0.0}};
+  const mhd_device_command command = force_command(0.0, Eigen::Vector3d::Zero());
   ASSERT_EQ(api.device_write(opened.instance, &command, &err), MHD_OK) << err.message;
   // Within 50 ms (generously waited for) the row is in the file without a close.
   std::size_t rows = 0;

@@ -110,7 +110,7 @@ int run_tick(const std::string& scene_file, double seconds, bool realtime, doubl
     t += kDt;
     const auto start = std::chrono::steady_clock::now();
     if (i % 100 == 0) (void)tick.add_base_sensor_sample(t - 0.004, sensor);
-    const HapticTickOutput out = tick.tick(t, kDt, q[i]);
+    const HapticTickOutput out = tick.tick(t, kDt, phantom_tool_position(rig.device().geometry, q[i]));
     const auto end = std::chrono::steady_clock::now();
     us.push_back(std::chrono::duration<double, std::micro>(end - start).count());
     if (out.in_contact) ++contact;
@@ -188,7 +188,7 @@ LeapResult run_leap(const Loaded& l, bool predict, double noise_m, std::uint64_t
         ++it;
       }
     }
-    const HapticTickOutput out = tick.tick(t, 0.001, q);
+    const HapticTickOutput out = tick.tick(t, 0.001, phantom_tool_position(rig.device().geometry, q));
     const Eigen::Vector3d now_true = hip_true(t);
     if (has_previous && t > 1.0 && out.hip_W_m.allFinite()) {  // after a 1 s warm-up
       const double leap_mm = ((out.hip_W_m - previous_hip) - (now_true - previous_true)).norm() * 1e3;

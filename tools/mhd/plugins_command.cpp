@@ -4,6 +4,8 @@
 #include "plugin_host/plugin_kind.h"
 #include "plugin_host/plugin_search_path.h"
 
+#include <mhd/plugin_params.hpp>
+
 #include <fmt/core.h>
 #include <spdlog/spdlog.h>
 
@@ -23,6 +25,7 @@ namespace fs = std::filesystem;
 
 struct PluginsOptions {
   std::vector<std::string> plugin_paths;
+  std::string describe;  ///< a plugin name: print its declarations instead of the list
 };
 
 using Row = std::array<std::string, 4>;  // kind, name, version, path
@@ -75,6 +78,29 @@ int list_plugins(const PluginsOptions& options) {
   return broken == 0 ? 0 : 1;
 }
 
+/// NAME's kind, version, description and declared parameters (mhd/plugin_params.hpp).
+int describe_plugin(const PluginsOptions& options) {
+  std::vector<fs::path> command_line(options.plugin_paths.begin(), options.plugin_paths.end());
+  const mhd::PluginSearchPath search = mhd::PluginSearchPath::standard(command_line);
+  const auto library = search.load(options.describe);
+  if (!library) {
+    fmt::print(stderr, "mhd plugins: error: {}\n", library.error().to_string());
+    return 1;
+  }
+  const mhd::PluginLibrary& l = *library.value();
+  const mhd::PluginInfo& info = l.info();
+  fmt::print("{} ({} plugin, version {}): {}\n{}\n", info.name, mhd::to_string(info.kind),
+             info.version.empty() ? "-" : info.version, info.description, l.path().string());
+  const mhd_plugin_api& api = l.api();
+  if (api.param_count == 0) {
+    fmt::print("parameters: none\n");
+    return 0;
+  }
+  fmt::print("parameters:\n");
+  for (std::size_t i = 0; i < api.param_count; ++i) fmt::print("  {}\n", mhd::sdk::describe(api.params[i]));
+  return 0;
+}
+
 }  // namespace
 
 void add_plugins_command(CLI::App& app) {
@@ -83,6 +109,9 @@ void add_plugins_command(CLI::App& app) {
   plugins->add_option("--plugin-path", options->plugin_paths, "Search this folder first (repeatable, in order)")
       ->type_name("DIR")
       ->allow_extra_args(false);
+  plugins->add_option("--describe", options->describe,
+                      "Print plugin NAME's description and declared parameters (name, type, range, unit, default, doc)")
+      ->type_name("NAME");
   const std::string versioned = mhd::versioned_plugin_subdir().string();
   plugins->footer(
       "Folders are searched in this order: --plugin-path, $MHD_PLUGIN_PATH (colon-separated),\n"
@@ -92,6 +121,6 @@ void add_plugins_command(CLI::App& app) {
       "Exit status 0 if every plugin file loads, 1 if any is broken (errors on stderr).");
   plugins->callback([options] {
     spdlog::debug("listing plugins");
-    mhd::cli::exit_with(list_plugins(*options));
+    mhd::cli::exit_with(options->describe.empty() ? list_plugins(*options) : describe_plugin(*options));
   });
 }

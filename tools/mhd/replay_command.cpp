@@ -64,8 +64,8 @@ int replay(const ReplayOptions& opt) {
   const mhd::ReplayResult r =
       mhd::replay_recording(*compiled.scene, *rig.rig, settings.settings->tick, recording.rows);
   fmt::print("replayed {} rows of {} on {}\n", r.rows, opt.recording, scene_file);
-  fmt::print("max difference: force {:.3g} N, proxy {:.3g} m, torques {:.3g} Nm; {} rows differ\n",
-             r.max_force_difference_N, r.max_proxy_difference_m, r.max_torque_difference_Nm, r.differing_rows);
+  fmt::print("max difference: force {:.3g} N, proxy {:.3g} m, device force {:.3g} N; {} rows differ\n",
+             r.max_force_difference_N, r.max_proxy_difference_m, r.max_device_force_difference_N, r.differing_rows);
   if (!opt.out.empty()) {
     try {
       mhd::CsvRecording out(opt.out, 1.0);

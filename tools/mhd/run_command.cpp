@@ -165,7 +165,7 @@ void print_summary(const RunOptions& opt, const mhd::CompiledScene& scene, const
              r.contact_ticks, r.startup_ticks, r.stale_ticks, r.fault_ticks, r.hip_jumps, r.clamped_ticks);
   // Each count in words: a reader should not have to know the safety stage to read them.
   fmt::print("  start-up: before the first tracker sample, no force (normal); stale: tracking too old, force "
-             "faded out; fault: non-finite angles, HIP or force, force cut; HIP jump: force step faded in; "
+             "faded out; fault: non-finite tool position, HIP or force, force cut; HIP jump: force step faded in; "
              "clamped: force cut to the device's limit\n");
   fmt::print("proxy work budget ({} sweeps, {} triangle tests per tick): exhausted on {} ticks\n",
              scene.proxy.max_sweeps_per_tick, scene.proxy.max_triangle_tests_per_tick,

@@ -35,6 +35,12 @@ bool parse_non_negative(const char* text, double* value) {
   return true;
 }
 
+// Declared for the host, which checks a scene's parameters before open() (ABI 3).
+const mhd_param_decl kParams[] = {
+    {"min_force_N", MHD_PARAM_NUMBER, "N", MHD_PARAM_HAS_MIN, 0.0, 0.0, nullptr, "0",
+     "a contact counts only once the force reaches this"},
+};
+
 mhd_plugin_instance* log_open(const mhd_host* /*host*/, const mhd_param* params, size_t param_count, mhd_error* err) {
   double min_force_N = 0.0;
   for (size_t i = 0; i < param_count; ++i) {
@@ -92,6 +98,8 @@ mhd_plugin_api make_api() {
   api.start = log_start;
   api.stop = log_stop;
   api.close = log_close;
+  api.params = kParams;
+  api.param_count = sizeof(kParams) / sizeof(kParams[0]);
   api.display_write = log_write;
   return api;
 }

@@ -10,6 +10,7 @@
 #include "sim_common/plugin_shell.h"
 
 #include <mhd/plugin_abi.h>
+#include <mhd/plugin_params.hpp>
 
 #include <array>
 #include <cmath>
@@ -59,8 +60,26 @@ struct Instance {
   }
 };
 
+constexpr std::array kParams{
+    sdk::number("base_radius_m", "m", "0.2", "from the centre to each wheel", sdk::positive()),
+    sdk::number("wheel_radius_m", "m", "0.04", "each omni wheel's radius", sdk::positive()),
+    sdk::number("max_speed_mps", "m/s", "0.5", "the fastest the base drives", sdk::positive()),
+    sdk::number("max_omega_degps", "deg/s", "40", "the fastest it turns", sdk::positive()),
+    sdk::number("control_rate_hz", "Hz", "50", "the motor controller's rate", sdk::positive()),
+    sdk::number("motor_time_constant_s", "s", "0.05", "first-order lag of each wheel's speed", sdk::non_negative()),
+    sdk::number("max_wheel_accel_mps2", "m/s^2", "1", "each wheel's acceleration limit", sdk::positive()),
+    sdk::number("slip_fraction", "", "0", "wheel slip, a fraction of the commanded motion", sdk::fraction()),
+    sdk::number("command_timeout_s", "s", "0.2", "the controller's own watchdog: stops without a fresh command",
+                sdk::positive()),
+    sdk::integer("seed", "", "0", "slip noise seed"),
+    sdk::number("x_m", "m", nullptr, "start position x, world (default: the simulated world's base)"),
+    sdk::number("z_m", "m", nullptr, "start position z, world (default: the simulated world's base)"),
+    sdk::number("heading_deg", "deg", nullptr, "start heading (default: the simulated world's base)"),
+    sdk::text("command_log", nullptr, "a CSV file that receives every command and watchdog firing"),
+};
+
 Config read_config(const mhd_host& host, const mhd_param* params, std::size_t count) {
-  plugin_support::ParamReader reader(params, count);
+  plugin_support::ParamReader reader(kParams, params, count);
   Config config;
   Omni3Config& c = config.model;
   c.base_radius_m = reader.positive("base_radius_m", c.base_radius_m);
@@ -160,26 +179,28 @@ mhd_status simulate_until(mhd_plugin_instance* self, double t_s, mhd_error* err)
 }
 
 constexpr mhd_plugin_api kApi = {
-    MHD_PLUGIN_ABI_VERSION,
-    sizeof(mhd_plugin_api),
-    MHD_PLUGIN_KIND,
-    MHD_PLUGIN_NAME,  // both from mhd_add_plugin, so the table matches the file name
-    "1.0.0",
-    "Simulated three-omni-wheel base: 50 Hz wheel-speed control, limits, watchdog, optional slip",
-    open_instance,
-    start_instance,
-    stop_instance,
-    close_instance,
-    nullptr,  // device_limits
-    nullptr,  // device_read
-    nullptr,  // device_write
-    nullptr,  // tracker_read
-    base_read,
-    base_write,
-    nullptr,  // display_write
-    simulate_until,
-    nullptr,  // tracker_wait
-    nullptr,  // counters
+    .abi_version = MHD_PLUGIN_ABI_VERSION,
+    .struct_size = sizeof(mhd_plugin_api),
+    .kind = MHD_PLUGIN_KIND,
+    .name = MHD_PLUGIN_NAME,
+    .version = "1.0.0",
+    .description = "Simulated three-omni-wheel base: 50 Hz wheel-speed control, limits, watchdog, optional slip",
+    .open = open_instance,
+    .start = start_instance,
+    .stop = stop_instance,
+    .close = close_instance,
+    .params = kParams.data(),
+    .param_count = kParams.size(),
+    .device_info = nullptr,
+    .device_read = nullptr,
+    .device_write = nullptr,
+    .tracker_read = nullptr,
+    .base_read = base_read,
+    .base_write = base_write,
+    .display_write = nullptr,
+    .simulate_until = simulate_until,
+    .tracker_wait = nullptr,
+    .counters = nullptr,
 };
 
 }  // namespace

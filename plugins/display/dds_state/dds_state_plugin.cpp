@@ -38,8 +38,10 @@ struct Instance {
   bool started = false;
 };
 
+constexpr auto kParams = dds::kEndpointParams;
+
 dds::DdsEndpoint read_config(const mhd_param* params, std::size_t count, const char* scene_file) {
-  plugin_support::ParamReader reader(params, count);
+  plugin_support::ParamReader reader(kParams, params, count);
   const dds::DdsEndpoint endpoint = dds::read_endpoint(reader, params, count, scene_file);
   reader.reject_unknown();
   return endpoint;
@@ -85,26 +87,28 @@ mhd_status display_write(mhd_plugin_instance* self, const mhd_display_frame* fra
 }
 
 constexpr mhd_plugin_api kApi = {
-    MHD_PLUGIN_ABI_VERSION,
-    sizeof(mhd_plugin_api),
-    MHD_PLUGIN_KIND,
-    MHD_PLUGIN_NAME,
-    "1.0.0",
-    "Publishes the rig's state (hand, proxy, force, base, head) over Cyclone DDS for viewers",
-    open_instance,
-    start_instance,
-    stop_instance,
-    close_instance,
-    nullptr,  // device_limits
-    nullptr,  // device_read
-    nullptr,  // device_write
-    nullptr,  // tracker_read
-    nullptr,  // base_read
-    nullptr,  // base_write
-    display_write,
-    nullptr,  // simulate_until
-    nullptr,  // tracker_wait
-    nullptr,  // counters
+    .abi_version = MHD_PLUGIN_ABI_VERSION,
+    .struct_size = sizeof(mhd_plugin_api),
+    .kind = MHD_PLUGIN_KIND,
+    .name = MHD_PLUGIN_NAME,
+    .version = "1.0.0",
+    .description = "Publishes the rig's state (hand, proxy, force, base, head) over Cyclone DDS for viewers",
+    .open = open_instance,
+    .start = start_instance,
+    .stop = stop_instance,
+    .close = close_instance,
+    .params = kParams.data(),
+    .param_count = kParams.size(),
+    .device_info = nullptr,
+    .device_read = nullptr,
+    .device_write = nullptr,
+    .tracker_read = nullptr,
+    .base_read = nullptr,
+    .base_write = nullptr,
+    .display_write = display_write,
+    .simulate_until = nullptr,
+    .tracker_wait = nullptr,
+    .counters = nullptr,
 };
 
 }  // namespace

@@ -5,17 +5,20 @@
 // Parameters (all optional): stereo, ipd_m, fov_deg, width, height, offscreen,
 // screenshot, frames, max_frame_rate_Hz, rig_file, grid. docs/viewer.md.
 
+#include "sim_common/plugin_params.h"
 #include "sim_common/plugin_shell.h"
 #include "viewer/stereo_viewer.h"
 
 #include <mhd/plugin_abi.h>
+#include <mhd/plugin_params.hpp>
 
+#include <array>
 #include <atomic>
-#include <charconv>
-#include <cmath>
+#include <cstdint>
 #include <future>
 #include <map>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -33,70 +36,43 @@ struct Config {
   std::optional<std::string> rig_file;
 };
 
-[[noreturn]] void bad(const std::string& name, const char* what, const std::string& value) {
-  throw std::invalid_argument("parameter '" + name + "' must be " + what + ", got '" + value + "'");
-}
-
-double number(const std::string& name, const std::string& value) {
-  double v = 0.0;
-  const char* end = value.data() + value.size();
-  const auto [ptr, ec] = std::from_chars(value.data(), end, v);
-  if (ec != std::errc() || ptr != end || !std::isfinite(v)) bad(name, "a number", value);
-  return v;
-}
-
-int integer(const std::string& name, const std::string& value) {
-  int v = 0;
-  const char* end = value.data() + value.size();
-  const auto [ptr, ec] = std::from_chars(value.data(), end, v);
-  if (ec != std::errc() || ptr != end) bad(name, "an integer", value);
-  return v;
-}
-
-bool boolean(const std::string& name, const std::string& value) {
-  if (value == "true") return true;
-  if (value == "false") return false;
-  bad(name, "true or false", value);
-}
+constexpr std::array kParams{
+    sdk::boolean("stereo", "true", "side-by-side stereo, left eye in the left half"),
+    sdk::number("ipd_m", "m", "0.064", "interpupillary distance", sdk::non_negative()),
+    sdk::number("fov_deg", "deg", "90", "per-eye vertical field of view", sdk::above_up_to(0, 179)),
+    sdk::integer("width", "px", "1600", "the window or image, both eyes", sdk::between(1, 16384)),
+    sdk::integer("height", "px", "800", "the window or image", sdk::between(1, 16384)),
+    sdk::boolean("offscreen", "false", "render into a pbuffer (still needs an X display, e.g. Xvfb)"),
+    sdk::text("screenshot", nullptr, "a PNG written after 'frames' frames"),
+    sdk::integer("frames", "", "0", "frames to render before the screenshot and exit; 0: until closed",
+                 sdk::between(0, 1e9)),
+    sdk::number("max_frame_rate_Hz", "Hz", "60", "the render thread's pace; 0: as fast as it draws",
+                sdk::non_negative()),
+    sdk::boolean("grid", "true", "a 1 m floor grid"),
+    sdk::text("rig_file", nullptr, "a scene whose rig frames are drawn instead of the running scene's"),
+};
 
 Config read_config(const mhd_param* params, std::size_t count) {
-  if (params == nullptr && count != 0) throw std::invalid_argument("params is NULL");
+  plugin_support::ParamReader reader(kParams, params, count);
   Config c;
   viewer::ViewerOptions& o = c.options;
   o.window_title = "MHD osg_stereo";
-  for (std::size_t i = 0; i < count; ++i) {
-    if (params[i].name == nullptr || params[i].value == nullptr) throw std::invalid_argument("a parameter is NULL");
-    const std::string name = params[i].name;
-    const std::string value = params[i].value;
-    if (name == "stereo") {
-      o.stereo = boolean(name, value);
-    } else if (name == "ipd_m") {
-      o.ipd_m = number(name, value);
-    } else if (name == "fov_deg") {
-      o.fov_deg = number(name, value);
-    } else if (name == "width") {
-      o.width = integer(name, value);
-    } else if (name == "height") {
-      o.height = integer(name, value);
-    } else if (name == "offscreen") {
-      o.offscreen = boolean(name, value);
-    } else if (name == "screenshot") {
-      o.screenshot_png = value;
-    } else if (name == "frames") {
-      o.frames = integer(name, value);
-    } else if (name == "max_frame_rate_Hz") {
-      o.max_frame_rate_Hz = number(name, value);
-    } else if (name == "grid") {
-      o.show_grid = boolean(name, value);
-    } else if (name == "rig_file") {
-      c.rig_file = value;
-    } else {
-      throw std::invalid_argument(
-          "unknown parameter '" + name +
-          "' (known: stereo, ipd_m, fov_deg, width, height, offscreen, screenshot, frames, max_frame_rate_Hz, "
-          "grid, rig_file)");
-    }
-  }
+  const auto flag = [&](const char* name, bool fallback) {
+    const std::optional<std::string> v = reader.optional_text(name);
+    return v ? *v == "true" : fallback;  // the declaration has checked true|false
+  };
+  o.stereo = flag("stereo", o.stereo);
+  o.ipd_m = reader.non_negative("ipd_m", o.ipd_m);
+  o.fov_deg = reader.positive("fov_deg", o.fov_deg);
+  o.width = static_cast<int>(reader.unsigned_integer("width", static_cast<std::uint64_t>(o.width), 16384));
+  o.height = static_cast<int>(reader.unsigned_integer("height", static_cast<std::uint64_t>(o.height), 16384));
+  o.offscreen = flag("offscreen", o.offscreen);
+  if (auto screenshot = reader.optional_text("screenshot")) o.screenshot_png = *screenshot;
+  o.frames = static_cast<int>(reader.unsigned_integer("frames", static_cast<std::uint64_t>(o.frames), 1000000000));
+  o.max_frame_rate_Hz = reader.non_negative("max_frame_rate_Hz", o.max_frame_rate_Hz);
+  o.show_grid = flag("grid", o.show_grid);
+  c.rig_file = reader.optional_text("rig_file");
+  reader.reject_unknown();
   if (std::string e = o.check(); !e.empty()) throw std::invalid_argument(e);
   return c;
 }
@@ -204,26 +180,28 @@ mhd_status display_write(mhd_plugin_instance* self, const mhd_display_frame* fra
 }
 
 constexpr mhd_plugin_api kApi = {
-    MHD_PLUGIN_ABI_VERSION,
-    sizeof(mhd_plugin_api),
-    MHD_PLUGIN_KIND,
-    MHD_PLUGIN_NAME,
-    "1.0.0",
-    "OpenSceneGraph stereo (side-by-side) or mono view of the scene and the rig, drawn in its own thread",
-    open_instance,
-    start_instance,
-    stop_instance,
-    close_instance,
-    nullptr,  // device_limits
-    nullptr,  // device_read
-    nullptr,  // device_write
-    nullptr,  // tracker_read
-    nullptr,  // base_read
-    nullptr,  // base_write
-    display_write,
-    nullptr,  // simulate_until
-    nullptr,  // tracker_wait
-    nullptr,  // counters
+    .abi_version = MHD_PLUGIN_ABI_VERSION,
+    .struct_size = sizeof(mhd_plugin_api),
+    .kind = MHD_PLUGIN_KIND,
+    .name = MHD_PLUGIN_NAME,
+    .version = "1.0.0",
+    .description = "OpenSceneGraph stereo (side-by-side) or mono view of the scene and the rig, drawn in its own thread",
+    .open = open_instance,
+    .start = start_instance,
+    .stop = stop_instance,
+    .close = close_instance,
+    .params = kParams.data(),
+    .param_count = kParams.size(),
+    .device_info = nullptr,
+    .device_read = nullptr,
+    .device_write = nullptr,
+    .tracker_read = nullptr,
+    .base_read = nullptr,
+    .base_write = nullptr,
+    .display_write = display_write,
+    .simulate_until = nullptr,
+    .tracker_wait = nullptr,
+    .counters = nullptr,
 };
 
 }  // namespace

@@ -63,6 +63,11 @@ mhd_status display_write(mhd_plugin_instance* self, const mhd_display_frame* /*f
   return MHD_OK;
 }
 
+// The host checks a scene's parameters against this before open() (mhd validate too).
+const mhd_param_decl kParams[] = {
+    {"verbose", MHD_PARAM_BOOL, "", 0u, 0.0, 0.0, nullptr, "false", "print the frame count to stderr on stop"},
+};
+
 mhd_plugin_api make_api() {
   mhd_plugin_api api{};  // every call this plugin does not provide stays NULL
   api.abi_version = MHD_PLUGIN_ABI_VERSION;
@@ -75,6 +80,8 @@ mhd_plugin_api make_api() {
   api.start = display_start;
   api.stop = display_stop;
   api.close = display_close;
+  api.params = kParams;
+  api.param_count = sizeof(kParams) / sizeof(kParams[0]);
   api.display_write = display_write;
   return api;
 }

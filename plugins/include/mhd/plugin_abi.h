@@ -1,4 +1,4 @@
-/* MHD plugin ABI, version 2. The only header a plugin includes.
+/* MHD plugin ABI, version 3. The only header a plugin includes.
  *
  * A plugin is a shared library exporting one C function, mhd_plugin_entry, that returns
  * a table of function pointers (mhd_plugin_api). The host checks the table's ABI
@@ -10,6 +10,11 @@
  * at a time (the device's from the haptic thread, which must never wait on a lock), so a
  * plugin needs no mutex of its own around them.
  * Version 2 added the optional calls tracker_wait and counters at the end of the table.
+ * Version 3 made devices Cartesian, as vendor SDKs are: a device reports its tool's pose
+ * and velocity in its own frame D and receives a force (and, with 6 output DOF, a torque)
+ * in D; joint kinematics live inside the device plugin. device_info replaced
+ * device_limits, and every plugin declares its parameters (params, param_count), so the
+ * host checks a scene's parameters without opening the plugin. A v2 plugin is refused.
  * All quantities are SI (metres, radians, seconds, newtons); device-native units
  * (millimetres, encoder counts) stay inside the plugin. Frames follow the engine's
  * X_AB naming: a pose of B given in A.
@@ -35,7 +40,7 @@
 extern "C" {
 #endif
 
-#define MHD_PLUGIN_ABI_VERSION 2u
+#define MHD_PLUGIN_ABI_VERSION 3u
 #define MHD_PLUGIN_ENTRY_SYMBOL "mhd_plugin_entry"
 #define MHD_ERROR_MESSAGE_SIZE 256
 
@@ -70,6 +75,40 @@ typedef struct mhd_param {
   const char* value;
 } mhd_param;
 
+/* What kind of value a parameter takes (the text in the scene XML is parsed so). */
+typedef enum mhd_param_type {
+  MHD_PARAM_NUMBER = 1,     /* a finite decimal number, C locale */
+  MHD_PARAM_INTEGER = 2,    /* a non-negative integer */
+  MHD_PARAM_TEXT = 3,       /* a non-empty string */
+  MHD_PARAM_VECTOR3 = 4,    /* three numbers separated by blanks, each in range */
+  MHD_PARAM_QUATERNION = 5, /* four numbers "w x y z" of non-zero norm */
+  MHD_PARAM_CHOICE = 6,     /* one of the words in choices */
+  MHD_PARAM_BOOL = 7        /* "true" or "false" */
+} mhd_param_type;
+
+/* Range flags of a declaration. */
+#define MHD_PARAM_HAS_MIN 1u       /* value >= min_value */
+#define MHD_PARAM_HAS_MAX 2u       /* value <= max_value */
+#define MHD_PARAM_MIN_EXCLUSIVE 4u /* with HAS_MIN: value > min_value */
+#define MHD_PARAM_REQUIRED 8u      /* the scene must give it */
+#define MHD_PARAM_MAX_EXCLUSIVE 16u /* with HAS_MAX: value < max_value */
+
+/* One parameter a plugin accepts. The host checks a scene's <param>s against the
+ * declarations before open() (unknown names, types, ranges, choices, required ones), so
+ * `mhd validate` finds what open() would refuse; open() still checks its own rules that
+ * involve several parameters. */
+typedef struct mhd_param_decl {
+  const char* name;          /* e.g. "rate_hz" */
+  mhd_param_type type;
+  const char* unit;          /* SI unit of numbers, e.g. "s", "m", "N/m"; "" when none */
+  uint32_t flags;            /* MHD_PARAM_* range flags */
+  double min_value;          /* numbers, integers, each component of a vector */
+  double max_value;
+  const char* choices;       /* MHD_PARAM_CHOICE: words separated by '|', e.g. "kinematic|impedance" */
+  const char* default_value; /* what the plugin uses when absent, as text; NULL: none */
+  const char* doc;           /* one line */
+} mhd_param_decl;
+
 /* One counter a plugin keeps, e.g. samples it dropped and why. */
 typedef struct mhd_counter {
   const char* name; /* e.g. "dropped_stale"; a static string, valid while the library is loaded */
@@ -78,27 +117,45 @@ typedef struct mhd_counter {
 
 /* ---- data exchanged with each kind -------------------------------------------- */
 
-/* Device: joint angles of the arm and, where the device knows it, the tool point in the
- * device's own frame (p_D_hip). timestamp_s is the host clock (see mhd_host). */
+/* Device: the tool's pose and velocity in the device's own frame D (the frame its
+ * vendor SDK reports in; the scene places D in the world). timestamp_s is the host clock
+ * (see mhd_host). A device with 3 input DOF reports q_D_tool_wxyz = (1, 0, 0, 0). */
 typedef struct mhd_device_state {
   double timestamp_s;
-  double joint_angles_rad[3];
-  double p_D_hip_m[3];
-  uint32_t buttons; /* bit i: button i pressed */
+  double p_D_tool_m[3];
+  double v_D_tool_mps[3];
+  double q_D_tool_wxyz[4]; /* unit quaternion w, x, y, z */
+  uint32_t buttons;        /* bit i: button i pressed */
 } mhd_device_state;
 
-/* Device command: motor torques of the three actuated joints. The host computes them as
- * tau = J^T F and clamps F to the device's limit first. */
+/* Device command: the force (and torque) to render at the tool, in D. The host clamps
+ * both to the device's mhd_device_info first; the plugin maps them to its motors (for an
+ * arm tau = J^T F) and must still respect its own motor limits. torque_D_Nm is all zero
+ * for a device with 3 output DOF. */
 typedef struct mhd_device_command {
   double timestamp_s;
-  double joint_torques_Nm[3];
+  double force_D_N[3];
+  double torque_D_Nm[3];
 } mhd_device_command;
 
-/* Device limits the plugin reports after open(); the host clamps with them. */
-typedef struct mhd_device_limits {
-  double max_force_N;
-  double max_joint_torque_Nm[3];
-} mhd_device_limits;
+#define MHD_DEVICE_MAX_WORKSPACE_BOXES 4
+
+/* An axis-aligned box in the device frame D. */
+typedef struct mhd_box_D {
+  double min_m[3];
+  double max_m[3];
+} mhd_box_D;
+
+/* What a device is, reported after open(); the host clamps and checks with it. */
+typedef struct mhd_device_info {
+  double max_force_N;           /* > 0: the host never sends a larger force */
+  double max_torque_Nm;         /* > 0 with 6 output DOF, 0 with 3 */
+  double max_stiffness_N_per_m; /* > 0: the stiffest virtual spring the device renders stably */
+  uint32_t dof_in;              /* 3 (position) or 6 (position and orientation) */
+  uint32_t dof_out;             /* 3 (force) or 6 (force and torque) */
+  uint32_t workspace_box_count; /* 1..MHD_DEVICE_MAX_WORKSPACE_BOXES */
+  mhd_box_D workspace[MHD_DEVICE_MAX_WORKSPACE_BOXES]; /* their union is what the tool reaches */
+} mhd_device_info;
 
 /* Tracker: one pose sample of one sensor in the tracker's frame (X_T_sensor). */
 typedef struct mhd_tracker_sample {
@@ -184,8 +241,12 @@ typedef struct mhd_plugin_api {
   mhd_status (*stop)(mhd_plugin_instance* self, mhd_error* err);
   void (*close)(mhd_plugin_instance* self);
 
+  /* The parameters open() accepts (param_count entries; NULL with 0 for none). */
+  const mhd_param_decl* params;
+  size_t param_count;
+
   /* Kind-specific calls; NULL for the kinds a plugin is not. Never block. */
-  mhd_status (*device_limits)(mhd_plugin_instance* self, mhd_device_limits* out, mhd_error* err);
+  mhd_status (*device_info)(mhd_plugin_instance* self, mhd_device_info* out, mhd_error* err);
   mhd_status (*device_read)(mhd_plugin_instance* self, mhd_device_state* out, mhd_error* err);
   mhd_status (*device_write)(mhd_plugin_instance* self, const mhd_device_command* command, mhd_error* err);
   /* Copies up to capacity samples received since the last call; *count says how many. */

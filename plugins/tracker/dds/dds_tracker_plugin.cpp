@@ -50,8 +50,21 @@ struct Instance {
   bool started = false;
 };
 
+constexpr std::array kParams = sdk::join(
+    dds::kEndpointParams,
+    std::array{
+        sdk::number("max_position_m", "m", "20", "samples farther out, per coordinate, are refused", sdk::positive()),
+        sdk::number("max_age_s", "s", "0.1", "older samples are stale and refused", sdk::positive()),
+        sdk::number("max_future_s", "s", "0.01", "clock skew allowed for samples from the future",
+                    sdk::non_negative()),
+        sdk::number("restart_after_s", "s", "0.25", "a silent writer may restart its sequence after this",
+                    sdk::positive()),
+        sdk::number("quaternion_tolerance", "", "0.001", "| |q| - 1 | allowed", sdk::positive()),
+        sdk::boolean("publish_sim_world", "false", "publish this host's simulated world (mhd_sim_world topic)"),
+    });
+
 Config read_config(const mhd_param* params, std::size_t count, const char* scene_file) {
-  plugin_support::ParamReader reader(params, count);
+  plugin_support::ParamReader reader(kParams, params, count);
   Config c;
   c.endpoint = dds::read_endpoint(reader, params, count, scene_file);
   c.limits.rig_id = c.endpoint.rig_id;
@@ -173,26 +186,28 @@ mhd_status counters(mhd_plugin_instance* self, mhd_counter* out, size_t capacity
 }
 
 constexpr mhd_plugin_api kApi = {
-    MHD_PLUGIN_ABI_VERSION,
-    sizeof(mhd_plugin_api),
-    MHD_PLUGIN_KIND,
-    MHD_PLUGIN_NAME,
-    "1.0.0",
-    "Tracker samples of one rig over Cyclone DDS (from mhd tracker-server), validated",
-    open_instance,
-    start_instance,
-    stop_instance,
-    close_instance,
-    nullptr,  // device_limits
-    nullptr,  // device_read
-    nullptr,  // device_write
-    tracker_read,
-    nullptr,  // base_read
-    nullptr,  // base_write
-    nullptr,  // display_write
-    simulate_until,
-    tracker_wait,
-    counters,
+    .abi_version = MHD_PLUGIN_ABI_VERSION,
+    .struct_size = sizeof(mhd_plugin_api),
+    .kind = MHD_PLUGIN_KIND,
+    .name = MHD_PLUGIN_NAME,
+    .version = "1.0.0",
+    .description = "Tracker samples of one rig over Cyclone DDS (from mhd tracker-server), validated",
+    .open = open_instance,
+    .start = start_instance,
+    .stop = stop_instance,
+    .close = close_instance,
+    .params = kParams.data(),
+    .param_count = kParams.size(),
+    .device_info = nullptr,
+    .device_read = nullptr,
+    .device_write = nullptr,
+    .tracker_read = tracker_read,
+    .base_read = nullptr,
+    .base_write = nullptr,
+    .display_write = nullptr,
+    .simulate_until = simulate_until,
+    .tracker_wait = tracker_wait,
+    .counters = counters,
 };
 
 }  // namespace

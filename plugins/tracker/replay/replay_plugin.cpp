@@ -8,7 +8,9 @@
 #include "sim_common/plugin_shell.h"
 
 #include <mhd/plugin_abi.h>
+#include <mhd/plugin_params.hpp>
 
+#include <array>
 #include <atomic>
 #include <stdexcept>
 #include <utility>
@@ -27,10 +29,14 @@ struct Instance {
   bool started = false;
 };
 
+constexpr std::array kParams{
+    sdk::required_text("file", "the CSV of tracker samples to replay (docs/simulation.md)"),
+};
+
 mhd_plugin_instance* open_instance(const mhd_host* host, const mhd_param* params, size_t param_count, mhd_error* err) {
   return guarded_open(err, [&] {
     plugin_support::check_host(host);
-    plugin_support::ParamReader reader(params, param_count);
+    plugin_support::ParamReader reader(kParams, params, param_count);
     const std::string file = reader.required_text("file");
     reader.reject_unknown();
     return reinterpret_cast<mhd_plugin_instance*>(new Instance(*host, read_replay_csv(file)));
@@ -70,26 +76,28 @@ mhd_status tracker_read(mhd_plugin_instance* self, mhd_tracker_sample* out, size
 }
 
 constexpr mhd_plugin_api kApi = {
-    MHD_PLUGIN_ABI_VERSION,
-    sizeof(mhd_plugin_api),
-    MHD_PLUGIN_KIND,
-    MHD_PLUGIN_NAME,  // both from mhd_add_plugin, so the table matches the file name
-    "1.0.0",
-    "Tracker replay: plays a recorded CSV of tracker samples on the host clock",
-    open_instance,
-    start_instance,
-    stop_instance,
-    close_instance,
-    nullptr,  // device_limits
-    nullptr,  // device_read
-    nullptr,  // device_write
-    tracker_read,
-    nullptr,  // base_read
-    nullptr,  // base_write
-    nullptr,  // display_write
-    nullptr,  // simulate_until: plays on the host clock
-    nullptr,  // tracker_wait
-    nullptr,  // counters
+    .abi_version = MHD_PLUGIN_ABI_VERSION,
+    .struct_size = sizeof(mhd_plugin_api),
+    .kind = MHD_PLUGIN_KIND,
+    .name = MHD_PLUGIN_NAME,
+    .version = "1.0.0",
+    .description = "Tracker replay: plays a recorded CSV of tracker samples on the host clock",
+    .open = open_instance,
+    .start = start_instance,
+    .stop = stop_instance,
+    .close = close_instance,
+    .params = kParams.data(),
+    .param_count = kParams.size(),
+    .device_info = nullptr,
+    .device_read = nullptr,
+    .device_write = nullptr,
+    .tracker_read = tracker_read,
+    .base_read = nullptr,
+    .base_write = nullptr,
+    .display_write = nullptr,
+    .simulate_until = nullptr,
+    .tracker_wait = nullptr,
+    .counters = nullptr,
 };
 
 }  // namespace

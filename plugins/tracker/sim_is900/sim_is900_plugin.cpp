@@ -7,7 +7,9 @@
 #include "sim_common/plugin_shell.h"
 
 #include <mhd/plugin_abi.h>
+#include <mhd/plugin_params.hpp>
 
+#include <array>
 #include <atomic>
 #include <numbers>
 #include <stdexcept>
@@ -69,8 +71,29 @@ struct Instance {
   bool started = false;
 };
 
+constexpr std::array kParams{
+    sdk::number("rate_hz", "Hz", "180", "samples per second per sensor", sdk::positive()),
+    sdk::number("latency_s", "s", "0.004", "from measurement to delivery", sdk::non_negative()),
+    sdk::number("position_sigma_m", "m", "0.0025", "position noise per axis (standard deviation)", sdk::non_negative()),
+    sdk::number("angle_sigma_deg", "deg", "0.35", "orientation noise per axis (standard deviation)", sdk::non_negative()),
+    sdk::integer("base_sensor_id", "", "0", "the base sensor's id", sdk::between(0, 4294967295.0)),
+    sdk::integer("head_sensor_id", "", "1", "the head sensor's id (must differ from the base's)",
+                 sdk::between(0, 4294967295.0)),
+    sdk::vector3("base_sensor_position_m", "m", nullptr, "the base sensor in the base frame (default: pomhi.xml's)"),
+    sdk::vector3("base_sensor_rpy_deg", "deg", nullptr, "its roll, pitch, yaw (not with the quaternion)"),
+    sdk::quaternion("base_sensor_quaternion_wxyz", nullptr, "its orientation (not with rpy)"),
+    sdk::vector3("tracker_position_m", "m", nullptr, "the tracker frame in the world (default: pomhi.xml's)"),
+    sdk::vector3("tracker_rpy_deg", "deg", nullptr, "its roll, pitch, yaw (not with the quaternion)"),
+    sdk::quaternion("tracker_quaternion_wxyz", nullptr, "its orientation (not with rpy)"),
+    sdk::integer("buffer_capacity", "", "256", "samples kept between reads", sdk::between(1, 1048576)),
+    sdk::integer("seed", "", "0", "noise seed"),
+    sdk::choice("dropout_sensor", "head|base", nullptr, "a sensor that stops reporting for a while"),
+    sdk::number("dropout_start_s", "s", "0", "when the dropout starts, after start()", sdk::non_negative()),
+    sdk::number("dropout_duration_s", "s", "0", "how long it lasts", sdk::non_negative()),
+};
+
 Is900Config read_config(const mhd_param* params, std::size_t count) {
-  plugin_support::ParamReader reader(params, count);
+  plugin_support::ParamReader reader(kParams, params, count);
   Is900Config c;
   c.rate_hz = reader.positive("rate_hz", c.rate_hz);
   c.latency_s = reader.non_negative("latency_s", c.latency_s);
@@ -151,26 +174,28 @@ mhd_status simulate_until(mhd_plugin_instance* self, double t_s, mhd_error* err)
 }
 
 constexpr mhd_plugin_api kApi = {
-    MHD_PLUGIN_ABI_VERSION,
-    sizeof(mhd_plugin_api),
-    MHD_PLUGIN_KIND,
-    MHD_PLUGIN_NAME,  // both from mhd_add_plugin, so the table matches the file name
-    "1.0.0",
-    "Simulated IS-900: base and head sensors at 180 Hz with noise and 4 ms latency",
-    open_instance,
-    start_instance,
-    stop_instance,
-    close_instance,
-    nullptr,  // device_limits
-    nullptr,  // device_read
-    nullptr,  // device_write
-    tracker_read,
-    nullptr,  // base_read
-    nullptr,  // base_write
-    nullptr,  // display_write
-    simulate_until,
-    nullptr,  // tracker_wait
-    nullptr,  // counters
+    .abi_version = MHD_PLUGIN_ABI_VERSION,
+    .struct_size = sizeof(mhd_plugin_api),
+    .kind = MHD_PLUGIN_KIND,
+    .name = MHD_PLUGIN_NAME,
+    .version = "1.0.0",
+    .description = "Simulated IS-900: base and head sensors at 180 Hz with noise and 4 ms latency",
+    .open = open_instance,
+    .start = start_instance,
+    .stop = stop_instance,
+    .close = close_instance,
+    .params = kParams.data(),
+    .param_count = kParams.size(),
+    .device_info = nullptr,
+    .device_read = nullptr,
+    .device_write = nullptr,
+    .tracker_read = tracker_read,
+    .base_read = nullptr,
+    .base_write = nullptr,
+    .display_write = nullptr,
+    .simulate_until = simulate_until,
+    .tracker_wait = nullptr,
+    .counters = nullptr,
 };
 
 }  // namespace

@@ -90,6 +90,11 @@ extern "C" MHD_PLUGIN_EXPORT const mhd_plugin_api* mhd_plugin_entry(uint32_t hos
     a.start = ok;
     a.stop = ok;
     a.close = close_base;
+    static const mhd_param_decl params[] = {
+        {"command_log", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "where every command is logged"},
+    };
+    a.params = params;
+    a.param_count = 1;
     a.base_read = read;
     a.base_write = write;
     return a;

@@ -129,6 +129,15 @@ extern "C" MHD_PLUGIN_EXPORT const mhd_plugin_api* mhd_plugin_entry(uint32_t hos
     a.open = open_base;
     a.start = start;
     a.close = close_base;
+    // Declared as text: this probe parses its own values, the host checks only the names.
+    static const mhd_param_decl params[] = {
+        {"fault", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
+        {"fault_after_s", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
+        {"fault_on", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
+        {"command_log", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
+    };
+    a.params = params;
+    a.param_count = sizeof(params) / sizeof(params[0]);
     a.base_read = read;
     a.base_write = write;
     return a;

@@ -43,6 +43,12 @@ extern "C" MHD_PLUGIN_EXPORT const mhd_plugin_api* mhd_plugin_entry(uint32_t hos
     mhd_plugin_api a = probe::table("test display: writes the host clock's offset at open");
     a.open = open_probe;
     a.close = close_probe;
+    // Declared as text: this probe parses its own values, the host checks only the names.
+    static const mhd_param_decl params[] = {
+        {"file", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
+    };
+    a.params = params;
+    a.param_count = sizeof(params) / sizeof(params[0]);
     a.display_write = write;
     return a;
   }();

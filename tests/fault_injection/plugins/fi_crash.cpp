@@ -106,6 +106,13 @@ extern "C" MHD_PLUGIN_EXPORT const mhd_plugin_api* mhd_plugin_entry(uint32_t hos
     mhd_plugin_api a = probe::table("test display: crashes on its n-th frame (segfault, bus, fpe, abort, throw, exit0)");
     a.open = open_crasher;
     a.close = close_crasher;
+    // Declared as text: this probe parses its own values, the host checks only the names.
+    static const mhd_param_decl params[] = {
+        {"crash", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
+        {"crash_on_call", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
+    };
+    a.params = params;
+    a.param_count = sizeof(params) / sizeof(params[0]);
     a.display_write = write;
     return a;
   }();

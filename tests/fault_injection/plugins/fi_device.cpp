@@ -1,13 +1,13 @@
-// A device for the fault-injection suite: its joint angles follow a script (held at
-// q_free_rad, then moved to q_press_rad over press_ramp_s from press_at_s, so a test
+// A Cartesian device for the fault-injection suite: its tool follows a script (held at
+// p_free_m, then moved to p_press_m over press_ramp_s from press_at_s, device frame, so a test
 // places a surface between the two HIPs and the device presses into it), it logs every
 // command with its time, and it fails on cue.
 // Parameters:
-//   q_free_rad, q_press_rad   "q1 q2 q3" (default 0 0.3 0.2 both)
+//   p_free_m, p_press_m   "x y z" (default: a PHANToM's tool at joint angles 0 0.3 0.2)
 //   press_at_s (never), press_ramp_s (0.05)   seconds after start
 //   fault=none|nan|error|deactivate, fault_after_s (never), fault_on=read|write (read)
-//     nan: joint_angles_rad[1] is NaN (read only); error: MHD_ERROR with a message
-//   command_log=<path>  at close, one line per device_write: "t_s tau1 tau2 tau3", and
+//     nan: p_D_tool_m[1] is NaN (read only); error: MHD_ERROR with a message
+//   command_log=<path>  at close, one line per device_write: "t_s fx fy fz" (N, device frame), and
 //                       a marker "t_s nan nan nan" when the fault strikes
 #include "probe_common.h"
 
@@ -20,8 +20,8 @@ namespace {
 
 struct Device {
   const mhd_host* host = nullptr;
-  double q_free[3] = {0.0, 0.3, 0.2};
-  double q_press[3] = {0.0, 0.3, 0.2};
+  double p_free[3] = {0.0, 0.06610330791925151, 0.032271919564375806};
+  double p_press[3] = {0.0, 0.06610330791925151, 0.032271919564375806};
   double press_at_s = std::numeric_limits<double>::infinity();
   double press_ramp_s = 0.05;
   probe::Fault fault = probe::Fault::None;
@@ -54,8 +54,8 @@ mhd_plugin_instance* open_device(const mhd_host* host, const mhd_param* params, 
     std::string log;
     for (size_t i = 0; i < count; ++i) {
       const std::string name = params[i].name, value = params[i].value;
-      if (name == "q_free_rad") probe::vector3(name, value, d->q_free);
-      else if (name == "q_press_rad") probe::vector3(name, value, d->q_press);
+      if (name == "p_free_m") probe::vector3(name, value, d->p_free);
+      else if (name == "p_press_m") probe::vector3(name, value, d->p_press);
       else if (name == "press_at_s") d->press_at_s = probe::number(name, value);
       else if (name == "press_ramp_s") d->press_ramp_s = probe::number(name, value);
       else if (name == "fault") d->fault = probe::fault_from(value);
@@ -79,12 +79,6 @@ void close_device(mhd_plugin_instance* self) {
   delete of(self);
 }
 
-mhd_status limits(mhd_plugin_instance*, mhd_device_limits* out, mhd_error*) {
-  out->max_force_N = 8.5;
-  for (double& t : out->max_joint_torque_Nm) t = 3.0;
-  return MHD_OK;
-}
-
 mhd_status read(mhd_plugin_instance* self, mhd_device_state* out, mhd_error* err) {
   Device& d = *of(self);
   const double t_s = probe::now_s(*d.host);
@@ -92,10 +86,11 @@ mhd_status read(mhd_plugin_instance* self, mhd_device_state* out, mhd_error* err
   out->timestamp_s = t_s;
   const double s = d.press_ramp_s > 0.0 ? std::clamp((t_s - d.t_start_s - d.press_at_s) / d.press_ramp_s, 0.0, 1.0)
                                         : (t_s - d.t_start_s >= d.press_at_s ? 1.0 : 0.0);
-  for (int i = 0; i < 3; ++i) out->joint_angles_rad[i] = d.q_free[i] + s * (d.q_press[i] - d.q_free[i]);
+  for (int i = 0; i < 3; ++i) out->p_D_tool_m[i] = d.p_free[i] + s * (d.p_press[i] - d.p_free[i]);
+  out->q_D_tool_wxyz[0] = 1.0;
   if (d.fault_on == probe::FaultOn::Read && d.faulty(t_s)) {
     switch (d.fault) {
-      case probe::Fault::Nan: out->joint_angles_rad[1] = std::numeric_limits<double>::quiet_NaN(); break;
+      case probe::Fault::Nan: out->p_D_tool_m[1] = std::numeric_limits<double>::quiet_NaN(); break;
       case probe::Fault::Error: probe::set_error(err, "injected fault: encoder read failed"); return MHD_ERROR;
       case probe::Fault::Deactivate: return MHD_DEACTIVATE;
       case probe::Fault::None: break;
@@ -106,7 +101,7 @@ mhd_status read(mhd_plugin_instance* self, mhd_device_state* out, mhd_error* err
 
 mhd_status write(mhd_plugin_instance* self, const mhd_device_command* c, mhd_error* err) {
   Device& d = *of(self);
-  d.commands.add(c->timestamp_s, c->joint_torques_Nm[0], c->joint_torques_Nm[1], c->joint_torques_Nm[2]);
+  d.commands.add(c->timestamp_s, c->force_D_N[0], c->force_D_N[1], c->force_D_N[2]);
   if (d.fault_on == probe::FaultOn::Write && d.faulty(probe::now_s(*d.host))) {
     if (d.fault == probe::Fault::Error) {
       probe::set_error(err, "injected fault: amplifier not responding");
@@ -122,11 +117,23 @@ mhd_status write(mhd_plugin_instance* self, const mhd_device_command* c, mhd_err
 extern "C" MHD_PLUGIN_EXPORT const mhd_plugin_api* mhd_plugin_entry(uint32_t host_abi_version) {
   if (host_abi_version != MHD_PLUGIN_ABI_VERSION) return nullptr;
   static const mhd_plugin_api api = [] {
-    mhd_plugin_api a = probe::table("test device: scripted joint angles, logs every command, fails on cue");
+    mhd_plugin_api a = probe::table("test device: scripted tool path, logs every command, fails on cue");
+    static const mhd_param_decl params[] = {
+        {"p_free_m", MHD_PARAM_VECTOR3, "m", 0u, 0.0, 0.0, nullptr, nullptr, "the tool before the press"},
+        {"p_press_m", MHD_PARAM_VECTOR3, "m", 0u, 0.0, 0.0, nullptr, nullptr, "the tool pressing"},
+        {"press_at_s", MHD_PARAM_NUMBER, "s", 0u, 0.0, 0.0, nullptr, nullptr, "when the press starts"},
+        {"press_ramp_s", MHD_PARAM_NUMBER, "s", 0u, 0.0, 0.0, nullptr, "0.05", "how long it takes"},
+        {"fault", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "none|nan|error|deactivate"},
+        {"fault_after_s", MHD_PARAM_NUMBER, "s", 0u, 0.0, 0.0, nullptr, nullptr, "when the fault strikes"},
+        {"fault_on", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "read|write"},
+        {"command_log", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "where close() writes the commands"},
+    };
+    a.params = params;
+    a.param_count = sizeof(params) / sizeof(params[0]);
     a.open = open_device;
     a.start = start;
     a.close = close_device;
-    a.device_limits = limits;
+    a.device_info = probe::phantom_like_info;
     a.device_read = read;
     a.device_write = write;
     return a;

@@ -185,6 +185,24 @@ extern "C" MHD_PLUGIN_EXPORT const mhd_plugin_api* mhd_plugin_entry(uint32_t hos
     a.open = open_tracker;
     a.start = start;
     a.close = close_tracker;
+    // Declared as text: this probe parses its own values, the host checks only the names.
+    static const mhd_param_decl params[] = {
+        {"silent_after_s", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
+        {"resume_after_s", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
+        {"loss", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
+        {"delay_ms", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
+        {"jitter_ms", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
+        {"rate_hz", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
+        {"latency_s", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
+        {"position_sigma_m", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
+        {"angle_sigma_deg", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
+        {"seed", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
+        {"with_head", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
+        {"head_p_W_m", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
+        {"delivery_log", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
+    };
+    a.params = params;
+    a.param_count = sizeof(params) / sizeof(params[0]);
     a.tracker_read = read;
     a.simulate_until = simulate_until;
     return a;

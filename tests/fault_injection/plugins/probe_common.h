@@ -91,6 +91,22 @@ class Log {
 
 inline mhd_status no_op(mhd_plugin_instance*, mhd_error*) { return MHD_OK; }
 
+/// A PHANToM Premium 1.5's device_info (its workspace box in the device frame).
+inline mhd_status phantom_like_info(mhd_plugin_instance*, mhd_device_info* out, mhd_error*) {
+  *out = mhd_device_info{};
+  out->max_force_N = 8.5;
+  out->max_stiffness_N_per_m = 3500.0;
+  out->dof_in = 3;
+  out->dof_out = 3;
+  out->workspace_box_count = 1;
+  const double lo[3] = {-0.1905, -0.0035, -0.1055}, hi[3] = {0.1905, 0.2635, 0.0855};
+  for (int i = 0; i < 3; ++i) {
+    out->workspace[0].min_m[i] = lo[i];
+    out->workspace[0].max_m[i] = hi[i];
+  }
+  return MHD_OK;
+}
+
 /// The table every probe plugin starts from.
 inline mhd_plugin_api table(const char* description) {
   mhd_plugin_api a{};

@@ -137,6 +137,30 @@ inline void close_instance(mhd_plugin_instance* self) {
   delete of(self);
 }
 
+inline const mhd_param_decl kParams[] = {
+    {"fail_after_reads", MHD_PARAM_INTEGER, "", 0u, 0.0, 0.0, nullptr, nullptr, "reads that succeed before the fault"},
+    {"fault", MHD_PARAM_CHOICE, "", 0u, 0.0, 0.0, "nan|huge|error|deactivate|block|none", "none",
+     "what the read returns from then on"},
+    {"block_s", MHD_PARAM_NUMBER, "s", MHD_PARAM_HAS_MIN, 0.0, 0.0, nullptr, "1", "how long a blocking read blocks"},
+    {"command_log", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "where close() writes the last command"},
+};
+
+/// A PHANToM Premium 1.5's device_info (its workspace box in the device frame).
+inline mhd_status phantom_like_info(mhd_plugin_instance*, mhd_device_info* out, mhd_error*) {
+  *out = mhd_device_info{};
+  out->max_force_N = 8.5;
+  out->max_stiffness_N_per_m = 3500.0;
+  out->dof_in = 3;
+  out->dof_out = 3;
+  out->workspace_box_count = 1;
+  const double lo[3] = {-0.1905, -0.0035, -0.1055}, hi[3] = {0.1905, 0.2635, 0.0855};
+  for (int i = 0; i < 3; ++i) {
+    out->workspace[0].min_m[i] = lo[i];
+    out->workspace[0].max_m[i] = hi[i];
+  }
+  return MHD_OK;
+}
+
 /// The table both plugins start from: lifecycle filled, the kind's calls left to them.
 inline mhd_plugin_api base_table(mhd_plugin_kind kind, const char* name) {
   mhd_plugin_api a{};
@@ -150,6 +174,8 @@ inline mhd_plugin_api base_table(mhd_plugin_kind kind, const char* name) {
   a.start = no_op;
   a.stop = no_op;
   a.close = close_instance;
+  a.params = kParams;
+  a.param_count = sizeof(kParams) / sizeof(kParams[0]);
   return a;
 }
 

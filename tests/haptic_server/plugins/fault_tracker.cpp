@@ -72,6 +72,13 @@ extern "C" MHD_PLUGIN_EXPORT const mhd_plugin_api* mhd_plugin_entry(uint32_t hos
     a.open = tracker_open;
     a.close = tracker_close;
     a.tracker_read = read;
+    static const mhd_param_decl params[] = {
+        fault_injection::kParams[0], fault_injection::kParams[1], fault_injection::kParams[2],
+        fault_injection::kParams[3],
+        {"pose", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "px py pz qw qx qy qz, tracker frame"},
+    };
+    a.params = params;
+    a.param_count = sizeof(params) / sizeof(params[0]);
     return a;
   }();
   return &api;

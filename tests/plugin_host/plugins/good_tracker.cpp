@@ -88,6 +88,11 @@ mhd_plugin_api make_api() {
   api.start = tracker_start;
   api.stop = tracker_stop;
   api.close = tracker_close;
+  static const mhd_param_decl params[] = {
+      {"mode", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "how tracker_read misbehaves"},
+  };
+  api.params = params;
+  api.param_count = 1;
   api.tracker_read = tracker_read;
   api.tracker_wait = tracker_wait;
   api.counters = counters;

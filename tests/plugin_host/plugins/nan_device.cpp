@@ -1,4 +1,4 @@
-// device_read returns NaN in joint_angles_rad[1].
+// device_read returns NaN in p_D_tool_m[1].
 #include "test_device.h"
 
 #include <limits>
@@ -6,7 +6,7 @@
 namespace {
 mhd_status read_nan(mhd_plugin_instance* self, mhd_device_state* out, mhd_error* err) {
   const mhd_status status = test_device::read(self, out, err);
-  out->joint_angles_rad[1] = std::numeric_limits<double>::quiet_NaN();
+  out->p_D_tool_m[1] = std::numeric_limits<double>::quiet_NaN();
   return status;
 }
 }  // namespace

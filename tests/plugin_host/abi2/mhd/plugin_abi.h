@@ -1,0 +1,224 @@
+/* FROZEN COPY, for tests only: MHD's plugin ABI version 2 as released (git history of
+ * plugins/include/mhd/plugin_abi.h). tests/plugin_host/plugins/abi2_device.cpp is built
+ * against it, as a third-party plugin from before ABI 3 was, to check the host's refusal. */
+/* MHD plugin ABI, version 2. The only header a plugin includes.
+ *
+ * A plugin is a shared library exporting one C function, mhd_plugin_entry, that returns
+ * a table of function pointers (mhd_plugin_api). The host checks the table's ABI
+ * version and struct size before calling anything else, then drives the lifecycle
+ *   open(params) -> start -> [read/write ...] -> stop -> close.
+ * read/write never block: they return MHD_NO_DATA when nothing new is there. The one
+ * call allowed to block is the optional tracker_wait, which the host calls only from a
+ * thread that may wait (never the haptic thread). The host makes one instance's calls one
+ * at a time (the device's from the haptic thread, which must never wait on a lock), so a
+ * plugin needs no mutex of its own around them.
+ * Version 2 added the optional calls tracker_wait and counters at the end of the table.
+ * All quantities are SI (metres, radians, seconds, newtons); device-native units
+ * (millimetres, encoder counts) stay inside the plugin. Frames follow the engine's
+ * X_AB naming: a pose of B given in A.
+ *
+ * The host validates everything a plugin returns (NaN, ranges, staleness) and clamps
+ * every command it sends; a plugin never needs to trust the host's numbers either.
+ *
+ * Ending safely. The host ends every run with a zero device command and a zero base
+ * command; when the process is dying (a plugin crashed, aborted, threw or called exit())
+ * it sends both from a last-gasp path that may run in a signal handler, so device_write
+ * and base_write should not wait on locks another thread may hold for long. What no
+ * process survives (kill -9, power loss) the hardware must handle: a backend driving
+ * real hardware MUST arm the hardware's own command timeout at start() (amplifier or
+ * motor-controller watchdog: without a fresh command within that time, zero torque /
+ * base stopped). The simulated backends model it (parameter command_timeout_s). */
+#ifndef MHD_PLUGIN_ABI_H
+#define MHD_PLUGIN_ABI_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define MHD_PLUGIN_ABI_VERSION 2u
+#define MHD_PLUGIN_ENTRY_SYMBOL "mhd_plugin_entry"
+#define MHD_ERROR_MESSAGE_SIZE 256
+
+#if defined(_WIN32)
+#define MHD_PLUGIN_EXPORT __declspec(dllexport)
+#else
+#define MHD_PLUGIN_EXPORT __attribute__((visibility("default")))
+#endif
+
+typedef enum mhd_plugin_kind {
+  MHD_KIND_DEVICE = 1,  /* force-feedback arm */
+  MHD_KIND_TRACKER = 2, /* pose tracker (head and base sensors) */
+  MHD_KIND_BASE = 3,    /* mobile base */
+  MHD_KIND_DISPLAY = 4  /* visual display */
+} mhd_plugin_kind;
+
+typedef enum mhd_status {
+  MHD_OK = 0,
+  MHD_NO_DATA = 1,    /* read: nothing new since the last read (not an error) */
+  MHD_ERROR = 2,      /* failed; the mhd_error says why */
+  MHD_DEACTIVATE = 3  /* the hardware asks to be stopped (e.g. emergency stop pressed) */
+} mhd_status;
+
+/* Filled by the plugin whenever it returns MHD_ERROR or open() returns NULL. */
+typedef struct mhd_error {
+  char message[MHD_ERROR_MESSAGE_SIZE];
+} mhd_error;
+
+/* One parameter from the scene XML: <param name="..." value="..."/>. */
+typedef struct mhd_param {
+  const char* name;
+  const char* value;
+} mhd_param;
+
+/* One counter a plugin keeps, e.g. samples it dropped and why. */
+typedef struct mhd_counter {
+  const char* name; /* e.g. "dropped_stale"; a static string, valid while the library is loaded */
+  uint64_t value;
+} mhd_counter;
+
+/* ---- data exchanged with each kind -------------------------------------------- */
+
+/* Device: joint angles of the arm and, where the device knows it, the tool point in the
+ * device's own frame (p_D_hip). timestamp_s is the host clock (see mhd_host). */
+typedef struct mhd_device_state {
+  double timestamp_s;
+  double joint_angles_rad[3];
+  double p_D_hip_m[3];
+  uint32_t buttons; /* bit i: button i pressed */
+} mhd_device_state;
+
+/* Device command: motor torques of the three actuated joints. The host computes them as
+ * tau = J^T F and clamps F to the device's limit first. */
+typedef struct mhd_device_command {
+  double timestamp_s;
+  double joint_torques_Nm[3];
+} mhd_device_command;
+
+/* Device limits the plugin reports after open(); the host clamps with them. */
+typedef struct mhd_device_limits {
+  double max_force_N;
+  double max_joint_torque_Nm[3];
+} mhd_device_limits;
+
+/* Tracker: one pose sample of one sensor in the tracker's frame (X_T_sensor). */
+typedef struct mhd_tracker_sample {
+  uint32_t sensor_id;
+  uint64_t sequence;     /* per sensor, increasing */
+  double timestamp_s;    /* when the pose was measured, host clock */
+  double p_T_m[3];       /* position */
+  double q_T_wxyz[4];    /* orientation, unit quaternion w, x, y, z */
+} mhd_tracker_sample;
+
+/* Base: planar pose on the floor (world x, z; heading about world +y) and velocity. */
+typedef struct mhd_base_state {
+  double timestamp_s;
+  double x_m, z_m, heading_rad;
+  double vx_mps, vz_mps, omega_radps; /* in the world frame */
+} mhd_base_state;
+
+/* Base command: velocity in the base's own frame (x forward, y up, z to the right:
+ * right-handed, as in the rig). */
+typedef struct mhd_base_command {
+  double timestamp_s;
+  double vx_mps, vz_mps, omega_radps;
+} mhd_base_command;
+
+/* Display: a snapshot of the rig for drawing (world frame). */
+typedef struct mhd_display_frame {
+  double timestamp_s;
+  double p_W_hip_m[3];
+  double p_W_proxy_m[3];
+  double force_W_N[3];
+  int32_t in_contact;
+  double base_x_m, base_z_m, base_heading_rad;
+  double p_W_head_m[3];
+  double q_W_head_wxyz[4];
+} mhd_display_frame;
+
+/* ---- what the host offers a plugin -------------------------------------------- */
+
+/* Simulated backends share one simulated world (the user's body and hand, the base's
+ * true pose) through the host, so a simulated tracker sees the simulated base move.
+ * Real backends ignore it. All poses in the world frame. */
+typedef struct mhd_sim_world {
+  void* context;
+  /* True planar pose of the base. */
+  void (*get_base_pose)(void* context, double* x_m, double* z_m, double* heading_rad);
+  void (*set_base_pose)(void* context, double x_m, double z_m, double heading_rad);
+  /* The user's hand (where the device's handle is held) and head. */
+  void (*get_hand)(void* context, double p_W_m[3]);
+  void (*set_hand)(void* context, const double p_W_m[3]);
+  void (*get_head)(void* context, double p_W_m[3], double q_W_wxyz[4]);
+  void (*set_head)(void* context, const double p_W_m[3], const double q_W_wxyz[4]);
+} mhd_sim_world;
+
+typedef struct mhd_host {
+  uint32_t abi_version;
+  uint32_t struct_size;
+  /* Monotonic host clock, seconds. */
+  double (*now_s)(void* context);
+  void* clock_context;
+  /* NULL when no simulated world exists (real hardware only). */
+  const mhd_sim_world* sim_world;
+  /* Absolute path of the root scene XML the host runs, NULL when there is none. A display
+   * plugin loads the scene's geometry from it; paths inside resolve against it. */
+  const char* scene_file;
+} mhd_host;
+
+/* ---- the plugin's table ----------------------------------------------------- */
+
+typedef struct mhd_plugin_instance mhd_plugin_instance; /* opaque, owned by the plugin */
+
+typedef struct mhd_plugin_api {
+  uint32_t abi_version; /* MHD_PLUGIN_ABI_VERSION the plugin was built against */
+  uint32_t struct_size; /* sizeof(mhd_plugin_api) the plugin was built with */
+  mhd_plugin_kind kind;
+  const char* name;        /* unique, e.g. "sim_phantom" */
+  const char* version;     /* the plugin's own version, e.g. "1.0.0" */
+  const char* description; /* one line */
+
+  /* Lifecycle. open() returns NULL and fills err on failure (unknown or bad parameter
+   * included: a plugin rejects parameters it does not know). */
+  mhd_plugin_instance* (*open)(const mhd_host* host, const mhd_param* params, size_t param_count, mhd_error* err);
+  mhd_status (*start)(mhd_plugin_instance* self, mhd_error* err);
+  mhd_status (*stop)(mhd_plugin_instance* self, mhd_error* err);
+  void (*close)(mhd_plugin_instance* self);
+
+  /* Kind-specific calls; NULL for the kinds a plugin is not. Never block. */
+  mhd_status (*device_limits)(mhd_plugin_instance* self, mhd_device_limits* out, mhd_error* err);
+  mhd_status (*device_read)(mhd_plugin_instance* self, mhd_device_state* out, mhd_error* err);
+  mhd_status (*device_write)(mhd_plugin_instance* self, const mhd_device_command* command, mhd_error* err);
+  /* Copies up to capacity samples received since the last call; *count says how many. */
+  mhd_status (*tracker_read)(mhd_plugin_instance* self, mhd_tracker_sample* out, size_t capacity, size_t* count,
+                             mhd_error* err);
+  mhd_status (*base_read)(mhd_plugin_instance* self, mhd_base_state* out, mhd_error* err);
+  mhd_status (*base_write)(mhd_plugin_instance* self, const mhd_base_command* command, mhd_error* err);
+  mhd_status (*display_write)(mhd_plugin_instance* self, const mhd_display_frame* frame, mhd_error* err);
+  /* Simulated backends only (may be NULL): advance the simulation to host time t_s. */
+  mhd_status (*simulate_until)(mhd_plugin_instance* self, double t_s, mhd_error* err);
+
+  /* Optional (may be NULL), trackers only: blocks until tracker_read has data or
+   * timeout_s passes; MHD_OK when there is data, MHD_NO_DATA on timeout. Lets the host
+   * take a sample the moment it arrives instead of at its next poll. */
+  mhd_status (*tracker_wait)(mhd_plugin_instance* self, double timeout_s, mhd_error* err);
+  /* Optional (may be NULL), any kind: writes up to capacity counters into out and the
+   * number the plugin keeps into *count (names and order fixed while it is open). The
+   * host calls it from the thread that makes the plugin's other calls, a few times a
+   * second, and shows the counts in its status. */
+  mhd_status (*counters)(mhd_plugin_instance* self, mhd_counter* out, size_t capacity, size_t* count,
+                         mhd_error* err);
+} mhd_plugin_api;
+
+/* The one exported entry point. host_abi_version lets a plugin refuse a host it cannot
+ * serve (return NULL); otherwise it returns its static table. */
+typedef const mhd_plugin_api* (*mhd_plugin_entry_fn)(uint32_t host_abi_version);
+MHD_PLUGIN_EXPORT const mhd_plugin_api* mhd_plugin_entry(uint32_t host_abi_version);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* MHD_PLUGIN_ABI_H */
