@@ -21,6 +21,9 @@ bool has_texture(const CollisionWorld& world, const HapticMaterial& material, in
 double texture_friction_scale(const CollisionWorld& world, const HapticMaterial& material, int object,
                               const Eigen::Vector3d& p_W) {
   if (!has_texture(world, material, object)) return 1.0;
+  // Skip the sample (24 sinusoids for noise) where the scale cannot matter.
+  const bool frictionless = material.static_friction == 0.0 && material.dynamic_friction == 0.0;
+  if (frictionless || material.texture->spec().friction_contrast == 0.0) return 1.0;
   return sample_at(world, *material.texture, object, p_W).friction_scale;
 }
 
