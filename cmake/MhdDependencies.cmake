@@ -6,6 +6,7 @@ find_package(tinyxml2 REQUIRED)
 find_package(assimp REQUIRED)
 find_package(fmt REQUIRED)
 find_package(spdlog REQUIRED)
+find_package(PNG REQUIRED)  # height-map textures (engine/scene_compiler/grey_png.cpp)
 find_package(CLI11 REQUIRED)
 find_package(Threads REQUIRED)
 

@@ -33,6 +33,6 @@ set(CPACK_DEBIAN_DEV_DESCRIPTION "${PROJECT_DESCRIPTION}: engine headers and sta
 # The same list as MHDConfig.cmake's find_dependency calls, plus Bullet and xxHash, whose
 # files the exported MHD::bullet and MHD::xxhash name.
 set(CPACK_DEBIAN_DEV_PACKAGE_DEPENDS
-    "mhd (= ${PROJECT_VERSION}), libeigen3-dev, libtinyxml2-dev, libassimp-dev, libfmt-dev, libspdlog-dev, libbullet-dev, libxxhash-dev")
+    "mhd (= ${PROJECT_VERSION}), libeigen3-dev, libtinyxml2-dev, libassimp-dev, libfmt-dev, libspdlog-dev, libpng-dev, libbullet-dev, libxxhash-dev")
 
 include(CPack)

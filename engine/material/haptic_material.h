@@ -1,6 +1,11 @@
 #pragma once
 // Haptic surface properties, SI units.
 
+#include "material/haptic_texture.h"
+
+#include <memory>
+#include <optional>
+
 namespace mhd {
 
 struct HapticMaterial {
@@ -12,6 +17,11 @@ struct HapticMaterial {
   double dynamic_friction = 0.0;
   /// Interpolate vertex normals across triangles for the force direction.
   bool force_shading = false;
+  /// The surface texture the scene describes (docs/textures.md); none for a smooth surface.
+  std::optional<HapticTextureSpec> texture_spec;
+  /// That texture, ready to sample at the haptic rate; built by the scene compiler (which
+  /// reads height-map images). Null: the proxy renders the surface smooth.
+  std::shared_ptr<const HapticTexture> texture;
 };
 
 }  // namespace mhd

@@ -1,6 +1,7 @@
 #include "proxy/god_object.h"
 
 #include "proxy/proxy_motion.h"
+#include "proxy/texture_force.h"
 
 #include <Eigen/Geometry>
 
@@ -112,7 +113,11 @@ ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMateri
     const HapticMaterial& mat = material_of(materials, state.planes[0].triangle.object);
     const Eigen::Vector3d to_proxy = motion.p - hip_W;
     const double depth = to_proxy.norm();
-    if ((mat.static_friction > 0.0 || mat.dynamic_friction > 0.0) && depth > 0.0) {
+    // A friction map scales both coefficients where the proxy rests (docs/textures.md).
+    const double mu_scale = texture_friction_scale(world, mat, state.planes[0].triangle.object, start);
+    const double static_friction = mu_scale * mat.static_friction;
+    const double dynamic_friction = mu_scale * mat.dynamic_friction;
+    if ((static_friction > 0.0 || dynamic_friction > 0.0) && depth > 0.0) {
       // Friction cone around the frictionless proxy: the previous proxy may stay put
       // while its tangential offset is within mu_s * depth (static), else it slides
       // to the dynamic cone's rim (mu_d * depth behind the frictionless point).
@@ -120,13 +125,13 @@ ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMateri
       const Eigen::Vector3d offset = start - motion.p;
       const Eigen::Vector3d tangential = offset - n * n.dot(offset);
       const double slip = tangential.norm();
-      if (slip <= mat.static_friction * depth) {
+      if (slip <= static_friction * depth) {
         sticking = true;
         motion.p = start;
         state.path_points = 1;
         state.path_W[0] = start;
-      } else if (mat.dynamic_friction > 0.0 && slip > 0.0) {
-        const Eigen::Vector3d goal = hip_W + tangential * (mat.dynamic_friction * depth / slip);
+      } else if (dynamic_friction > 0.0 && slip > 0.0) {
+        const Eigen::Vector3d goal = hip_W + tangential * (dynamic_friction * depth / slip);
         // The frictionless motion and its path, kept in case the slide ends off the surface.
         const ProxyState frictionless = state;
         Motion sliding;
@@ -195,6 +200,12 @@ ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMateri
     Eigen::Vector3d n_shaded = world.shaded_normal_W(state.planes[0].triangle, motion.p);
     if (n_shaded.dot(n_face) < 0.0) n_shaded = -n_shaded;  // two-sided surfaces
     force += force.dot(n_face) * (n_shaded - n_face);
+  }
+  if (mat.texture) {
+    // The texture shapes the force on top of the smooth surface's; the proxy stays on the
+    // real surface. On an edge or corner the spring's direction stands in for the normal.
+    const Eigen::Vector3d n_surface = state.plane_count == 1 ? state.planes[0].normal_W : n_contact;
+    force = textured_force(world, mat, object, motion.p, n_surface, force);
   }
   if (mat.damping_Ns_per_m > 0.0) {
     // Damping fades in over the first kDampingOnsetPerSkin skins of depth: a HIP grazing a

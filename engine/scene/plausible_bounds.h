@@ -29,6 +29,14 @@ inline constexpr double kMaxDamping_Ns_per_m = 100.0;
 /// Friction coefficients (static and dynamic): rubber on rubber is about 1 to 2.
 inline constexpr double kMaxFriction = 2.0;
 
+/// Texture depth (docs/textures.md): at the stiffest material (3.5 N/mm) 5 mm of relief is
+/// already twice the force clamp; deeper relief is a shape, to be modelled as geometry.
+inline constexpr double kMaxTextureDepth_m = 0.005;
+/// Texture periods and image sizes: 0.1 mm is a 1 kHz vibration at 0.1 m/s, the haptic
+/// rate itself (finer aliases); beyond 1 m a surface has no texture a hand feels as one.
+inline constexpr double kMinTexturePeriod_m = 1e-4;
+inline constexpr double kMaxTexturePeriod_m = 1.0;
+
 /// Object and rig-frame positions, |p| in metres: a lab-sized rig, generously.
 inline constexpr double kMaxPosition_m = 1000.0;
 

@@ -2,6 +2,7 @@
 
 #include "geometry/primitive_mesh.h"
 #include "mesh_io/mesh_cache.h"
+#include "scene_compiler/texture_compiler.h"
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -77,6 +78,7 @@ class Compiler {
     CompileResult result;
     const auto& objects = description_.objects;
     std::vector<std::shared_ptr<const MeshBvh>> shapes(objects.size());
+    std::vector<std::shared_ptr<const HapticTexture>> textures(objects.size());
 
     if (!positive_finite(description_.haptics.max_force_N)) {
       result.diagnostics.push_back(
@@ -102,6 +104,10 @@ class Compiler {
       if (!error.empty()) {
         result.diagnostics.push_back(make_diagnostic(object.where, fmt::format("object '{}': {}", object.name, error)));
       }
+      if (std::string texture_error = texture_for(object, textures[i]); !texture_error.empty()) {
+        result.diagnostics.push_back(
+            make_diagnostic(object.where, fmt::format("object '{}': texture: {}", object.name, texture_error)));
+      }
     }
     if (!result.diagnostics.empty()) return result;  // nothing half-loaded
 
@@ -113,6 +119,7 @@ class Compiler {
     for (std::size_t i = 0; i < objects.size(); ++i) {
       scene->world.add_object(shapes[i], objects[i].X_WO);
       scene->materials.push_back(objects[i].material);
+      if (textures[i]) scene->materials.back().texture = textures[i];
       scene->object_names.push_back(objects[i].name);
       scene->triangle_count += shapes[i]->mesh().triangle_count();
     }
@@ -131,6 +138,22 @@ class Compiler {
     const Eigen::Matrix3d R = X_WO.linear();
     if (!(R.transpose() * R).isIdentity(1e-9) || R.determinant() < 0.0) return "pose rotation is not a rotation";
     return {};
+  }
+
+  /// The object's texture (built once per named material), or its material's own (set
+  /// in code), or none; "" or why it cannot be built.
+  std::string texture_for(const ObjectDescription& object, std::shared_ptr<const HapticTexture>& texture) {
+    const HapticMaterial& material = object.material;
+    if (material.texture || !material.texture_spec) return {};
+    if (!object.material_name.empty()) {
+      if (const auto it = named_textures_.find(object.material_name); it != named_textures_.end()) {
+        texture = it->second;
+        return {};
+      }
+    }
+    std::string error = compile_texture(*material.texture_spec, texture);
+    if (error.empty() && !object.material_name.empty()) named_textures_.emplace(object.material_name, texture);
+    return error;
   }
 
   /// Reports progress for `object` (no-op without a callback).
@@ -235,6 +258,7 @@ class Compiler {
   MeshCache cache_;
   std::map<MeshKey, SharedShape> meshes_;
   std::map<std::string, SharedShape> primitives_;
+  std::map<std::string, std::shared_ptr<const HapticTexture>> named_textures_;  ///< by material name
   SharedShape invalid_;
   std::uint64_t loaded_triangles_ = 0;  ///< over distinct shapes, for max_triangles
 };

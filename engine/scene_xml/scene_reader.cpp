@@ -7,6 +7,7 @@
 #include "scene_xml/message_text.h"
 #include "scene_xml/number_parser.h"
 #include "scene_xml/readable_file.h"
+#include "scene_xml/texture_reader.h"
 #include "scene_xml/xml_attribute_parser.h"
 #include "scene_xml/xml_parse_error.h"
 
@@ -398,13 +399,29 @@ class SceneReader {
     return m;
   }
 
+  /// A material's children: at most one <texture>.
+  static void read_material_children(const tinyxml2::XMLElement& e, const FileContext& ctx, HapticMaterial& m) {
+    const tinyxml2::XMLElement* texture = nullptr;
+    for_each_child(e, ctx.sink, [&](const tinyxml2::XMLElement& child) {
+      if (std::string_view(child.Name()) != "texture") {
+        report_unknown_element(child, e, ctx.sink);
+      } else if (texture != nullptr) {
+        ctx.sink.error(child.GetLineNum(),
+                       concat("<material> has more than one <texture> (the first is at line ", texture->GetLineNum(), ")"));
+      } else {
+        texture = &child;
+        m.texture_spec = scene_xml::read_texture(child, ctx.sink);
+      }
+    });
+  }
+
   void read_named_material(const tinyxml2::XMLElement& e, const FileContext& ctx) {
     AttributeParser a(e, ctx.sink,
                       {"name", "stiffness_N_per_m", "damping_Ns_per_m", "static_friction",
                        "dynamic_friction", "force_shading"});
-    expect_no_children(e, ctx.sink);
     const auto name = a.text("name", Presence::Required, Emptiness::Forbidden);
-    const HapticMaterial m = read_material_properties(a, ctx);
+    HapticMaterial m = read_material_properties(a, ctx);
+    read_material_children(e, ctx, m);
     if (!name) return;
     if (!claim_name(material_where_, "material", *name, ctx.sink.at(e.GetLineNum()), ctx)) return;
     scene_.materials.emplace(*name, m);
@@ -472,12 +489,12 @@ class SceneReader {
         AttributeParser ma(child, ctx.sink,
                            {"name", "stiffness_N_per_m", "damping_Ns_per_m", "static_friction",
                             "dynamic_friction", "force_shading"});
-        expect_no_children(child, ctx.sink);
         if (ma.has("name")) {
           ctx.sink.error(ma.line_of("name"),
                          "an inline <material> takes no name (define named materials in <scene>)");
         }
         object.material = read_material_properties(ma, ctx);
+        read_material_children(child, ctx, object.material);
       } else {
         report_unknown_element(child, e, ctx.sink);
       }

@@ -9,9 +9,55 @@
 
 #include <gtest/gtest.h>
 
+#include <utility>
 
 namespace mhd {
 namespace {
+
+/// Press in, circle around a 0.1 m sphere 8 mm deep (friction, shading, edges), come out:
+/// the allocations step_proxy made, and how many ticks touched.
+std::pair<long, int> circle_sphere(const HapticMaterial& mat) {
+  TriangleMesh sphere = make_sphere_mesh(0.1, 5);
+  compute_vertex_normals(sphere);
+  CollisionWorld world;
+  world.add_object(std::make_shared<MeshBvh>(std::make_shared<TriangleMesh>(std::move(sphere))), Pose::Identity());
+  const std::vector<HapticMaterial> materials{mat};
+  const ProxySettings settings;
+  ProxyState state;
+  reset_proxy(state, Eigen::Vector3d(0, 0, 0.15));
+  test::AllocationCounter allocations;
+  int contact_ticks = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const double a = 0.002 * i;
+    const double r = i < 2900 ? 0.092 : 0.15;
+    const Eigen::Vector3d hip(r * std::sin(a) * std::cos(3 * a), r * std::sin(a) * std::sin(3 * a), r * std::cos(a));
+    const ProxyOutput out = step_proxy(world, materials, settings, state, hip, 1e-3);
+    if (out.in_contact) ++contact_ticks;
+  }
+  allocations.stop();
+  return {static_cast<long>(allocations.count()), contact_ticks};
+}
+
+TEST(GodObjectAllocation, StepProxyWithTexturesAllocatesNothing) {
+  HapticMaterial mat;
+  mat.static_friction = 0.4;
+  mat.dynamic_friction = 0.3;
+  for (const TextureKind kind : {TextureKind::Grating, TextureKind::Noise, TextureKind::HeightMap}) {
+    HapticTextureSpec spec;
+    spec.kind = kind;
+    spec.depth_m = 3e-4;
+    spec.friction_contrast = 0.5;
+    GreyImage image;
+    image.width = 3;
+    image.height = 2;
+    image.grey = {0.0, 0.5, 1.0, 1.0, 0.2, 0.0};
+    mat.texture = std::make_shared<HapticTexture>(kind == TextureKind::HeightMap ? HapticTexture::height_map(spec, image)
+                                                                                 : HapticTexture::procedural(spec));
+    const auto [allocations, contact_ticks] = circle_sphere(mat);
+    EXPECT_GT(contact_ticks, 2000);
+    EXPECT_EQ(allocations, 0);
+  }
+}
 
 TEST(GodObjectAllocation, StepProxyAllocatesNothing) {
   TriangleMesh sphere = make_sphere_mesh(0.1, 5);

@@ -149,11 +149,20 @@ TEST_F(SceneXmlMalformed, FrameParentCyclesAndUnknownParents) {
                    at("frame_cycle.xml", 8, "frame parent cycle: self -> self")}));
 }
 
+TEST_F(SceneXmlMalformed, BadTexturesAreRefusedAtEachAttributesLine) {
+  EXPECT_EQ(errors_of("bad_texture.xml"),
+            (Lines{at("bad_texture.xml", 4, "unknown texture kind 'knit' (expected grating, noise or image)"),
+                   at("bad_texture.xml", 8, "attribute 'seed' on <texture> applies to kind noise only, not to kind grating"),
+                   at("bad_texture.xml", 7,
+                      "attribute 'depth_m' on <texture> must not exceed 0.005 m (deeper relief is a shape: model it as "
+                      "geometry), got 0.02")}));
+}
+
 TEST_F(SceneXmlMalformed, EveryMalformedFileIsCovered) {
   // A new file under malformed/ needs a test above; this list keeps the two in step.
   // (absurd_*, far_position, slow_/tiny_haptic_rate, stiffness_over_rate: plausible_settings_test.cpp)
   const std::vector<std::string> covered = {
-      "absurd_material.xml",    "absurd_scale.xml",        "absurd_stiffness.xml",
+      "absurd_material.xml",    "absurd_scale.xml",        "absurd_stiffness.xml",     "bad_texture.xml",
       "duplicate_names.xml",    "duplicate_names_part.xml", "dynamic_friction.xml",
       "far_position.xml",       "frame_cycle.xml",         "include_cycle_a.xml",
       "include_cycle_b.xml",    "malformed_xml.xml",       "missing_mesh.xml",
