@@ -1,6 +1,8 @@
 #pragma once
 // Haptic surface properties, SI units.
 
+#include <numbers>
+
 namespace mhd {
 
 struct HapticMaterial {
@@ -10,8 +12,13 @@ struct HapticMaterial {
   /// Friction coefficients (friction cone half-angle = atan(mu)); static >= dynamic.
   double static_friction = 0.0;
   double dynamic_friction = 0.0;
-  /// Interpolate vertex normals across triangles for the force direction.
+  /// Force shading (Ruspini, Kolarov & Khatib 1997): the proxy is drawn towards the HIP's
+  /// foot on the plane with the normal interpolated over each triangle, so a coarse
+  /// tessellation feels smooth; the real surface still holds it (docs/proxy.md).
   bool force_shading = false;
+  /// Under shading, faces whose normals differ by more than this keep a sharp edge (a
+  /// cube's edges stay edges); 0 .. pi. Read when the scene is compiled.
+  double force_shading_crease_rad = std::numbers::pi / 3.0;
 };
 
 }  // namespace mhd
