@@ -29,6 +29,9 @@ inline constexpr double kMaxDamping_Ns_per_m = 100.0;
 /// Friction coefficients (static and dynamic): rubber on rubber is about 1 to 2.
 inline constexpr double kMaxFriction = 2.0;
 
+/// Force shading's crease angle, degrees: two normals never differ by more.
+inline constexpr double kMaxCreaseAngle_deg = 180.0;
+
 /// Object and rig-frame positions, |p| in metres: a lab-sized rig, generously.
 inline constexpr double kMaxPosition_m = 1000.0;
 
