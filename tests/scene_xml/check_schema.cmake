@@ -19,7 +19,8 @@ elseif(MODE STREQUAL "malformed")
   foreach(name IN ITEMS malformed_xml unknown_element unknown_attribute non_finite
                         negative_stiffness zero_scale duplicate_names trailing_junk wrong_arity
                         two_shapes missing_version unknown_plugin_kind
-                        slow_haptic_rate tiny_haptic_rate absurd_stiffness absurd_material)
+                        slow_haptic_rate tiny_haptic_rate absurd_stiffness absurd_material
+                        absurd_crease_angle)
     list(APPEND files "${SOURCE_DIR}/tests/data/scenes/malformed/${name}.xml")
   endforeach()
 else()
