@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <utility>
 
 namespace mhd {
 namespace {
@@ -30,7 +32,7 @@ bool is_ignored(std::span<const TriangleRef> ignore, int object, std::uint32_t t
 }  // namespace
 
 int CollisionWorld::add_object(std::shared_ptr<const MeshBvh> shape, const Pose& X_WO) {
-  objects_.push_back(Object{std::move(shape), X_WO, X_WO.inverse(Eigen::Isometry)});
+  objects_.push_back(Object{std::move(shape), X_WO, X_WO.inverse(Eigen::Isometry), nullptr});
   return static_cast<int>(objects_.size()) - 1;
 }
 
@@ -163,9 +165,21 @@ Eigen::Vector3d CollisionWorld::face_normal_W(const TriangleRef& ref) const {
   return len > 0.0 ? Eigen::Vector3d(n / len) : Eigen::Vector3d::Zero();
 }
 
+void CollisionWorld::set_shading_normals(int object, std::shared_ptr<const ShadingNormals> normals) {
+  Object& o = objects_.at(static_cast<std::size_t>(object));
+  if (normals && normals->corner_normals_O.size() != o.shape->mesh().triangle_count()) {
+    throw std::invalid_argument("CollisionWorld::set_shading_normals: one entry per triangle expected");
+  }
+  o.shading = std::move(normals);
+}
+
 Eigen::Vector3d CollisionWorld::shaded_normal_W(const TriangleRef& ref, const Eigen::Vector3d& p_W) const {
   const Object& o = objects_.at(static_cast<std::size_t>(ref.object));
   const TriangleMesh& mesh = o.shape->mesh();
+  if (o.shading) {
+    const Eigen::Vector3d n_O = interpolated_normal_O(mesh, *o.shading, ref.triangle, o.X_OW * p_W);
+    return o.X_WO.linear() * n_O;
+  }
   const Eigen::Vector3d face = face_normal_W(ref);
   if (mesh.vertex_normals.size() != mesh.vertices_m.size()) return face;
   const TriangleIndices& t = mesh.triangles[ref.triangle];

@@ -5,6 +5,7 @@
 
 #include "collision/mesh_bvh.h"
 #include "geometry/pose.h"
+#include "geometry/shading_normals.h"
 
 #include <cstdint>
 #include <limits>
@@ -77,8 +78,18 @@ class CollisionWorld {
   /// Triangle corners in the world frame.
   [[nodiscard]] std::array<Eigen::Vector3d, 3> triangle_W(const TriangleRef& t) const;
 
+  /// Gives an object the normals force shading interpolates (set when the scene is
+  /// compiled, before any tick reads the world); null takes them away. Throws
+  /// std::invalid_argument unless they have one entry per triangle of the object's mesh.
+  void set_shading_normals(int object, std::shared_ptr<const ShadingNormals> normals);
+  /// The object's shading normals, or null where none were set.
+  [[nodiscard]] const ShadingNormals* shading_normals(int object) const {
+    return objects_[static_cast<std::size_t>(object)].shading.get();
+  }
+
   /// Unit geometric normal (CCW winding) in the world frame, and the force-shading
-  /// normal interpolated from vertex normals at the point closest to p_W.
+  /// normal interpolated at the point closest to p_W: from the object's shading normals
+  /// (crease-aware, per corner) where it has them, else from the mesh's vertex normals.
   [[nodiscard]] Eigen::Vector3d face_normal_W(const TriangleRef& t) const;
   [[nodiscard]] Eigen::Vector3d shaded_normal_W(const TriangleRef& t, const Eigen::Vector3d& p_W) const;
 
@@ -87,6 +98,7 @@ class CollisionWorld {
     std::shared_ptr<const MeshBvh> shape;
     Pose X_WO;
     Pose X_OW;
+    std::shared_ptr<const ShadingNormals> shading;
   };
   std::vector<Object> objects_;
 };

@@ -1,5 +1,6 @@
 #include "proxy/god_object.h"
 
+#include "proxy/force_shading.h"
 #include "proxy/proxy_motion.h"
 #include "proxy/texture_force.h"
 
@@ -59,6 +60,34 @@ const HapticMaterial& material_of(std::span<const HapticMaterial> materials, int
   return materials[static_cast<std::size_t>(object)];
 }
 
+// Force shading's second pass (proxy/force_shading.h): from the tick's start towards the
+// shaded goal, held by the real surface. Kept when it ends in contact with the HIP out of
+// the proxy's sight; otherwise (off an open boundary, out of work) the first pass stands.
+// Returns the goal the proxy went for.
+Eigen::Vector3d shade_motion(const CollisionWorld& world, double skin_m, const Eigen::Vector3d& start,
+                             const Eigen::Vector3d& hip_W, const TriangleRef* resting_on, Motion& motion,
+                             ProxyState& state, TickWork& work) {
+  const auto goal = proxy_detail::shaded_goal_W(world, state, motion.p, hip_W, skin_m);
+  if (!goal) return hip_W;
+  const Motion unshaded = motion;
+  const ProxyState unshaded_state = state;
+  proxy_detail::solve_motion(world, skin_m, start, *goal, motion, state, work, resting_on);
+  store_active_planes(motion, skin_m, state);
+  bool keep = state.plane_count > 0 && !work.exhausted;
+  if (keep && !proxy_detail::hip_hidden_by_contact(world, state, motion.p, hip_W)) {
+    Motion probe = motion;
+    ProxyState probe_state = state;
+    keep = !proxy_detail::go_if_visible(world, skin_m, hip_W, probe, probe_state, work) && !work.exhausted;
+  }
+  if (keep) return *goal;
+  motion = unshaded;
+  state = unshaded_state;
+  // The first pass was complete: running out in the optional second one is no shortfall.
+  work.exhausted = false;
+  work.sweep.exhausted = false;
+  return hip_W;
+}
+
 }  // namespace
 
 void reset_proxy(ProxyState& state, const Eigen::Vector3d& hip_W) {
@@ -108,6 +137,14 @@ ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMateri
                              previous_plane_count > 0 ? &resting_on : nullptr);
   store_active_planes(motion, settings.skin_m, state);
 
+  // What the proxy is drawn to: the HIP, or with force shading its foot on the shaded planes.
+  Eigen::Vector3d goal_W = hip_W;
+  if (state.plane_count > 0 && !work.exhausted &&
+      material_of(materials, state.planes[0].triangle.object).force_shading) {
+    goal_W = shade_motion(world, settings.skin_m, start, hip_W, previous_plane_count > 0 ? &resting_on : nullptr,
+                          motion, state, work);
+  }
+
   bool sticking = false;
   if (state.plane_count > 0 && was_in_contact) {
     const HapticMaterial& mat = material_of(materials, state.planes[0].triangle.object);
@@ -131,7 +168,7 @@ ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMateri
         state.path_points = 1;
         state.path_W[0] = start;
       } else if (dynamic_friction > 0.0 && slip > 0.0) {
-        const Eigen::Vector3d goal = hip_W + tangential * (dynamic_friction * depth / slip);
+        const Eigen::Vector3d goal = goal_W + tangential * (dynamic_friction * depth / slip);
         // The frictionless motion and its path, kept in case the slide ends off the surface.
         const ProxyState frictionless = state;
         Motion sliding;
@@ -193,14 +230,6 @@ ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMateri
 
   Eigen::Vector3d force = mat.stiffness_N_per_m * to_proxy;
   const Eigen::Vector3d n_contact = to_proxy / depth;
-  if (mat.force_shading) {
-    // Keep the spring's normal magnitude, turn its direction to the interpolated normal.
-    // On an edge or corner the spring's own direction stands in for the face normal.
-    const Eigen::Vector3d n_face = state.plane_count == 1 ? state.planes[0].normal_W : n_contact;
-    Eigen::Vector3d n_shaded = world.shaded_normal_W(state.planes[0].triangle, motion.p);
-    if (n_shaded.dot(n_face) < 0.0) n_shaded = -n_shaded;  // two-sided surfaces
-    force += force.dot(n_face) * (n_shaded - n_face);
-  }
   if (mat.texture) {
     // The texture shapes the force on top of the smooth surface's; the proxy stays on the
     // real surface. On an edge or corner the spring's direction stands in for the normal.

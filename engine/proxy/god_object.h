@@ -76,6 +76,9 @@ void reset_proxy(ProxyState& state, const Eigen::Vector3d& hip_W);
 /// ends at hip_W with zero force; otherwise it ends where no small crossing-free move
 /// brings it nearer the HIP, unless the work budget ran out (ProxyOutput says so), in
 /// which case it ends at the last crossing-free point it reached and keeps its contact.
+/// Friction and force shading move a proxy in contact on from that minimum along the
+/// surface (to the friction cone's rim; towards the HIP's foot on the shaded planes,
+/// docs/proxy.md "Force shading"), by swept motions, and never where the HIP is in view.
 /// `materials[i]` is object i's material. A non-finite HIP leaves the proxy where it was
 /// and returns zero force.
 ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMaterial> materials,

@@ -36,6 +36,8 @@ inline constexpr double kMaxTextureDepth_m = 0.005;
 /// rate itself (finer aliases); beyond 1 m a surface has no texture a hand feels as one.
 inline constexpr double kMinTexturePeriod_m = 1e-4;
 inline constexpr double kMaxTexturePeriod_m = 1.0;
+/// Force shading's crease angle, degrees: two normals never differ by more.
+inline constexpr double kMaxCreaseAngle_deg = 180.0;
 
 /// Object and rig-frame positions, |p| in metres: a lab-sized rig, generously.
 inline constexpr double kMaxPosition_m = 1000.0;

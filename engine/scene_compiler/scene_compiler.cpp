@@ -1,6 +1,7 @@
 #include "scene_compiler/scene_compiler.h"
 
 #include "geometry/primitive_mesh.h"
+#include "geometry/shading_normals.h"
 #include "mesh_io/mesh_cache.h"
 #include "scene_compiler/texture_compiler.h"
 
@@ -13,6 +14,7 @@
 #include <cmath>
 #include <exception>
 #include <map>
+#include <numbers>
 #include <string>
 #include <system_error>
 #include <utility>
@@ -89,6 +91,7 @@ class Compiler {
     for (std::size_t i = 0; i < objects.size(); ++i) {
       const ObjectDescription& object = objects[i];
       std::string error = check_pose(object.X_WO);
+      if (error.empty()) error = check_shading(object.material);
       if (error.empty()) {
         try {
           const SharedShape& shape = shape_for(object);
@@ -117,7 +120,10 @@ class Compiler {
     scene->materials.reserve(objects.size());
     scene->object_names.reserve(objects.size());
     for (std::size_t i = 0; i < objects.size(); ++i) {
-      scene->world.add_object(shapes[i], objects[i].X_WO);
+      const int id = scene->world.add_object(shapes[i], objects[i].X_WO);
+      if (objects[i].material.force_shading) {
+        scene->world.set_shading_normals(id, shading_normals_for(shapes[i], objects[i].material));
+      }
       scene->materials.push_back(objects[i].material);
       if (textures[i]) scene->materials.back().texture = textures[i];
       scene->object_names.push_back(objects[i].name);
@@ -154,6 +160,27 @@ class Compiler {
     std::string error = compile_texture(*material.texture_spec, texture);
     if (error.empty() && !object.material_name.empty()) named_textures_.emplace(object.material_name, texture);
     return error;
+  }
+
+  static std::string check_shading(const HapticMaterial& m) {
+    const double crease = m.force_shading_crease_rad;
+    if (!(crease >= 0.0 && crease <= std::numbers::pi)) {
+      return fmt::format("force shading crease angle must be within [0, pi] rad (got {} rad)", crease);
+    }
+    return {};
+  }
+
+  /// Crease-aware corner normals for a shaded material, shared by the objects that use
+  /// the same shape with the same crease angle.
+  std::shared_ptr<const ShadingNormals> shading_normals_for(const std::shared_ptr<const MeshBvh>& shape,
+                                                            const HapticMaterial& material) {
+    const ShadingKey key{shape.get(), std::bit_cast<std::uint64_t>(material.force_shading_crease_rad + 0.0)};
+    auto& normals = shading_normals_[key];
+    if (!normals) {
+      normals = std::make_shared<const ShadingNormals>(
+          compute_shading_normals(shape->mesh(), material.force_shading_crease_rad));
+    }
+    return normals;
   }
 
   /// Reports progress for `object` (no-op without a callback).
@@ -260,6 +287,8 @@ class Compiler {
   std::map<std::string, SharedShape> primitives_;
   std::map<std::string, std::shared_ptr<const HapticTexture>> named_textures_;  ///< by material name
   SharedShape invalid_;
+  using ShadingKey = std::pair<const MeshBvh*, std::uint64_t>;  // shape, crease angle's bits
+  std::map<ShadingKey, std::shared_ptr<const ShadingNormals>> shading_normals_;
   std::uint64_t loaded_triangles_ = 0;  ///< over distinct shapes, for max_triangles
 };
 

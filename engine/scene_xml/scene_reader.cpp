@@ -390,6 +390,11 @@ class SceneReader {
                             scene_xml::format_g(m.static_friction), ") on <material>"));
     }
     m.force_shading = a.boolean("force_shading", Presence::Optional).value_or(m.force_shading);
+    const auto crease_deg = a.number("shading_crease_deg", Presence::Optional, Bound::NonNegative);
+    if (crease_deg) {
+      report_above(a, ctx, "shading_crease_deg", *crease_deg, kMaxCreaseAngle_deg, "the widest angle two normals make");
+      m.force_shading_crease_rad = std::min(*crease_deg, kMaxCreaseAngle_deg) * std::numbers::pi / 180.0;
+    }
     report_above(a, ctx, "damping_Ns_per_m", m.damping_Ns_per_m, kMaxDamping_Ns_per_m, "MHD's bound");
     report_above(a, ctx, "static_friction", m.static_friction, kMaxFriction, "MHD's bound");
     report_above(a, ctx, "dynamic_friction", m.dynamic_friction, kMaxFriction, "MHD's bound");
@@ -418,7 +423,7 @@ class SceneReader {
   void read_named_material(const tinyxml2::XMLElement& e, const FileContext& ctx) {
     AttributeParser a(e, ctx.sink,
                       {"name", "stiffness_N_per_m", "damping_Ns_per_m", "static_friction",
-                       "dynamic_friction", "force_shading"});
+                       "dynamic_friction", "force_shading", "shading_crease_deg"});
     const auto name = a.text("name", Presence::Required, Emptiness::Forbidden);
     HapticMaterial m = read_material_properties(a, ctx);
     read_material_children(e, ctx, m);
@@ -488,7 +493,7 @@ class SceneReader {
         if (!first_of(inline_material, child)) return;
         AttributeParser ma(child, ctx.sink,
                            {"name", "stiffness_N_per_m", "damping_Ns_per_m", "static_friction",
-                            "dynamic_friction", "force_shading"});
+                            "dynamic_friction", "force_shading", "shading_crease_deg"});
         if (ma.has("name")) {
           ctx.sink.error(ma.line_of("name"),
                          "an inline <material> takes no name (define named materials in <scene>)");

@@ -68,5 +68,28 @@ TEST(CollisionWorld, ShadedNormalBlendsVertexNormals) {
   EXPECT_NEAR(world.shaded_normal_W({0, 0}, Eigen::Vector3d(0.5, 0, 0)).norm(), 1.0, 1e-12);
 }
 
+TEST(CollisionWorld, ShadingNormalsOfAnObjectOverrideItsVertexNormalsInItsPose) {
+  auto mesh = std::make_shared<TriangleMesh>();
+  mesh->vertices_m = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  mesh->triangles = {{0, 1, 2}};
+  compute_vertex_normals(*mesh);  // all +z
+  CollisionWorld world;
+  // Turned a quarter round x: the object's +z is the world's -y.
+  const int id = world.add_object(std::make_shared<MeshBvh>(mesh),
+                                  pose_from_xyz_rpy(Eigen::Vector3d(0, 0, 2), Eigen::Vector3d(std::numbers::pi / 2, 0, 0)));
+  EXPECT_EQ(world.shading_normals(id), nullptr);
+  auto normals = std::make_shared<ShadingNormals>();
+  normals->corner_normals_O = {{Eigen::Vector3f(0, 0, 1), Eigen::Vector3f(1, 0, 1).normalized(), Eigen::Vector3f(0, 0, 1)}};
+  world.set_shading_normals(id, normals);
+  EXPECT_EQ(world.shading_normals(id), normals.get());
+  const Eigen::Vector3d vertex1_W = world.pose(id) * Eigen::Vector3d(1, 0, 0);
+  EXPECT_TRUE(world.shaded_normal_W({id, 0}, vertex1_W).isApprox(Eigen::Vector3d(1, -1, 0).normalized(), 1e-7));
+  world.set_shading_normals(id, nullptr);
+  EXPECT_TRUE(world.shaded_normal_W({id, 0}, vertex1_W).isApprox(Eigen::Vector3d(0, -1, 0), 1e-12));
+  // One entry per triangle, or the per-tick lookups would read past the end.
+  auto too_few = std::make_shared<ShadingNormals>();
+  EXPECT_THROW(world.set_shading_normals(id, too_few), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace mhd

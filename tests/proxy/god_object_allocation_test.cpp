@@ -4,6 +4,7 @@
 #include "proxy/god_object.h"
 
 #include "geometry/primitive_mesh.h"
+#include "geometry/shading_normals.h"
 
 #include "support/allocation_counter.h"
 
@@ -64,6 +65,8 @@ TEST(GodObjectAllocation, StepProxyAllocatesNothing) {
   compute_vertex_normals(sphere);
   CollisionWorld world;
   world.add_object(std::make_shared<MeshBvh>(std::make_shared<TriangleMesh>(std::move(sphere))), Pose::Identity());
+  // Force shading's corner normals, as the scene compiler sets them.
+  world.set_shading_normals(0, std::make_shared<const ShadingNormals>(compute_shading_normals(world.shape(0).mesh(), 1.0)));
   HapticMaterial mat;
   mat.static_friction = 0.4;
   mat.dynamic_friction = 0.3;

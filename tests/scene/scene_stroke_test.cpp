@@ -50,6 +50,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, FastStrokes,
                          ::testing::Values(StrokeCase{"scenes/dolphin.xml", 1000}, StrokeCase{"scenes/bunny.xml", 1000},
                                            StrokeCase{"scenes/thin_shell.xml", 1000},
                                            StrokeCase{"scenes/cube_wall.xml", 600},
+                                           StrokeCase{"scenes/shaded_sphere.xml", 600},
                                            StrokeCase{"tests/data/scenes/valid/corner_room.xml", 600}),
                          [](const ::testing::TestParamInfo<StrokeCase>& param_info) {
                            return std::filesystem::path(param_info.param.scene).stem().string();

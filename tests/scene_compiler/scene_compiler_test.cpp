@@ -209,6 +209,46 @@ TEST_F(SceneCompilerTest, InvalidPrimitivesAndPosesAreDiagnosed) {
   EXPECT_NE(r.diagnostics[5].message.find("pose"), std::string::npos);
 }
 
+TEST_F(SceneCompilerTest, ShadedObjectsGetCornerNormalsWithTheirMaterialsCreaseAngle) {
+  SceneDescription d;
+  d.objects.push_back(make_object("plain", BoxSource{Eigen::Vector3d(0.1, 0.1, 0.1)}, 1));
+  d.objects.push_back(make_object("sharp", BoxSource{Eigen::Vector3d(0.1, 0.1, 0.1)}, 2));
+  d.objects.push_back(make_object("sharp_too", BoxSource{Eigen::Vector3d(0.1, 0.1, 0.1)}, 3));
+  d.objects.push_back(make_object("round", BoxSource{Eigen::Vector3d(0.1, 0.1, 0.1)}, 4));
+  for (std::size_t i = 1; i < 4; ++i) d.objects[i].material.force_shading = true;
+  d.objects[3].material.force_shading_crease_rad = 2.0;  // above the box's right angles
+  const CompileResult r = compile_scene(d, options_);
+  ASSERT_TRUE(r.ok());
+  const CollisionWorld& world = r.scene->world;
+  EXPECT_EQ(world.shading_normals(0), nullptr);  // unshaded: nothing computed
+  ASSERT_NE(world.shading_normals(1), nullptr);
+  ASSERT_NE(world.shading_normals(3), nullptr);
+  EXPECT_EQ(world.shading_normals(1), world.shading_normals(2));  // same shape, same crease: shared
+  EXPECT_DOUBLE_EQ(world.shading_normals(1)->crease_angle_rad, r.scene->materials[1].force_shading_crease_rad);
+  EXPECT_DOUBLE_EQ(world.shading_normals(3)->crease_angle_rad, 2.0);
+  // At a box corner the sharp box keeps the face normal, the round one blends three faces.
+  const TriangleRef face{1, 0};
+  const Eigen::Vector3d at_corner = world.triangle_W(face)[0];
+  EXPECT_TRUE(world.shaded_normal_W(face, at_corner).isApprox(world.face_normal_W(face), 1e-6));
+  const TriangleRef round_face{3, 0};
+  EXPECT_NEAR(std::abs(world.shaded_normal_W(round_face, at_corner).dot(world.face_normal_W(round_face))),
+              1.0 / std::sqrt(3.0), 1e-6);
+}
+
+TEST_F(SceneCompilerTest, AShadingCreaseAngleOutsideZeroToPiIsDiagnosed) {
+  SceneDescription d;
+  d.objects.push_back(make_object("ball", SphereSource{0.1, 1}, 7));
+  d.objects[0].material.force_shading = true;
+  d.objects[0].material.force_shading_crease_rad = std::numeric_limits<double>::quiet_NaN();
+  d.objects.push_back(make_object("cube", BoxSource{Eigen::Vector3d(1, 1, 1)}, 8));
+  d.objects[1].material.force_shading_crease_rad = -0.1;
+  const CompileResult r = compile_scene(d, options_);
+  ASSERT_EQ(r.diagnostics.size(), 2u);
+  EXPECT_EQ(r.diagnostics[0].where.line, 7);
+  EXPECT_EQ(r.diagnostics[0].message, "object 'ball': force shading crease angle must be within [0, pi] rad (got nan rad)");
+  EXPECT_EQ(r.diagnostics[1].where.line, 8);
+}
+
 TEST_F(SceneCompilerTest, EmptySceneCompiles) {
   SceneDescription d;
   d.name = "empty";

@@ -20,7 +20,7 @@ elseif(MODE STREQUAL "malformed")
                         negative_stiffness zero_scale duplicate_names trailing_junk wrong_arity
                         two_shapes missing_version unknown_plugin_kind
                         slow_haptic_rate tiny_haptic_rate absurd_stiffness absurd_material
-                        bad_texture)
+                        bad_texture absurd_crease_angle)
     list(APPEND files "${SOURCE_DIR}/tests/data/scenes/malformed/${name}.xml")
   endforeach()
 else()

@@ -162,7 +162,8 @@ TEST_F(SceneXmlMalformed, EveryMalformedFileIsCovered) {
   // A new file under malformed/ needs a test above; this list keeps the two in step.
   // (absurd_*, far_position, slow_/tiny_haptic_rate, stiffness_over_rate: plausible_settings_test.cpp)
   const std::vector<std::string> covered = {
-      "absurd_material.xml",    "absurd_scale.xml",        "absurd_stiffness.xml",     "bad_texture.xml",
+      "absurd_crease_angle.xml", "absurd_material.xml",   "absurd_scale.xml",        "absurd_stiffness.xml",
+      "bad_texture.xml",
       "duplicate_names.xml",    "duplicate_names_part.xml", "dynamic_friction.xml",
       "far_position.xml",       "frame_cycle.xml",         "include_cycle_a.xml",
       "include_cycle_b.xml",    "malformed_xml.xml",       "missing_mesh.xml",

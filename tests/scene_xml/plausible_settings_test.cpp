@@ -83,6 +83,13 @@ TEST_F(PlausibleSettings, ForceLimitDampingAndFrictionBeyondTheirBoundsAreRefuse
                       "attribute 'dynamic_friction' on <material> must not exceed 2 (MHD's bound), got 3")}));
 }
 
+TEST_F(PlausibleSettings, AShadingCreaseAngleBeyondHundredEightyDegreesIsRefused) {
+  EXPECT_EQ(errors_of("absurd_crease_angle.xml"),
+            (Lines{at("absurd_crease_angle.xml", 4,
+                      "attribute 'shading_crease_deg' on <material> must not exceed 180 (the widest angle two normals "
+                      "make), got 270")}));
+}
+
 TEST_F(PlausibleSettings, PositionsFartherThanAKilometreAreRefused) {
   EXPECT_EQ(errors_of("far_position.xml"),
             (Lines{at("far_position.xml", 4,

@@ -368,6 +368,34 @@ TEST_F(SceneXmlReader, StringAttributeValueErrors) {
                    at(10, "attribute 'quaternion_wxyz' on <pose> must not be all zeros")}));
 }
 
+TEST_F(SceneXmlReader, ShadingCreaseAngleIsReadInDegreesAndDefaultsToSixty) {
+  const SceneReadResult r = read_scene_string(R"(<scene version="1">
+  <material name="m" stiffness_N_per_m="1" force_shading="true" shading_crease_deg="45"/>
+  <object name="a" material="m"><sphere radius="1"/></object>
+  <object name="b"><material stiffness_N_per_m="1" force_shading="true"/><sphere radius="1"/></object>
+  <object name="c"><material stiffness_N_per_m="1" shading_crease_deg=" 180 "/><sphere radius="1"/></object>
+</scene>)", "x.xml");
+  ASSERT_TRUE(r.ok()) << to_strings(r.diagnostics).front();
+  const double deg = 3.14159265358979323846 / 180.0;
+  EXPECT_DOUBLE_EQ(r.scene->objects[0].material.force_shading_crease_rad, 45 * deg);
+  EXPECT_DOUBLE_EQ(r.scene->objects[1].material.force_shading_crease_rad, 60 * deg);
+  EXPECT_DOUBLE_EQ(r.scene->objects[2].material.force_shading_crease_rad, 180 * deg);
+}
+
+TEST_F(SceneXmlReader, ShadingCreaseAngleOutsideZeroToHundredEightyDegreesIsRefused) {
+  EXPECT_EQ(errors_of(R"(<scene version="1">
+  <material name="a" stiffness_N_per_m="1" force_shading="true" shading_crease_deg="-1"/>
+  <material name="b" stiffness_N_per_m="1" force_shading="true" shading_crease_deg="181"/>
+  <material name="c" stiffness_N_per_m="1" force_shading="true" shading_crease_deg="nan"/>
+  <object name="d"><material stiffness_N_per_m="1" shading_crease_deg="sixty"/><sphere radius="1"/></object>
+</scene>)"),
+            (Lines{at(2, "attribute 'shading_crease_deg' on <material> must be >= 0, got -1"),
+                   at(3, "attribute 'shading_crease_deg' on <material> must not exceed 180 (the widest angle two "
+                            "normals make), got 181"),
+                   at(4, "non-finite number 'nan' for attribute 'shading_crease_deg' on <material>"),
+                   at(5, "invalid number 'sixty' for attribute 'shading_crease_deg' on <material>")}));
+}
+
 TEST_F(SceneXmlReader, StringIncludeRigAndPluginErrors) {
   EXPECT_EQ(errors_of(R"(<scene version="1">
   <include file="nope.xml"/>
