@@ -67,8 +67,8 @@ class CollisionWorld {
   /// With `work`, counts the triangles tested there and stops at its limit (see SweepWork).
   /// With `near`, takes the triangles to test from that list where it holds them, and
   /// gathers it round a short sweep's start where it does not (SweepCandidates): the
-  /// answer and the triangles tested are the same as without it. `near` must be reset()
-  /// before it is used with another world, or after this world's objects change.
+  /// answer and the triangles tested are the same as without it. A list gathered in
+  /// another world (another geometry_id()) is forgotten first.
   /// Precondition: skin_m > 0, a_W and b_W finite.
   [[nodiscard]] std::optional<SweepHit> sweep(const Eigen::Vector3d& a_W, const Eigen::Vector3d& b_W,
                                               double skin_m, std::span<const TriangleRef> ignore = {},
