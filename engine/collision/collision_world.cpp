@@ -3,6 +3,7 @@
 #include "collision/segment_triangle.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -23,6 +24,12 @@ constexpr double kInflatePerSkin = 1e-2;
 // the surface (hundreds of triangles on a 200k scan, 527 tests at the bench's p99.9 tick,
 // 71 at 1 mm).
 constexpr double kFirstPiece_m = 0.001;
+// A sweep piece no larger than this (a first piece and its margin, or a short move) gathers
+// the candidate list when it is not there: the box round the piece's start reaching this
+// far each way, so that later first pieces from about the same place fit in it. Larger
+// pieces walk the BVH (their boxes would hold too many triangles for a list).
+constexpr double kMaxGatheringPiece_m = 2.0 * kFirstPiece_m;
+constexpr double kGatherReach_m = 1.25 * kFirstPiece_m;
 
 bool is_ignored(std::span<const TriangleRef> ignore, int object, std::uint32_t triangle) {
   return std::any_of(ignore.begin(), ignore.end(),
@@ -33,6 +40,8 @@ bool is_ignored(std::span<const TriangleRef> ignore, int object, std::uint32_t t
 
 int CollisionWorld::add_object(std::shared_ptr<const MeshBvh> shape, const Pose& X_WO) {
   objects_.push_back(Object{std::move(shape), X_WO, X_WO.inverse(Eigen::Isometry), nullptr});
+  static std::atomic<std::uint64_t> last_id{0};
+  geometry_id_ = ++last_id;
   return static_cast<int>(objects_.size()) - 1;
 }
 
@@ -40,11 +49,15 @@ void CollisionWorld::set_pose(int object, const Pose& X_WO) {
   auto& o = objects_.at(static_cast<std::size_t>(object));
   o.X_WO = X_WO;
   o.X_OW = X_WO.inverse(Eigen::Isometry);
+  // A moved object is another geometry: candidate lists gathered before are not used.
+  static std::atomic<std::uint64_t> last_moved{0};
+  geometry_id_ = (std::uint64_t{1} << 63) | ++last_moved;
 }
 
 std::optional<SweepHit> CollisionWorld::sweep(const Eigen::Vector3d& a_W, const Eigen::Vector3d& b_W,
                                               double skin_m, std::span<const TriangleRef> ignore,
-                                              SweepWork* work) const {
+                                              SweepWork* work, SweepCandidates* near) const {
+  if (near != nullptr) near->bind(geometry_id_);
   // One piece of the segment, swept against every object.
   auto sweep_piece = [&](const Eigen::Vector3d& piece_a_W, const Eigen::Vector3d& piece_b_W) -> std::optional<SweepHit> {
 
@@ -62,9 +75,10 @@ std::optional<SweepHit> CollisionWorld::sweep(const Eigen::Vector3d& a_W, const 
     const Eigen::AlignedBox3d box_O(a_O.cwiseMin(b_O) - margin, a_O.cwiseMax(b_O) + margin);
     if (!box_O.intersects(o.shape->bounds())) continue;
 
-    const TriangleMesh& mesh = o.shape->mesh();
+    const MeshBvh& shape = *o.shape;
+    const TriangleMesh& mesh = shape.mesh();
     const int object = static_cast<int>(oi);
-    o.shape->for_each_triangle_overlapping(box_O, [&](std::uint32_t ti) {
+    auto test = [&](std::uint32_t ti) {
       if (!ignore.empty() && is_ignored(ignore, object, ti)) return;
       if (work != nullptr) {
         if (work->triangle_tests >= work->max_triangle_tests) {
@@ -94,7 +108,23 @@ std::optional<SweepHit> CollisionWorld::sweep(const Eigen::Vector3d& a_W, const 
       h.normal_W = o.X_WO.linear() * hit->normal;
       h.plane_offset_m = h.normal_W.dot(o.X_WO * mesh.vertices_m[t[0]]);
       best = h;
-    });
+    };
+    // The same triangles either way: from the list where its box holds the piece's, else
+    // from the tree.
+    const MeshBvh::QuantizedBox q_O = shape.quantize(box_O);
+    const SweepCandidates::Region* region = near != nullptr ? near->find(object, q_O) : nullptr;
+    if (region == nullptr && near != nullptr && near->should_gather() && box_O.sizes().maxCoeff() <= kMaxGatheringPiece_m) {
+      Eigen::AlignedBox3d gather_O = box_O;
+      gather_O.extend(a_O - Eigen::Vector3d::Constant(kGatherReach_m));
+      gather_O.extend(a_O + Eigen::Vector3d::Constant(kGatherReach_m));
+      region = near->gather(shape, object, shape.quantize(gather_O));
+    }
+    if (region != nullptr) {
+      near->for_each_overlapping(*region, q_O, test);
+    } else {
+      if (near != nullptr) near->count_walk();
+      shape.for_each_leaf_overlapping(q_O, [&](std::uint32_t ti, const btQuantizedBvhNode&) { test(ti); });
+    }
   }
   return best;
   };

@@ -4,6 +4,7 @@
 // All queries are conservative: they may report a contact a hair early, never miss one.
 
 #include "collision/mesh_bvh.h"
+#include "collision/sweep_candidates.h"
 #include "geometry/pose.h"
 #include "geometry/shading_normals.h"
 
@@ -53,6 +54,10 @@ class CollisionWorld {
   void set_pose(int object, const Pose& X_WO);
 
   [[nodiscard]] int object_count() const { return static_cast<int>(objects_.size()); }
+  /// Names this world's shapes: unique to the process, new with every add_object(), kept
+  /// by copies (which share the shapes) and by set_pose() (which moves no triangle of a
+  /// shape's own frame). A SweepCandidates list gathered here is valid while it is equal.
+  [[nodiscard]] std::uint64_t geometry_id() const { return geometry_id_; }
   [[nodiscard]] const Pose& pose(int object) const { return objects_[static_cast<std::size_t>(object)].X_WO; }
   [[nodiscard]] const MeshBvh& shape(int object) const { return *objects_[static_cast<std::size_t>(object)].shape; }
 
@@ -61,10 +66,14 @@ class CollisionWorld {
   /// the triangle (inflated by a tolerance) while moving towards it. A segment that
   /// crosses any triangle always yields a hit. Triangles in `ignore` are skipped.
   /// With `work`, counts the triangles tested there and stops at its limit (see SweepWork).
+  /// With `near`, takes the triangles to test from that list where it holds them, and
+  /// gathers it round a short sweep's start where it does not (SweepCandidates): the
+  /// answer and the triangles tested are the same as without it. A list gathered in
+  /// another world (another geometry_id()) is forgotten first.
   /// Precondition: skin_m > 0, a_W and b_W finite.
   [[nodiscard]] std::optional<SweepHit> sweep(const Eigen::Vector3d& a_W, const Eigen::Vector3d& b_W,
                                               double skin_m, std::span<const TriangleRef> ignore = {},
-                                              SweepWork* work = nullptr) const;
+                                              SweepWork* work = nullptr, SweepCandidates* near = nullptr) const;
 
   /// sweep() against the one triangle `t` (nothing else is tested, the segment is not cut
   /// into pieces): whether, and where, the segment a_W -> b_W meets it.
@@ -101,6 +110,7 @@ class CollisionWorld {
     std::shared_ptr<const ShadingNormals> shading;
   };
   std::vector<Object> objects_;
+  std::uint64_t geometry_id_ = 0;
 };
 
 }  // namespace mhd

@@ -45,7 +45,15 @@ MeshBvh::MeshBvh(std::shared_ptr<const TriangleMesh> mesh) : mesh_(std::move(mes
   make_interface();
   shape_ = std::make_unique<btBvhTriangleMeshShape>(interface_.get(), /*quantized=*/true,
                                                      /*buildBvh=*/true);
-  tree_ = shape_->getOptimizedBvh();
+  adopt_tree(shape_->getOptimizedBvh());
+}
+
+void MeshBvh::adopt_tree(btQuantizedBvh* tree) {
+  tree_ = tree;
+  nodes_ = &tree->getQuantizedNodeArray()[0];
+  // The root spans the whole tree: its escape index, or itself when it is a leaf (one
+  // triangle). The array itself may be longer than the tree (Bullet sizes it 2n).
+  node_count_ = nodes_->isLeafNode() ? 1 : nodes_->getEscapeIndex();
 }
 
 std::unique_ptr<MeshBvh> MeshBvh::from_serialized(std::shared_ptr<const TriangleMesh> mesh,
@@ -78,7 +86,8 @@ std::unique_ptr<MeshBvh> MeshBvh::from_serialized(std::shared_ptr<const Triangle
       return nullptr;
     }
   }
-  out->tree_ = tree;
+  if (leaves.size() == 0 || (!leaves[0].isLeafNode() && leaves[0].getEscapeIndex() > leaves.size())) return nullptr;
+  out->adopt_tree(tree);
   out->shape_ = std::make_unique<btBvhTriangleMeshShape>(out->interface_.get(), true, /*buildBvh=*/false);
   // Same scaling as the interface, or Bullet resets it and re-walks the tree.
   out->shape_->setOptimizedBvh(adopted, btVector3(out->bvh_scale_, out->bvh_scale_, out->bvh_scale_));
@@ -102,8 +111,12 @@ std::vector<std::byte> MeshBvh::serialize_bvh() const {
   return {buffer.get(), buffer.get() + size};
 }
 
-void MeshBvh::query(const Eigen::AlignedBox3d& box_O, btNodeOverlapCallback& callback) const {
-  tree_->reportAabbOverlappingNodex(&callback, to_bt(box_O.min() * bvh_scale_), to_bt(box_O.max() * bvh_scale_));
+MeshBvh::QuantizedBox MeshBvh::quantize(const Eigen::AlignedBox3d& box_O) const {
+  // What reportAabbOverlappingNodex does with its query box before it walks the tree.
+  QuantizedBox q;
+  tree_->quantizeWithClamp(q.min.data(), to_bt(box_O.min() * bvh_scale_), 0);
+  tree_->quantizeWithClamp(q.max.data(), to_bt(box_O.max() * bvh_scale_), 1);
+  return q;
 }
 
 }  // namespace mhd

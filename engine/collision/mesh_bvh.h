@@ -7,9 +7,12 @@
 
 #include <btBulletCollisionCommon.h>
 
+#include <array>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 namespace mhd {
@@ -36,24 +39,64 @@ class MeshBvh {
   [[nodiscard]] const Eigen::AlignedBox3d& bounds() const { return bounds_; }
   [[nodiscard]] const btBvhTriangleMeshShape& shape() const { return *shape_; }
 
+  /// A box on the tree's grid: Bullet's 16-bit quantization of the mesh's bounds.
+  struct QuantizedBox {
+    std::array<std::uint16_t, 3> min{};
+    std::array<std::uint16_t, 3> max{};
+  };
+
+  /// box_O on the tree's grid, rounded outwards exactly as Bullet rounds its own queries.
+  [[nodiscard]] QuantizedBox quantize(const Eigen::AlignedBox3d& box_O) const;
+
+  /// True when every point of `inner` lies in `outer` (then every leaf that overlaps
+  /// `inner` overlaps `outer`).
+  [[nodiscard]] static bool contains(const QuantizedBox& outer, const QuantizedBox& inner) {
+    for (std::size_t i = 0; i < 3; ++i) {
+      if (inner.min[i] < outer.min[i] || inner.max[i] > outer.max[i]) return false;
+    }
+    return true;
+  }
+
+  /// Walks the tree and calls f(triangle_index, leaf) for every leaf whose quantized box
+  /// overlaps `box`: exactly the triangles Bullet's own query (reportAabbOverlappingNodex)
+  /// reports for it, without its virtual call per triangle. If f returns false the walk
+  /// stops there (f may also return void).
+  template <class F>
+  void for_each_leaf_overlapping(const QuantizedBox& box, F&& f) const {
+    const btQuantizedBvhNode* node = nodes_;
+    const btQuantizedBvhNode* const end = nodes_ + node_count_;
+    while (node < end) {
+      // Bullet's overlap test (testQuantizedAabbAgainstQuantizedAabb): closed intervals.
+      const bool overlap = box.min[0] <= node->m_quantizedAabbMax[0] && box.max[0] >= node->m_quantizedAabbMin[0] &&
+                           box.min[1] <= node->m_quantizedAabbMax[1] && box.max[1] >= node->m_quantizedAabbMin[1] &&
+                           box.min[2] <= node->m_quantizedAabbMax[2] && box.max[2] >= node->m_quantizedAabbMin[2];
+      if (node->isLeafNode()) {
+        if (overlap) {
+          const auto triangle = static_cast<std::uint32_t>(node->getTriangleIndex());
+          if constexpr (std::is_same_v<decltype(f(triangle, *node)), bool>) {
+            if (!f(triangle, *node)) return;
+          } else {
+            f(triangle, *node);
+          }
+        }
+        ++node;
+      } else {
+        node += overlap ? 1 : node->getEscapeIndex();
+      }
+    }
+  }
+
   /// Calls f(triangle_index) for every triangle whose (conservative) BVH box
   /// overlaps box_O. Never misses a triangle that overlaps the box; may report extra.
   template <class F>
   void for_each_triangle_overlapping(const Eigen::AlignedBox3d& box_O, F&& f) const {
-    struct Callback final : btNodeOverlapCallback {
-      F& fn;
-      explicit Callback(F& g) : fn(g) {}
-      void processNode(int /*subPart*/, int triangle_index) override {
-        fn(static_cast<std::uint32_t>(triangle_index));
-      }
-    } callback(f);
-    query(box_O, callback);
+    for_each_leaf_overlapping(quantize(box_O), [&](std::uint32_t triangle, const btQuantizedBvhNode&) { f(triangle); });
   }
 
  private:
   MeshBvh() = default;
   void make_interface();
-  void query(const Eigen::AlignedBox3d& box_O, btNodeOverlapCallback& callback) const;
+  void adopt_tree(btQuantizedBvh* tree);
 
   std::shared_ptr<const TriangleMesh> mesh_;
   Eigen::AlignedBox3d bounds_;
@@ -67,6 +110,9 @@ class MeshBvh {
   // (Bullet's deSerializeInPlace builds that), so it is never used as btOptimizedBvh here.
   const btQuantizedBvh* tree_ = nullptr;
   btQuantizedBvh* adopted_tree_ = nullptr;
+  // The tree's nodes in Bullet's stackless order, and how many the root's subtree spans.
+  const btQuantizedBvhNode* nodes_ = nullptr;
+  std::ptrdiff_t node_count_ = 0;
 };
 
 }  // namespace mhd

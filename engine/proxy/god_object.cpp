@@ -129,6 +129,7 @@ ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMateri
   const int max_sweeps = std::clamp(settings.max_sweeps_per_tick, 1, kMaxProxySweeps);
   const int max_triangle_tests = std::max(settings.max_triangle_tests_per_tick, 1);
   TickWork work;
+  work.near = &state.near;
   work.max_sweeps = max_sweeps - std::clamp(max_sweeps / 16, max_sweeps >= 2 ? 1 : 0, 4);
   work.sweep.max_triangle_tests = max_triangle_tests - max_triangle_tests / 8;
   Motion motion;

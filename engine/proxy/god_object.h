@@ -52,6 +52,10 @@ struct ProxyState {
   /// path_W[path_points - 1] where it ended. Each leg is a swept, crossing-free move.
   std::array<Eigen::Vector3d, kMaxProxyPath> path_W{};
   int path_points = 0;
+  /// The triangles near the proxy, kept from tick to tick so that its sweeps need not walk
+  /// the BVH each time (a cache: the sweeps test the same triangles either way). It names
+  /// the world it was gathered from and starts again in another one.
+  SweepCandidates near;
 };
 
 struct ProxyOutput {

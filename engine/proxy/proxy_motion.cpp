@@ -36,7 +36,7 @@ bool budgeted_sweep(const CollisionWorld& world, TickWork& work, const Eigen::Ve
     return false;
   }
   ++work.sweeps;
-  hit = world.sweep(a, b, skin_m, ignore, &work.sweep);
+  hit = world.sweep(a, b, skin_m, ignore, &work.sweep, work.near);
   if (work.sweep.exhausted) {
     work.exhausted = true;
     return false;

@@ -27,6 +27,8 @@ struct TickWork {
   int max_sweeps = kMaxProxySweeps;
   SweepWork sweep;
   bool exhausted = false;  // the budget (or the constraint store) ran out
+  // The triangles near the proxy (ProxyState::near), or null.
+  SweepCandidates* near = nullptr;
 };
 
 // One motion's state: where the proxy is and the constraints it has met.

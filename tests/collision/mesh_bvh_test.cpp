@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 namespace mhd {
@@ -62,6 +63,67 @@ TEST(MeshBvh, SerializedTreeAnswersLikeTheBuiltOne) {
   const auto again = MeshBvh::from_serialized(mesh, loaded->serialize_bvh());
   ASSERT_NE(again, nullptr);
   EXPECT_EQ(query(built, box), query(*again, box));
+}
+
+// Bullet's own query, through its virtual callback: what the tree's walk must report.
+std::vector<std::uint32_t> bullet_query(const MeshBvh& bvh, const Eigen::AlignedBox3d& box, double scale) {
+  struct Collect final : btNodeOverlapCallback {
+    std::vector<std::uint32_t> found;
+    void processNode(int /*subPart*/, int triangle) override { found.push_back(static_cast<std::uint32_t>(triangle)); }
+  } collect;
+  const auto* tree = const_cast<btBvhTriangleMeshShape&>(bvh.shape()).getOptimizedBvh();
+  const Eigen::Vector3d lo = box.min() * scale, hi = box.max() * scale;
+  tree->reportAabbOverlappingNodex(&collect, btVector3(lo.x(), lo.y(), lo.z()), btVector3(hi.x(), hi.y(), hi.z()));
+  std::sort(collect.found.begin(), collect.found.end());
+  return collect.found;
+}
+
+TEST(MeshBvh, OwnWalkReportsExactlyWhatBulletsQueryReports) {
+  // A wavy grid, so the tree's boxes are not all flat, and boxes from a point to most of
+  // the mesh, partly outside it.
+  auto mesh = grid_mesh(60);
+  for (auto& v : mesh->vertices_m) v.z() = 0.05 * std::sin(9.0 * v.x()) * std::cos(7.0 * v.y());
+  const MeshBvh built(mesh);
+  const auto loaded = MeshBvh::from_serialized(mesh, built.serialize_bvh());
+  ASSERT_NE(loaded, nullptr);
+  // Bullet sees the mesh scaled so its largest extent is 1e4 units (mesh_bvh.cpp).
+  const double scale = 1e4 / mhd::mesh_bounds(*mesh).sizes().maxCoeff();
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-0.2, 1.2);
+  std::uniform_real_distribution<double> size(0.0, 1.0);
+  int non_empty = 0;
+  for (int k = 0; k < 500; ++k) {
+    const Eigen::Vector3d c(u(rng), u(rng), 0.1 * u(rng) - 0.05);
+    const Eigen::Vector3d half = Eigen::Vector3d::Constant(std::pow(size(rng), 4.0) * 0.5);
+    const Eigen::AlignedBox3d box(c - half, c + half);
+    const auto expected = bullet_query(built, box, scale);
+    EXPECT_EQ(query(built, box), expected) << "box " << k;
+    EXPECT_EQ(query(*loaded, box), expected) << "box " << k;
+    non_empty += expected.empty() ? 0 : 1;
+  }
+  EXPECT_GT(non_empty, 100);
+}
+
+TEST(MeshBvh, AWalkStopsWhenAskedTo) {
+  const auto mesh = grid_mesh(20);
+  const MeshBvh bvh(mesh);
+  int calls = 0;
+  bvh.for_each_leaf_overlapping(bvh.quantize(mhd::mesh_bounds(*mesh)), [&](std::uint32_t, const btQuantizedBvhNode&) {
+    return ++calls < 5;
+  });
+  EXPECT_EQ(calls, 5);
+}
+
+TEST(MeshBvh, ABoxInsideAnotherReportsNoTriangleTheOtherMisses) {
+  const auto mesh = grid_mesh(40);
+  const MeshBvh bvh(mesh);
+  const Eigen::AlignedBox3d outer(Eigen::Vector3d(0.3, 0.3, -0.01), Eigen::Vector3d(0.4, 0.45, 0.01));
+  const Eigen::AlignedBox3d inner(Eigen::Vector3d(0.31, 0.35, -0.001), Eigen::Vector3d(0.33, 0.4, 0.001));
+  const Eigen::AlignedBox3d beside(Eigen::Vector3d(0.39, 0.35, -0.001), Eigen::Vector3d(0.41, 0.4, 0.001));
+  EXPECT_TRUE(MeshBvh::contains(bvh.quantize(outer), bvh.quantize(inner)));
+  EXPECT_FALSE(MeshBvh::contains(bvh.quantize(outer), bvh.quantize(beside)));
+  const auto all = query(bvh, outer);
+  for (std::uint32_t t : query(bvh, inner)) EXPECT_TRUE(std::binary_search(all.begin(), all.end(), t));
 }
 
 TEST(MeshBvh, RejectsATreeOfAnotherMesh) {

@@ -1,0 +1,119 @@
+#include "collision/collision_world.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+namespace mhd {
+namespace {
+
+// A wavy n x n grid over [0, size_m]^2, 2 mm high waves: fine enough that one gather holds
+// tens of triangles (n = 200 over 0.1 m) or overflows the list (n = 600).
+std::shared_ptr<TriangleMesh> wavy_grid(int n, double size_m) {
+  auto mesh = std::make_shared<TriangleMesh>();
+  for (int j = 0; j <= n; ++j) {
+    for (int i = 0; i <= n; ++i) {
+      const double x = size_m * i / n, y = size_m * j / n;
+      mesh->vertices_m.emplace_back(x, y, 0.002 * std::sin(90.0 * x) * std::cos(70.0 * y));
+    }
+  }
+  auto id = [n](int i, int j) { return static_cast<std::uint32_t>(j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      mesh->triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      mesh->triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  }
+  return mesh;
+}
+
+void expect_same(const std::optional<SweepHit>& with_list, const std::optional<SweepHit>& with_tree, int k) {
+  ASSERT_EQ(with_list.has_value(), with_tree.has_value()) << "sweep " << k;
+  if (!with_tree) return;
+  EXPECT_EQ(with_list->where, with_tree->where) << "sweep " << k;
+  EXPECT_EQ(with_list->t_stop, with_tree->t_stop) << "sweep " << k;  // bit for bit: the same tests
+  EXPECT_EQ(with_list->normal_W, with_tree->normal_W) << "sweep " << k;
+  EXPECT_EQ(with_list->plane_offset_m, with_tree->plane_offset_m) << "sweep " << k;
+}
+
+// A proxy-like walk over the surface: short sweeps from points that drift slowly, in and
+// out of the surface, now and then a jump elsewhere or a long sweep, some with triangles
+// ignored. With a candidate list kept from sweep to sweep, every answer and every count of
+// triangles tested must be the tree's own.
+void sweep_like_a_proxy(const CollisionWorld& world, std::uint64_t seed, SweepCandidates& near, int& hits) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const double skin_m = 1e-6;
+  Eigen::Vector3d p(0.05, 0.05, 0.001);
+  for (int k = 0; k < 3000; ++k) {
+    if (u(rng) < 0.01) p = Eigen::Vector3d(0.1 * u(rng), 0.1 * u(rng), 0.004 * u(rng) - 0.002);
+    p += Eigen::Vector3d(u(rng) - 0.5, u(rng) - 0.5, 0.0) * 0.0004;
+    const double reach_m = u(rng) < 0.1 ? 0.02 : 0.0015 * u(rng);
+    const Eigen::Vector3d dir = Eigen::Vector3d(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5).normalized();
+    const Eigen::Vector3d b = p + reach_m * dir;
+    std::vector<TriangleRef> ignore;
+    if (k % 3 == 0) {
+      if (const auto first = world.sweep(p, b, skin_m)) ignore.push_back(first->where);
+    }
+    SweepWork listed, walked;
+    const auto with_list = world.sweep(p, b, skin_m, ignore, &listed, &near);
+    const auto with_tree = world.sweep(p, b, skin_m, ignore, &walked);
+    expect_same(with_list, with_tree, k);
+    EXPECT_EQ(listed.triangle_tests, walked.triangle_tests) << "sweep " << k;
+    hits += with_tree ? 1 : 0;
+  }
+}
+
+TEST(SweepCandidates, SweepsFromTheListAnswerExactlyAsTheTreeDoes) {
+  CollisionWorld world;
+  world.add_object(std::make_shared<MeshBvh>(wavy_grid(200, 0.1)), Pose::Identity());
+  // A second object, turned and shifted so that it crosses the first.
+  world.add_object(std::make_shared<MeshBvh>(wavy_grid(100, 0.1)),
+                   pose_from_xyz_rpy(Eigen::Vector3d(0.0, 0.05, 0.05), Eigen::Vector3d(-1.2, 0.0, 0.0)));
+  SweepCandidates near;
+  int hits = 0;
+  sweep_like_a_proxy(world, 5, near, hits);
+  EXPECT_GT(hits, 200);
+  EXPECT_GT(near.gathers(), 20);  // the list was used, and gathered again as the point moved
+  EXPECT_GT(near.size(), 0);
+}
+
+TEST(SweepCandidates, WhereAGatherWouldOverflowTheSweepsWalkTheTree) {
+  // 720,000 triangles over 0.1 m: a gather round a point holds far more than the list.
+  CollisionWorld world;
+  world.add_object(std::make_shared<MeshBvh>(wavy_grid(600, 0.1)), Pose::Identity());
+  SweepCandidates near;
+  int hits = 0;
+  sweep_like_a_proxy(world, 6, near, hits);
+  EXPECT_GT(hits, 200);
+  EXPECT_GT(near.gathers(), 0);
+  EXPECT_EQ(near.size(), 0);  // no gather fitted
+}
+
+TEST(SweepCandidates, AListGatheredInAnotherWorldIsNotUsed) {
+  // The same surface twice, its triangles numbered in reverse in the second world: same
+  // bounds, same quantization, so only the world's name tells the lists apart.
+  const auto mesh = wavy_grid(200, 0.1);
+  auto reversed = std::make_shared<TriangleMesh>(*mesh);
+  std::reverse(reversed->triangles.begin(), reversed->triangles.end());
+  CollisionWorld first, second;
+  first.add_object(std::make_shared<MeshBvh>(mesh), Pose::Identity());
+  second.add_object(std::make_shared<MeshBvh>(reversed), Pose::Identity());
+  const Eigen::Vector3d a(0.0503, 0.0497, 0.0025), b(0.0503, 0.0497, 0.0012);  // hits in its first piece
+  SweepCandidates near;
+  for (int i = 0; i < 3; ++i) (void)first.sweep(a, b, 1e-6, {}, nullptr, &near);  // gathers
+  ASSERT_GT(near.size(), 0);
+  const auto hit = second.sweep(a, b, 1e-6, {}, nullptr, &near);
+  const auto expected = second.sweep(a, b, 1e-6);
+  ASSERT_TRUE(expected);
+  expect_same(hit, expected, 0);
+  // A copy of a world shares its shapes, and its list.
+  const CollisionWorld copy = second;
+  EXPECT_EQ(copy.geometry_id(), second.geometry_id());
+  EXPECT_NE(first.geometry_id(), second.geometry_id());
+}
+
+}  // namespace
+}  // namespace mhd
