@@ -79,9 +79,11 @@ class SweepCandidates {
     std::array<std::uint8_t, kCapacity> overlaps;
     for (int i = r.begin; i < r.end; ++i) {
       const auto k = static_cast<std::size_t>(i);
-      overlaps[k] = static_cast<std::uint8_t>((q.min[0] <= max_x_[k]) & (q.max[0] >= min_x_[k]) &
-                                              (q.min[1] <= max_y_[k]) & (q.max[1] >= min_y_[k]) &
-                                              (q.min[2] <= max_z_[k]) & (q.max[2] >= min_z_[k]));
+      // Bitwise & on ints, not && on bools: no branch per comparison (clang warns on bools).
+      const int in_x = static_cast<int>(q.min[0] <= max_x_[k]) & static_cast<int>(q.max[0] >= min_x_[k]);
+      const int in_y = static_cast<int>(q.min[1] <= max_y_[k]) & static_cast<int>(q.max[1] >= min_y_[k]);
+      const int in_z = static_cast<int>(q.min[2] <= max_z_[k]) & static_cast<int>(q.max[2] >= min_z_[k]);
+      overlaps[k] = static_cast<std::uint8_t>(in_x & in_y & in_z);
     }
     for (int i = r.begin; i < r.end; ++i) {
       if (overlaps[static_cast<std::size_t>(i)] != 0) f(triangle_[static_cast<std::size_t>(i)]);
