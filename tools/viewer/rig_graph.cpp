@@ -49,8 +49,11 @@ osg::ref_ptr<osg::MatrixTransform> RigGraph::part(osg::Shape* shape, const osg::
   return transform;
 }
 
-RigGraph::RigGraph(std::optional<Rig> rig, double force_scale_m_per_N)
-    : rig_(std::move(rig)), force_scale_m_per_N_(force_scale_m_per_N), root_(make_ref<osg::Switch>()) {
+RigGraph::RigGraph(std::optional<Rig> rig, double force_scale_m_per_N, bool show_device)
+    : rig_(std::move(rig)),
+      force_scale_m_per_N_(force_scale_m_per_N),
+      show_device_(show_device),
+      root_(make_ref<osg::Switch>()) {
   root_->setName("rig");
   root_->getOrCreateStateSet()->setMode(GL_NORMALIZE, osg::StateAttribute::ON);
   const auto r = static_cast<float>(kPointRadius_m);
@@ -120,6 +123,11 @@ void RigGraph::update(const RigState& s) {
   column_->setMatrix(along(X_W_base * Eigen::Vector3d(0.0, kBaseHeight_m, 0.0), p_W_arm_root, 0.03));
   arm_->setMatrix(along(p_W_arm_root, s.p_W_hip_m, 0.008));
   head_->setMatrix(to_osg(s.X_W_head));
+  if (!show_device_) {
+    for (osg::Node* n : {base_.get(), column_.get(), arm_.get(), head_.get(), workspace_.get()}) {
+      if (n != nullptr) root_->setChildValue(n, false);
+    }
+  }
 }
 
 }  // namespace mhd::viewer

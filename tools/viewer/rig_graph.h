@@ -24,7 +24,8 @@ inline constexpr unsigned kHeadNodeMask = 0x2;
 class RigGraph {
  public:
   /// `rig` places the device and its workspace; without it the arm starts on top of the base.
-  RigGraph(std::optional<Rig> rig, double force_scale_m_per_N);
+  /// Without `show_device` only the HIP, the proxy and the force are drawn.
+  RigGraph(std::optional<Rig> rig, double force_scale_m_per_N, bool show_device = true);
 
   [[nodiscard]] osg::Node* root() const { return root_.get(); }
   /// Moves every part to the state; the first call makes the rig visible.
@@ -35,6 +36,7 @@ class RigGraph {
 
   std::optional<Rig> rig_;
   double force_scale_m_per_N_;
+  bool show_device_;
   osg::ref_ptr<osg::Switch> root_;
   osg::ref_ptr<osg::MatrixTransform> hip_, proxy_, force_shaft_, force_head_, base_, arm_, column_, head_, workspace_;
   osg::ref_ptr<osg::ShapeDrawable> proxy_drawable_;

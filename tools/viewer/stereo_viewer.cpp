@@ -2,6 +2,8 @@
 
 #include "scene_xml/scene_reader.h"
 #include "viewer/display_check.h"
+#include "viewer/hud_overlay.h"
+#include "viewer/input_forwarding.h"
 #include "viewer/osg_convert.h"
 #include "viewer/rig_graph.h"
 #include "viewer/scene_graph.h"
@@ -92,6 +94,8 @@ struct StereoViewer::Impl {
   std::vector<osg::ref_ptr<osg::Camera>> cameras;
   std::vector<osg::ref_ptr<CaptureCallback>> captures;
   std::unique_ptr<RigGraph> rig_graph;
+  std::unique_ptr<HudOverlay> hud;
+  std::function<void(const InputEvent&)> input_handler;
   Pose default_head = Pose::Identity();
   std::optional<RigState> last_state;
   std::vector<EyeView> views;
@@ -139,8 +143,12 @@ StereoViewer::OpenResult StereoViewer::open(const ViewerScene& scene, const View
   impl->source = std::move(source);
   impl->default_head = pick_default_head(graph.objects_bounds_W, options);
   if (options.show_grid) graph.root->addChild(floor_grid(3.0, 1.0, 0.25).get());
-  impl->rig_graph = std::make_unique<RigGraph>(scene.rig, options.force_scale_m_per_N);
+  impl->rig_graph = std::make_unique<RigGraph>(scene.rig, options.force_scale_m_per_N, options.show_device);
   if (options.show_rig) graph.root->addChild(impl->rig_graph->root());
+  if (options.overlay_text) {
+    impl->hud = std::make_unique<HudOverlay>(options.eye_width(), options.height);
+    graph.root->addChild(impl->hud->root());
+  }
 
   osg::ref_ptr<osg::GraphicsContext::Traits> traits = make_ref<osg::GraphicsContext::Traits>();
   traits->readDISPLAY();
@@ -178,6 +186,11 @@ StereoViewer::OpenResult StereoViewer::open(const ViewerScene& scene, const View
   // Eyes at the head would look from inside the head model.
   master->setCullMask(options.view_point == ViewPoint::Head ? ~kHeadNodeMask : ~0u);
   if (options.offscreen) viewer.setKeyEventSetsDone(0);
+  // The handler is looked up at each event, so set_input_handler may come after open().
+  Impl* impl_ptr = impl.get();
+  viewer.addEventHandler(new InputForwarder([impl_ptr](const InputEvent& e) {
+    if (impl_ptr->input_handler) impl_ptr->input_handler(e);
+  }));
 
   const GLenum buffer = traits->doubleBuffer ? GL_BACK : GL_FRONT;
   const std::size_t eye_count = options.stereo ? 2 : 1;
@@ -256,6 +269,18 @@ std::string StereoViewer::run(const std::atomic<bool>& stop) {
     if (!frame() || last) break;
   }
   return {};
+}
+
+void StereoViewer::set_input_handler(std::function<void(const InputEvent&)> handler) {
+  impl_->input_handler = std::move(handler);
+}
+
+void StereoViewer::inject(const InputEvent& event) {
+  push_input_event(*impl_->viewer->getEventQueue(), event, impl_->options.width, impl_->options.height);
+}
+
+void StereoViewer::set_overlay_text(const std::string& text) {
+  if (impl_->hud) impl_->hud->set_text(text);
 }
 
 const std::vector<EyeView>& StereoViewer::views() const { return impl_->views; }

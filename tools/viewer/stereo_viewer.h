@@ -12,6 +12,7 @@
 
 #include "kinematics/rig.h"
 #include "scene/scene_description.h"
+#include "viewer/input_event.h"
 #include "viewer/png_image.h"
 #include "viewer/state_source.h"
 #include "viewer/stereo_views.h"
@@ -20,6 +21,7 @@
 #include <atomic>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -66,6 +68,14 @@ class StereoViewer {
   /// Draws until options.frames frames are done (then writes options.screenshot_png when
   /// set), the window is closed or `stop` is set. Empty, or why the screenshot failed.
   [[nodiscard]] std::string run(const std::atomic<bool>& stop);
+
+  /// Mouse and key events of the window (and injected ones) go to `handler` during the
+  /// next frame's event traversal, before the state is drawn.
+  void set_input_handler(std::function<void(const InputEvent&)> handler);
+  /// Queues `event` in the viewer's event queue as if the window had sent it.
+  void inject(const InputEvent& event);
+  /// The text over the image (with options.overlay_text), from the next frame on.
+  void set_overlay_text(const std::string& text);
 
   /// The eye views of the last frame (for tests: where a world point lands in the image).
   [[nodiscard]] const std::vector<EyeView>& views() const;

@@ -26,6 +26,8 @@ struct ViewerOptions {
   ViewPoint view_point = ViewPoint::Head;
   bool show_grid = true;       ///< a 1 m floor grid (10 cm minor lines)
   bool show_rig = true;        ///< HIP, proxy, force, base, arm, head, workspace (when a state is there)
+  bool show_device = true;     ///< base, arm, head and workspace; false: HIP, proxy and force only
+  bool overlay_text = false;   ///< lines of text over the image (StereoViewer::set_overlay_text)
   double force_scale_m_per_N = 0.05;  ///< arrow length per newton
   double near_m = 0.02;
   double far_m = 100.0;
