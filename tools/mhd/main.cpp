@@ -11,6 +11,7 @@
 #include "replay_command.h"
 #include "run_command.h"
 #include "strokes_command.h"
+#include "try_command.h"
 #include "viewer_command.h"
 #ifdef MHD_HAVE_DDS
 #include "tracker_server_command.h"
@@ -53,6 +54,7 @@ int main(int argc, char** argv) {
   add_calibrate_command(app);
   add_replay_command(app);
   add_viewer_command(app);
+  add_try_command(app);
 #ifdef MHD_HAVE_DDS
   add_tracker_server_command(app);
 #endif
