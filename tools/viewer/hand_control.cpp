@@ -53,7 +53,7 @@ void HandControl::apply(const InputEvent& e, const HandCamera& camera) {
       move_in_depth(e.scroll_steps * depth_step_m_, camera);
       break;
     case InputEvent::Kind::Key: {
-      const int k = e.key < 128 ? std::tolower(e.key) : e.key;
+      const int k = e.key >= 0 && e.key < 128 ? std::tolower(e.key) : e.key;
       if (k == 'w' || k == kKeyPageUp) move_in_depth(depth_step_m_, camera);
       if (k == 's' || k == kKeyPageDown) move_in_depth(-depth_step_m_, camera);
       if (k == 'r' || k == kKeyHome) p_W_hip_m_ = p_W_start_m_;
