@@ -10,6 +10,7 @@
 #include "proxy_test_rig.h"
 
 #include "geometry/primitive_mesh.h"
+#include "verification/moving_drive.h"
 #include "verification/surface_crossing_oracle.h"
 
 #include <gtest/gtest.h>
@@ -22,7 +23,6 @@ namespace {
 using V = Eigen::Vector3d;
 constexpr double kDt = test::kProxyTestDt_s;
 constexpr double kSkin_m = 1e-6;
-constexpr double kFollow_m = 1e-5;
 
 Pose at_x(double x) {
   Pose X = Pose::Identity();
@@ -35,78 +35,23 @@ struct MovingRig {
   CollisionWorld world;
   std::vector<HapticMaterial> materials;
   ProxySettings settings;
-  ProxyState state;
   std::vector<std::optional<ObjectMotion>> motions;
-  std::vector<TriangleMesh> meshes;
 
   MovingRig() { settings.max_force_N = 1e6; }
   void add(TriangleMesh mesh, std::optional<ObjectMotion> motion, const HapticMaterial& mat = test::stiff(1000.0)) {
-    world.add_object(test::shape_of(mesh), motion ? motion->X_WO_at(0.0) : Pose::Identity());
-    meshes.push_back(std::move(mesh));
+    world.add_object(test::shape_of(std::move(mesh)), motion ? motion->X_WO_at(0.0) : Pose::Identity());
     motions.push_back(std::move(motion));
     materials.push_back(mat);
   }
 };
 
-struct Drive {
-  std::size_t crossings = 0;      // relative chords or step legs that touch a surface
-  std::size_t inside = 0;         // ticks ending inside a closed object
-  std::size_t squeezes = 0;
-  std::size_t pushes = 0;
-  std::size_t not_followed = 0;   // free segment to the HIP, yet the proxy is not there
-  std::size_t free_force = 0;     // a force with the HIP in view of the proxy
-  std::vector<ProxyOutput> out;
-  std::vector<V> proxy_W;
-};
-
-// Steps `rig` through hip(t) for n ticks from t = 0, every object following its motion.
+// Steps `rig` through hip(t) for n ticks from t = 0, every object following its motion,
+// judged by verify::drive_moving_proxy.
 template <class Hip>
-Drive drive(MovingRig& rig, Hip&& hip, int n) {
-  Drive d;
-  MovingWorld moving(rig.world, rig.motions);
-  moving.place(0.0);
-  std::vector<verify::SurfaceCrossingOracle> oracles;  // each object in its own frame
-  for (const TriangleMesh& m : rig.meshes) oracles.emplace_back(m);
-  reset_proxy(rig.state, hip(0.0));
-  for (int k = 1; k <= n; ++k) {
-    const double t = k * kDt;
-    const CollisionWorld& w = moving.world();
-    std::vector<Pose> X_before;
-    for (int o = 0; o < w.object_count(); ++o) X_before.push_back(w.pose(o));
-    const V p_before = rig.state.proxy_W;
-    const CarryOutput carry = moving.advance(t, rig.state, kSkin_m);
-    const V p_carried = rig.state.proxy_W;
-    const ProxyOutput out = step_proxy(w, rig.materials, rig.settings, rig.state, hip(t), kDt, moving.twists());
-    d.squeezes += carry.squeezed ? 1 : 0;
-    d.pushes += static_cast<std::size_t>(carry.pushed);
-    for (int o = 0; o < w.object_count(); ++o) {
-      const auto& oracle = oracles[static_cast<std::size_t>(o)];
-      const Pose X_OW = w.pose(o).inverse(Eigen::Isometry);
-      bool crossed = oracle.segment_touches_surface(X_before[static_cast<std::size_t>(o)].inverse(Eigen::Isometry) * p_before,
-                                                    X_OW * p_carried);
-      for (int i = 0; i + 1 < rig.state.path_points; ++i) {
-        crossed = crossed || oracle.segment_touches_surface(X_OW * rig.state.path_W[static_cast<std::size_t>(i)],
-                                                            X_OW * rig.state.path_W[static_cast<std::size_t>(i + 1)]);
-      }
-      d.crossings += crossed ? 1 : 0;
-      d.inside += oracle.point_inside_closed_mesh(X_OW * out.proxy_W) ? 1 : 0;
-    }
-    // Follow: the straight segment from where the proxy was carried to the HIP, in the
-    // objects' poses of this tick.
-    bool free_segment = true;
-    bool hip_in_view = true;
-    for (int o = 0; o < w.object_count(); ++o) {
-      const Pose X_OW = w.pose(o).inverse(Eigen::Isometry);
-      free_segment = free_segment && !oracles[static_cast<std::size_t>(o)].segment_touches_surface(X_OW * p_carried, X_OW * hip(t));
-      hip_in_view = hip_in_view && !oracles[static_cast<std::size_t>(o)].segment_touches_surface(X_OW * out.proxy_W, X_OW * hip(t));
-    }
-    const double gap = (out.proxy_W - hip(t)).norm();
-    if (free_segment && gap > kFollow_m) ++d.not_followed;
-    if (hip_in_view && gap > kFollow_m && out.force_W.norm() > 0.0) ++d.free_force;
-    d.out.push_back(out);
-    d.proxy_W.push_back(out.proxy_W);
-  }
-  return d;
+verify::MovingDrive drive(MovingRig& rig, Hip&& hip, int n) {
+  std::vector<V> path;
+  for (int k = 0; k <= n; ++k) path.push_back(hip(k * kDt));
+  return verify::drive_moving_proxy(rig.world, rig.motions, rig.materials, rig.settings, path, 1.0 / kDt);
 }
 
 TEST(MovingObject, AnApproachingFacePushesTheProxyAndLetsItGoWhenItLeaves) {
@@ -116,7 +61,7 @@ TEST(MovingObject, AnApproachingFacePushesTheProxyAndLetsItGoWhenItLeaves) {
   rig.add(rig.box, ObjectMotion::keyframes({{0.0, at_x(-0.2)}, {0.32, at_x(-0.04)}, {0.5, at_x(-0.04)}, {0.82, at_x(-0.2)}},
                                            MotionRepeat::Hold));
   const V hip(0, 0.01, 0.02);
-  const Drive d = drive(rig, [&](double) { return hip; }, 1000);
+  const verify::MovingDrive d = drive(rig, [&](double) { return hip; }, 1000);
   EXPECT_EQ(d.crossings, 0u);
   EXPECT_EQ(d.inside, 0u);
   EXPECT_EQ(d.not_followed, 0u);
@@ -141,7 +86,7 @@ TEST(MovingObject, AProxyPressedOnATurningBoxRidesItAndNeverEntersIt) {
   rig.add(rig.box, ObjectMotion::twist(Pose::Identity(), V::Zero(), V(0, 0, std::numbers::pi)));
   // The hand comes down from 20 mm above in 0.1 s, then stays 5 mm deep.
   auto hip = [](double t) { return V(0.02, 0.01, 0.07 - 0.25 * std::min(t, 0.1)); };
-  const Drive d = drive(rig, hip, 2000);
+  const verify::MovingDrive d = drive(rig, hip, 2000);
   EXPECT_EQ(d.crossings, 0u);
   EXPECT_EQ(d.inside, 0u);
   for (std::size_t k = 150; k < d.out.size(); ++k) {
@@ -157,7 +102,7 @@ TEST(MovingObject, ASpinningBoxsCornersSweepPastAHandBesideIt) {
   MovingRig rig;
   rig.add(rig.box, ObjectMotion::twist(Pose::Identity(), V::Zero(), V(0, 0, std::numbers::pi)));
   const V hip(0.06, 0.0, 0.0);
-  const Drive d = drive(rig, [&](double) { return hip; }, 2000);
+  const verify::MovingDrive d = drive(rig, [&](double) { return hip; }, 2000);
   EXPECT_EQ(d.crossings, 0u);
   EXPECT_EQ(d.inside, 0u);
   EXPECT_EQ(d.not_followed, 0u);
@@ -177,13 +122,13 @@ TEST(MovingObject, AProxySqueezedAgainstAStillWallStaysOutOfTheWall) {
   for (V& v : wall.vertices_m) v.x() += 0.07;
   rig.add(wall, std::nullopt);
   const V hip(0.0, 0.0, 0.0);
-  const Drive d = drive(rig, [&](double) { return hip; }, 500);
+  const verify::MovingDrive d = drive(rig, [&](double) { return hip; }, 500);
   EXPECT_GT(d.squeezes, 0u);
   // The wall is never crossed (the moving box may have to overlap the proxy: reported).
   const verify::SurfaceCrossingOracle wall_oracle(wall);
-  for (const V& p : d.proxy_W) EXPECT_FALSE(wall_oracle.point_inside_closed_mesh(p));
-  for (std::size_t k = 1; k < d.proxy_W.size(); ++k) {
-    ASSERT_FALSE(wall_oracle.segment_touches_surface(d.proxy_W[k - 1], d.proxy_W[k])) << "tick " << k;
+  for (const ProxyOutput& o : d.out) EXPECT_FALSE(wall_oracle.point_inside_closed_mesh(o.proxy_W));
+  for (std::size_t k = 1; k < d.out.size(); ++k) {
+    ASSERT_FALSE(wall_oracle.segment_touches_surface(d.out[k - 1].proxy_W, d.out[k].proxy_W)) << "tick " << k;
   }
 }
 
@@ -198,7 +143,7 @@ TEST(MovingObject, DampingActsOnTheVelocityRelativeToTheSurface) {
   moving.add(moving.box, ObjectMotion::twist(at_x(-0.2), V(v, 0, 0), V::Zero()), damped);
   // The face comes at the still hand for 0.1 s (reaching 5 mm past it), then the hand
   // moves with it.
-  const Drive with_face = drive(moving, [&](double t) { return V(-0.145 + v * std::max(t - 0.1, 0.0), 0, 0); }, 200);
+  const verify::MovingDrive with_face = drive(moving, [&](double t) { return V(-0.145 + v * std::max(t - 0.1, 0.0), 0, 0); }, 200);
   const ProxyOutput riding = with_face.out.back();
   ASSERT_TRUE(riding.in_contact);
   EXPECT_NEAR(riding.force_W.x(), 1000.0 * 0.005, 1e-3);  // spring only
@@ -207,7 +152,7 @@ TEST(MovingObject, DampingActsOnTheVelocityRelativeToTheSurface) {
   MovingRig still;
   still.add(still.box, std::nullopt, damped);
   still.world.set_pose(0, at_x(-0.2));
-  const Drive into_face = drive(still, [&](double t) { return V(-0.145 - v * t, 0, 0); }, 200);
+  const verify::MovingDrive into_face = drive(still, [&](double t) { return V(-0.145 - v * t, 0, 0); }, 200);
   const ProxyOutput pressing = into_face.out.back();
   ASSERT_TRUE(pressing.in_contact);
   EXPECT_NEAR(pressing.force_W.x(), 1000.0 * 0.015 + 5.0 * v, 0.02);  // spring and damper
