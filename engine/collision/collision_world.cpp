@@ -49,14 +49,26 @@ void CollisionWorld::set_pose(int object, const Pose& X_WO) {
   auto& o = objects_.at(static_cast<std::size_t>(object));
   o.X_WO = X_WO;
   o.X_OW = X_WO.inverse(Eigen::Isometry);
-  // A moved object is another geometry: candidate lists gathered before are not used.
-  static std::atomic<std::uint64_t> last_moved{0};
-  geometry_id_ = (std::uint64_t{1} << 63) | ++last_moved;
+  // geometry_id_ is kept: candidate lists hold boxes and triangles in each object's own
+  // frame, which a move does not change, so a moving object keeps its list tick to tick.
 }
 
 std::optional<SweepHit> CollisionWorld::sweep(const Eigen::Vector3d& a_W, const Eigen::Vector3d& b_W,
                                               double skin_m, std::span<const TriangleRef> ignore,
                                               SweepWork* work, SweepCandidates* near) const {
+  return sweep_among(-1, a_W, b_W, skin_m, ignore, work, near);
+}
+
+std::optional<SweepHit> CollisionWorld::sweep_object(int object, const Eigen::Vector3d& a_W,
+                                                     const Eigen::Vector3d& b_W, double skin_m) const {
+  if (object < 0 || object >= object_count()) throw std::out_of_range("sweep_object: no such object");
+  return sweep_among(object, a_W, b_W, skin_m, {}, nullptr, nullptr);
+}
+
+std::optional<SweepHit> CollisionWorld::sweep_among(int only_object, const Eigen::Vector3d& a_W,
+                                                    const Eigen::Vector3d& b_W, double skin_m,
+                                                    std::span<const TriangleRef> ignore, SweepWork* work,
+                                                    SweepCandidates* near) const {
   if (near != nullptr) near->bind(geometry_id_);
   // One piece of the segment, swept against every object.
   auto sweep_piece = [&](const Eigen::Vector3d& piece_a_W, const Eigen::Vector3d& piece_b_W) -> std::optional<SweepHit> {
@@ -68,6 +80,7 @@ std::optional<SweepHit> CollisionWorld::sweep(const Eigen::Vector3d& a_W, const 
   double best_t_plane = std::numeric_limits<double>::infinity();
 
   for (std::size_t oi = 0; oi < objects_.size(); ++oi) {
+    if (only_object >= 0 && static_cast<int>(oi) != only_object) continue;
     const Object& o = objects_[oi];
     const Eigen::Vector3d a_O = o.X_OW * piece_a_W;
     const Eigen::Vector3d b_O = o.X_OW * piece_b_W;

@@ -75,6 +75,11 @@ class CollisionWorld {
                                               double skin_m, std::span<const TriangleRef> ignore = {},
                                               SweepWork* work = nullptr, SweepCandidates* near = nullptr) const;
 
+  /// sweep() against `object` alone (the others are not there), with no budget or list.
+  /// Throws std::out_of_range for an object this world does not have.
+  [[nodiscard]] std::optional<SweepHit> sweep_object(int object, const Eigen::Vector3d& a_W,
+                                                     const Eigen::Vector3d& b_W, double skin_m) const;
+
   /// sweep() against the one triangle `t` (nothing else is tested, the segment is not cut
   /// into pieces): whether, and where, the segment a_W -> b_W meets it.
   [[nodiscard]] std::optional<SweepHit> sweep_triangle(const TriangleRef& t, const Eigen::Vector3d& a_W,
@@ -103,6 +108,12 @@ class CollisionWorld {
   [[nodiscard]] Eigen::Vector3d shaded_normal_W(const TriangleRef& t, const Eigen::Vector3d& p_W) const;
 
  private:
+  // sweep() over every object (only_object < 0) or over one.
+  [[nodiscard]] std::optional<SweepHit> sweep_among(int only_object, const Eigen::Vector3d& a_W,
+                                                    const Eigen::Vector3d& b_W, double skin_m,
+                                                    std::span<const TriangleRef> ignore, SweepWork* work,
+                                                    SweepCandidates* near) const;
+
   struct Object {
     std::shared_ptr<const MeshBvh> shape;
     Pose X_WO;

@@ -8,7 +8,12 @@
 namespace mhd {
 
 HapticTick::HapticTick(const CompiledScene& scene, const Rig& rig, const HapticTickSettings& settings)
-    : scene_(scene), rig_(rig), settings_(settings), predictor_(settings.prediction), safety_(settings.safety) {}
+    : scene_(scene),
+      rig_(rig),
+      settings_(settings),
+      predictor_(settings.prediction),
+      safety_(settings.safety),
+      moving_(scene.world, scene.motions) {}
 
 BaseSampleStatus HapticTick::add_base_sensor_sample(double t_s, const Pose& X_is900_base_sensor) noexcept {
   const BasePose pose = rig_.base_from_sensor(X_is900_base_sensor);
@@ -42,6 +47,13 @@ HapticTickOutput HapticTick::render(double t_s, double dt_s, const Eigen::Vector
   safety_in.dt_s = dt_s;
   safety_in.tracker_age_s = out.tracker_age_s;
 
+  // Objects move on their own clock from the first tick, whether or not a hand is known;
+  // a proxy being rendered is carried by what moved.
+  if (!t0_s_) t0_s_ = t_s;
+  if (moving_.moves() && std::isfinite(t_s)) {
+    if (moving_.advance(t_s - *t0_s_, proxy_, scene_.proxy.skin_m).squeezed) ++squeeze_ticks_;
+  }
+
   const bool can_render = base.has_value() && p_D_tool_m.allFinite();
   if (can_render) {
     out.base = *base;
@@ -50,7 +62,7 @@ HapticTickOutput HapticTick::render(double t_s, double dt_s, const Eigen::Vector
     if (!proxy_.initialised) {
       // The proxy starts only with the hand in free space: started inside an object it
       // would render the object inside out and pull the hand in. Until then, no force.
-      if (point_inside_surface(scene_.world, out.hip_W_m)) {
+      if (point_inside_surface(moving_.world(), out.hip_W_m)) {
         out.hip_inside_object = true;
         out.proxy_W_m = out.hip_W_m;
         safety_in.force_W_N.setConstant(std::numeric_limits<double>::quiet_NaN());  // no force known
@@ -59,7 +71,8 @@ HapticTickOutput HapticTick::render(double t_s, double dt_s, const Eigen::Vector
       }
       reset_proxy(proxy_, out.hip_W_m);
     }
-    const ProxyOutput p = step_proxy(scene_.world, scene_.materials, scene_.proxy, proxy_, out.hip_W_m, dt_s);
+    const ProxyOutput p =
+        step_proxy(moving_.world(), scene_.materials, scene_.proxy, proxy_, out.hip_W_m, dt_s, moving_.twists());
     out.proxy_W_m = p.proxy_W;
     out.proxy_force_W_N = p.force_W;
     out.in_contact = p.in_contact;

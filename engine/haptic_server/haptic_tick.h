@@ -13,6 +13,7 @@
 #include "kinematics/rig.h"
 #include "prediction/base_pose_predictor.h"
 #include "proxy/god_object.h"
+#include "proxy/moving_world.h"
 #include "safety/force_safety.h"
 #include "scene_compiler/compiled_scene.h"
 
@@ -77,6 +78,10 @@ class HapticTick {
   [[nodiscard]] std::uint64_t startup_ticks() const noexcept { return startup_ticks_; }
   [[nodiscard]] const BasePosePredictor& predictor() const noexcept { return predictor_; }
   [[nodiscard]] const ProxyState& proxy_state() const noexcept { return proxy_; }
+  /// The world as this tick's objects stand (moving objects at their poses of the last tick).
+  [[nodiscard]] const CollisionWorld& world() const noexcept { return moving_.world(); }
+  /// Ticks on which a moving object squeezed the proxy against another surface.
+  [[nodiscard]] std::uint64_t squeeze_ticks() const noexcept { return squeeze_ticks_; }
 
  private:
   const CompiledScene& scene_;
@@ -85,6 +90,9 @@ class HapticTick {
   BasePosePredictor predictor_;
   ForceSafety safety_;
   ProxyState proxy_;
+  MovingWorld moving_;  // the scene's world, its moving objects where they are now
+  std::optional<double> t0_s_;  // the first tick: scripted motions start there
+  std::uint64_t squeeze_ticks_ = 0;
   bool has_measurement_ = false;
   std::uint64_t startup_ticks_ = 0;
   double last_measurement_t_s_ = 0.0;

@@ -101,7 +101,7 @@ void reset_proxy(ProxyState& state, const Eigen::Vector3d& hip_W) {
 
 ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMaterial> materials,
                        const ProxySettings& settings, ProxyState& state, const Eigen::Vector3d& hip_W,
-                       double dt_s) {
+                       double dt_s, std::span<const ObjectTwist> twists) {
   ProxyOutput out;
   if (!hip_W.allFinite() || !std::isfinite(dt_s) || !(dt_s > 0.0)) {
     // Bad input: hold the proxy, command nothing.
@@ -241,7 +241,13 @@ ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMateri
     // Damping fades in over the first kDampingOnsetPerSkin skins of depth: a HIP grazing a
     // surface within micrometres gets no kick of b * v from a contact it barely makes.
     const double onset = std::min(1.0, behind_m / (kDampingOnsetPerSkin * settings.skin_m));
-    force -= onset * mat.damping_Ns_per_m * state.hip_velocity_W.dot(n_contact) * n_contact;
+    // Against a moving surface the damper acts on the velocity relative to it.
+    Eigen::Vector3d v_W_relative = state.hip_velocity_W;
+    if (static_cast<std::size_t>(object) < twists.size()) {
+      v_W_relative -= point_velocity_W(twists[static_cast<std::size_t>(object)], world.pose(object).translation(),
+                                       motion.p);
+    }
+    force -= onset * mat.damping_Ns_per_m * v_W_relative.dot(n_contact) * n_contact;
     // Damping may slow the push-back but never pull the hand into the surface.
     const double normal = force.dot(n_contact);
     if (normal < 0.0) force -= normal * n_contact;

@@ -9,6 +9,7 @@
 
 #include "collision/collision_world.h"
 #include "material/haptic_material.h"
+#include "proxy/object_twist.h"
 
 #include <array>
 #include <span>
@@ -84,9 +85,11 @@ void reset_proxy(ProxyState& state, const Eigen::Vector3d& hip_W);
 /// surface (to the friction cone's rim; towards the HIP's foot on the shaded planes,
 /// docs/proxy.md "Force shading"), by swept motions, and never where the HIP is in view.
 /// `materials[i]` is object i's material. A non-finite HIP leaves the proxy where it was
-/// and returns zero force.
+/// and returns zero force. `twists[i]`, where given (one per object), is how object i
+/// moves this tick: damping then acts on the HIP's velocity relative to the touched
+/// surface. Moving objects carry the proxy before this step (carry_proxy).
 ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMaterial> materials,
                        const ProxySettings& settings, ProxyState& state,
-                       const Eigen::Vector3d& hip_W, double dt_s);
+                       const Eigen::Vector3d& hip_W, double dt_s, std::span<const ObjectTwist> twists = {});
 
 }  // namespace mhd

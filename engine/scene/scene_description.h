@@ -3,6 +3,7 @@
 // fills it; the scene compiler turns it into collision geometry. Nothing here loads
 // meshes or knows about XML.
 
+#include "geometry/object_motion.h"
 #include "geometry/pose.h"
 #include "material/haptic_material.h"
 #include "scene/diagnostic.h"
@@ -39,6 +40,8 @@ struct ObjectDescription {
   Pose X_WO = Pose::Identity();  ///< pose of the object in the world
   std::string material_name;      ///< empty for an inline material
   HapticMaterial material;        ///< resolved (named or inline)
+  /// Scripted motion (<motion>); none for a still object. X_WO is then its pose at t = 0.
+  std::optional<ObjectMotion> motion;
   SourceLocation where;
 };
 

@@ -1,12 +1,14 @@
 #pragma once
-// A scene ready to touch: collision geometry with BVHs, one material per object and
-// the proxy settings. Immutable once compiled (object poses change through the
-// CollisionWorld, never the BVHs).
+// A scene ready to touch: collision geometry with BVHs, one material per object, the
+// objects' scripted motions and the proxy settings. Immutable once compiled (moving
+// objects move in a copy of the world, never the BVHs).
 
 #include "collision/collision_world.h"
+#include "geometry/object_motion.h"
 #include "material/haptic_material.h"
 #include "proxy/god_object.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +19,9 @@ struct CompiledScene {
   CollisionWorld world;
   std::vector<HapticMaterial> materials;  ///< indexed like world objects
   std::vector<std::string> object_names;  ///< indexed like world objects
+  /// Scripted motions, indexed like world objects (none: the object stays). The world
+  /// holds every object at its pose at t = 0; MovingWorld moves a copy.
+  std::vector<std::optional<ObjectMotion>> motions;
   ProxySettings proxy;
   std::size_t triangle_count = 0;
 };

@@ -119,6 +119,7 @@ class Compiler {
     scene->proxy.max_force_N = description_.haptics.max_force_N;
     scene->materials.reserve(objects.size());
     scene->object_names.reserve(objects.size());
+    scene->motions.reserve(objects.size());
     for (std::size_t i = 0; i < objects.size(); ++i) {
       const int id = scene->world.add_object(shapes[i], objects[i].X_WO);
       if (objects[i].material.force_shading) {
@@ -127,6 +128,7 @@ class Compiler {
       scene->materials.push_back(objects[i].material);
       if (textures[i]) scene->materials.back().texture = textures[i];
       scene->object_names.push_back(objects[i].name);
+      scene->motions.push_back(objects[i].motion);
       scene->triangle_count += shapes[i]->mesh().triangle_count();
     }
     const auto& stats = cache_.stats();

@@ -4,6 +4,7 @@
 
 #include "scene/diagnostic.h"
 
+#include <cstddef>
 #include <string>
 #include <utility>
 
@@ -18,6 +19,9 @@ class DiagnosticSink {
   }
   [[nodiscard]] SourceLocation at(int line) const { return SourceLocation{file_, line}; }
   [[nodiscard]] const std::string& file() const { return file_; }
+  /// Errors in the shared list so far (all files): a reader compares two counts to see
+  /// whether a part it read was clean.
+  [[nodiscard]] std::size_t error_count() const { return out_->size(); }
 
  private:
   std::string file_;

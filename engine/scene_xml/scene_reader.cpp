@@ -6,6 +6,8 @@
 #include "scene_xml/frame_graph.h"
 #include "scene_xml/message_text.h"
 #include "scene_xml/number_parser.h"
+#include "scene_xml/motion_reader.h"
+#include "scene_xml/pose_reader.h"
 #include "scene_xml/readable_file.h"
 #include "scene_xml/texture_reader.h"
 #include "scene_xml/xml_attribute_parser.h"
@@ -34,6 +36,8 @@ using scene_xml::concat;
 using scene_xml::DiagnosticSink;
 using scene_xml::Emptiness;
 using scene_xml::Presence;
+using scene_xml::read_motion;
+using scene_xml::read_pose_attributes;
 
 constexpr std::string_view kVersion = "1";
 constexpr double kMinScaleToM = 1e-6;
@@ -129,35 +133,6 @@ void expect_no_children(const tinyxml2::XMLElement& e, const DiagnosticSink& sin
   for_each_child(e, sink, [&](const tinyxml2::XMLElement& child) {
     report_unknown_element(child, e, sink);
   });
-}
-
-/// position / rpy_deg / quaternion_wxyz on <pose> and <frame>.
-Pose read_pose_attributes(AttributeParser& a, const FileContext& ctx) {
-  const Eigen::Vector3d p_m =
-      a.vector3("position", Presence::Optional, Bound::Any).value_or(Eigen::Vector3d::Zero()) *
-      ctx.unit_to_m;
-  if (p_m.norm() > kMaxPosition_m) {
-    ctx.sink.error(a.line_of("position"),
-                   concat("attribute 'position' on ", a.tag(), " must lie within ", scene_xml::format_g(kMaxPosition_m),
-                          " m of its frame's origin, got ", scene_xml::format_g(p_m.norm()), " m"));
-  }
-  if (a.has("rpy_deg") && a.has("quaternion_wxyz")) {
-    ctx.sink.error(a.line(), concat(a.tag(), " takes rpy_deg or quaternion_wxyz, not both"));
-  }
-  if (a.has("quaternion_wxyz")) {
-    const auto q = a.numbers("quaternion_wxyz", Presence::Optional, 4, Bound::Any);
-    if (!q) return pose_from_xyz_rpy(p_m, Eigen::Vector3d::Zero());
-    const Eigen::Quaterniond quaternion((*q)[0], (*q)[1], (*q)[2], (*q)[3]);
-    if (quaternion.coeffs().cwiseAbs().maxCoeff() == 0.0) {  // squaredNorm() is 0 for 1e-170 too
-      ctx.sink.error(a.line_of("quaternion_wxyz"),
-                     concat("attribute 'quaternion_wxyz' on ", a.tag(), " must not be all zeros"));
-      return pose_from_xyz_rpy(p_m, Eigen::Vector3d::Zero());
-    }
-    return pose_from_xyz_quaternion(p_m, quaternion);
-  }
-  const Eigen::Vector3d rpy_deg =
-      a.vector3("rpy_deg", Presence::Optional, Bound::Any).value_or(Eigen::Vector3d::Zero());
-  return pose_from_xyz_rpy(p_m, rpy_deg * (std::numbers::pi / 180.0));
 }
 
 /// XML 1.0 section 2.11: a lone CR ends a line, like LF and CR LF. tinyxml2 turns it into LF
@@ -457,6 +432,7 @@ class SceneReader {
     const tinyxml2::XMLElement* pose = nullptr;
     const tinyxml2::XMLElement* scale = nullptr;
     const tinyxml2::XMLElement* inline_material = nullptr;
+    const tinyxml2::XMLElement* motion = nullptr;
     Eigen::Vector3d scale_factors = Eigen::Vector3d::Ones();
 
     // Only the first of each child counts; a repeat is reported against it.
@@ -485,7 +461,9 @@ class SceneReader {
         if (!first_of(pose, child)) return;
         AttributeParser pa(child, ctx.sink, {"position", "rpy_deg", "quaternion_wxyz"});
         expect_no_children(child, ctx.sink);
-        object.X_WO = read_pose_attributes(pa, ctx);
+        object.X_WO = read_pose_attributes(pa, ctx.sink, ctx.unit_to_m);
+      } else if (child_name == "motion") {
+        (void)first_of(motion, child);  // read below, once the <pose> is known
       } else if (child_name == "scale") {
         if (!first_of(scale, child)) return;
         scale_factors = read_scale(child, ctx);
@@ -509,6 +487,10 @@ class SceneReader {
       ctx.sink.error(e.GetLineNum(),
                      concat(label, " has no shape (expected <mesh>, <plane>, <sphere>, <box> or "
                                    "<cylinder>)"));
+    }
+    if (motion != nullptr) {
+      object.motion = read_motion(*motion, ctx.sink, ctx.unit_to_m, object.X_WO, pose != nullptr);
+      if (object.motion) object.X_WO = object.motion->X_WO_at(0.0);
     }
     if (scale != nullptr) {
       if (shape != nullptr && !std::holds_alternative<MeshSource>(object.shape)) {
@@ -636,7 +618,7 @@ class SceneReader {
       frame.where = ctx.sink.at(child.GetLineNum());
       const auto name = a.text("name", Presence::Required, Emptiness::Forbidden);
       const auto parent = a.text("parent", Presence::Required, Emptiness::Forbidden);
-      frame.X_PF = read_pose_attributes(a, ctx);
+      frame.X_PF = read_pose_attributes(a, ctx.sink, ctx.unit_to_m);
       if (!name || !parent) return;
       if (*name == "world") {
         ctx.sink.error(a.line_of("name"), "frame name 'world' is reserved");

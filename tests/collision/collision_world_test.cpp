@@ -44,6 +44,27 @@ TEST(CollisionWorld, MovingAnObjectMovesItsSurfaceNotItsTree) {
   EXPECT_EQ(const_cast<btBvhTriangleMeshShape&>(world.shape(id).shape()).getOptimizedBvh(), tree_before);
 }
 
+TEST(CollisionWorld, SweepObjectSeesOnlyThatObject) {
+  // Two parallel squares at z = 0 and z = -1: a segment through both hits the nearer one
+  // in sweep(), and each square alone in sweep_object().
+  CollisionWorld world;
+  const int near = world.add_object(unit_square(), Pose::Identity());
+  Pose below = Pose::Identity();
+  below.translation() = Eigen::Vector3d(0, 0, -1);
+  const int far = world.add_object(unit_square(), below);
+  const Eigen::Vector3d a(0.5, 0.5, 1), b(0.5, 0.5, -2);
+  ASSERT_TRUE(world.sweep(a, b, 1e-6));
+  EXPECT_EQ(world.sweep(a, b, 1e-6)->where.object, near);
+  const auto only_far = world.sweep_object(far, a, b, 1e-6);
+  ASSERT_TRUE(only_far);
+  EXPECT_EQ(only_far->where.object, far);
+  EXPECT_NEAR((a + only_far->t_stop * (b - a)).z(), -1.0 + 1e-6, 1e-12);
+  EXPECT_EQ(world.sweep_object(near, a, b, 1e-6)->where.object, near);
+  // A segment that misses the object asked about is free, whatever else it crosses.
+  EXPECT_FALSE(world.sweep_object(far, a, Eigen::Vector3d(0.5, 0.5, -0.5), 1e-6));
+  EXPECT_THROW((void)world.sweep_object(2, a, b, 1e-6), std::out_of_range);
+}
+
 TEST(CollisionWorld, IgnoredTrianglesAreSkipped) {
   CollisionWorld world;
   world.add_object(unit_square(), Pose::Identity());

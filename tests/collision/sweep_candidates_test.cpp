@@ -115,5 +115,31 @@ TEST(SweepCandidates, AListGatheredInAnotherWorldIsNotUsed) {
   EXPECT_NE(first.geometry_id(), second.geometry_id());
 }
 
+TEST(SweepCandidates, AListOutlivesAMoveOfItsObjectAndStillGivesTheTreesAnswers) {
+  // Lists are kept in the object's own frame: after set_pose the same sweeps, relative to
+  // the moved object, must hit the same triangles at the same fractions with the list as
+  // without it.
+  CollisionWorld world;
+  world.add_object(std::make_shared<MeshBvh>(wavy_grid(200, 0.1)), Pose::Identity());
+  const Eigen::Vector3d a(0.0503, 0.0497, 0.0025), b(0.0503, 0.0497, 0.0012);
+  SweepCandidates near;
+  for (int i = 0; i < 3; ++i) (void)world.sweep(a, b, 1e-6, {}, nullptr, &near);
+  ASSERT_GT(near.size(), 0);
+  const std::uint64_t id = world.geometry_id();
+  Pose X = Pose::Identity();
+  X.translate(Eigen::Vector3d(0.3, -0.2, 0.1));
+  X.rotate(Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 3).normalized()));
+  world.set_pose(0, X);
+  EXPECT_EQ(world.geometry_id(), id);
+  for (double dx : {0.0, 0.0004, -0.0007}) {
+    const Eigen::Vector3d a_W = X * Eigen::Vector3d(a + Eigen::Vector3d(dx, 0, 0));
+    const Eigen::Vector3d b_W = X * Eigen::Vector3d(b + Eigen::Vector3d(dx, 0, 0));
+    const auto with_list = world.sweep(a_W, b_W, 1e-6, {}, nullptr, &near);
+    const auto from_tree = world.sweep(a_W, b_W, 1e-6);
+    ASSERT_TRUE(from_tree);
+    expect_same(with_list, from_tree, 0);
+  }
+}
+
 }  // namespace
 }  // namespace mhd

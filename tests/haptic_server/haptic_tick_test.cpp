@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <string>
 
 namespace {
 
@@ -30,7 +31,8 @@ struct Fixture {
 
 /// The thesis rig and a 1 m box whose top face lies `gap_m` below the HIP at kQ with the
 /// base at the origin (stiffness 500 N/m, no friction).
-Fixture make_fixture(double gap_m) {
+/// `motion`, where given, is a <motion> element for the box.
+Fixture make_fixture(double gap_m, const std::string& motion = "") {
   Fixture f;
   const auto rig_read = read_scene_file(std::string(MHD_SOURCE_DIR) + "/scenes/rigs/pomhi.xml");
   f.rig = Rig::from_scene(*rig_read.scene).rig;
@@ -38,7 +40,7 @@ Fixture make_fixture(double gap_m) {
   const auto dir = std::filesystem::path(::testing::TempDir()) / "haptic_tick_test";
   std::filesystem::create_directories(dir);
   // ctest runs each case as its own process, perhaps at once: a file per process and gap.
-  const auto file = dir / fmt::format("box_{}_{}.xml", ::getpid(), gap_m);
+  const auto file = dir / fmt::format("box_{}_{}_{}.xml", ::getpid(), gap_m, motion.size());
   std::ofstream(file) << fmt::format(R"(<?xml version="1.0"?>
 <scene version="1" unit="m">
   <include file="{}/scenes/rigs/pomhi.xml"/>
@@ -46,9 +48,10 @@ Fixture make_fixture(double gap_m) {
     <material stiffness_N_per_m="500" damping_Ns_per_m="0" static_friction="0" dynamic_friction="0"/>
     <box size="1 1 1"/>
     <pose position="{} {} {}"/>
+    {}
   </object>
 </scene>
-)", MHD_SOURCE_DIR, hip.x(), hip.y() - gap_m - 0.5, hip.z());
+)", MHD_SOURCE_DIR, hip.x(), hip.y() - gap_m - 0.5, hip.z(), motion);
   auto read = read_scene_file(file);
   if (!read.ok()) {
     ADD_FAILURE() << "cannot read " << file;
@@ -91,6 +94,30 @@ TEST(HapticTick, NoForceAndNoHipBeforeTheFirstBasePose) {
   EXPECT_FALSE(tracked.startup);
   EXPECT_TRUE(tracked.hip_W_m.allFinite());
   EXPECT_EQ(tick.startup_ticks(), 1u);
+}
+
+TEST(HapticTick, AMovingBoxRisesIntoTheStillHandAndPushesItUp) {
+  // The box's top 20 mm below the HIP rises at 0.1 m/s from the first tick: it reaches the
+  // hand at 0.2 s and is 10 mm past it at 0.3 s, where the spring (500 N/m) pushes up 5 N.
+  Fixture f = make_fixture(0.02, R"(<motion velocity="0 0.1 0"/>)");
+  HapticTick tick(*f.scene, *f.rig, no_fade_in());
+  ASSERT_NE(tick.add_base_sensor_sample(0.0, f.rig->X_is900_base_sensor_from_base({})), BaseSampleStatus::Invalid);
+  const double y0_m = tick.world().pose(0).translation().y();
+  HapticTickOutput out;
+  for (int k = 0; k <= 300; ++k) {
+    tick.add_base_sensor_sample(1e-3 * k, f.rig->X_is900_base_sensor_from_base({}));
+    out = tick.tick(1e-3 * k, 0.001, tool(kQ));
+    if (k == 150) {
+      EXPECT_FALSE(out.in_contact);  // still 5 mm below the hand
+      EXPECT_EQ(out.force_W_N, Eigen::Vector3d::Zero());
+    }
+  }
+  EXPECT_NEAR(tick.world().pose(0).translation().y() - y0_m, 0.03, 1e-9);
+  ASSERT_TRUE(out.in_contact);
+  EXPECT_NEAR(out.force_W_N.y(), 500.0 * 0.01, 1e-3);
+  EXPECT_LT(out.force_W_N.cwiseAbs().x() + out.force_W_N.cwiseAbs().z(), 1e-6);
+  EXPECT_NEAR(out.proxy_W_m.y() - out.hip_W_m.y(), 0.01, 2e-6);  // the proxy rode the face up
+  EXPECT_EQ(tick.squeeze_ticks(), 0u);
 }
 
 TEST(HapticTick, HipFollowsTheRigChainFromTheTrackedBasePose) {

@@ -2,6 +2,7 @@
 // test::AllocationCounter (its own binary: the counter replaces operator new).
 
 #include "proxy/god_object.h"
+#include "proxy/moving_world.h"
 
 #include "geometry/primitive_mesh.h"
 #include "geometry/shading_normals.h"
@@ -89,6 +90,38 @@ TEST(GodObjectAllocation, StepProxyAllocatesNothing) {
   }
   allocations.stop();
   EXPECT_GT(contact_ticks, 2000);
+  EXPECT_EQ(allocations.count(), 0);
+}
+
+TEST(GodObjectAllocation, MovingObjectsAndTheirCarryAllocateNothing) {
+  // A sphere spinning and swinging through the hand: advance() and step_proxy() together.
+  TriangleMesh sphere = make_sphere_mesh(0.1, 4);
+  compute_vertex_normals(sphere);
+  CollisionWorld world;
+  world.add_object(std::make_shared<MeshBvh>(std::make_shared<TriangleMesh>(std::move(sphere))), Pose::Identity());
+  Pose right = Pose::Identity();
+  right.translation() = Eigen::Vector3d(0.05, 0, 0);
+  std::vector<std::optional<ObjectMotion>> motions;
+  motions.push_back(ObjectMotion::keyframes({{0.0, Pose::Identity()}, {0.5, right}}, MotionRepeat::PingPong));
+  MovingWorld moving(world, std::move(motions));
+  HapticMaterial mat;
+  mat.damping_Ns_per_m = 1.0;
+  const std::vector<HapticMaterial> materials{mat};
+  const ProxySettings settings;
+  ProxyState state;
+  moving.place(0.0);
+  reset_proxy(state, Eigen::Vector3d(0.13, 0, 0));
+
+  test::AllocationCounter allocations;
+  int contact_ticks = 0;
+  for (int i = 1; i <= 3000; ++i) {
+    (void)moving.advance(1e-3 * i, state, settings.skin_m);
+    const ProxyOutput out = step_proxy(moving.world(), materials, settings, state, Eigen::Vector3d(0.13, 0, 0), 1e-3,
+                                       moving.twists());
+    if (out.in_contact) ++contact_ticks;
+  }
+  allocations.stop();
+  EXPECT_GT(contact_ticks, 500);
   EXPECT_EQ(allocations.count(), 0);
 }
 

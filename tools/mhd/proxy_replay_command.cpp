@@ -10,6 +10,7 @@
 #include "command_exit.h"
 #include "staged_output_file.h"
 
+#include "proxy/moving_world.h"
 #include "proxy/proxy_start.h"
 #include "recording/hip_path_csv.h"
 #include "scene_compiler/scene_compiler.h"
@@ -57,11 +58,14 @@ struct ReplayTotals {
 };
 
 /// Steps the proxy once and writes the tick's row.
-void replay_tick(const mhd::CompiledScene& scene, mhd::ProxyState& state, const mhd::HipPathSample& hip,
-                 double dt_s, std::FILE* out, ReplayTotals& totals) {
+/// Moving objects go to their poses at t_rel_s (from the path's first row) first.
+void replay_tick(const mhd::CompiledScene& scene, mhd::MovingWorld& moving, mhd::ProxyState& state,
+                 const mhd::HipPathSample& hip, double t_rel_s, double dt_s, std::FILE* out, ReplayTotals& totals) {
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();
-  const mhd::ProxyOutput p = mhd::step_proxy(scene.world, scene.materials, scene.proxy, state, hip.p_W_hip_m, dt_s);
+  (void)moving.advance(t_rel_s, state, scene.proxy.skin_m);
+  const mhd::ProxyOutput p = mhd::step_proxy(moving.world(), scene.materials, scene.proxy, state, hip.p_W_hip_m, dt_s,
+                                             moving.twists());
   const double step_us = std::chrono::duration<double, std::micro>(Clock::now() - t0).count();
   const Eigen::Vector3d& h = hip.p_W_hip_m;
   fmt::print(out, "{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{},{},{:.3f},{}\n",
@@ -93,7 +97,10 @@ int proxy_replay(const ProxyReplayOptions& opt) {
   if (!compiled.ok()) return 1;
   const mhd::CompiledScene& scene = *compiled.scene;
 
-  if (const auto why = mhd::proxy_start_blocked(scene.world, previous->p_W_hip_m, scene.proxy.skin_m)) {
+  mhd::MovingWorld moving(scene.world, scene.motions);
+  moving.place(0.0);
+  const double t_first_s = previous->t_s;
+  if (const auto why = mhd::proxy_start_blocked(moving.world(), previous->p_W_hip_m, scene.proxy.skin_m)) {
     const Eigen::Vector3d& p = previous->p_W_hip_m;
     fmt::print(stderr, "mhd proxy-replay: error: {}:{}: the first HIP ({}, {}, {}) m {} in {}; the proxy must start in "
                "free space\n", opt.hip_csv, previous->line, p.x(), p.y(), p.z(), *why, opt.scene);
@@ -112,9 +119,11 @@ int proxy_replay(const ProxyReplayOptions& opt) {
   ReplayTotals totals;
   // The first tick takes the second row's dt; every later one its own. One row of lookahead.
   std::optional<mhd::HipPathSample> current = reader.next();
-  replay_tick(scene, state, *previous, current ? current->t_s - previous->t_s : kSingleRowDt_s, out.stream(), totals);
+  replay_tick(scene, moving, state, *previous, 0.0, current ? current->t_s - previous->t_s : kSingleRowDt_s,
+              out.stream(), totals);
   while (current) {
-    replay_tick(scene, state, *current, current->t_s - previous->t_s, out.stream(), totals);
+    replay_tick(scene, moving, state, *current, current->t_s - t_first_s, current->t_s - previous->t_s, out.stream(),
+                totals);
     previous = current;
     current = reader.next();
   }

@@ -1,0 +1,45 @@
+#pragma once
+// Drives the proxy along a HIP path through a world whose objects move (MovingWorld), and
+// judges every tick with the exact oracle in each object's own frame: relative to a moving
+// object, the proxy's motion over a tick is the chord from where it was (in the object's
+// old pose) to where it was carried (in the new pose), then the legs of its step. Both
+// halves of the contract are counted: crossings, and follow failures (the straight segment
+// from the carried proxy to the HIP is free, yet the proxy does not end at the HIP; or a
+// force with the HIP in view). No GoogleTest here: the stress tool uses it too.
+
+#include "geometry/object_motion.h"
+#include "proxy/god_object.h"
+
+#include <Eigen/Core>
+
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace mhd::verify {
+
+struct MovingDrive {
+  std::size_t ticks = 0;
+  std::size_t crossings = 0;      ///< ticks with a relative chord or step leg touching a surface
+  std::size_t inside = 0;         ///< ticks ending inside a closed object
+  std::size_t not_followed = 0;   ///< free segment to the HIP, yet the proxy is not at the HIP
+  std::size_t free_force = 0;     ///< a force with the HIP in view of the proxy
+  std::size_t contact_ticks = 0;
+  std::size_t pushes = 0;         ///< ticks a moving surface pushed the free proxy
+  std::size_t squeezes = 0;       ///< ticks the proxy was squeezed against another surface
+  std::vector<ProxyOutput> out;   ///< every tick's output, in order
+};
+
+/// "At the HIP", as the follow check judges it (10 µm: the skin and the sweeps' margin).
+inline constexpr double kMovingFollowTolerance_m = 1e-5;
+
+/// Places the objects at t = 0 (motions[i] moves object i of `world`; none: it stays),
+/// resets the proxy at hip_path_W[0] (free space), then per sample k (k = 1, 2, ...)
+/// moves the objects to t = k / rate_Hz, carries the proxy and steps it.
+/// Precondition: rate_Hz > 0; motions and materials indexed like the world's objects.
+[[nodiscard]] MovingDrive drive_moving_proxy(const CollisionWorld& world,
+                                             std::span<const std::optional<ObjectMotion>> motions,
+                                             std::span<const HapticMaterial> materials, const ProxySettings& settings,
+                                             std::span<const Eigen::Vector3d> hip_path_W, double rate_Hz);
+
+}  // namespace mhd::verify
