@@ -19,8 +19,8 @@ namespace {
 constexpr double kFrame_s = 1.0 / 60.0;
 constexpr double kFace_z_m = -0.3;
 
-std::unique_ptr<CompiledScene> cube_wall() {
-  const SceneReadResult read = read_scene_file(std::filesystem::path(MHD_SOURCE_DIR) / "scenes/cube_wall.xml");
+std::unique_ptr<CompiledScene> compiled_scene(const char* file) {
+  const SceneReadResult read = read_scene_file(std::filesystem::path(MHD_SOURCE_DIR) / file);
   EXPECT_TRUE(read.ok());
   if (!read.ok()) return nullptr;
   CompileOptions options;
@@ -29,6 +29,8 @@ std::unique_ptr<CompiledScene> cube_wall() {
   EXPECT_TRUE(compiled.ok());
   return std::move(compiled.scene);
 }
+
+std::unique_ptr<CompiledScene> cube_wall() { return compiled_scene("scenes/cube_wall.xml"); }
 
 /// Several frames at the same HIP, so the velocity filter's damping dies away.
 const HandSample& hold(HandSimulation& sim, const Eigen::Vector3d& p_W_hip_m, int frames = 6) {
@@ -99,6 +101,22 @@ TEST(HandSimulation, AStartInsideAnObjectIsRefused) {
   ASSERT_TRUE(scene);
   EXPECT_EQ(HandSimulation::start_blocked(*scene, Eigen::Vector3d(0.0, 1.0, -0.5)), "is inside an object");
   EXPECT_FALSE(HandSimulation::start_blocked(*scene, Eigen::Vector3d(0.0, 1.0, -0.2)));
+}
+
+TEST(HandSimulation, MovingObjectsMoveWithSimulatedTimeAndPushAStillHand) {
+  // scenes/moving_objects.xml: the paddle's front face reaches z = -0.45 m at 1.06 s.
+  const auto scene = compiled_scene("scenes/moving_objects.xml");
+  ASSERT_TRUE(scene);
+  const Eigen::Vector3d hand(0.0, 1.0, -0.45);
+  HandSimulation sim(*scene, hand);
+  const double z0_m = sim.world().pose(0).translation().z();
+  EXPECT_FALSE(hold(sim, hand, 54).in_contact);  // 0.9 s
+  const HandSample& pushed = hold(sim, hand, 24);  // 1.3 s
+  ASSERT_TRUE(pushed.in_contact);
+  EXPECT_EQ(pushed.contact_object, 0);
+  EXPECT_GT(pushed.force_W_N.z(), 8.0);  // towards the user, at the 8.5 N limit
+  EXPECT_GT(sim.world().pose(0).translation().z() - z0_m, 0.15);
+  EXPECT_FALSE(hold(sim, hand, 42).in_contact);  // 2.0 s: the paddle has gone back
 }
 
 }  // namespace

@@ -70,6 +70,9 @@ class HandStateSource final : public StateSource {
     const HandSample& s = impl_.simulation->advance(impl_.control->p_W_hip_m(), impl_.options.frame_period_s);
     impl_.overlay = hand_overlay_text(s, *impl_.compiled, impl_.options.view.force_scale_m_per_N);
     impl_.viewer->set_overlay_text(impl_.overlay);
+    for (std::size_t i = 0; i < impl_.compiled->motions.size(); ++i) {
+      if (impl_.compiled->motions[i]) impl_.viewer->set_object_pose(i, impl_.simulation->world().pose(static_cast<int>(i)));
+    }
     RigState state;
     state.timestamp_s = s.t_s;
     state.p_W_hip_m = s.p_W_hip_m;

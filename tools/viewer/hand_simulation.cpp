@@ -11,7 +11,9 @@ std::optional<std::string> HandSimulation::start_blocked(const CompiledScene& sc
   return proxy_start_blocked(scene.world, p_W_start_m, scene.proxy.skin_m);
 }
 
-HandSimulation::HandSimulation(const CompiledScene& scene, const Eigen::Vector3d& p_W_start_m) : scene_(scene) {
+HandSimulation::HandSimulation(const CompiledScene& scene, const Eigen::Vector3d& p_W_start_m)
+    : scene_(scene), moving_(scene.world, scene.motions) {
+  moving_.place(0.0);
   reset_proxy(state_, p_W_start_m);
   sample_.p_W_hip_m = p_W_start_m;
   sample_.p_W_proxy_m = p_W_start_m;
@@ -27,7 +29,9 @@ const HandSample& HandSimulation::advance(const Eigen::Vector3d& p_W_hip_m, doub
   for (long i = 1; i <= ticks; ++i) {
     const double a = static_cast<double>(i) / static_cast<double>(ticks);
     const Eigen::Vector3d p_W_tick_m = p_W_from_m + a * (p_W_hip_m - p_W_from_m);
-    const ProxyOutput out = step_proxy(scene_.world, scene_.materials, scene_.proxy, state_, p_W_tick_m, kTick_s);
+    (void)moving_.advance(static_cast<double>(sample_.ticks + i) * kTick_s, state_, scene_.proxy.skin_m);
+    const ProxyOutput out =
+        step_proxy(moving_.world(), scene_.materials, scene_.proxy, state_, p_W_tick_m, kTick_s, moving_.twists());
     sample_.p_W_hip_m = p_W_tick_m;
     sample_.p_W_proxy_m = out.proxy_W;
     sample_.force_W_N = out.force_W;

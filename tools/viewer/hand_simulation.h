@@ -7,6 +7,7 @@
 // crossing-free, cannot tunnel through a surface. No plugins, no threads, no devices.
 
 #include "proxy/god_object.h"
+#include "proxy/moving_world.h"
 #include "scene_compiler/compiled_scene.h"
 
 #include <Eigen/Core>
@@ -45,10 +46,14 @@ class HandSimulation {
   const HandSample& advance(const Eigen::Vector3d& p_W_hip_m, double dt_s);
 
   [[nodiscard]] const HandSample& sample() const { return sample_; }
+  /// The scene's objects where they are after the last tick (moving objects move with
+  /// simulated time, from 0 at the start).
+  [[nodiscard]] const CollisionWorld& world() const { return moving_.world(); }
 
  private:
   const CompiledScene& scene_;
   ProxyState state_;
+  MovingWorld moving_;
   HandSample sample_;
   double owed_s_ = 0.0;  ///< simulated time not yet stepped (less than a tick)
 };

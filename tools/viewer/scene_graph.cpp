@@ -124,6 +124,7 @@ SceneGraphResult build_scene_graph(const SceneDescription& scene) {
     const std::optional<TriangleMesh> mesh = shape_mesh(object.shape, error);
     if (!mesh) {
       result.errors.push_back(fmt::format("object '{}': {}", object.name, error));
+      result.object_transforms.emplace_back();
       continue;
     }
     std::string reason;
@@ -131,6 +132,7 @@ SceneGraphResult build_scene_graph(const SceneDescription& scene) {
         mesh_geometry(*mesh, material_colour(object.material_name, object.name), reason);
     if (!geometry) {
       result.errors.push_back(fmt::format("object '{}': OSG cannot draw its mesh: {}", object.name, reason));
+      result.object_transforms.emplace_back();
       continue;
     }
     auto transform = make_ref<osg::MatrixTransform>(to_osg(object.X_WO));
@@ -143,6 +145,7 @@ SceneGraphResult build_scene_graph(const SceneDescription& scene) {
       for (const Eigen::Vector3d& v : mesh->vertices_m) result.objects_bounds_W.extend(object.X_WO * v);
     }
     result.root->addChild(transform.get());
+    result.object_transforms.push_back(transform);
   }
   return result;
 }

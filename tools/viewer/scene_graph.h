@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 #include <osg/Geometry>
 #include <osg/Group>
+#include <osg/MatrixTransform>
 #include <osg/ref_ptr>
 
 #include <string>
@@ -21,6 +22,9 @@ struct SceneGraphResult {
   std::vector<std::string> errors;  ///< "object 'x': mesh file '...': file not found"
   /// Bounds of the non-plane objects in the world (empty when there are none).
   Eigen::AlignedBox3d objects_bounds_W;
+  /// Each object's transform, indexed like SceneDescription::objects (null where the
+  /// object could not be drawn): a moving object is moved by setting its matrix.
+  std::vector<osg::ref_ptr<osg::MatrixTransform>> object_transforms;
   [[nodiscard]] bool ok() const { return errors.empty(); }
 };
 

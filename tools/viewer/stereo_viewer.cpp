@@ -99,6 +99,7 @@ struct StereoViewer::Impl {
   Pose default_head = Pose::Identity();
   std::optional<RigState> last_state;
   std::vector<EyeView> views;
+  std::vector<osg::ref_ptr<osg::MatrixTransform>> object_transforms;
   std::uint64_t frames = 0;
 
   void place_cameras() {
@@ -141,6 +142,7 @@ StereoViewer::OpenResult StereoViewer::open(const ViewerScene& scene, const View
   auto impl = std::make_unique<Impl>();
   impl->options = options;
   impl->source = std::move(source);
+  impl->object_transforms = graph.object_transforms;
   impl->default_head = pick_default_head(graph.objects_bounds_W, options);
   if (options.show_grid) graph.root->addChild(floor_grid(3.0, 1.0, 0.25).get());
   impl->rig_graph = std::make_unique<RigGraph>(scene.rig, options.force_scale_m_per_N, options.show_device);
@@ -281,6 +283,11 @@ void StereoViewer::inject(const InputEvent& event) {
 
 void StereoViewer::set_overlay_text(const std::string& text) {
   if (impl_->hud) impl_->hud->set_text(text);
+}
+
+void StereoViewer::set_object_pose(std::size_t object, const Pose& X_WO) {
+  if (object >= impl_->object_transforms.size() || !impl_->object_transforms[object]) return;
+  impl_->object_transforms[object]->setMatrix(to_osg(X_WO));
 }
 
 const std::vector<EyeView>& StereoViewer::views() const { return impl_->views; }

@@ -76,6 +76,9 @@ class StereoViewer {
   void inject(const InputEvent& event);
   /// The text over the image (with options.overlay_text), from the next frame on.
   void set_overlay_text(const std::string& text);
+  /// Draws scene object `object` (its index in the scene's objects) at X_WO from the next
+  /// frame on: a moving object. An index the scene does not have is ignored.
+  void set_object_pose(std::size_t object, const Pose& X_WO);
 
   /// The eye views of the last frame (for tests: where a world point lands in the image).
   [[nodiscard]] const std::vector<EyeView>& views() const;
