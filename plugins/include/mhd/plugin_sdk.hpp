@@ -247,7 +247,7 @@ struct Calls {
   }
   static mhd_status display_write(mhd_plugin_instance* self, const mhd_display_frame* f, mhd_error* err) noexcept {
     return with(self, Need::Running, err, [&](Inst& s) {
-      const mhd_display_frame& frame = deref(f, "display_write: frame is NULL");
+      const mhd_display_frame& frame = deref(f, "display_write: NULL frame");
       return status_of([&] { return s.plugin.display_write(frame); });
     });
   }
