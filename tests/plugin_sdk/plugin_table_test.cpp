@@ -224,8 +224,8 @@ TEST_F(PluginTableTest, AGoodParameterSetIsNeverRefusedAndReachesTheClass) {
 }
 
 TEST_F(PluginTableTest, TheEntryServesOnlyItsOwnAbi) {
-  EXPECT_NE((mhd::sdk::entry<Probe, kProbeInfo>(MHD_PLUGIN_ABI_VERSION)), nullptr);
-  EXPECT_EQ((mhd::sdk::entry<Probe, kProbeInfo>(2)), nullptr);
+  EXPECT_EQ(mhd::sdk::entry(kProbe, MHD_PLUGIN_ABI_VERSION), &kProbe);
+  EXPECT_EQ(mhd::sdk::entry(kProbe, 2), nullptr);
 }
 
 }  // namespace

@@ -318,22 +318,23 @@ constexpr mhd_plugin_api plugin_table() {
 }
 
 /// What mhd_plugin_entry returns: the table for a host of this ABI version, else NULL.
-template <class P, const PluginInfo& I>
-const mhd_plugin_api* entry(uint32_t host_abi_version) noexcept {
-  static constexpr mhd_plugin_api kTable = plugin_table<P, I>();
-  return host_abi_version == MHD_PLUGIN_ABI_VERSION ? &kTable : nullptr;
+constexpr const mhd_plugin_api* entry(const mhd_plugin_api& table, uint32_t host_abi_version) noexcept {
+  return host_abi_version == MHD_PLUGIN_ABI_VERSION ? &table : nullptr;
 }
 
 }  // namespace mhd::sdk
 
 /// Exports mhd_plugin_entry for class `Class` (its full name) with the PluginInfo given as
-/// a braced list; write it once, at global scope, in one source file of the plugin.
-#define MHD_PLUGIN_ENTRY(Class, ...)                                                    \
-  namespace {                                                                           \
-  constexpr ::mhd::sdk::PluginInfo mhd_plugin_info_ __VA_ARGS__;                        \
-  }                                                                                     \
-  extern "C" MHD_PLUGIN_EXPORT const mhd_plugin_api* mhd_plugin_entry(uint32_t host_abi_version) { \
-    return ::mhd::sdk::entry<Class, mhd_plugin_info_>(host_abi_version);                \
+/// a braced list; write it once, at global scope, in one source file of the plugin. The
+/// table lives in an unnamed namespace: a static inside a template or inline function
+/// would be a GNU unique symbol, which dlclose cannot unload.
+#define MHD_PLUGIN_ENTRY(Class, ...)                                                                     \
+  namespace {                                                                                            \
+  constexpr ::mhd::sdk::PluginInfo mhd_plugin_info_ __VA_ARGS__;                                         \
+  constexpr mhd_plugin_api mhd_plugin_table_ = ::mhd::sdk::plugin_table<Class, mhd_plugin_info_>();      \
+  }                                                                                                      \
+  extern "C" MHD_PLUGIN_EXPORT const mhd_plugin_api* mhd_plugin_entry(uint32_t host_abi_version) {       \
+    return ::mhd::sdk::entry(mhd_plugin_table_, host_abi_version);                                       \
   }
 
 #endif  // MHD_PLUGIN_SDK_HPP
