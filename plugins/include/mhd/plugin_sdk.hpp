@@ -204,23 +204,26 @@ struct Calls {
   }
   static void close(mhd_plugin_instance* self) noexcept { delete reinterpret_cast<Inst*>(self); }
 
-  static mhd_status device_info(mhd_plugin_instance* self, mhd_device_info* out, mhd_error* err) noexcept {
-    return with(self, Need::Open, err, [&](Inst& s) {
-      mhd_device_info& o = deref(out, "device_info: out is NULL");
-      return status_of([&] { return s.plugin.device_info(o); });
+  /// A call with one pointer argument, which the host must not pass NULL: f(plugin, *arg).
+  template <class T, class F>
+  static mhd_status with_arg(mhd_plugin_instance* self, Need need, T* arg, const char* if_null, mhd_error* err,
+                             F&& f) noexcept {
+    return with(self, need, err, [&](Inst& s) {
+      T& a = deref(arg, if_null);
+      return status_of([&] { return f(s.plugin, a); });
     });
+  }
+
+  static mhd_status device_info(mhd_plugin_instance* self, mhd_device_info* out, mhd_error* err) noexcept {
+    return with_arg(self, Need::Open, out, "device_info: out is NULL", err, [](P& p, auto& o) { return p.device_info(o); });
   }
   static mhd_status device_read(mhd_plugin_instance* self, mhd_device_state* out, mhd_error* err) noexcept {
-    return with(self, Need::Running, err, [&](Inst& s) {
-      mhd_device_state& o = deref(out, "device_read: out is NULL");
-      return status_of([&] { return s.plugin.device_read(o); });
-    });
+    return with_arg(self, Need::Running, out, "device_read: out is NULL", err,
+                    [](P& p, auto& o) { return p.device_read(o); });
   }
   static mhd_status device_write(mhd_plugin_instance* self, const mhd_device_command* c, mhd_error* err) noexcept {
-    return with(self, Need::Running, err, [&](Inst& s) {
-      const mhd_device_command& command = deref(c, "device_write: command is NULL");
-      return status_of([&] { return s.plugin.device_write(command); });
-    });
+    return with_arg(self, Need::Running, c, "device_write: command is NULL", err,
+                    [](P& p, auto& command) { return p.device_write(command); });
   }
   static mhd_status tracker_read(mhd_plugin_instance* self, mhd_tracker_sample* out, size_t capacity, size_t* count,
                                  mhd_error* err) noexcept {
@@ -234,22 +237,15 @@ struct Calls {
     return with(self, Need::Running, err, [&](Inst& s) { return s.plugin.tracker_wait(timeout_s); });
   }
   static mhd_status base_read(mhd_plugin_instance* self, mhd_base_state* out, mhd_error* err) noexcept {
-    return with(self, Need::Running, err, [&](Inst& s) {
-      mhd_base_state& o = deref(out, "base_read: out is NULL");
-      return status_of([&] { return s.plugin.base_read(o); });
-    });
+    return with_arg(self, Need::Running, out, "base_read: out is NULL", err, [](P& p, auto& o) { return p.base_read(o); });
   }
   static mhd_status base_write(mhd_plugin_instance* self, const mhd_base_command* c, mhd_error* err) noexcept {
-    return with(self, Need::Running, err, [&](Inst& s) {
-      const mhd_base_command& command = deref(c, "base_write: command is NULL");
-      return status_of([&] { return s.plugin.base_write(command); });
-    });
+    return with_arg(self, Need::Running, c, "base_write: command is NULL", err,
+                    [](P& p, auto& command) { return p.base_write(command); });
   }
   static mhd_status display_write(mhd_plugin_instance* self, const mhd_display_frame* f, mhd_error* err) noexcept {
-    return with(self, Need::Running, err, [&](Inst& s) {
-      const mhd_display_frame& frame = deref(f, "display_write: NULL frame");
-      return status_of([&] { return s.plugin.display_write(frame); });
-    });
+    return with_arg(self, Need::Running, f, "display_write: NULL frame", err,
+                    [](P& p, auto& frame) { return p.display_write(frame); });
   }
   static mhd_status simulate_until(mhd_plugin_instance* self, double t_s, mhd_error* err) noexcept {
     return with(self, Need::Running, err, [&](Inst& s) { return status_of([&] { return s.plugin.simulate_until(t_s); }); });
@@ -279,6 +275,10 @@ constexpr mhd_plugin_api plugin_table() {
                       p.device_write(c);
                     },
                 "a device plugin needs device_info, device_read and device_write");
+  // Members a designated initialiser leaves out are value-initialised (NULL), as wanted
+  // here; GCC's -Wmissing-field-initializers warns about it all the same.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
   mhd_plugin_api t{
       .abi_version = MHD_PLUGIN_ABI_VERSION,
       .struct_size = sizeof(mhd_plugin_api),
@@ -292,18 +292,10 @@ constexpr mhd_plugin_api plugin_table() {
       .close = C::close,
       .params = params.empty() ? nullptr : params.data(),
       .param_count = params.size(),
-      .device_info = nullptr,
-      .device_read = nullptr,
-      .device_write = nullptr,
-      .tracker_read = nullptr,
-      .base_read = nullptr,
-      .base_write = nullptr,
-      .display_write = nullptr,
-      .simulate_until = nullptr,
-      .tracker_wait = nullptr,
-      .counters = nullptr,
   };
-  // if constexpr, not ?:, so the calls of members P lacks are never instantiated.
+#pragma GCC diagnostic pop
+  // Each kind entry is set only when P has the member (if constexpr, not ?:, so the calls
+  // of members P lacks are never instantiated).
   if constexpr (requires(P& p, mhd_device_info& o) { p.device_info(o); }) t.device_info = C::device_info;
   if constexpr (requires(P& p, mhd_device_state& o) { p.device_read(o); }) t.device_read = C::device_read;
   if constexpr (requires(P& p, const mhd_device_command& c) { p.device_write(c); }) t.device_write = C::device_write;
