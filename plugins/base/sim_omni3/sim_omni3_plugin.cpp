@@ -12,6 +12,7 @@
 #include <array>
 #include <memory>
 #include <numbers>
+#include <utility>
 
 namespace mhd::sim_omni3 {
 
@@ -84,16 +85,20 @@ class SimOmni3Plugin {
 
  private:
   static Omni3Config read_config(const mhd_host& host, const sdk::Params& params) {
+    // The numbers that go to the model as they are (their ranges are declared above).
+    constexpr std::array<std::pair<const char*, double Omni3Config::*>, 8> kPlainNumbers{{
+        {"base_radius_m", &Omni3Config::base_radius_m},
+        {"wheel_radius_m", &Omni3Config::wheel_radius_m},
+        {"max_speed_mps", &Omni3Config::max_speed_mps},
+        {"control_rate_hz", &Omni3Config::control_rate_hz},
+        {"motor_time_constant_s", &Omni3Config::motor_time_constant_s},
+        {"max_wheel_accel_mps2", &Omni3Config::max_wheel_accel_mps2},
+        {"slip_fraction", &Omni3Config::slip_fraction},
+        {"command_timeout_s", &Omni3Config::command_timeout_s},
+    }};
     Omni3Config c;
-    c.base_radius_m = params.number("base_radius_m", c.base_radius_m);
-    c.wheel_radius_m = params.number("wheel_radius_m", c.wheel_radius_m);
-    c.max_speed_mps = params.number("max_speed_mps", c.max_speed_mps);
+    for (const auto& [name, field] : kPlainNumbers) c.*field = params.number(name, c.*field);
     c.max_omega_radps = params.number("max_omega_degps", c.max_omega_radps / kDegToRad) * kDegToRad;
-    c.control_rate_hz = params.number("control_rate_hz", c.control_rate_hz);
-    c.motor_time_constant_s = params.number("motor_time_constant_s", c.motor_time_constant_s);
-    c.max_wheel_accel_mps2 = params.number("max_wheel_accel_mps2", c.max_wheel_accel_mps2);
-    c.slip_fraction = params.number("slip_fraction", c.slip_fraction);
-    c.command_timeout_s = params.number("command_timeout_s", c.command_timeout_s);
     c.seed = params.integer("seed", c.seed);
     // The start pose: the simulated world's base pose when there is one, each field
     // overridden by its parameter.
