@@ -37,7 +37,8 @@ install(FILES README.md LICENSE CITATION.cff DESTINATION "${CMAKE_INSTALL_DOCDIR
 install(DIRECTORY docs/ DESTINATION "${CMAKE_INSTALL_DOCDIR}" COMPONENT runtime)
 
 # ---- dev: the plugin ABI, the engine as a C++ API, the CMake package, pkg-config --------
-install(FILES "${MHD_PLUGIN_INCLUDE_DIR}/mhd/plugin_abi.h" "${MHD_PLUGIN_INCLUDE_DIR}/mhd/plugin_params.hpp" DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/mhd"
+install(FILES "${MHD_PLUGIN_INCLUDE_DIR}/mhd/plugin_abi.h" "${MHD_PLUGIN_INCLUDE_DIR}/mhd/plugin_params.hpp"
+              "${MHD_PLUGIN_INCLUDE_DIR}/mhd/plugin_sdk.hpp" "${MHD_PLUGIN_INCLUDE_DIR}/mhd/plugin_sdk_params.hpp" DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/mhd"
         COMPONENT dev)
 install(TARGETS mhd_plugin_abi EXPORT MHDPluginTargets COMPONENT dev)
 install(EXPORT MHDPluginTargets NAMESPACE MHD:: DESTINATION "${MHD_INSTALL_CMAKEDIR}" COMPONENT dev)

@@ -61,6 +61,10 @@ function(mhd_add_plugin)
     VISIBILITY_INLINES_HIDDEN ON
     MHD_PLUGIN_KIND "${ARG_KIND}")
   mhd_set_warnings(${target})
+  # GCC makes the statics of inline and template functions (std::to_string's digit table,
+  # used by the SDK's messages) GNU unique symbols, and a library holding one is never
+  # unloaded by dlclose; the host unloads plugins it no longer uses.
+  target_compile_options(${target} PRIVATE $<$<COMPILE_LANG_AND_ID:CXX,GNU>:-fno-gnu-unique>)
   # A symbol the plugin forgot to link is a build error, not a dlopen failure later.
   target_link_options(${target} PRIVATE "LINKER:--no-undefined")
   # Engine libraries a plugin links stay out of its dynamic table (only the entry is

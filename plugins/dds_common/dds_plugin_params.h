@@ -1,21 +1,18 @@
 #pragma once
-// The parameters every DDS plugin takes: rig_id, domain_id, config_file and identity_dir. Header-only
-// and for plugins that link mhd_plugin_sim_common (ParamReader).
+// The parameters every DDS plugin takes: rig_id, domain_id, config_file and identity_dir.
+// Header-only, for plugins written with the SDK (mhd/plugin_sdk.hpp), which has checked
+// the values against kEndpointParams before read_endpoint reads them.
 
 #include "dds_common/dds_entity.h"
-#include "sim_common/plugin_params.h"
 
 #include <mhd/plugin_params.hpp>
+#include <mhd/plugin_sdk_params.hpp>
 
 #include <array>
-
-#include <mhd/plugin_abi.h>
-
 #include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
-#include <string_view>
 
 namespace mhd::dds {
 
@@ -27,25 +24,6 @@ struct DdsEndpoint {
   std::optional<std::filesystem::path> identity_dir;
 };
 
-/// An optional text parameter. ParamReader has no optional_text; required_text marks the
-/// name as known (for reject_unknown's list) before it throws for a missing one.
-inline std::optional<std::string> optional_text(plugin_support::ParamReader& reader, const mhd_param* params,
-                                                std::size_t count, const char* name) {
-  for (std::size_t i = 0; i < count; ++i) {
-    if (params[i].name != nullptr && std::string_view(params[i].name) == name) return reader.required_text(name);
-  }
-  try {
-    (void)reader.required_text(name);
-  } catch (const plugin_support::ParamError&) {
-  }
-  return std::nullopt;
-}
-
-/// Reads rig_id (default 0), domain_id (0..232, which keeps Cyclone's port numbers
-/// 7400 + 250 * id + ... in range; default: the configuration's) and config_file (a
-/// relative path is relative to the scene file). config_file needs domain_id.
-/// identity_dir: a DDS Security identity folder (participant_security.h), a relative
-/// path relative to the scene file's folder.
 /// The parameters read_endpoint reads, for a DDS plugin's declarations (sdk::join).
 inline constexpr std::array kEndpointParams{
     sdk::integer("rig_id", "", "0", "the rig whose topics this plugin uses (a DDS partition)",
@@ -55,18 +33,20 @@ inline constexpr std::array kEndpointParams{
     sdk::text("identity_dir", nullptr, "DDS Security identity folder, relative to the scene (docs/networking.md)"),
 };
 
-inline DdsEndpoint read_endpoint(plugin_support::ParamReader& reader, const mhd_param* params, std::size_t count,
-                                 const char* scene_file) {
-  constexpr std::uint64_t kNoDomain = UINT64_MAX;
+/// Reads rig_id (default 0), domain_id (0..232, which keeps Cyclone's port numbers
+/// 7400 + 250 * id + ... in range; default: the configuration's) and config_file (a
+/// relative path is relative to the scene file). config_file needs domain_id.
+/// identity_dir: a DDS Security identity folder (participant_security.h), a relative
+/// path relative to the scene file's folder.
+inline DdsEndpoint read_endpoint(const sdk::Params& params, const char* scene_file) {
   DdsEndpoint e;
-  e.rig_id = static_cast<std::uint32_t>(reader.unsigned_integer("rig_id", 0, UINT32_MAX));
-  const std::uint64_t domain_id = reader.unsigned_integer("domain_id", kNoDomain, 232);
-  if (domain_id != kNoDomain) e.domain_id = static_cast<dds_domainid_t>(domain_id);
-  if (const auto file = optional_text(reader, params, count, "config_file")) {
-    if (e.domain_id == DDS_DOMAIN_DEFAULT) throw plugin_support::ParamError("parameter 'config_file' needs 'domain_id'");
+  e.rig_id = static_cast<std::uint32_t>(params.integer("rig_id"));
+  if (const auto domain_id = params.optional_integer("domain_id")) e.domain_id = static_cast<dds_domainid_t>(*domain_id);
+  if (const auto file = params.optional_text("config_file")) {
+    if (e.domain_id == DDS_DOMAIN_DEFAULT) throw sdk::ParamError("parameter 'config_file' needs 'domain_id'");
     e.config = config_file_uri(*file, scene_file);
   }
-  if (const auto dir = optional_text(reader, params, count, "identity_dir")) {
+  if (const auto dir = params.optional_text("identity_dir")) {
     std::filesystem::path path(*dir);
     if (path.is_relative() && scene_file != nullptr && scene_file[0] != '\0') {
       path = std::filesystem::path(scene_file).parent_path() / path;

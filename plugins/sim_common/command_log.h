@@ -36,7 +36,8 @@ class CommandLog {
   CommandLog& operator=(const CommandLog&) = delete;
 
   /// Real-time side: never blocks, allocates or does I/O. One producer at a time (the
-  /// plugins call it inside plugin_support::with_instance). A full ring drops the row (counted).
+  /// plugins call it inside SDK calls, which mhd/plugin_sdk.hpp runs one at a time). A
+  /// full ring drops the row (counted).
   void add(double t_s, CommandEvent event, const std::array<double, 3>& values) noexcept;
   [[nodiscard]] std::uint64_t dropped() const noexcept { return dropped_.load(std::memory_order_relaxed); }
 

@@ -33,7 +33,8 @@ for f in bin/mhd bin/mhd-mesh-gen \
          share/mhd/scenes/dolphin.xml share/mhd/scenes/scene.xsd share/mhd/scenes/common/materials.xml \
          share/mhd/assets/dolphin.ply share/mhd/plots/force_traces.py \
          share/doc/mhd/README.md share/doc/mhd/LICENSE share/doc/mhd/plugins.md share/doc/mhd/licensing.md \
-         include/mhd/plugin_abi.h include/mhd/plugin_params.hpp include/mhd/engine/proxy/god_object.h \
+         include/mhd/plugin_abi.h include/mhd/plugin_params.hpp include/mhd/plugin_sdk.hpp include/mhd/plugin_sdk_params.hpp \
+         include/mhd/engine/proxy/god_object.h \
          "$libdir/libmhd_proxy.a" "$libdir/cmake/MHD/MHDConfig.cmake" "$libdir/cmake/MHD/MHDConfigVersion.cmake" \
          "$libdir/cmake/MHD/MhdPlugin.cmake" "$libdir/pkgconfig/mhd-plugin.pc"; do
   [ -f "$prefix/$f" ] || fail "not installed: $f"

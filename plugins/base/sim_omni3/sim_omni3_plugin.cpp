@@ -6,206 +6,130 @@
 
 #include "sim_omni3_model.h"
 #include "sim_common/command_log.h"
-#include "sim_common/plugin_params.h"
-#include "sim_common/plugin_shell.h"
 
-#include <mhd/plugin_abi.h>
-#include <mhd/plugin_params.hpp>
+#include <mhd/plugin_sdk.hpp>
 
 #include <array>
-#include <cmath>
 #include <memory>
-#include <atomic>
 #include <numbers>
-#include <stdexcept>
-#include <string>
 #include <utility>
 
 namespace mhd::sim_omni3 {
-namespace {
 
-using plugin_support::guarded_open;
+using plugin_support::CommandEvent;
 
 constexpr double kDegToRad = std::numbers::pi / 180.0;
 
-struct Config {
-  Omni3Config model;
-  std::string command_log;  ///< empty: none
-};
+class SimOmni3Plugin {
+ public:
+  static constexpr std::array kParams{
+      sdk::number("base_radius_m", "m", "0.2", "from the centre to each wheel", sdk::positive()),
+      sdk::number("wheel_radius_m", "m", "0.04", "each omni wheel's radius", sdk::positive()),
+      sdk::number("max_speed_mps", "m/s", "0.5", "the fastest the base drives", sdk::positive()),
+      sdk::number("max_omega_degps", "deg/s", "40", "the fastest it turns", sdk::positive()),
+      sdk::number("control_rate_hz", "Hz", "50", "the motor controller's rate", sdk::positive()),
+      sdk::number("motor_time_constant_s", "s", "0.05", "first-order lag of each wheel's speed", sdk::non_negative()),
+      sdk::number("max_wheel_accel_mps2", "m/s^2", "1", "each wheel's acceleration limit", sdk::positive()),
+      sdk::number("slip_fraction", "", "0", "wheel slip, a fraction of the commanded motion", sdk::fraction()),
+      sdk::number("command_timeout_s", "s", "0.2", "the controller's own watchdog: stops without a fresh command",
+                  sdk::positive()),
+      sdk::integer("seed", "", "0", "slip noise seed"),
+      sdk::number("x_m", "m", nullptr, "start position x, world (default: the simulated world's base)"),
+      sdk::number("z_m", "m", nullptr, "start position z, world (default: the simulated world's base)"),
+      sdk::number("heading_deg", "deg", nullptr, "start heading (default: the simulated world's base)"),
+      sdk::text("command_log", nullptr, "a CSV file that receives every command and watchdog firing"),
+  };
 
-struct Instance {
-  Instance(const mhd_host& h, const Config& config) : host(h), model(config.model) {
-    if (!config.command_log.empty()) {
-      log = std::make_unique<plugin_support::CommandLog>(config.command_log,
-                                                         std::array{"vx_mps", "vz_mps", "omega_radps"});
+  SimOmni3Plugin(const mhd_host& host, const sdk::Params& params) : host_(host), model_(read_config(host, params)) {
+    if (const auto file = params.optional_text("command_log")) {
+      log_ = std::make_unique<plugin_support::CommandLog>(*file, std::array{"vx_mps", "vz_mps", "omega_radps"});
     }
   }
 
-  std::atomic<bool> in_call{false};  ///< plugin_support::with_instance's
-  mhd_host host;
-  Omni3Model model;
-  bool started = false;
-  bool read_once = false;
-  double last_read_time_s = 0.0;
-  std::unique_ptr<plugin_support::CommandLog> log;  ///< written inside with_instance only: one producer
+  void start() {
+    const double now = sdk::host_now(host_);
+    model_.start(now);
+    read_once_ = false;
+    log_event(now, CommandEvent::Start);
+    publish_pose();
+  }
+  // The base stands where it is; start() begins again from here.
+  void stop() { log_event(sdk::host_now(host_), CommandEvent::Stop); }
 
-  void log_event(double t_s, plugin_support::CommandEvent event, const std::array<double, 3>& values = {}) noexcept {
-    if (log) log->add(t_s, event, values);
+  mhd_status base_read(mhd_base_state& out) {
+    const double t = model_.time_s();
+    if (read_once_ && t == last_read_time_s_) return MHD_NO_DATA;
+    const PlanarPose& p = model_.pose();
+    const Twist v_W = model_.velocity_W();
+    out = mhd_base_state{t, p.x_m, p.z_m, p.heading_rad, v_W[0], v_W[1], v_W[2]};
+    read_once_ = true;
+    last_read_time_s_ = t;
+    return MHD_OK;
+  }
+
+  void base_write(const mhd_base_command& command) {
+    const double now = sdk::host_now(host_);
+    model_.command(Twist(command.vx_mps, command.vz_mps, command.omega_radps), now);
+    log_event(now, CommandEvent::Command, {command.vx_mps, command.vz_mps, command.omega_radps});
+  }
+
+  void simulate_until(double t_s) {
+    const bool was_commanded = !model_.watchdog_stopped();
+    model_.simulate_until(t_s);
+    if (was_commanded && model_.watchdog_stopped()) {
+      // The base's own watchdog fired: the last command expired command_timeout_s after it came.
+      log_event(model_.command_time_s() + model_.config().command_timeout_s, CommandEvent::Timeout);
+    }
+    publish_pose();
+  }
+
+ private:
+  static Omni3Config read_config(const mhd_host& host, const sdk::Params& params) {
+    // The numbers that go to the model as they are (their ranges are declared above).
+    constexpr std::array<std::pair<const char*, double Omni3Config::*>, 8> kPlainNumbers{{
+        {"base_radius_m", &Omni3Config::base_radius_m},
+        {"wheel_radius_m", &Omni3Config::wheel_radius_m},
+        {"max_speed_mps", &Omni3Config::max_speed_mps},
+        {"control_rate_hz", &Omni3Config::control_rate_hz},
+        {"motor_time_constant_s", &Omni3Config::motor_time_constant_s},
+        {"max_wheel_accel_mps2", &Omni3Config::max_wheel_accel_mps2},
+        {"slip_fraction", &Omni3Config::slip_fraction},
+        {"command_timeout_s", &Omni3Config::command_timeout_s},
+    }};
+    Omni3Config c;
+    for (const auto& [name, field] : kPlainNumbers) c.*field = params.number(name, c.*field);
+    c.max_omega_radps = params.number("max_omega_degps", c.max_omega_radps / kDegToRad) * kDegToRad;
+    c.seed = params.integer("seed", c.seed);
+    // The start pose: the simulated world's base pose when there is one, each field
+    // overridden by its parameter.
+    PlanarPose& p = c.initial_pose;
+    if (host.sim_world != nullptr) host.sim_world->get_base_pose(host.sim_world->context, &p.x_m, &p.z_m, &p.heading_rad);
+    p.x_m = params.number("x_m", p.x_m);
+    p.z_m = params.number("z_m", p.z_m);
+    if (const auto heading_deg = params.optional_number("heading_deg")) p.heading_rad = *heading_deg * kDegToRad;
+    return c;
+  }
+
+  void log_event(double t_s, CommandEvent event, const std::array<double, 3>& values = {}) noexcept {
+    if (log_) log_->add(t_s, event, values);
   }
 
   void publish_pose() {
-    if (host.sim_world == nullptr) return;
-    const PlanarPose& p = model.pose();
-    host.sim_world->set_base_pose(host.sim_world->context, p.x_m, p.z_m, p.heading_rad);
+    if (host_.sim_world == nullptr) return;
+    const PlanarPose& p = model_.pose();
+    host_.sim_world->set_base_pose(host_.sim_world->context, p.x_m, p.z_m, p.heading_rad);
   }
+
+  mhd_host host_;
+  Omni3Model model_;
+  bool read_once_ = false;
+  double last_read_time_s_ = 0.0;
+  std::unique_ptr<plugin_support::CommandLog> log_;  ///< written inside SDK calls only: one producer
 };
 
-constexpr std::array kParams{
-    sdk::number("base_radius_m", "m", "0.2", "from the centre to each wheel", sdk::positive()),
-    sdk::number("wheel_radius_m", "m", "0.04", "each omni wheel's radius", sdk::positive()),
-    sdk::number("max_speed_mps", "m/s", "0.5", "the fastest the base drives", sdk::positive()),
-    sdk::number("max_omega_degps", "deg/s", "40", "the fastest it turns", sdk::positive()),
-    sdk::number("control_rate_hz", "Hz", "50", "the motor controller's rate", sdk::positive()),
-    sdk::number("motor_time_constant_s", "s", "0.05", "first-order lag of each wheel's speed", sdk::non_negative()),
-    sdk::number("max_wheel_accel_mps2", "m/s^2", "1", "each wheel's acceleration limit", sdk::positive()),
-    sdk::number("slip_fraction", "", "0", "wheel slip, a fraction of the commanded motion", sdk::fraction()),
-    sdk::number("command_timeout_s", "s", "0.2", "the controller's own watchdog: stops without a fresh command",
-                sdk::positive()),
-    sdk::integer("seed", "", "0", "slip noise seed"),
-    sdk::number("x_m", "m", nullptr, "start position x, world (default: the simulated world's base)"),
-    sdk::number("z_m", "m", nullptr, "start position z, world (default: the simulated world's base)"),
-    sdk::number("heading_deg", "deg", nullptr, "start heading (default: the simulated world's base)"),
-    sdk::text("command_log", nullptr, "a CSV file that receives every command and watchdog firing"),
-};
-
-Config read_config(const mhd_host& host, const mhd_param* params, std::size_t count) {
-  plugin_support::ParamReader reader(kParams, params, count);
-  Config config;
-  Omni3Config& c = config.model;
-  c.base_radius_m = reader.positive("base_radius_m", c.base_radius_m);
-  c.wheel_radius_m = reader.positive("wheel_radius_m", c.wheel_radius_m);
-  c.max_speed_mps = reader.positive("max_speed_mps", c.max_speed_mps);
-  c.max_omega_radps = reader.positive("max_omega_degps", c.max_omega_radps / kDegToRad) * kDegToRad;
-  c.control_rate_hz = reader.positive("control_rate_hz", c.control_rate_hz);
-  c.motor_time_constant_s = reader.non_negative("motor_time_constant_s", c.motor_time_constant_s);
-  c.max_wheel_accel_mps2 = reader.positive("max_wheel_accel_mps2", c.max_wheel_accel_mps2);
-  c.slip_fraction = reader.fraction("slip_fraction", c.slip_fraction);
-  c.command_timeout_s = reader.positive("command_timeout_s", c.command_timeout_s);
-  c.seed = reader.unsigned_integer("seed", c.seed, UINT64_MAX);
-  // The start pose: the simulated world's base pose when there is one, each field
-  // overridden by its parameter.
-  PlanarPose& p = c.initial_pose;
-  if (host.sim_world != nullptr) host.sim_world->get_base_pose(host.sim_world->context, &p.x_m, &p.z_m, &p.heading_rad);
-  p.x_m = reader.number("x_m", p.x_m);
-  p.z_m = reader.number("z_m", p.z_m);
-  if (const auto heading_deg = reader.optional_number("heading_deg")) p.heading_rad = *heading_deg * kDegToRad;
-  config.command_log = reader.optional_text("command_log").value_or("");
-  reader.reject_unknown();
-  return config;
-}
-
-mhd_plugin_instance* open_instance(const mhd_host* host, const mhd_param* params, size_t param_count, mhd_error* err) {
-  return guarded_open(err, [&] {
-    plugin_support::check_host(host);
-    plugin_support::check_sim_world(*host);
-    auto* instance = new Instance(*host, read_config(*host, params, param_count));
-    return reinterpret_cast<mhd_plugin_instance*>(instance);
-  });
-}
-
-// Every instance call: find, lock and (for Need::Running) check the instance.
-template <class F>
-mhd_status call(mhd_plugin_instance* self, plugin_support::Need need, mhd_error* err, F&& f) {
-  return plugin_support::with_instance<Instance>(MHD_PLUGIN_NAME, self, need, err, std::forward<F>(f));
-}
-
-mhd_status start_instance(mhd_plugin_instance* self, mhd_error* err) {
-  return call(self, plugin_support::Need::Open, err, [&](Instance& s) {
-    const double now = plugin_support::host_now(s.host);
-    s.model.start(now);
-    s.started = true;
-    s.read_once = false;
-    s.log_event(now, plugin_support::CommandEvent::Start);
-    s.publish_pose();
-    return MHD_OK;
-  });
-}
-
-mhd_status stop_instance(mhd_plugin_instance* self, mhd_error* err) {
-  return call(self, plugin_support::Need::Open, err, [&](Instance& s) {
-    if (s.started) s.log_event(plugin_support::host_now(s.host), plugin_support::CommandEvent::Stop);
-    s.started = false;  // the base stands where it is; start() begins again from here
-    return MHD_OK;
-  });
-}
-
-void close_instance(mhd_plugin_instance* self) { delete reinterpret_cast<Instance*>(self); }
-
-mhd_status base_read(mhd_plugin_instance* self, mhd_base_state* out, mhd_error* err) {
-  return call(self, plugin_support::Need::Running, err, [&](Instance& s) {
-    if (out == nullptr) throw std::invalid_argument("base_read: out is NULL");
-    const double t = s.model.time_s();
-    if (s.read_once && t == s.last_read_time_s) return MHD_NO_DATA;
-    const PlanarPose& p = s.model.pose();
-    const Twist v_W = s.model.velocity_W();
-    *out = mhd_base_state{t, p.x_m, p.z_m, p.heading_rad, v_W[0], v_W[1], v_W[2]};
-    s.read_once = true;
-    s.last_read_time_s = t;
-    return MHD_OK;
-  });
-}
-
-mhd_status base_write(mhd_plugin_instance* self, const mhd_base_command* command, mhd_error* err) {
-  return call(self, plugin_support::Need::Running, err, [&](Instance& s) {
-    if (command == nullptr) throw std::invalid_argument("base_write: command is NULL");
-    const double now = plugin_support::host_now(s.host);
-    s.model.command(Twist(command->vx_mps, command->vz_mps, command->omega_radps), now);
-    s.log_event(now, plugin_support::CommandEvent::Command, {command->vx_mps, command->vz_mps, command->omega_radps});
-    return MHD_OK;
-  });
-}
-
-mhd_status simulate_until(mhd_plugin_instance* self, double t_s, mhd_error* err) {
-  return call(self, plugin_support::Need::Running, err, [&](Instance& s) {
-    const bool was_commanded = !s.model.watchdog_stopped();
-    s.model.simulate_until(t_s);
-    if (was_commanded && s.model.watchdog_stopped()) {
-      // The base's own watchdog fired: the last command expired command_timeout_s after it came.
-      s.log_event(s.model.command_time_s() + s.model.config().command_timeout_s, plugin_support::CommandEvent::Timeout);
-    }
-    s.publish_pose();
-    return MHD_OK;
-  });
-}
-
-constexpr mhd_plugin_api kApi = {
-    .abi_version = MHD_PLUGIN_ABI_VERSION,
-    .struct_size = sizeof(mhd_plugin_api),
-    .kind = MHD_PLUGIN_KIND,
-    .name = MHD_PLUGIN_NAME,
-    .version = "1.0.0",
-    .description = "Simulated three-omni-wheel base: 50 Hz wheel-speed control, limits, watchdog, optional slip",
-    .open = open_instance,
-    .start = start_instance,
-    .stop = stop_instance,
-    .close = close_instance,
-    .params = kParams.data(),
-    .param_count = kParams.size(),
-    .device_info = nullptr,
-    .device_read = nullptr,
-    .device_write = nullptr,
-    .tracker_read = nullptr,
-    .base_read = base_read,
-    .base_write = base_write,
-    .display_write = nullptr,
-    .simulate_until = simulate_until,
-    .tracker_wait = nullptr,
-    .counters = nullptr,
-};
-
-}  // namespace
 }  // namespace mhd::sim_omni3
 
-extern "C" MHD_PLUGIN_EXPORT const mhd_plugin_api* mhd_plugin_entry(uint32_t host_abi_version) {
-  return host_abi_version == MHD_PLUGIN_ABI_VERSION ? &mhd::sim_omni3::kApi : nullptr;
-}
+MHD_PLUGIN_ENTRY(mhd::sim_omni3::SimOmni3Plugin,
+                 {.kind = MHD_PLUGIN_KIND, .name = MHD_PLUGIN_NAME, .version = "1.0.0",
+                  .description = "Simulated three-omni-wheel base: 50 Hz wheel-speed control, limits, watchdog, "
+                                 "optional slip"})

@@ -2,18 +2,15 @@
 #include "test_device.h"
 
 namespace {
-const mhd_param_decl kBadParams[] = {
-    {"rate_hz", MHD_PARAM_NUMBER, "Hz", MHD_PARAM_HAS_MIN | MHD_PARAM_MIN_EXCLUSIVE, 0.0, 0.0, nullptr, "0",
-     "samples per second"},
+
+struct BadDeclaration : test_device::Device {
+  static constexpr std::array kParams{
+      mhd::sdk::number("rate_hz", "Hz", "0", "samples per second", mhd::sdk::positive()),
+  };
+  BadDeclaration(const mhd_host& host, const mhd::sdk::Params&) : Device(host, test_device::Settings{}) {}
 };
+
 }  // namespace
 
-extern "C" const mhd_plugin_api* mhd_plugin_entry(uint32_t /*host_abi_version*/) {
-  static const mhd_plugin_api api = [] {
-    mhd_plugin_api a = test_device::make_api();
-    a.params = kBadParams;
-    a.param_count = 1;
-    return a;
-  }();
-  return &api;
-}
+MHD_PLUGIN_ENTRY(BadDeclaration, {.kind = MHD_KIND_DEVICE, .name = MHD_PLUGIN_NAME, .version = "1.2.3",
+                                  .description = "test device with a bad declaration"})

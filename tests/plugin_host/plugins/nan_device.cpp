@@ -4,18 +4,17 @@
 #include <limits>
 
 namespace {
-mhd_status read_nan(mhd_plugin_instance* self, mhd_device_state* out, mhd_error* err) {
-  const mhd_status status = test_device::read(self, out, err);
-  out->p_D_tool_m[1] = std::numeric_limits<double>::quiet_NaN();
-  return status;
-}
+
+struct NanDevice : test_device::Device {
+  using Device::Device;
+  mhd_status device_read(mhd_device_state& out) {
+    const mhd_status status = Device::device_read(out);
+    out.p_D_tool_m[1] = std::numeric_limits<double>::quiet_NaN();
+    return status;
+  }
+};
+
 }  // namespace
 
-extern "C" const mhd_plugin_api* mhd_plugin_entry(uint32_t /*host_abi_version*/) {
-  static const mhd_plugin_api api = [] {
-    mhd_plugin_api a = test_device::make_api();
-    a.device_read = read_nan;
-    return a;
-  }();
-  return &api;
-}
+MHD_PLUGIN_ENTRY(NanDevice, {.kind = MHD_KIND_DEVICE, .name = MHD_PLUGIN_NAME, .version = "1.2.3",
+                             .description = "test device that reads NaN"})

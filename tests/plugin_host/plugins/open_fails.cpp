@@ -2,17 +2,14 @@
 #include "test_device.h"
 
 namespace {
-mhd_plugin_instance* open_fails(const mhd_host*, const mhd_param*, size_t, mhd_error* err) {
-  test_device::fail(err, "no device on /dev/ttyUSB0");
-  return nullptr;
-}
+
+struct OpenFails : test_device::Device {
+  OpenFails(const mhd_host& host, const mhd::sdk::Params& params) : Device(host, params) {
+    throw std::runtime_error("no device on /dev/ttyUSB0");
+  }
+};
+
 }  // namespace
 
-extern "C" const mhd_plugin_api* mhd_plugin_entry(uint32_t /*host_abi_version*/) {
-  static const mhd_plugin_api api = [] {
-    mhd_plugin_api a = test_device::make_api();
-    a.open = open_fails;
-    return a;
-  }();
-  return &api;
-}
+MHD_PLUGIN_ENTRY(OpenFails, {.kind = MHD_KIND_DEVICE, .name = MHD_PLUGIN_NAME, .version = "1.2.3",
+                             .description = "test device whose open fails"})

@@ -2,23 +2,13 @@
 #include "test_device.h"
 
 namespace {
-mhd_plugin_instance* open_without_params(const mhd_host* host, const mhd_param* params, size_t count,
-                                         mhd_error* err) {
-  if (count > 0) {
-    test_device::fail_naming(err, "unknown parameter", params[0].name);
-    return nullptr;
-  }
-  return test_device::open(host, params, count, err);
-}
+
+struct NoParams : test_device::Device {
+  static constexpr std::array<mhd_param_decl, 0> kParams{};
+  NoParams(const mhd_host& host, const mhd::sdk::Params&) : Device(host, test_device::Settings{}) {}
+};
+
 }  // namespace
 
-extern "C" const mhd_plugin_api* mhd_plugin_entry(uint32_t /*host_abi_version*/) {
-  static const mhd_plugin_api api = [] {
-    mhd_plugin_api a = test_device::make_api();
-    a.open = open_without_params;
-    a.params = nullptr;
-    a.param_count = 0;
-    return a;
-  }();
-  return &api;
-}
+MHD_PLUGIN_ENTRY(NoParams, {.kind = MHD_KIND_DEVICE, .name = MHD_PLUGIN_NAME, .version = "1.2.3",
+                            .description = "test device without parameters"})

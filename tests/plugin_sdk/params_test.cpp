@@ -1,5 +1,5 @@
-#include "sim_common/plugin_params.h"
-#include "sim_common/plugin_shell.h"
+#include <mhd/plugin_sdk.hpp>
+#include <mhd/plugin_sdk_params.hpp>
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace mhd::plugin_support {
+namespace mhd::sdk {
 namespace {
 
 std::vector<mhd_param> params(std::initializer_list<std::pair<const char*, const char*>> list) {
@@ -37,27 +37,40 @@ constexpr std::array kDecls{
     sdk::number("x_m", "m", nullptr, "a number"),
     sdk::quaternion("q", nullptr, "an orientation"),
     sdk::required_text("file", "a file"),
+    sdk::boolean("on", "false", "a switch"),
 };
 
-TEST(ParamReader, ReadsTypedValuesAndFallsBack) {
+TEST(SdkParams, ReadsTypedValuesAndFallsBack) {
   const auto p = params({{"rate_hz", " 90 "}, {"offset_m", "0.1 -2 3e-3"}, {"seed", "12"}, {"slip", "0.25"},
                          {"q", "0 0 2 0"}, {"file", "a.csv"}});
-  ParamReader r(kDecls, p.data(), p.size());
-  EXPECT_EQ(r.positive("rate_hz", 180.0), 90.0);
-  EXPECT_EQ(r.positive("absent", 7.0), 7.0);
-  EXPECT_EQ(r.vector3("offset_m", Eigen::Vector3d::Zero()), Eigen::Vector3d(0.1, -2.0, 3e-3));
-  EXPECT_EQ(r.unsigned_integer("seed", 0, 100), 12u);
-  EXPECT_EQ(r.fraction("slip", 0.0), 0.25);
+  Params r(kDecls, p.data(), p.size());
+  EXPECT_EQ(r.number("rate_hz", 180.0), 90.0);
+  EXPECT_EQ(r.number("absent", 7.0), 7.0);
+  EXPECT_EQ(r.vector3("offset_m", std::array{0.0, 0.0, 0.0}), (std::array{0.1, -2.0, 3e-3}));
+  EXPECT_EQ(r.integer("seed", 0), 12u);
+  EXPECT_EQ(r.number("slip"), 0.25);
   EXPECT_FALSE(r.optional_number("x_m").has_value());
-  EXPECT_EQ(r.optional_quaternion("q")->coeffs(), Eigen::Vector4d(0.0, 1.0, 0.0, 0.0));  // x y z w
-  EXPECT_EQ(r.required_text("file"), "a.csv");
-  r.reject_unknown();
+  EXPECT_EQ(*r.optional_quaternion("q"), (std::array{0.0, 0.0, 1.0, 0.0}));  // w x y z, normalised
+  EXPECT_EQ(r.text("file"), "a.csv");
+  EXPECT_TRUE(r.given("file"));
+  EXPECT_FALSE(r.given("absent"));
 }
 
-TEST(ParamReader, TheDeclarationsRefuseBadValuesNamingParameterValueAndRule) {
+TEST(SdkParams, AbsentValuesComeFromTheDeclaredDefaults) {
+  const auto p = params({{"file", "a.csv"}});
+  Params r(kDecls, p.data(), p.size());
+  EXPECT_EQ(r.number("rate_hz"), 180.0);
+  EXPECT_EQ(r.integer("seed"), 0u);
+  EXPECT_FALSE(r.boolean("on"));
+  EXPECT_TRUE(r.boolean("on", true));  // a fallback wins over the default
+  EXPECT_THROW((void)r.number("x_m"), std::logic_error);  // no default: optional_number is the way
+  EXPECT_FALSE(r.optional_vector3("offset_m").has_value());
+}
+
+TEST(SdkParams, TheDeclarationsRefuseBadValuesNamingParameterValueAndRule) {
   const auto message = [](const char* name, const char* value) {
     const auto p = params({{name, value}, {"file", "f"}});
-    return error_of([&] { ParamReader r(kDecls, p.data(), p.size()); });
+    return error_of([&] { Params r(kDecls, p.data(), p.size()); });
   };
   EXPECT_EQ(message("rate_hz", "abc"), "parameter 'rate_hz' must be a number > 0 (Hz), got 'abc'");
   EXPECT_EQ(message("rate_hz", "0"), "parameter 'rate_hz' must be a number > 0 (Hz), got '0'");
@@ -77,46 +90,46 @@ TEST(ParamReader, TheDeclarationsRefuseBadValuesNamingParameterValueAndRule) {
   EXPECT_EQ(message("rate_hz", "1e-9"), "");
 }
 
-TEST(ParamReader, RejectsUnknownDuplicateAndMissingParameters) {
+TEST(SdkParams, RejectsUnknownDuplicateAndMissingParameters) {
   const auto p = params({{"rate_hz", "90"}, {"colour", "red"}, {"file", "f"}});
-  EXPECT_EQ(error_of([&] { ParamReader r(kDecls, p.data(), p.size()); }),
-            "unknown parameter 'colour' (known: rate_hz, absent, offset_m, seed, slip, x_m, q, file)");
+  EXPECT_EQ(error_of([&] { Params r(kDecls, p.data(), p.size()); }),
+            "unknown parameter 'colour' (known: rate_hz, absent, offset_m, seed, slip, x_m, q, file, on)");
   const auto missing = params({{"rate_hz", "90"}});
-  EXPECT_EQ(error_of([&] { ParamReader r(kDecls, missing.data(), missing.size()); }),
+  EXPECT_EQ(error_of([&] { Params r(kDecls, missing.data(), missing.size()); }),
             "parameter 'file' is required");
   const auto twice = params({{"file", "1"}, {"file", "2"}});
-  EXPECT_EQ(error_of([&] { ParamReader r(kDecls, twice.data(), twice.size()); }), "parameter 'file' is given twice");
+  EXPECT_EQ(error_of([&] { Params r(kDecls, twice.data(), twice.size()); }), "parameter 'file' is given twice");
   const auto null_value = params({{"file", nullptr}});
-  EXPECT_EQ(error_of([&] { ParamReader r(kDecls, null_value.data(), null_value.size()); }),
+  EXPECT_EQ(error_of([&] { Params r(kDecls, null_value.data(), null_value.size()); }),
             "parameter 0 has a NULL name or value");
 }
 
-TEST(ParamReader, AGetterForAnUndeclaredNameIsAPluginBug) {
+TEST(SdkParams, AGetterForAnUndeclaredNameIsAPluginBug) {
   const auto p = params({{"file", "f"}});
-  ParamReader r(kDecls, p.data(), p.size());
-  EXPECT_THROW((void)r.positive("latency_s", 1.0), std::logic_error);
+  Params r(kDecls, p.data(), p.size());
+  EXPECT_THROW((void)r.number("latency_s", 1.0), std::logic_error);
 }
 
-TEST(ParamReader, ShortensALongErrorToFitAnErrorMessage) {
+TEST(SdkParams, ShortensALongErrorToFitAnErrorMessage) {
   std::vector<std::string> names;
   for (int i = 0; i < 40; ++i) names.push_back("parameter_" + std::to_string(i));
   std::vector<mhd_param_decl> decls;
   for (const std::string& name : names) decls.push_back(sdk::number(name.c_str(), "", nullptr, "doc"));
   const auto p = params({{"x", "1"}});
-  const std::string message = error_of([&] { ParamReader r(decls, p.data(), p.size()); });
+  const std::string message = error_of([&] { Params r(decls, p.data(), p.size()); });
   EXPECT_LE(message.size(), static_cast<std::size_t>(MHD_ERROR_MESSAGE_SIZE - 1));
   EXPECT_EQ(message.rfind("unknown parameter 'x' (known: parameter_0, parameter_1, ", 0), 0u);
   EXPECT_EQ(message.substr(message.size() - 4), "...)");
 }
 
-TEST(PluginShell, ErrorMessagesAreTruncatedAndTerminated) {
+TEST(SdkErrors, ErrorMessagesAreTruncatedAndTerminated) {
   mhd_error err{};
   set_error(&err, std::string(400, 'x'));
   EXPECT_EQ(std::strlen(err.message), sizeof(err.message) - 1);
   set_error(nullptr, "ignored");  // no crash
-  EXPECT_EQ(guarded(&err, []() -> mhd_status { throw std::runtime_error("boom"); }), MHD_ERROR);
+  EXPECT_EQ(guarded(&err, MHD_ERROR, []() -> mhd_status { throw std::runtime_error("boom"); }), MHD_ERROR);
   EXPECT_STREQ(err.message, "boom");
 }
 
 }  // namespace
-}  // namespace mhd::plugin_support
+}  // namespace mhd::sdk
