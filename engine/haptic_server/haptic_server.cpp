@@ -83,7 +83,7 @@ HapticServerBuild HapticServer::open(const SceneDescription& scene, const Compil
   }
   const bool desktop = scene.rig_kind.kind == RigKind::Desktop;
   // The reader checked a file's rig kind; a description built in code is checked here.
-  for (Diagnostics d : {check_rig_kind(scene), check_rig_plugins_for_run(scene)}) {
+  for (const Diagnostics& d : {check_rig_kind(scene), check_rig_plugins_for_run(scene)}) {
     out.diagnostics.insert(out.diagnostics.end(), d.begin(), d.end());
   }
   ScenePlannerResult planner;
