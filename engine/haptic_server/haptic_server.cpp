@@ -10,6 +10,8 @@
 #include "plugin_host/open_plugin.h"
 #include "plugin_host/plugin_kind.h"
 #include "plugin_host/plugin_search_path.h"
+#include "scene/rig_kind_check.h"
+#include "simulation/simulated_user.h"
 #include "simulation/simulated_user_params.h"
 
 #include <array>
@@ -79,13 +81,16 @@ HapticServerBuild HapticServer::open(const SceneDescription& scene, const Compil
       *slot = &p;
     }
   }
+  const bool desktop = scene.rig_kind.kind == RigKind::Desktop;
+  // The reader checked a file's rig kind; a description built in code is checked here.
+  for (const Diagnostics& d : {check_rig_kind(scene), check_rig_plugins_for_run(scene)}) {
+    out.diagnostics.insert(out.diagnostics.end(), d.begin(), d.end());
+  }
   ScenePlannerResult planner;
-  if (rig.rig && !options.plan_base) {
+  if (rig.rig && !desktop && !options.plan_base) {
     planner = scene_planner(scene, *rig.rig);
     out.diagnostics.insert(out.diagnostics.end(), planner.diagnostics.begin(), planner.diagnostics.end());
   }
-  if (device == nullptr) out.diagnostics.push_back({scene_where, "the scene names no device plugin (<plugin kind=\"device\">)"});
-  if (tracker == nullptr) out.diagnostics.push_back({scene_where, "the scene names no tracker plugin (<plugin kind=\"tracker\">)"});
   if (!out.diagnostics.empty()) return out;
 
   if (planner.plan) {
@@ -100,7 +105,8 @@ HapticServerBuild HapticServer::open(const SceneDescription& scene, const Compil
   impl->host.set_scene_file(scene.file);
   const PluginSearchPath search = PluginSearchPath::standard(impl->options.plugin_path);
 
-  std::vector<const PluginDescription*> order = {device, tracker};
+  std::vector<const PluginDescription*> order = {device};
+  if (tracker != nullptr) order.push_back(tracker);
   if (base != nullptr) order.push_back(base);
   order.insert(order.end(), displays.begin(), displays.end());
   impl->plugins.reserve(order.size());  // pointers into it stay valid
@@ -115,8 +121,8 @@ HapticServerBuild HapticServer::open(const SceneDescription& scene, const Compil
   if (!out.diagnostics.empty()) return out;  // the opened ones close with impl
 
   impl->device = &impl->plugins[0];
-  impl->tracker = &impl->plugins[1];
-  std::size_t next = 2;
+  std::size_t next = 1;
+  if (tracker != nullptr) impl->tracker = &impl->plugins[next++];
   if (base != nullptr) impl->base = &impl->plugins[next++];
   for (; next < impl->plugins.size(); ++next) impl->displays.push_back(&impl->plugins[next]);
   out.server = std::unique_ptr<HapticServer>(new HapticServer(std::move(impl)));
@@ -128,6 +134,12 @@ HapticServerBuild HapticServer::open(const SceneDescription& scene, const Compil
 ServerReport HapticServer::run() {
   Impl& m = *impl_;
   ServerReport report;
+
+  // On a desk the hand holds the device from the first moment: place it before the device
+  // starts, or the device's first readings would come from a hand at the world origin.
+  if (m.rig.kind() == RigKind::Desktop && m.user_config) {
+    simulation::SimulatedUser(*m.user_config).update(m.host.now_s(), m.world);
+  }
 
   // Start: device last, so force starts only once the rest is running.
   std::vector<OpenedPlugin*> start_order;
@@ -153,7 +165,9 @@ ServerReport HapticServer::run() {
     }
   }
 
-  m.tick_on_tracker_sample = m.settings.tick_on_tracker_sample && m.tracker->instance.waits();
+  const bool desktop = m.rig.kind() == RigKind::Desktop;
+  m.tick_on_tracker_sample = m.tracker != nullptr && m.settings.tick_on_tracker_sample && m.tracker->instance.waits();
+  if (desktop) m.stop_base();  // no base: nothing to stop, and that is confirmed now
   const double t0_s = m.host.now_s();
   if (!m.stop.load()) {
     std::vector<std::thread> threads;
@@ -165,9 +179,15 @@ ServerReport HapticServer::run() {
         m.running_threads.fetch_sub(1);
       });
     };
-    spawn(&Impl::io_thread);
+    // A desktop rig has no tracker, base or planner: only the simulated user runs beside
+    // the haptic thread.
+    if (desktop) {
+      if (m.user_config) spawn(&Impl::desk_user_thread);
+    } else {
+      spawn(&Impl::io_thread);
+    }
     spawn(&Impl::haptic_thread);
-    spawn(&Impl::planner_thread);
+    if (!desktop) spawn(&Impl::planner_thread);
     if (!m.displays.empty()) spawn(&Impl::display_thread);
     std::thread recorder;
     if (m.recording) recorder = std::thread([&] { m.recorder_thread(); });
@@ -203,7 +223,8 @@ ServerReport HapticServer::run() {
         m.stop.store(true);
       }
       if (m.options.on_status && now_s - last_status_t_s >= m.options.status_interval_s) {
-        const ServerStatus s = m.status_counters.snapshot(now_s - t0_s, last_status_ticks, now_s - last_status_t_s);
+        ServerStatus s = m.status_counters.snapshot(now_s - t0_s, last_status_ticks, now_s - last_status_t_s);
+        s.rig_kind = m.rig.kind();
         m.options.on_status(s);
         last_status_t_s = now_s;
         last_status_ticks = s.ticks;
@@ -227,7 +248,7 @@ ServerReport HapticServer::run() {
   }
 
   // The tracker's final counts (its thread has ended, so this thread may call it).
-  if (!m.abandoned && m.tracker->instance.counts() && m.tracker->instance.state() != PluginState::Loaded) {
+  if (!m.abandoned && m.tracker != nullptr && m.tracker->instance.counts() && m.tracker->instance.state() != PluginState::Loaded) {
     std::array<mhd_counter, 32> buffer{};
     if (auto n = m.tracker->instance.counters(buffer); n.ok()) {
       std::vector<PluginCounter> out;
@@ -256,6 +277,7 @@ ServerReport HapticServer::run() {
 
   const double elapsed_s = m.host.now_s() - t0_s;
   report.status = m.status_counters.snapshot(elapsed_s, 0, elapsed_s);
+  report.status.rig_kind = m.rig.kind();
   report.missed_deadlines = m.missed.load();
   report.tick_median_us = m.tick_histogram.quantile_us(0.5);
   report.tick_p99_us = m.tick_histogram.quantile_us(0.99);
@@ -311,6 +333,7 @@ HapticServer::LastGasp HapticServer::last_gasp() noexcept {
       send_safe_stop(m.device->instance, m.base == nullptr ? nullptr : &m.base->instance, order, m.host);
   out.zero_torque_sent = sent.zero_torque;
   out.base_stop_sent = sent.base_stop;
+  out.desktop = m.rig.kind() == RigKind::Desktop;
   out.sent = true;
   m.gasp_state.store(Impl::kGaspDone);
   return out;

@@ -10,6 +10,9 @@
 //   planner  10 Hz: the base motion planner (holds still until one is set).
 //   display  60 Hz: the newest state to every display plugin.
 //   recorder writes the CSV recording, flushed at least every record_flush_s.
+// A desktop rig (<rig kind="desktop">, docs/desktop.md) has a device and displays only:
+// no io or planner thread; the simulated user, if any, moves on its own thread
+// (desk_user_thread.cpp) and the haptic thread renders with the device fixed at X_WD.
 // Hand-offs into and out of the haptic thread are lock-free: SPSC rings for events
 // (tracker samples, commands, recording rows) and triple buffers for state. Other
 // threads share a few values behind a mutex.
@@ -108,8 +111,8 @@ struct HapticServerBuild {
 
 class HapticServer {
  public:
-  /// Checks the scene (rig, <server>, <simulated_user>, one device and one tracker, at most
-  /// one base) and opens its plugins; every problem is a diagnostic at its scene line.
+  /// Checks the scene (rig, <server>, <simulated_user>, one device; a mobile rig one tracker and
+  /// at most one base, a desktop rig neither) and opens its plugins; every problem is a diagnostic at its scene line.
   /// `compiled` must outlive the server.
   [[nodiscard]] static HapticServerBuild open(const SceneDescription& scene, const CompiledScene& compiled,
                                               ServerOptions options);
@@ -128,6 +131,7 @@ class HapticServer {
     bool sent = false;              ///< run() was running and this call sent the zeros
     bool zero_torque_sent = false;  ///< the device took a zero command
     bool base_stop_sent = false;    ///< the base took a zero twist (or there is none)
+    bool desktop = false;           ///< a desktop rig: there is no base to speak of
   };
   /// The plugin call in progress on the calling thread ("plugin 'x' (scene.xml:12)" and
   /// e.g. "display_write"), or nulls when none: which plugin a crash happened in. The

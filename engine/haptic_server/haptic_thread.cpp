@@ -103,9 +103,14 @@ void HapticServer::Impl::haptic_thread() {
         row.cmd_force_W_N[static_cast<std::size_t>(i)] = out.proxy_force_W_N[i];
         row.force_D_N[static_cast<std::size_t>(i)] = out.force_D_N[i];
       }
-      row.base_x_m = out.base.x_m;
-      row.base_z_m = out.base.z_m;
-      row.base_heading_rad = out.base.heading_rad;
+      if (rig.kind() == RigKind::Desktop) {
+        // No base: its columns stay, empty (nan), so one reader reads both kinds of rig.
+        row.base_x_m = row.base_z_m = row.base_heading_rad = std::numeric_limits<double>::quiet_NaN();
+      } else {
+        row.base_x_m = out.base.x_m;
+        row.base_z_m = out.base.z_m;
+        row.base_heading_rad = out.base.heading_rad;
+      }
       row.tracker_age_s = std::isfinite(out.tracker_age_s) ? out.tracker_age_s : -1.0;
       row.safety_gain = out.safety_gain;
       row.contact = out.in_contact ? 1 : 0;

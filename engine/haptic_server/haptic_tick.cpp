@@ -31,6 +31,10 @@ void HapticTick::add_base_command(double t_s, const BaseTwist& twist_B) noexcept
 }
 
 HapticTickOutput HapticTick::tick(double t_s, double dt_s, const Eigen::Vector3d& p_D_tool_m) noexcept {
+  if (rig_.kind() == RigKind::Desktop) {
+    // No tracker: the device frame is fixed (Rig::desktop), nothing can go stale.
+    return render(t_s, dt_s, p_D_tool_m, BasePose{}, kNoTracker);
+  }
   std::optional<BasePose> base;
   if (has_measurement_) base = settings_.predict_base_pose ? predictor_.predict(t_s) : last_measurement_;
   return render(t_s, dt_s, p_D_tool_m, base, predictor_.age_s(t_s));
@@ -45,7 +49,8 @@ HapticTickOutput HapticTick::render(double t_s, double dt_s, const Eigen::Vector
 
   ForceSafetyInput safety_in;
   safety_in.dt_s = dt_s;
-  safety_in.tracker_age_s = out.tracker_age_s;
+  // Without a tracker the device's own reading is the whole pose: never stale.
+  safety_in.tracker_age_s = std::isnan(tracker_age_s) ? 0.0 : tracker_age_s;
 
   // Objects move on their own clock from the first tick, whether or not a hand is known;
   // a proxy being rendered is carried by what moved.

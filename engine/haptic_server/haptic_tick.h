@@ -4,6 +4,8 @@
 //   tool position in the device frame + predicted base pose -> HIP in the world (Rig) ->
 //   god-object proxy -> force -> safety (clamp, stale fade, jump fade) -> the force in the
 //   device frame (a Cartesian device, ABI 3, maps it to its motors itself).
+// On a desktop rig (Rig::desktop) the base pose is fixed and there is no tracker: tick()
+// renders every tick with BasePose{} and no stale fade.
 // Base poses arrive from the tracker (~100-190 Hz) as base-sensor measurements and the
 // commanded base twist from the planner (10 Hz); between them BasePosePredictor gives a
 // pose for every tick, so the HIP does not leap when a sample arrives.
@@ -20,6 +22,7 @@
 #include <Eigen/Core>
 
 #include <cstdint>
+#include <limits>
 #include <optional>
 
 namespace mhd {
@@ -40,7 +43,7 @@ struct HapticTickOutput {
   Eigen::Vector3d proxy_force_W_N = Eigen::Vector3d::Zero();  ///< before safety
   Eigen::Vector3d force_D_N = Eigen::Vector3d::Zero();  ///< force_W_N in the device frame: what is sent
   BasePose base;  ///< the base pose this tick used
-  double tracker_age_s = 0.0;
+  double tracker_age_s = 0.0;  ///< HapticTick::kNoTracker (NaN) on a desktop rig
   double safety_gain = 0.0;
   int contact_object = -1;
   bool in_contact = false;
@@ -54,6 +57,9 @@ struct HapticTickOutput {
 
 class HapticTick {
  public:
+  /// The tracker age of a desktop rig, which has none: render() treats it as fresh.
+  static constexpr double kNoTracker = std::numeric_limits<double>::quiet_NaN();
+
   /// `scene` must outlive this object.
   HapticTick(const CompiledScene& scene, const Rig& rig, const HapticTickSettings& settings);
 

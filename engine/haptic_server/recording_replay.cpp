@@ -33,8 +33,13 @@ ReplayResult replay_recording(const CompiledScene& scene, const Rig& rig, const 
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const RecordingRow& in = rows[i];
     std::optional<BasePose> base;
-    if (in.tracker_age_s >= 0.0) base = BasePose{in.base_x_m, in.base_z_m, in.base_heading_rad};
-    const double age_s = in.tracker_age_s >= 0.0 ? in.tracker_age_s : std::numeric_limits<double>::infinity();
+    double age_s = HapticTick::kNoTracker;  // a desktop rig: fixed base, no tracker
+    if (rig.kind() == RigKind::Desktop) {
+      base = BasePose{};
+    } else {
+      if (in.tracker_age_s >= 0.0) base = BasePose{in.base_x_m, in.base_z_m, in.base_heading_rad};
+      age_s = in.tracker_age_s >= 0.0 ? in.tracker_age_s : std::numeric_limits<double>::infinity();
+    }
     const HapticTickOutput out = tick.render(in.t_s, in.dt_s, vec(in.p_D_tool_m), base, age_s);
 
     RecordingRow r = in;

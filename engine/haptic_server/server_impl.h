@@ -2,7 +2,7 @@
 // The haptic server's shared state (private to engine/haptic_server): the plugins, the
 // hand-offs between the threads, the counters, and the run's end. Each thread's body
 // lives in its own file (haptic_thread.cpp, io_thread.cpp, planner_thread.cpp,
-// display_thread.cpp, recorder_thread.cpp); opening, run() and the last gasp in
+// display_thread.cpp, recorder_thread.cpp, desk_user_thread.cpp); opening, run() and the last gasp in
 // haptic_server.cpp.
 
 #include "haptic_server/haptic_server.h"
@@ -69,7 +69,7 @@ struct HapticServer::Impl {
   HostServices host;
   std::vector<OpenedPlugin> plugins;  // device first, then tracker, base, displays
   OpenedPlugin* device = nullptr;
-  OpenedPlugin* tracker = nullptr;
+  OpenedPlugin* tracker = nullptr;  ///< null on a desktop rig
   OpenedPlugin* base = nullptr;
   std::vector<OpenedPlugin*> displays;
 
@@ -156,6 +156,7 @@ struct HapticServer::Impl {
   // Each thread's body, in its own file (<name>.cpp).
   void haptic_thread();
   void io_thread();
+  void desk_user_thread();
   void planner_thread();
   void display_thread();
   void recorder_thread();

@@ -4,6 +4,7 @@
 
 #include "haptic_server/plugin_counter.h"
 #include "kinematics/base_pose.h"
+#include "scene/scene_description.h"
 
 #include <cstdint>
 #include <vector>
@@ -11,6 +12,7 @@
 namespace mhd {
 
 struct ServerStatus {
+  RigKind rig_kind = RigKind::Mobile;  ///< desktop: no tracker, no base (their fields stay empty)
   double elapsed_s = 0.0;
   std::uint64_t ticks = 0;
   double haptic_rate_hz = 0.0;  ///< over the last status interval (the report: over the run)

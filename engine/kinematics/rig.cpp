@@ -58,7 +58,27 @@ std::string RigError::to_string() const {
 }
 
 RigBuildResult Rig::from_scene(const SceneDescription& scene, const PhantomModel& device) {
-  return from_frames(scene.rig_frames, device);
+  if (scene.rig_kind.kind == RigKind::Mobile) return from_frames(scene.rig_frames, device);
+  RigBuildResult result;
+  for (const FrameDescription& frame : scene.rig_frames) {
+    if (frame.name == "device" && frame.parent == "world") result.rig = desktop(frame.X_PF, device);
+  }
+  if (!result.rig) {
+    // The scene reader refuses such a scene already; a description built in code may not.
+    result.errors.push_back({RigErrorKind::MissingFrame, "device",
+                             "desktop rig has no frame 'device' (expected <frame name=\"device\" parent=\"world\" .../>)",
+                             scene.rig_kind.where.value_or(SourceLocation{})});
+  }
+  return result;
+}
+
+Rig Rig::desktop(const Pose& X_WD, const PhantomModel& device) {
+  Rig rig;
+  rig.kind_ = RigKind::Desktop;
+  rig.device_ = device;
+  // Base, robot and tracker frames all coincide with the world; only D is placed.
+  rig.X_robot_phantom_ = X_WD;
+  return rig;
 }
 
 RigBuildResult Rig::from_frames(const std::vector<FrameDescription>& frames, const PhantomModel& device) {

@@ -21,6 +21,12 @@
 // that ties the tracker path and the planar path together and catches axis mistakes.
 // scenes/rigs/pomhi.xml holds the thesis's rig; docs/kinematics.md derives it.
 //
+// A desktop rig (scene <rig kind="desktop">, docs/desktop.md) has no tracker and no base:
+// the device frame D (here called phantom, whatever the device) is fixed in the world at the
+// scene's frame "device", X_WD. Rig::desktop() makes it a chain whose base stands at the
+// world origin for ever (BasePose{}) and whose robot frame is the world, so every
+// function below works unchanged with BasePose{}.
+//
 // Per-tick functions are noexcept, use fixed-size Eigen types and never allocate.
 
 #include "geometry/pose.h"
@@ -77,8 +83,14 @@ class Rig {
   /// Builds the rig from the scene's frames; every problem is reported, not only the first.
   [[nodiscard]] static RigBuildResult from_frames(const std::vector<FrameDescription>& frames,
                                                   const PhantomModel& device = phantom_premium_1_5());
+  /// A mobile scene's frames through from_frames(); a desktop scene's "device" frame
+  /// through desktop().
   [[nodiscard]] static RigBuildResult from_scene(const SceneDescription& scene,
                                                  const PhantomModel& device = phantom_premium_1_5());
+  /// A device fixed in the world at X_WD: X_W_robot_from_base(BasePose{}) is the identity.
+  [[nodiscard]] static Rig desktop(const Pose& X_WD, const PhantomModel& device = phantom_premium_1_5());
+
+  [[nodiscard]] RigKind kind() const noexcept { return kind_; }
 
   // Fixed transforms (from the file).
   [[nodiscard]] const Pose& X_W_is900() const noexcept { return X_W_is900_; }
@@ -123,6 +135,7 @@ class Rig {
  private:
   Rig() = default;
 
+  RigKind kind_ = RigKind::Mobile;
   PhantomModel device_;
   Pose X_W_is900_ = Pose::Identity();
   Pose X_is900_base_sensor_nominal_ = Pose::Identity();

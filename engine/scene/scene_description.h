@@ -55,6 +55,17 @@ struct FrameDescription {
 
 enum class PluginKind { Device, Tracker, Base, Display };
 
+/// What carries the device (docs/desktop.md). Mobile: the POSTECH rig, a tracker, a base
+/// and a planner (the frames of scenes/rigs/pomhi.xml). Desktop: a device fixed in the
+/// world and nothing else; the <rig> holds one frame, "device", parent "world".
+enum class RigKind { Mobile, Desktop };
+
+/// The rig's kind as the scene declares it (<rig kind="...">; mobile when no <rig> says).
+struct RigKindDeclaration {
+  RigKind kind = RigKind::Mobile;
+  std::optional<SourceLocation> where;  ///< the <rig kind="..."> that said so; empty: the default
+};
+
 struct PluginDescription {
   PluginKind kind = PluginKind::Device;
   std::string name;                           ///< plugin name, e.g. "sim_phantom"
@@ -91,7 +102,9 @@ struct SceneDescription {
   std::map<std::string, HapticMaterial> materials;
   std::vector<ObjectDescription> objects;
   std::vector<FrameDescription> rig_frames;
+  RigKindDeclaration rig_kind;
   std::vector<PluginDescription> plugins;
+  SourceLocation plugins_where;  ///< the first <plugins>; empty file when there is none
   std::optional<ParamBlock> simulated_user;  ///< <simulated_user>: who drives simulated hardware
   std::optional<ParamBlock> planner;         ///< <planner kind="...">: the base's motion planner
   std::optional<ParamBlock> server;          ///< <server>: haptic server rates, sensors, safety limits

@@ -2,6 +2,7 @@
 
 #include "geometry/pose.h"
 #include "scene/plausible_bounds.h"
+#include "scene/rig_kind_check.h"
 #include "scene_xml/diagnostic_sink.h"
 #include "scene_xml/frame_graph.h"
 #include "scene_xml/message_text.h"
@@ -179,6 +180,8 @@ class SceneReader {
     resolve_material_references();
     check_stiffness_against_rate();
     scene_xml::check_frame_graph(scene_.rig_frames, diagnostics_);
+    const Diagnostics rig = check_rig_kind(scene_);
+    diagnostics_.insert(diagnostics_.end(), rig.begin(), rig.end());
     SceneReadResult result;
     result.diagnostics = std::move(diagnostics_);
     if (result.diagnostics.empty()) result.scene = std::move(scene_);
@@ -606,7 +609,8 @@ class SceneReader {
   }
 
   void read_rig(const tinyxml2::XMLElement& e, const FileContext& ctx) {
-    AttributeParser rig_attributes(e, ctx.sink, {});
+    AttributeParser rig_attributes(e, ctx.sink, {"kind"});
+    read_rig_kind(rig_attributes, e, ctx);
     for_each_child(e, ctx.sink, [&](const tinyxml2::XMLElement& child) {
       if (std::string_view(child.Name()) != "frame") {
         report_unknown_element(child, e, ctx.sink);
@@ -631,8 +635,29 @@ class SceneReader {
     });
   }
 
+  /// <rig kind="mobile|desktop">: every <rig> that names a kind (across includes) must agree.
+  void read_rig_kind(AttributeParser& a, const tinyxml2::XMLElement& e, const FileContext& ctx) {
+    const auto kind = a.token("kind", Presence::Optional);
+    if (!kind) return;
+    RigKind parsed = RigKind::Mobile;
+    if (*kind == "desktop") {
+      parsed = RigKind::Desktop;
+    } else if (*kind != "mobile") {
+      ctx.sink.error(a.line_of("kind"), concat("invalid rig kind '", *kind, "' (expected mobile or desktop)"));
+      return;
+    }
+    RigKindDeclaration& declared = scene_.rig_kind;
+    if (declared.where && declared.kind != parsed) {
+      ctx.sink.error(e.GetLineNum(), concat("<rig kind=\"", *kind, "\"> contradicts the rig kind declared at ",
+                                            where_text(*declared.where)));
+      return;
+    }
+    if (!declared.where) declared = {parsed, ctx.sink.at(e.GetLineNum())};
+  }
+
   void read_plugins(const tinyxml2::XMLElement& e, const FileContext& ctx) {
     AttributeParser plugins_attributes(e, ctx.sink, {});
+    if (scene_.plugins_where.file.empty()) scene_.plugins_where = ctx.sink.at(e.GetLineNum());
     for_each_child(e, ctx.sink, [&](const tinyxml2::XMLElement& child) {
       if (std::string_view(child.Name()) != "plugin") {
         report_unknown_element(child, e, ctx.sink);

@@ -37,13 +37,16 @@ fs::path fresh_dir(const std::string& name) {
   return dir;
 }
 
-/// tests/data/fault_injection/safe_end.xml in `dir`, with `extra_plugin` in its <plugins>.
-fs::path write_scene(const fs::path& dir, const std::string& extra_plugin) {
-  std::ifstream in(fs::path(MHD_SOURCE_DIR) / "tests/data/fault_injection/safe_end.xml");
+/// tests/data/fault_injection/<source> (safe_end.xml, the mobile rig, or desk_safe_end.xml, a
+/// desktop one) in `dir`, with `extra_plugin` in its <plugins>.
+fs::path write_scene(const fs::path& dir, const std::string& extra_plugin, const std::string& source = "safe_end.xml") {
+  std::ifstream in(fs::path(MHD_SOURCE_DIR) / "tests/data/fault_injection" / source);
   std::stringstream text;
   text << in.rdbuf();
   std::string xml = text.str();
-  const auto replace = [&](const std::string& from, const std::string& to) { xml.replace(xml.find(from), from.size(), to); };
+  const auto replace = [&](const std::string& from, const std::string& to) {
+    if (const auto at = xml.find(from); at != std::string::npos) xml.replace(at, from.size(), to);
+  };
   replace("../../../scenes/rigs/pomhi.xml", (fs::path(MHD_SOURCE_DIR) / "scenes/rigs/pomhi.xml").string());
   replace("<!--CRASH-->", extra_plugin);
   const fs::path file = dir / "scene.xml";
@@ -206,6 +209,65 @@ TEST(RunEnd, IgnoredSignalsAndAClosedStdoutNeverEndARun) {
   ASSERT_GE(device.size(), 2u);
   EXPECT_GT(device.back().t_s - device.front().t_s, 1.4) << run.output();
   expect_safe_end(dir, run.output());
+}
+
+// ---- a desktop rig: the device alone --------------------------------------------------
+
+/// The device's view of a safe end with no base: it was pushed (the hand touched the box)
+/// and its last command is zero force.
+void expect_desk_safe_end(const fs::path& dir, const std::string& output) {
+  const auto device = commands_in(read_command_log(dir / "device.csv"));
+  ASSERT_FALSE(device.empty()) << output;
+  EXPECT_TRUE(device.back().is_zero()) << "last force " << device.back().values[0] << " at " << device.back().t_s
+                                       << "\n" << output;
+  EXPECT_TRUE(std::any_of(device.begin(), device.end(), [](const CommandLogRow& r) { return !r.is_zero(); }))
+      << "the hand never touched the box: " << output;
+  for (const char* mobile_only : {"base stop", "base:", "tracker:", "start-up"}) {
+    EXPECT_EQ(output.find(mobile_only), std::string::npos) << "a desktop rig has no '" << mobile_only << "': " << output;
+  }
+}
+
+TEST(RunEnd, ADesktopRunEndedBySigintLeavesZeroForce) {
+  const fs::path dir = fresh_dir("desk_sigint");
+  write_scene(dir, "", "desk_safe_end.xml");
+  MhdRun run(dir, 30.0);
+  run.wait_until_running(1500);  // long enough to have touched the box
+  run.signal(SIGINT);
+  const auto status = run.wait_for(std::chrono::seconds(10));
+  ASSERT_TRUE(status) << "still running after SIGINT";
+  ASSERT_TRUE(WIFEXITED(*status)) << run.output();
+  EXPECT_EQ(WEXITSTATUS(*status), 0) << run.output();
+  EXPECT_NE(run.output().find("stopped by SIGINT"), std::string::npos) << run.output();
+  EXPECT_NE(run.output().find("safe state: zero force sent\n"), std::string::npos) << run.output();
+  expect_desk_safe_end(dir, run.output());
+}
+
+TEST(RunEnd, ADesktopRunEndedByItsDurationLeavesZeroForce) {
+  const fs::path dir = fresh_dir("desk_duration");
+  write_scene(dir, "", "desk_safe_end.xml");
+  MhdRun run(dir, 2.0);
+  const auto status = run.wait_for(std::chrono::seconds(20));
+  ASSERT_TRUE(status) << "still running: " << run.output();
+  ASSERT_TRUE(WIFEXITED(*status)) << run.output();
+  EXPECT_EQ(WEXITSTATUS(*status), 0) << run.output();
+  EXPECT_NE(run.output().find("rig: desktop"), std::string::npos) << run.output();
+  EXPECT_NE(run.output().find("safe state: zero force sent\n"), std::string::npos) << run.output();
+  expect_desk_safe_end(dir, run.output());
+}
+
+TEST(RunEnd, ADesktopRunWhosePluginCrashesLeavesZeroForce) {
+  const fs::path dir = fresh_dir("desk_crash");
+  write_scene(dir, "<plugin kind=\"display\" name=\"fi_crash\"><param name=\"crash\" value=\"abort\"/></plugin>",
+              "desk_safe_end.xml");
+  MhdRun run(dir, 30.0);
+  const auto status = run.wait_for(std::chrono::seconds(20));
+  ASSERT_TRUE(status) << "still running: " << run.output();
+  ASSERT_TRUE(WIFEXITED(*status)) << "ended by signal " << WTERMSIG(*status) << ": " << run.output();
+  EXPECT_EQ(WEXITSTATUS(*status), 4) << run.output();
+  EXPECT_NE(run.output().find("mhd run: last gasp: zero torque sent\n"), std::string::npos) << run.output();
+  const auto device = commands_in(read_command_log(dir / "device.csv"));
+  ASSERT_FALSE(device.empty()) << run.output();
+  EXPECT_TRUE(device.back().is_zero()) << run.output();
 }
 
 // ---- crashing plugins ------------------------------------------------------------------

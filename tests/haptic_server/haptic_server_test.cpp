@@ -475,8 +475,10 @@ TEST(HapticServer, OpenReportsEveryProblemAtItsSceneLine) {
   EXPECT_THAT(messages, ::testing::Contains(HasSubstr(fmt::format(
                             "{}:{}: error: a second base plugin 'fault_base'", f,
                             scene_line_of(file, "name=\"fault_base\"") + 1))));
-  EXPECT_THAT(messages, ::testing::Contains(fmt::format(
-                            "{}: error: the scene names no tracker plugin (<plugin kind=\"tracker\">)", f)));
+  EXPECT_THAT(messages, ::testing::Contains(HasSubstr(fmt::format(
+                            "{}:{}: error: the scene names no tracker plugin (<plugin kind=\"tracker\">), which a "
+                            "mobile rig needs",
+                            f, scene_line_of(file, "<plugins>")))));
 }
 
 TEST(HapticServer, AMissingPluginIsAnErrorAtItsLineAndNothingRuns) {

@@ -8,6 +8,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -256,6 +257,28 @@ TEST(HapticTick, NonFiniteJointAnglesGiveZeroForce) {
   EXPECT_EQ(tick.safety().counters().fault_ticks, 1u);  // a fault, not start-up
   EXPECT_EQ(tick.startup_ticks(), 0u);
   EXPECT_FALSE(out.startup);
+}
+
+TEST(HapticTick, ADesktopRigRendersFromTheFirstTickAndNeverGoesStale) {
+  // The same box, the device fixed where the mobile rig's PHANToM is with the base at the origin.
+  Fixture f = make_fixture(0.002);
+  const Rig desk = Rig::desktop(f.rig->X_W_phantom(f.rig->X_W_robot_from_base({})));
+  HapticTick tick(*f.scene, desk, no_fade_in());
+  const auto first = tick.tick(0.0, 0.001, tool(kQ));
+  EXPECT_FALSE(first.startup);
+  EXPECT_LT((first.hip_W_m - f.rig->p_W_hip(f.rig->X_W_robot_from_base({}), kQ)).norm(), 1e-9);
+  EXPECT_TRUE(std::isnan(first.tracker_age_s));  // none, rather than a made-up age
+  // 10 s without any tracker sample, 4 mm into the box's top (P's y is up): pushed out all along.
+  const Eigen::Vector3d pressed = tool(kQ) - Eigen::Vector3d(0.0, 0.006, 0.0);
+  for (int i = 1; i <= 10000; ++i) {
+    const auto out = tick.tick(0.001 * i, 0.001, pressed);
+    ASSERT_FALSE(out.stale) << "tick " << i;
+    ASSERT_TRUE(out.in_contact) << "tick " << i;
+    ASSERT_NEAR(out.force_W_N.y(), 500.0 * 0.004, 0.05) << "tick " << i;
+  }
+  EXPECT_EQ(tick.startup_ticks(), 0u);
+  EXPECT_EQ(tick.safety().counters().stale_ticks, 0u);
+  EXPECT_EQ(tick.safety().counters().fault_ticks, 0u);
 }
 
 }  // namespace

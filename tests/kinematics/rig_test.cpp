@@ -347,5 +347,29 @@ TEST(Rig, ReportsADuplicateFrame) {
                                   "scene.xml:40: error: rig frame 'phantom' is defined twice (first at scene.xml:12)"});
 }
 
+TEST(Rig, ADesktopRigPutsTheDeviceFrameAtItsPoseInTheWorldForEver) {
+  const Pose X_WD = pose_from_xyz_rpy(Eigen::Vector3d(0.1, 0.75, -0.2), Eigen::Vector3d(0.0, 0.0, 0.5));
+  SceneDescription scene;
+  scene.rig_kind = {RigKind::Desktop, SourceLocation{"desk.xml", 3}};
+  scene.rig_frames.push_back({"device", "world", X_WD, {"desk.xml", 4}});
+  const RigBuildResult built = Rig::from_scene(scene);
+  ASSERT_TRUE(built.ok());
+  const Rig& rig = *built.rig;
+  EXPECT_EQ(rig.kind(), RigKind::Desktop);
+  const Pose X_W_robot = rig.X_W_robot_from_base(BasePose{});
+  const Eigen::Vector3d p_D(0.01, 0.12, -0.03);
+  EXPECT_TRUE(rig.p_W_from_device(X_W_robot, p_D).isApprox(X_WD * p_D, 1e-15));
+  const Eigen::Vector3d force_W(1.0, -2.0, 0.5);
+  EXPECT_TRUE(rig.force_P_from_W(X_W_robot, force_W).isApprox(X_WD.linear().transpose() * force_W, 1e-15));
+
+  // Without its frame it is an error at the rig, not a rig somewhere.
+  scene.rig_frames.clear();
+  const RigBuildResult missing = Rig::from_scene(scene);
+  ASSERT_FALSE(missing.ok());
+  ASSERT_EQ(missing.errors.size(), 1u);
+  EXPECT_EQ(missing.errors[0].to_string(),
+            "desk.xml:3: error: desktop rig has no frame 'device' (expected <frame name=\"device\" parent=\"world\" .../>)");
+}
+
 }  // namespace
 }  // namespace mhd

@@ -72,8 +72,8 @@ TEST(DeclaredParams, EveryInTreePluginRefusesABadValueOfEachDeclaredParameterBef
     EXPECT_EQ(unknown.error().message.rfind("unknown parameter 'no_such_param' (known: ", 0), 0u);
   }
   // Every in-tree plugin was walked (a missing build would otherwise pass silently).
-  for (const char* name : {"sim_phantom", "sim_is900", "sim_omni3", "replay", "dds", "dds_state", "ros2_state",
-                           "osg_stereo", "null_display"}) {
+  for (const char* name : {"sim_phantom", "sim_delta", "sim_is900", "sim_omni3", "replay", "dds", "dds_state",
+                           "ros2_state", "osg_stereo", "null_display"}) {
     EXPECT_TRUE(seen.count(name) == 1) << name << " not found in " << MHD_BUILD_PLUGIN_DIR;
   }
   EXPECT_GT(checked, 60u);

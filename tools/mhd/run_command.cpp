@@ -52,7 +52,12 @@ std::string plugin_drops(const mhd::ServerStatus& s) {
 }
 
 void print_status(const mhd::ServerStatus& s, bool tty) {
-  const std::string line = fmt::format(
+  // A desktop rig has no tracker and no base: its line ends with the force.
+  const std::string line = s.rig_kind == mhd::RigKind::Desktop
+      ? fmt::format("t {:6.1f} s | {:6.0f} Hz | overruns {} | {} {:4.2f} N (gain {:.2f}) | desktop",
+                    s.elapsed_s, s.haptic_rate_hz, s.overruns, s.in_contact ? "CONTACT" : "free   ", s.force_N,
+                    s.safety_gain)
+      : fmt::format(
       "t {:6.1f} s | {:6.0f} Hz | overruns {} | {} {:4.2f} N (gain {:.2f}) | tracker {} ms, {} samples, {} dropped{} | "
       "base ({:+.2f}, {:+.2f}) m {:+4.0f} deg",
       s.elapsed_s, s.haptic_rate_hz, s.overruns, s.in_contact ? "CONTACT" : "free   ", s.force_N, s.safety_gain,
@@ -161,27 +166,44 @@ void print_summary(const RunOptions& opt, const mhd::CompiledScene& scene, const
   fmt::print("haptic thread: {}\n", r.haptic_scheduling);
   fmt::print("tick (device read to device write): median {:.1f} us, p99 {:.1f} us, p99.9 {:.1f} us, max {:.1f} us\n",
              r.tick_median_us, r.tick_p99_us, r.tick_p999_us, r.tick_max_us);
-  fmt::print("contact ticks {}; safety: {} start-up, {} stale, {} fault, {} HIP jumps, {} clamped ticks\n",
-             r.contact_ticks, r.startup_ticks, r.stale_ticks, r.fault_ticks, r.hip_jumps, r.clamped_ticks);
-  // Each count in words: a reader should not have to know the safety stage to read them.
-  fmt::print("  start-up: before the first tracker sample, no force (normal); stale: tracking too old, force "
-             "faded out; fault: non-finite tool position, HIP or force, force cut; HIP jump: force step faded in; "
-             "clamped: force cut to the device's limit\n");
+  const bool desktop = s.rig_kind == mhd::RigKind::Desktop;
+  if (desktop) {
+    // No tracker: nothing starts up late or goes stale; the device's own faults remain.
+    fmt::print("contact ticks {}; safety: {} fault, {} HIP jumps, {} clamped ticks\n", r.contact_ticks, r.fault_ticks,
+               r.hip_jumps, r.clamped_ticks);
+    fmt::print("  fault: non-finite tool position, HIP or force, force cut; HIP jump: force step faded in; "
+               "clamped: force cut to the device's limit\n");
+  } else {
+    fmt::print("contact ticks {}; safety: {} start-up, {} stale, {} fault, {} HIP jumps, {} clamped ticks\n",
+               r.contact_ticks, r.startup_ticks, r.stale_ticks, r.fault_ticks, r.hip_jumps, r.clamped_ticks);
+    // Each count in words: a reader should not have to know the safety stage to read them.
+    fmt::print("  start-up: before the first tracker sample, no force (normal); stale: tracking too old, force "
+               "faded out; fault: non-finite tool position, HIP or force, force cut; HIP jump: force step faded in; "
+               "clamped: force cut to the device's limit\n");
+  }
   fmt::print("proxy work budget ({} sweeps, {} triangle tests per tick): exhausted on {} ticks\n",
              scene.proxy.max_sweeps_per_tick, scene.proxy.max_triangle_tests_per_tick,
              r.proxy_budget_exhausted_ticks);
-  fmt::print("tracker: {} samples, {} dropped{}; {} ticks started by a new sample; base: {} commands ({} stops), "
-             "ends at ({:.3f}, {:.3f}) m\n",
-             s.tracker_samples, s.tracker_rejected, plugin_drops(s), s.early_ticks, r.base_commands, r.base_stops,
-             s.base.x_m, s.base.z_m);
-  const mhd::BaseStopCounts& why = r.base_stops_by_cause;
-  fmt::print("base stops by cause: {} head stale, {} base stale, {} not finite; {} keep-out deflections\n",
-             why.head_stale, why.base_stale, why.not_finite, why.keep_out_deflections);
+  if (desktop) {
+    fmt::print("rig: desktop (device fixed in the world; no tracker, base or planner)\n");
+  } else {
+    fmt::print("tracker: {} samples, {} dropped{}; {} ticks started by a new sample; base: {} commands ({} stops), "
+               "ends at ({:.3f}, {:.3f}) m\n",
+               s.tracker_samples, s.tracker_rejected, plugin_drops(s), s.early_ticks, r.base_commands, r.base_stops,
+               s.base.x_m, s.base.z_m);
+    const mhd::BaseStopCounts& why = r.base_stops_by_cause;
+    fmt::print("base stops by cause: {} head stale, {} base stale, {} not finite; {} keep-out deflections\n",
+               why.head_stale, why.base_stale, why.not_finite, why.keep_out_deflections);
+  }
   if (!opt.record.empty()) {
     fmt::print("recording {}: {} rows, {} dropped\n", opt.record, r.recording_rows, r.recording_dropped);
   }
-  fmt::print("safe state: {}, {}\n", r.zero_force_sent ? "zero force sent" : "ZERO FORCE NOT CONFIRMED",
-             r.base_stop_sent ? "base stopped" : "BASE STOP NOT CONFIRMED");
+  if (desktop) {
+    fmt::print("safe state: {}\n", r.zero_force_sent ? "zero force sent" : "ZERO FORCE NOT CONFIRMED");
+  } else {
+    fmt::print("safe state: {}, {}\n", r.zero_force_sent ? "zero force sent" : "ZERO FORCE NOT CONFIRMED",
+               r.base_stop_sent ? "base stopped" : "BASE STOP NOT CONFIRMED");
+  }
   if (const int signal = mhd::cli::stop_signal(); signal != 0 && r.ended_by == mhd::RunEnd::StopRequested) {
     fmt::print("stopped by {}\n", signal_name(signal));
   }

@@ -76,11 +76,9 @@ extern "C" void on_last_gasp_timeout(int /*signal*/) {
   HapticServer* server = g_server.load();
   const HapticServer::LastGasp gasp = server != nullptr ? server->last_gasp() : HapticServer::LastGasp{};
   if (gasp.sent) {
-    last.add("mhd run: last gasp: ")
-        .add(gasp.zero_torque_sent ? "zero torque sent" : "ZERO TORQUE NOT CONFIRMED")
-        .add(", ")
-        .add(gasp.base_stop_sent ? "base stop sent" : "BASE STOP NOT CONFIRMED")
-        .add("\n");
+    last.add("mhd run: last gasp: ").add(gasp.zero_torque_sent ? "zero torque sent" : "ZERO TORQUE NOT CONFIRMED");
+    if (!gasp.desktop) last.add(", ").add(gasp.base_stop_sent ? "base stop sent" : "BASE STOP NOT CONFIRMED");
+    last.add("\n");
   } else {
     last.add("mhd run: last gasp: the server was not running; nothing sent\n");
   }

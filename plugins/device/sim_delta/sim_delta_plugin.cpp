@@ -1,0 +1,139 @@
+// The sim_delta device plugin: the C ABI (through the plugin SDK) over DeltaSimModel
+// (docs/sim_delta.md), a Cartesian device (ABI 3) as sim_phantom is. A desk device rides no
+// base, so the simulated hand reaches it through its pose in the world, X_WD (parameters
+// device_position_m, device_rpy_deg: the scene's <frame name="device">); without a
+// simulated world the hand rests at hand_D_m.
+
+#include "sim_delta_model.h"
+
+#include "geometry/pose.h"
+
+#include <mhd/plugin_sdk.hpp>
+
+#include <array>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+namespace mhd::sim_delta {
+
+/// Not Novint's (it publishes none): MHD's bound for the simulated delta, the stiffest
+/// material in scenes/common/materials.xml.
+constexpr double kMaxStiffness_N_per_m = 2000.0;
+
+class SimDeltaPlugin {
+ public:
+  static constexpr std::array kParams{
+      sdk::choice("hand_model", "kinematic|impedance", "kinematic",
+                  "how the simulated hand moves: a stiff spring to the intended path, or a mass-spring-damper arm"),
+      sdk::number("hand_mass_kg", "kg", "0.55", "impedance hand: the arm's apparent mass", sdk::positive()),
+      sdk::number("hand_stiffness_N_per_m", "N/m", nullptr,
+                  "the hand's spring to the intended path (default 2000 kinematic, 135 impedance)", sdk::positive()),
+      sdk::number("hand_damping_Ns_per_m", "N s/m", "6.5", "impedance hand: the arm's damping", sdk::positive()),
+      sdk::number("command_timeout_s", "s", "0.02", "the device's own watchdog: older forces count as zero",
+                  sdk::positive()),
+      sdk::vector3("device_position_m", "m", "0 0 0", "the device frame D in the world (the scene's frame 'device')"),
+      sdk::vector3("device_rpy_deg", "deg", "0 0 0", "its roll, pitch, yaw"),
+      sdk::vector3("hand_D_m", "m", nullptr,
+                   "without a simulated world: where the hand rests, device frame (default: the workspace centre)"),
+  };
+
+  SimDeltaPlugin(const mhd_host& host, const sdk::Params& params)
+      : host_(host), model_(read_config(params)), X_DW_(read_X_WD(params).inverse(Eigen::Isometry)) {
+    rest_hand_D_m_ = params.vector3("hand_D_m", model_.config().workspace.center_D_m());
+  }
+
+  void start() {
+    const double now = sdk::host_now(host_);
+    model_.start(now);
+    simulate_until(now);
+    read_once_ = false;
+  }
+
+  void device_info(mhd_device_info& out) const {
+    const DeltaWorkspaceBox& box = model_.config().workspace;
+    out = mhd_device_info{};
+    out.max_force_N = model_.config().max_force_N;
+    out.max_stiffness_N_per_m = kMaxStiffness_N_per_m;
+    out.dof_in = 3;
+    out.dof_out = 3;
+    out.workspace_box_count = 1;
+    for (int i = 0; i < 3; ++i) {
+      out.workspace[0].min_m[i] = box.min_D_m[i];
+      out.workspace[0].max_m[i] = box.max_D_m[i];
+    }
+  }
+
+  mhd_status device_read(mhd_device_state& out) {
+    const double t = model_.time_s();
+    if (read_once_ && t == last_read_time_s_) return MHD_NO_DATA;
+    const Eigen::Vector3d& p = model_.p_D_tool_m();
+    const Eigen::Vector3d& v = model_.v_D_tool_mps();
+    out = mhd_device_state{t, {p[0], p[1], p[2]}, {v[0], v[1], v[2]}, {1.0, 0.0, 0.0, 0.0}, 0u};
+    read_once_ = true;
+    last_read_time_s_ = t;
+    return MHD_OK;
+  }
+
+  void device_write(const mhd_device_command& command) {
+    const Eigen::Vector3d force_D(command.force_D_N[0], command.force_D_N[1], command.force_D_N[2]);
+    model_.command(force_D, sdk::host_now(host_));  // throws on a non-finite force
+  }
+
+  /// The device at t_s with the world's hand in D, or the resting hand without a world.
+  void simulate_until(double t_s) {
+    if (host_.sim_world == nullptr) {
+      model_.simulate_until(t_s, rest_hand_D_m_);
+      return;
+    }
+    Eigen::Vector3d p_W_hand;
+    host_.sim_world->get_hand(host_.sim_world->context, p_W_hand.data());
+    model_.simulate_until(t_s, X_DW_ * p_W_hand);
+  }
+
+ private:
+  static DeltaSimConfig read_config(const sdk::Params& params) {
+    DeltaSimConfig m;
+    if (params.text("hand_model") == "impedance") {
+      m.hand_model = HandModel::Impedance;
+      simulation::HandImpedanceParams& h = m.hand_impedance;
+      h.mass_kg = params.number("hand_mass_kg", h.mass_kg);
+      h.stiffness_N_per_m = params.number("hand_stiffness_N_per_m", h.stiffness_N_per_m);
+      h.damping_Ns_per_m = params.number("hand_damping_Ns_per_m", h.damping_Ns_per_m);
+    } else {
+      for (const char* impedance_only : {"hand_mass_kg", "hand_damping_Ns_per_m"}) {
+        if (params.given(impedance_only)) {
+          throw sdk::ParamError("parameter '" + std::string(impedance_only) +
+                                "' applies only to hand_model 'impedance'");
+        }
+      }
+      m.hand_stiffness_N_per_m = params.number("hand_stiffness_N_per_m", m.hand_stiffness_N_per_m);
+    }
+    m.command_timeout_s = params.number("command_timeout_s", m.command_timeout_s);
+    return m;
+  }
+
+  static Pose read_X_WD(const sdk::Params& params) {
+    Pose X_WD = Pose::Identity();
+    const Eigen::Vector3d rpy_deg = params.vector3("device_rpy_deg", Eigen::Vector3d(Eigen::Vector3d::Zero()));
+    X_WD.linear() = rotation_from_rpy(rpy_deg * (std::numbers::pi / 180.0));
+    X_WD.translation() = params.vector3("device_position_m", Eigen::Vector3d(Eigen::Vector3d::Zero()));
+    return X_WD;
+  }
+
+  mhd_host host_;
+  DeltaSimModel model_;
+  Pose X_DW_;
+  Eigen::Vector3d rest_hand_D_m_ = Eigen::Vector3d::Zero();
+  bool read_once_ = false;
+  double last_read_time_s_ = 0.0;
+};
+
+}  // namespace mhd::sim_delta
+
+MHD_PLUGIN_ENTRY(mhd::sim_delta::SimDeltaPlugin,
+                 {.kind = MHD_PLUGIN_KIND,
+                  .name = MHD_PLUGIN_NAME,  // both from mhd_add_plugin, so the table matches the file name
+                  .version = "1.0.0",
+                  .description = "Simulated delta (Novint Falcon-like) on a desk, held by the simulated hand (spring "
+                                 "or impedance)"})
