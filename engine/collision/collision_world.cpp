@@ -70,6 +70,10 @@ std::optional<SweepHit> CollisionWorld::sweep_among(int only_object, const Eigen
                                                     std::span<const TriangleRef> ignore, SweepWork* work,
                                                     SweepCandidates* near) const {
   if (near != nullptr) near->bind(geometry_id_);
+  // Bit (index mod 64) of every ignored triangle: a triangle whose bit is clear is not in
+  // `ignore`, which the test then need not scan (the proxy's list holds up to 16).
+  std::uint64_t ignored_bits = 0;
+  for (const TriangleRef& t : ignore) ignored_bits |= std::uint64_t{1} << (t.triangle & 63U);
   // One piece of the segment, swept against every object.
   auto sweep_piece = [&](const Eigen::Vector3d& piece_a_W, const Eigen::Vector3d& piece_b_W) -> std::optional<SweepHit> {
 
@@ -92,7 +96,7 @@ std::optional<SweepHit> CollisionWorld::sweep_among(int only_object, const Eigen
     const TriangleMesh& mesh = shape.mesh();
     const int object = static_cast<int>(oi);
     auto test = [&](std::uint32_t ti) {
-      if (!ignore.empty() && is_ignored(ignore, object, ti)) return;
+      if (((ignored_bits >> (ti & 63U)) & 1U) != 0 && is_ignored(ignore, object, ti)) return;
       if (work != nullptr) {
         if (work->triangle_tests >= work->max_triangle_tests) {
           work->exhausted = true;
@@ -102,7 +106,7 @@ std::optional<SweepHit> CollisionWorld::sweep_among(int only_object, const Eigen
       }
       const TriangleIndices& t = mesh.triangles[ti];
       const auto hit = sweep_point_triangle(a_O, b_O, mesh.vertices_m[t[0]], mesh.vertices_m[t[1]],
-                                            mesh.vertices_m[t[2]], skin_m, inflate_m);
+                                            mesh.vertices_m[t[2]], shape.face_normal_O(ti), skin_m, inflate_m);
       if (!hit) return;
       // Earliest stop wins; ties (shared edges) go to the earlier plane crossing, then
       // to the lower index so results never depend on traversal order.
@@ -171,7 +175,8 @@ std::optional<SweepHit> CollisionWorld::sweep_triangle(const TriangleRef& ref, c
   const TriangleMesh& mesh = o.shape->mesh();
   const TriangleIndices& t = mesh.triangles.at(ref.triangle);
   const auto hit = sweep_point_triangle(o.X_OW * a_W, o.X_OW * b_W, mesh.vertices_m[t[0]], mesh.vertices_m[t[1]],
-                                        mesh.vertices_m[t[2]], skin_m, kInflatePerSkin * skin_m);
+                                        mesh.vertices_m[t[2]], o.shape->face_normal_O(ref.triangle), skin_m,
+                                        kInflatePerSkin * skin_m);
   if (!hit) return std::nullopt;
   SweepHit h;
   h.where = ref;

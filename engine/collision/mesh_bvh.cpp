@@ -1,5 +1,7 @@
 #include "collision/mesh_bvh.h"
 
+#include "collision/segment_triangle.h"
+
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
@@ -31,6 +33,11 @@ void MeshBvh::make_interface() {
   part.m_vertexBase = reinterpret_cast<const unsigned char*>(mesh_->vertices_m.data());
   part.m_vertexStride = static_cast<int>(sizeof(Eigen::Vector3d));
   part.m_vertexType = PHY_DOUBLE;
+  face_normals_O_.resize(mesh_->triangles.size());
+  for (std::size_t i = 0; i < mesh_->triangles.size(); ++i) {
+    const TriangleIndices& t = mesh_->triangles[i];
+    face_normals_O_[i] = unit_face_normal(mesh_->vertices_m[t[0]], mesh_->vertices_m[t[1]], mesh_->vertices_m[t[2]]);
+  }
   interface_ = std::make_unique<btTriangleIndexVertexArray>();
   interface_->addIndexedMesh(part, PHY_INTEGER);
   bounds_ = mesh_bounds(*mesh_);

@@ -38,6 +38,10 @@ class MeshBvh {
   [[nodiscard]] const std::shared_ptr<const TriangleMesh>& mesh_ptr() const { return mesh_; }
   [[nodiscard]] const Eigen::AlignedBox3d& bounds() const { return bounds_; }
   [[nodiscard]] const btBvhTriangleMeshShape& shape() const { return *shape_; }
+  /// Unit counter-clockwise normal of triangle t in the mesh frame, zero for a triangle of
+  /// zero area: unit_face_normal() of its corners, computed once when the tree is made or
+  /// adopted (24 bytes per triangle), so a sweep's triangle test does not redo it.
+  [[nodiscard]] const Eigen::Vector3d& face_normal_O(std::uint32_t t) const { return face_normals_O_[t]; }
 
   /// A box on the tree's grid: Bullet's 16-bit quantization of the mesh's bounds.
   struct QuantizedBox {
@@ -99,6 +103,7 @@ class MeshBvh {
   void adopt_tree(btQuantizedBvh* tree);
 
   std::shared_ptr<const TriangleMesh> mesh_;
+  std::vector<Eigen::Vector3d> face_normals_O_;
   Eigen::AlignedBox3d bounds_;
   // Bullet sees the mesh scaled by this (see make_interface); queries are scaled alike.
   double bvh_scale_ = 1.0;

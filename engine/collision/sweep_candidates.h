@@ -8,7 +8,9 @@
 #include "collision/mesh_bvh.h"
 
 #include <array>
+#include <bit>
 #include <cstdint>
+#include <cstring>
 
 namespace mhd {
 
@@ -75,8 +77,9 @@ class SweepCandidates {
   /// q these are exactly the triangles MeshBvh::for_each_leaf_overlapping(q) reports.
   template <class F>
   void for_each_overlapping(const Region& r, const MeshBvh::QuantizedBox& q, F&& f) const {
-    // Bullet's closed-interval overlap, over plain arrays so the compiler can vectorise it.
-    std::array<std::uint8_t, kCapacity> overlaps;
+    // Bullet's closed-interval overlap, over plain arrays so the compiler can vectorise it;
+    // then the overlapping ones, eight flags at a time (the padding past r.end is cleared).
+    std::array<std::uint8_t, kCapacity + 8> overlaps;
     for (int i = r.begin; i < r.end; ++i) {
       const auto k = static_cast<std::size_t>(i);
       // Bitwise & on ints, not && on bools: no branch per comparison (clang warns on bools).
@@ -85,8 +88,18 @@ class SweepCandidates {
       const int in_z = static_cast<int>(q.min[2] <= max_z_[k]) & static_cast<int>(q.max[2] >= min_z_[k]);
       overlaps[k] = static_cast<std::uint8_t>(in_x & in_y & in_z);
     }
-    for (int i = r.begin; i < r.end; ++i) {
-      if (overlaps[static_cast<std::size_t>(i)] != 0) f(triangle_[static_cast<std::size_t>(i)]);
+    std::memset(overlaps.data() + r.end, 0, 8);
+    for (int i = r.begin; i < r.end; i += 8) {
+      std::uint64_t flags = 0;  // one byte per leaf, 0 or 1
+      std::memcpy(&flags, overlaps.data() + i, sizeof flags);
+      while (flags != 0) {
+        // The set flag of the lowest address first: leaves in array order, as one by one.
+        constexpr bool kLittle = std::endian::native == std::endian::little;
+        const int bit = kLittle ? std::countr_zero(flags) : 63 - std::countl_zero(flags);
+        const int byte = kLittle ? bit / 8 : 7 - bit / 8;
+        f(triangle_[static_cast<std::size_t>(i + byte)]);
+        flags &= ~(std::uint64_t{1} << bit);
+      }
     }
   }
 

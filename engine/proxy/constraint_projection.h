@@ -26,4 +26,8 @@ inline constexpr int kMaxHalfSpaces = 8;
                                                                       std::span<const HalfSpace> half_spaces,
                                                                       double tolerance);
 
+/// The point x on three planes, N x = d (rows of N the unit normals), bit for bit what
+/// Eigen 3.4's N.partialPivLu().solve(d) gives. Precondition: N not singular.
+[[nodiscard]] Eigen::Vector3d solve_three_planes_like_lu(Eigen::Matrix3d lu, Eigen::Vector3d x);
+
 }  // namespace mhd

@@ -65,10 +65,14 @@ bool only_grazes(const CollisionWorld& world, const TriangleRef& t, const Eigen:
 // beside an open edge, a hand passing one), so they stop nothing.
 bool sweep_past_grazes(const CollisionWorld& world, TickWork& work, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                        double skin_m, std::span<const TriangleRef> ignore, std::optional<SweepHit>& hit) {
+  // Most sweeps find no graze: the list of triangles to skip is only built for one that does.
+  if (!budgeted_sweep(world, work, a, b, skin_m, ignore, hit)) return false;
+  if (!hit || !only_grazes(world, hit->where, a, b, skin_m)) return true;
   std::array<TriangleRef, kMaxIgnored + kMaxGrazed> skip{};
   std::size_t k = 0;
   for (const TriangleRef& t : ignore) skip[k++] = t;
   const std::size_t first_grazed = k;
+  skip[k++] = hit->where;
   for (;;) {
     if (!budgeted_sweep(world, work, a, b, skin_m, std::span<const TriangleRef>(skip.data(), k), hit)) return false;
     if (!hit || k - first_grazed == kMaxGrazed || !only_grazes(world, hit->where, a, b, skin_m)) {

@@ -75,6 +75,23 @@ TEST(CollisionWorld, IgnoredTrianglesAreSkipped) {
   EXPECT_FALSE(world.sweep(a, b, 1e-6, ignore));
 }
 
+TEST(CollisionWorld, OnlyTheIgnoredTriangleIsSkippedNotOneSharingItsIndexBits) {
+  // The sweep's quick filter keys on the triangle index mod 64: a triangle 64 (or 128) on,
+  // or the same index in another object, is not ignored for it.
+  CollisionWorld world;
+  world.add_object(unit_square(), Pose::Identity());
+  world.add_object(unit_square(), pose_from_xyz_rpy(Eigen::Vector3d(0, 0, -0.5), Eigen::Vector3d::Zero()));
+  const Eigen::Vector3d a(0.7, 0.2, 1), b(0.7, 0.2, -1);  // over triangle 0 of each
+  const TriangleRef others[] = {{0, 64}, {0, 128}, {1, 0}};
+  const auto hit = world.sweep(a, b, 1e-6, others);
+  ASSERT_TRUE(hit);
+  EXPECT_EQ(hit->where, (TriangleRef{0, 0}));
+  const TriangleRef first[] = {{0, 64}, {0, 0}};
+  const auto next = world.sweep(a, b, 1e-6, first);
+  ASSERT_TRUE(next);
+  EXPECT_EQ(next->where, (TriangleRef{1, 0}));
+}
+
 TEST(CollisionWorld, ShadedNormalBlendsVertexNormals) {
   auto mesh = std::make_shared<TriangleMesh>();
   mesh->vertices_m = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};

@@ -15,6 +15,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <random>
 #include <string>
 #include <vector>
@@ -107,6 +109,19 @@ mhd::verify::StrokeSet join_in_free_space(const mhd::verify::SurfaceCrossingOrac
   return joined;
 }
 
+// The HIP path as `mhd proxy-replay --hip-csv` reads it: one row per tick at `rate`.
+bool write_hip_csv(const std::filesystem::path& file, const mhd::verify::StrokeSet& set, double rate) {
+  std::ofstream out(file);
+  out << "t_s,x_m,y_m,z_m\n";
+  std::size_t tick = 0;
+  for (const auto& stroke : set.strokes) {
+    for (const auto& p : stroke.hip_W) {
+      out << fmt::format("{:.17g},{:.17g},{:.17g},{:.17g}\n", static_cast<double>(tick++) / rate, p.x(), p.y(), p.z());
+    }
+  }
+  return static_cast<bool>(out);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -131,6 +146,9 @@ int main(int argc, char** argv) {
   app.add_flag("--force-shading", shade_all,
                "Turn force shading on for every object (at its material's crease angle), to set its cost beside "
                "the same run without");
+  std::string path_dir;
+  app.add_option("--write-path", path_dir,
+                 "Also write each scene's HIP path to DIR/<scene>.csv, for mhd proxy-replay (before/after checks)");
   CLI11_PARSE(app, argc, argv);
 
   fmt::print("| scene | triangles | contact updates | median µs | p99 µs | p99.9 µs | max µs | all updates "
@@ -164,6 +182,13 @@ int main(int argc, char** argv) {
     std::size_t skipped = 0;
     const auto set = reset_each ? anchors : join_in_free_space(oracle, anchors, seed, speed, rate, skipped);
     if (skipped > 0) fmt::print(stderr, "{}: {} strokes left out (no free transit found)\n", file, skipped);
+    if (!path_dir.empty()) {
+      const auto csv = std::filesystem::path(path_dir) / (std::filesystem::path(file).stem().string() + ".csv");
+      if (!write_hip_csv(csv, set, rate)) {
+        fmt::print(stderr, "{}: cannot write {}\n", file, csv.string());
+        status = 1;
+      }
+    }
     const auto r = mhd::verify::run_strokes(scene, oracle, set, rate);
     const auto& c = r.contact_updates;
     const auto& a = r.all_updates;
