@@ -78,7 +78,8 @@ ViewerSceneResult load_viewer_scene(const std::filesystem::path& scene_file,
     result.notes.push_back("the scene has no rig frames: the device is drawn on top of the base and its "
                            "workspace is not drawn (give a rig file, e.g. scenes/rigs/pomhi.xml)");
   } else {
-    RigBuildResult rig = Rig::from_frames(frames);
+    // The scene's own rig may be a desktop one (a device frame alone); a rig file is mobile.
+    RigBuildResult rig = rig_file ? Rig::from_frames(frames) : Rig::from_scene(viewer_scene.scene);
     for (const RigError& e : rig.errors) result.errors.push_back(e.to_string());
     if (!rig.ok()) return result;
     viewer_scene.rig = std::move(rig.rig);

@@ -5,6 +5,7 @@
 // simulated world the hand rests at hand_D_m.
 
 #include "sim_delta_model.h"
+#include "sim_common/simulated_device.h"
 
 #include "geometry/pose.h"
 
@@ -23,20 +24,14 @@ constexpr double kMaxStiffness_N_per_m = 2000.0;
 
 class SimDeltaPlugin {
  public:
-  static constexpr std::array kParams{
-      sdk::choice("hand_model", "kinematic|impedance", "kinematic",
-                  "how the simulated hand moves: a stiff spring to the intended path, or a mass-spring-damper arm"),
-      sdk::number("hand_mass_kg", "kg", "0.55", "impedance hand: the arm's apparent mass", sdk::positive()),
-      sdk::number("hand_stiffness_N_per_m", "N/m", nullptr,
-                  "the hand's spring to the intended path (default 2000 kinematic, 135 impedance)", sdk::positive()),
-      sdk::number("hand_damping_Ns_per_m", "N s/m", "6.5", "impedance hand: the arm's damping", sdk::positive()),
+  static constexpr std::array kParams = sdk::join(plugin_support::kSimulatedHandParams, std::array{
       sdk::number("command_timeout_s", "s", "0.02", "the device's own watchdog: older forces count as zero",
                   sdk::positive()),
       sdk::vector3("device_position_m", "m", "0 0 0", "the device frame D in the world (the scene's frame 'device')"),
       sdk::vector3("device_rpy_deg", "deg", "0 0 0", "its roll, pitch, yaw"),
       sdk::vector3("hand_D_m", "m", nullptr,
                    "without a simulated world: where the hand rests, device frame (default: the workspace centre)"),
-  };
+  });
 
   SimDeltaPlugin(const mhd_host& host, const sdk::Params& params)
       : host_(host), model_(read_config(params)), X_DW_(read_X_WD(params).inverse(Eigen::Isometry)) {
@@ -52,16 +47,8 @@ class SimDeltaPlugin {
 
   void device_info(mhd_device_info& out) const {
     const DeltaWorkspaceBox& box = model_.config().workspace;
-    out = mhd_device_info{};
-    out.max_force_N = model_.config().max_force_N;
-    out.max_stiffness_N_per_m = kMaxStiffness_N_per_m;
-    out.dof_in = 3;
-    out.dof_out = 3;
-    out.workspace_box_count = 1;
-    for (int i = 0; i < 3; ++i) {
-      out.workspace[0].min_m[i] = box.min_D_m[i];
-      out.workspace[0].max_m[i] = box.max_D_m[i];
-    }
+    out = plugin_support::one_box_device_info(model_.config().max_force_N, kMaxStiffness_N_per_m, box.min_D_m,
+                                              box.max_D_m);
   }
 
   mhd_status device_read(mhd_device_state& out) {
@@ -94,21 +81,7 @@ class SimDeltaPlugin {
  private:
   static DeltaSimConfig read_config(const sdk::Params& params) {
     DeltaSimConfig m;
-    if (params.text("hand_model") == "impedance") {
-      m.hand_model = HandModel::Impedance;
-      simulation::HandImpedanceParams& h = m.hand_impedance;
-      h.mass_kg = params.number("hand_mass_kg", h.mass_kg);
-      h.stiffness_N_per_m = params.number("hand_stiffness_N_per_m", h.stiffness_N_per_m);
-      h.damping_Ns_per_m = params.number("hand_damping_Ns_per_m", h.damping_Ns_per_m);
-    } else {
-      for (const char* impedance_only : {"hand_mass_kg", "hand_damping_Ns_per_m"}) {
-        if (params.given(impedance_only)) {
-          throw sdk::ParamError("parameter '" + std::string(impedance_only) +
-                                "' applies only to hand_model 'impedance'");
-        }
-      }
-      m.hand_stiffness_N_per_m = params.number("hand_stiffness_N_per_m", m.hand_stiffness_N_per_m);
-    }
+    plugin_support::read_simulated_hand(params, m);
     m.command_timeout_s = params.number("command_timeout_s", m.command_timeout_s);
     return m;
   }
