@@ -3,10 +3,12 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
+#include <sys/file.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -19,7 +21,24 @@ namespace mhd::dds::test {
 std::uint32_t use_loopback_and_unique_domain(std::uint32_t salt) {
   const std::string uri = std::string("file://") + MHD_SOURCE_DIR + "/config/cyclonedds-loopback.xml";
   setenv("CYCLONEDDS_URI", uri.c_str(), 1);
-  return 1u + (static_cast<std::uint32_t>(getpid()) * 7u + salt) % 200u;
+  return reserve_test_domain(1u + (static_cast<std::uint32_t>(getpid()) * 7u + salt) % 200u);
+}
+
+std::uint32_t reserve_test_domain(std::uint32_t first_choice) {
+  constexpr std::uint32_t kDomains = 200;
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mhd-test-dds-domains";
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  std::filesystem::permissions(dir, std::filesystem::perms::all, ec);  // shared by every user's tests
+  for (std::uint32_t k = 0; k < kDomains; ++k) {
+    const std::uint32_t domain = 1u + (first_choice - 1u + k) % kDomains;
+    const std::string file = (dir / (std::to_string(domain) + ".lock")).string();
+    const int fd = open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
+    if (fd < 0) continue;
+    if (flock(fd, LOCK_EX | LOCK_NB) == 0) return domain;  // fd stays open: held until exit
+    close(fd);
+  }
+  throw std::runtime_error("no free DDS test domain in [1, 200] under " + dir.string());
 }
 
 ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::string& output_file) {

@@ -14,9 +14,17 @@
 namespace mhd::dds::test {
 
 /// Points CYCLONEDDS_URI at config/cyclonedds-loopback.xml (before any participant) and
-/// returns a domain id in [1, 200] derived from the pid and `salt`, so concurrently
-/// running test processes use different domains.
+/// returns a domain id in [1, 200] that no other running process and no earlier call of
+/// this process holds: the first choice is derived from the pid and `salt`, and the
+/// domain is reserved as reserve_test_domain() does.
 std::uint32_t use_loopback_and_unique_domain(std::uint32_t salt = 0);
+
+/// Reserves a domain id in [1, 200] for the rest of this process's life, starting at
+/// `first_choice` and going up (wrapping) past the ones held: each id is an exclusive
+/// flock on a file in the temporary directory, which the kernel releases when the
+/// process ends however it ends, so no stale reservation outlives a crashed test.
+/// Throws std::runtime_error when all 200 are held.
+std::uint32_t reserve_test_domain(std::uint32_t first_choice);
 
 class ChildProcess {
  public:
