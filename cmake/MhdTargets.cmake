@@ -4,23 +4,25 @@
 include(MhdWarnings)
 
 # mhd_add_library(mhd_<layer> SOURCES ... [DEPS ...] [PRIVATE_DEPS ...]) defines target
-# mhd_<layer> and its alias mhd::<layer>.
-# One library per engine layer. Its include root is engine/, so code includes
-# "collision/mesh_bvh.h"; a layer that is not in DEPS cannot be linked, which makes a
-# wrong-way dependency a build error. Each layer is part of the installed C++ API
-# (cmake/MhdInstall.cmake): its headers go to <includedir>/mhd/engine/<layer>/ and the
-# target is exported as MHD::<layer>.
+# mhd_<layer> and its alias mhd::<layer>, for the layer in the calling folder
+# engine/<layer>/. Code includes "collision/mesh_bvh.h" as before, but each layer has an
+# include root of its own (mhd_layer_include_root): a target sees the headers of the
+# layers it links, directly or through DEPS, and no others, so a wrong-way include fails
+# to compile ("No such file"), header-only or not. A new layer needs nothing but this
+# call. Each layer is part of the installed C++ API (cmake/MhdInstall.cmake): its headers
+# go to <includedir>/mhd/engine/<layer>/ and the target is exported as MHD::<layer>.
 function(mhd_add_library name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPS;PRIVATE_DEPS" ${ARGN})
+  mhd_layer_include_root(root)
   if(ARG_SOURCES)
     add_library(${name} STATIC ${ARG_SOURCES})
-    target_include_directories(${name} PUBLIC "$<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/engine>")
+    target_include_directories(${name} PUBLIC "$<BUILD_INTERFACE:${root}>")
     target_link_libraries(${name} PUBLIC ${ARG_DEPS} PRIVATE ${ARG_PRIVATE_DEPS})
     set_target_properties(${name} PROPERTIES POSITION_INDEPENDENT_CODE ON)
     mhd_set_warnings(${name})
   else()
     add_library(${name} INTERFACE)
-    target_include_directories(${name} INTERFACE "$<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/engine>")
+    target_include_directories(${name} INTERFACE "$<BUILD_INTERFACE:${root}>")
     target_link_libraries(${name} INTERFACE ${ARG_DEPS})
   endif()
   target_include_directories(${name} INTERFACE "$<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/mhd/engine>")
@@ -28,6 +30,26 @@ function(mhd_add_library name)
   add_library(mhd::${short} ALIAS ${name})
   set_target_properties(${name} PROPERTIES EXPORT_NAME ${short})
   set_property(GLOBAL APPEND PROPERTY MHD_ENGINE_LIBRARIES ${name})
+endfunction()
+
+# mhd_layer_include_root(<out-var>): for the calling folder engine/<layer>/, the folder
+# ${PROJECT_BINARY_DIR}/layer_include/<layer>/ holding one entry, <layer>, a symbolic
+# link to engine/<layer>/. Made at configure time, so the source layout and the include
+# spelling stay as they are. Both libraries of one folder share the root.
+function(mhd_layer_include_root out_var)
+  cmake_path(GET CMAKE_CURRENT_SOURCE_DIR FILENAME layer)
+  set(root "${PROJECT_BINARY_DIR}/layer_include/${layer}")
+  set(link "${root}/${layer}")
+  set(target "")
+  if(IS_SYMLINK "${link}")
+    file(READ_SYMLINK "${link}" target)
+  endif()
+  if(NOT target STREQUAL CMAKE_CURRENT_SOURCE_DIR)
+    file(MAKE_DIRECTORY "${root}")
+    file(REMOVE "${link}")
+    file(CREATE_LINK "${CMAKE_CURRENT_SOURCE_DIR}" "${link}" SYMBOLIC)
+  endif()
+  set(${out_var} "${root}" PARENT_SCOPE)
 endfunction()
 
 # mhd_add_executable(<name> SOURCES ... [DEPS ...])

@@ -1,7 +1,7 @@
 #pragma once
-// The plugin kinds as the ABI numbers them and as the scene names them.
+// The plugin kinds (scene/plugin_kind.h) as the ABI numbers them and as the scene names them.
 
-#include "scene/scene_description.h"
+#include "scene/plugin_kind.h"
 
 #include <mhd/plugin_abi.h>
 

@@ -7,6 +7,7 @@
 #include "geometry/pose.h"
 #include "material/haptic_material.h"
 #include "scene/diagnostic.h"
+#include "scene/plugin_kind.h"
 
 #include <Eigen/Core>
 
@@ -52,8 +53,6 @@ struct FrameDescription {
   Pose X_PF = Pose::Identity();
   SourceLocation where;
 };
-
-enum class PluginKind { Device, Tracker, Base, Display };
 
 /// What carries the device (docs/desktop.md). Mobile: the POSTECH rig, a tracker, a base
 /// and a planner (the frames of scenes/rigs/pomhi.xml). Desktop: a device fixed in the
