@@ -41,14 +41,8 @@ class FiBase {
     z += vz_W * dt;
     h += last_.omega_radps * dt;
     w.set_base_pose(w.context, x, z, h);
-    out = {};
-    out.timestamp_s = t_s;
-    out.x_m = x;
-    out.z_m = z;
-    out.heading_rad = h;
-    out.vx_mps = vx_W;
-    out.vz_mps = vz_W;
-    out.omega_radps = last_.omega_radps;
+    out = {.timestamp_s = t_s, .x_m = x, .z_m = z, .heading_rad = h, .vx_mps = vx_W, .vz_mps = vz_W,
+           .omega_radps = last_.omega_radps};
     bool nan = false;
     const mhd_status status = fault_.on(probe::FaultOn::Read, t_s, "injected fault: base controller not responding", nan);
     if (nan) out.x_m = std::numeric_limits<double>::quiet_NaN();

@@ -17,7 +17,7 @@ class FaultDevice {
     if (const mhd_status s = hardware_.next_read(absurd); s != MHD_OK) return s;
     out = {};
     out.timestamp_s = hardware_.now_s();
-    for (int i = 0; i < 3; ++i) out.p_D_tool_m[i] = test_plugins::kPhantomMidTool_D_m[i];
+    for (std::size_t i = 0; i < 3; ++i) out.p_D_tool_m[i] = test_plugins::kPhantomMidTool_D_m[i];
     out.q_D_tool_wxyz[0] = 1.0;
     if (absurd) out.p_D_tool_m[1] = hardware_.absurd();
     return MHD_OK;
