@@ -5,6 +5,7 @@
 // Parameters:
 //   p_free_m, p_press_m   "x y z" (default: a PHANToM's tool at joint angles 0 0.3 0.2)
 //   press_at_s (never), press_ramp_s (0.05)   seconds after start
+//   max_force_N (8.5)     the force limit device_info reports
 //   fault=none|nan|error|deactivate, fault_after_s (never), fault_on=read|write (read)
 //     nan: p_D_tool_m[1] is NaN (read only); error: MHD_ERROR with a message
 //   command_log=<path>  at close, one line per device_write: "t_s fx fy fz" (N, device frame), and
@@ -29,6 +30,8 @@ class FiDevice {
           mhd::sdk::vector3("p_press_m", "m", nullptr, "the tool pressing (default: mid-workspace)"),
           mhd::sdk::number("press_at_s", "s", nullptr, "when the press starts, after start (absent: never)"),
           mhd::sdk::number("press_ramp_s", "s", "0.05", "how long it takes", mhd::sdk::non_negative()),
+          mhd::sdk::number("max_force_N", "N", nullptr, "the force limit device_info reports (default a PHANToM's)",
+                           mhd::sdk::positive()),
       },
       probe::kFaultParams);
 
@@ -38,10 +41,14 @@ class FiDevice {
         p_press_(params.vector3<Vec3>("p_press_m", test_plugins::kPhantomMidTool_D_m)),
         press_at_s_(params.number("press_at_s", std::numeric_limits<double>::infinity())),
         press_ramp_s_(params.number("press_ramp_s")),
+        max_force_N_(params.number("max_force_N", test_plugins::kPhantomMaxForce_N)),
         fault_(params, 1u << 17) {}  // 131 s at 1 kHz
 
   void start() { fault_.start(t_start_s_ = mhd::sdk::host_now(host_)); }
-  void device_info(mhd_device_info& out) { out = test_plugins::phantom_like_device_info(); }
+  void device_info(mhd_device_info& out) {
+    out = test_plugins::phantom_like_device_info();
+    out.max_force_N = max_force_N_;
+  }
 
   mhd_status device_read(mhd_device_state& out) {
     const double t_s = mhd::sdk::host_now(host_);
@@ -66,7 +73,7 @@ class FiDevice {
  private:
   mhd_host host_;
   Vec3 p_free_, p_press_;
-  double press_at_s_, press_ramp_s_;
+  double press_at_s_, press_ramp_s_, max_force_N_;
   double t_start_s_ = 0.0;
   probe::FaultOnCue fault_;
 };
