@@ -19,7 +19,9 @@ class FiBase {
   static constexpr auto kParams = probe::kFaultParams;
 
   FiBase(const mhd_host& host, const mhd::sdk::Params& params) : host_(host), fault_(params, 1u << 20) {
-    if (host.sim_world == nullptr) throw std::runtime_error("fi_base moves the simulated base: the host has no sim_world");
+    if (host.sim_world == nullptr) {
+      throw std::runtime_error("fi_base moves the simulated base: the host has no sim_world");
+    }
   }
 
   void start() {
@@ -44,7 +46,8 @@ class FiBase {
     out = {.timestamp_s = t_s, .x_m = x, .z_m = z, .heading_rad = h, .vx_mps = vx_W, .vz_mps = vz_W,
            .omega_radps = last_.omega_radps};
     bool nan = false;
-    const mhd_status status = fault_.on(probe::FaultOn::Read, t_s, "injected fault: base controller not responding", nan);
+    const mhd_status status =
+        fault_.on(probe::FaultOn::Read, t_s, "injected fault: base controller not responding", nan);
     if (nan) out.x_m = std::numeric_limits<double>::quiet_NaN();
     return status;
   }

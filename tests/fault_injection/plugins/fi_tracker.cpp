@@ -57,7 +57,8 @@ class FiTracker {
       mhd::sdk::number("delay_ms", "ms", "0", "extra delivery delay", mhd::sdk::non_negative()),
       mhd::sdk::number("jitter_ms", "ms", "0", "extra delay +- U(jitter_ms)", mhd::sdk::non_negative()),
       mhd::sdk::number("rate_hz", "Hz", nullptr, "the IS-900 model's rate (default the model's)", mhd::sdk::positive()),
-      mhd::sdk::number("latency_s", "s", nullptr, "the model's latency (default the model's)", mhd::sdk::non_negative()),
+      mhd::sdk::number("latency_s", "s", nullptr, "the model's latency (default the model's)",
+                       mhd::sdk::non_negative()),
       mhd::sdk::number("position_sigma_m", "m", nullptr, "the model's position noise", mhd::sdk::non_negative()),
       mhd::sdk::number("angle_sigma_deg", "deg", nullptr, "the model's angle noise", mhd::sdk::non_negative()),
       mhd::sdk::integer("seed", "", "1", "the model's and the faults' random numbers"),
@@ -76,7 +77,9 @@ class FiTracker {
         delay_s_(params.number("delay_ms") * 1e-3),
         jitter_s_(params.number("jitter_ms") * 1e-3),
         with_head_(params.boolean("with_head")) {
-    if (host.sim_world == nullptr) throw std::runtime_error("fi_tracker measures the simulated world: the host has none");
+    if (host.sim_world == nullptr) {
+      throw std::runtime_error("fi_tracker measures the simulated world: the host has none");
+    }
     if (const auto head_p_W_m = params.optional_vector3("head_p_W_m")) {
       const double q_W_wxyz[4] = {1.0, 0.0, 0.0, 0.0};
       host.sim_world->set_head(host.sim_world->context, head_p_W_m->data(), q_W_wxyz);
@@ -154,5 +157,6 @@ class FiTracker {
 
 }  // namespace
 
-MHD_PLUGIN_ENTRY(FiTracker, {.kind = MHD_PLUGIN_KIND, .name = MHD_PLUGIN_NAME, .version = "1.0.0",
-                             .description = "test tracker: the simulated IS-900 falling silent, lossy or jittery on cue"})
+MHD_PLUGIN_ENTRY(FiTracker,
+                 {.kind = MHD_PLUGIN_KIND, .name = MHD_PLUGIN_NAME, .version = "1.0.0",
+                  .description = "test tracker: the simulated IS-900 falling silent, lossy or jittery on cue"})
