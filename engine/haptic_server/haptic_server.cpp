@@ -4,7 +4,6 @@
 #include "haptic_server/haptic_server.h"
 
 #include "haptic_server/force_limit.h"
-
 #include "haptic_server/plugin_watchdog.h"
 #include "haptic_server/safe_stop.h"
 #include "haptic_server/scene_planner.h"
