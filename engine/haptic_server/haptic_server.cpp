@@ -3,6 +3,7 @@
 // <name>_thread.cpp, their shared state in server_impl.h.
 #include "haptic_server/haptic_server.h"
 
+#include "haptic_server/force_limit.h"
 #include "haptic_server/plugin_watchdog.h"
 #include "haptic_server/safe_stop.h"
 #include "haptic_server/scene_planner.h"
@@ -121,6 +122,13 @@ HapticServerBuild HapticServer::open(const SceneDescription& scene, const Compil
   if (!out.diagnostics.empty()) return out;  // the opened ones close with impl
 
   impl->device = &impl->plugins[0];
+  // One source for the force limit: the device's, lowered by the scene's when smaller.
+  if (auto info = impl->device->instance.device_info(); info.ok()) {
+    double& max_force_N = impl->settings.tick.safety.max_force_N;
+    ForceLimit limit = force_limit_for(max_force_N, info.value().max_force_N, device->name);
+    max_force_N = limit.max_force_N;
+    if (limit.warning) out.warnings.push_back({device->where, std::move(*limit.warning)});
+  }
   std::size_t next = 1;
   if (tracker != nullptr) impl->tracker = &impl->plugins[next++];
   if (base != nullptr) impl->base = &impl->plugins[next++];

@@ -107,6 +107,7 @@ class HapticServer;
 struct HapticServerBuild {
   std::unique_ptr<HapticServer> server;  ///< null when diagnostics has errors
   Diagnostics diagnostics;
+  Diagnostics warnings;  ///< the run goes on, but the user should know (a scene force limit the device lowers)
 };
 
 class HapticServer {

@@ -17,12 +17,9 @@
 namespace mhd {
 
 void HapticServer::Impl::haptic_thread() {
-  HapticTickSettings tick_settings = settings.tick;
+  const HapticTickSettings& tick_settings = settings.tick;  // max_force_N: the device's, set at open
   mhd_device_info info{};
-  if (auto reported = device->instance.device_info(); reported.ok()) {
-    info = reported.value();
-    tick_settings.safety.max_force_N = std::min(tick_settings.safety.max_force_N, info.max_force_N);
-  }
+  if (auto reported = device->instance.device_info(); reported.ok()) info = reported.value();
   HapticTick tick(scene, rig, tick_settings);
   realtime::name_current_thread(realtime::kHapticThreadName);
   scheduling = realtime::make_current_thread_realtime(80).detail;

@@ -1,8 +1,6 @@
 #include "plugin_host/open_plugin.h"
 
-#include "plugin_host/plugin_kind.h"
-
-#include <fmt/core.h>
+#include "plugin_host/scene_plugin_check.h"
 
 #include <utility>
 
@@ -10,14 +8,8 @@ namespace mhd {
 
 PluginResult<PluginInstance> open_plugin(const PluginSearchPath& search, const PluginDescription& description,
                                          const mhd_host& host) {
-  PluginResult<std::shared_ptr<const PluginLibrary>> library = search.load(description.name);
+  PluginResult<std::shared_ptr<const PluginLibrary>> library = load_scene_plugin(search, description);
   if (!library) return library.error();
-  const PluginLibrary& loaded = *library.value();
-  if (loaded.kind() != description.kind) {
-    return PluginError{PluginErrorKind::WrongKind, loaded.name(), loaded.path(),
-                       fmt::format("is a {} plugin, the scene asks for a {}", to_string(loaded.kind()),
-                                   to_string(description.kind))};
-  }
   PluginInstance instance(std::move(library).value());
   if (PluginStatus opened = instance.open(description.params, host); !opened) return opened.error();
   return instance;

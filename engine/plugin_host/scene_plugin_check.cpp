@@ -24,7 +24,8 @@ std::optional<std::string> declared_param_problems(const PluginLibrary& library,
   return message;
 }
 
-PluginStatus check_scene_plugin(const PluginSearchPath& search, const PluginDescription& description) {
+PluginResult<std::shared_ptr<const PluginLibrary>> load_scene_plugin(const PluginSearchPath& search,
+                                                                     const PluginDescription& description) {
   PluginResult<std::shared_ptr<const PluginLibrary>> library = search.load(description.name);
   if (!library) return library.error();
   const PluginLibrary& loaded = *library.value();
@@ -33,6 +34,13 @@ PluginStatus check_scene_plugin(const PluginSearchPath& search, const PluginDesc
                        fmt::format("is a {} plugin, the scene asks for a {}", to_string(loaded.kind()),
                                    to_string(description.kind))};
   }
+  return library;
+}
+
+PluginStatus check_scene_plugin(const PluginSearchPath& search, const PluginDescription& description) {
+  PluginResult<std::shared_ptr<const PluginLibrary>> library = load_scene_plugin(search, description);
+  if (!library) return library.error();
+  const PluginLibrary& loaded = *library.value();
   if (auto problems = declared_param_problems(loaded, description.params)) {
     return PluginError{PluginErrorKind::BadParameter, loaded.name(), {}, *problems};
   }

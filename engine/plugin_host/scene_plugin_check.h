@@ -10,6 +10,7 @@
 #include "scene/scene_description.h"
 
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -20,6 +21,12 @@ namespace mhd {
 /// (Hz), got 'abc'"), or nothing when open() may be called.
 [[nodiscard]] std::optional<std::string> declared_param_problems(const PluginLibrary& library,
                                                                  const std::map<std::string, std::string>& params);
+
+/// Loads the plugin the scene names and checks it is the kind the scene asks for: the
+/// library, or the first error (NotFound ... WrongKind). open_plugin and
+/// check_scene_plugin both start here.
+[[nodiscard]] PluginResult<std::shared_ptr<const PluginLibrary>> load_scene_plugin(
+    const PluginSearchPath& search, const PluginDescription& description);
 
 /// Loads the plugin the scene names (and unloads it again), checks its kind and the
 /// scene's parameters: the first error (NotFound ... WrongKind, BadParameter), else ok.

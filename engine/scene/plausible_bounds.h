@@ -9,9 +9,6 @@ namespace mhd {
 inline constexpr double kMinHapticRate_Hz = 500.0;
 inline constexpr double kMaxHapticRate_Hz = 20'000.0;
 
-/// The force clamp may not exceed the PHANToM Premium 1.5's peak force (SensAble: 8.5 N).
-inline constexpr double kDeviceMaxForce_N = 8.5;
-
 /// SensAble's nominal stiffness for the Premium 1.5 (3.5 N/mm) holds at the 1 kHz loop it
 /// was rated with. Colgate & Schenkel's passivity condition b > K T / 2 + |B| makes the
 /// stable stiffness proportional to the rate (K < 2 b / T), so the bound scales with it.

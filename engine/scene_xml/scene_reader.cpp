@@ -345,7 +345,8 @@ class SceneReader {
                             scene_xml::format_g(kMinHapticRate_Hz), ", ", scene_xml::format_g(kMaxHapticRate_Hz),
                             "] Hz, got ", scene_xml::format_g(h.update_rate_Hz)));
     }
-    report_above(a, ctx, "max_force_N", h.max_force_N, kDeviceMaxForce_N, "the device's peak force");
+    // No ceiling here: the device reports its own force limit, and max_force_N can only
+    // lower it (the haptic server warns at open when it asks for more).
   }
 
   /// The material attributes shared by named and inline materials.

@@ -133,6 +133,7 @@ RunResult run_server(const Loaded& scene, double duration_s, const fs::path& rec
   for (const auto& d : build.diagnostics) ADD_FAILURE() << d.to_string();
   if (!build.server) return out;
   out.opened = true;
+  out.warnings = build.warnings;
   out.settings = build.server->settings();
   out.report = build.server->run();
   return out;

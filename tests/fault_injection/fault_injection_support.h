@@ -58,6 +58,7 @@ Loaded load(const fs::path& file);
 /// Opens the scene's plugins (from the suite's plugin folder) and runs it.
 struct RunResult {
   bool opened = false;
+  Diagnostics warnings;  ///< HapticServer::open's
   ServerReport report;
   ServerSettings settings;
 };

@@ -574,6 +574,80 @@ TEST(DeviceFaults, DeviceWriteErrorWhilePushingStillSendsZeroTorque) {
   EXPECT_TRUE(f.run.report.base_stop_sent);
 }
 
+// ---- the device's force limit, seen from the device -------------------------------------
+
+/// The probe device pressing 4 mm into the block (4 N at full gain) while it reports
+/// `max_force_N` as its limit; the scene keeps its default <haptics max_force_N> (8.5 N).
+struct LimitRun {
+  RunResult run;
+  std::vector<LogRow> device;      ///< what the device received, from its side
+  std::vector<RecordingRow> rows;  ///< what the server computed and sent
+};
+
+LimitRun press_with_device_limit(const std::string& max_force_N) {
+  const fs::path dir = temp_dir();
+  const PressGeometry g = press_geometry(0.004);
+  const fs::path device_log = dir / "device.log";
+  const fs::path file = write_scene(dir, g,
+                                    fi_device_xml(g, device_log, kPressAt_s, param("max_force_N", max_force_N)) +
+                                        fi_tracker_xml(dir / "tracker.log", "") + fi_base_xml(dir / "base.log"),
+                                    "");
+  LimitRun out;
+  out.run = run_server(load(file), 0.8, dir / "run.csv", kMovingBase);
+  out.device = without_markers(read_log(device_log));
+  out.rows = read_rows(dir / "run.csv");
+  return out;
+}
+
+double norm(const LogRow& c) { return std::sqrt(c.a * c.a + c.b * c.b + c.c * c.c); }
+double norm(const std::array<double, 3>& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+
+/// The recording's row of the tick that sent `c` (the log keeps the time to 1 ns), or null.
+const RecordingRow* row_of(const std::vector<RecordingRow>& rows, const LogRow& c) {
+  const auto it = std::lower_bound(rows.begin(), rows.end(), c.t_s - 1e-9,
+                                   [](const RecordingRow& r, double t_s) { return r.t_s < t_s; });
+  return it != rows.end() && std::abs(it->t_s - c.t_s) <= 1e-9 ? &*it : nullptr;
+}
+
+TEST(DeviceForceLimit, AForceAboveTheDevicesLimitReachesTheDeviceClampedToExactlyTheLimit) {
+  const LimitRun l = press_with_device_limit("2");
+  ASSERT_TRUE(l.run.opened);
+  EXPECT_EQ(l.run.settings.tick.safety.max_force_N, 2.0);
+  ASSERT_EQ(l.run.warnings.size(), 1u);
+  EXPECT_THAT(l.run.warnings[0].message,
+              HasSubstr("<haptics max_force_N> is 8.5 N, more than device 'fi_device' allows (2 N, its device_info)"));
+  std::size_t at_limit = 0, asked_more = 0;
+  for (const LogRow& c : l.device) {
+    EXPECT_LE(norm(c), 2.0 * (1.0 + 1e-12)) << "at t = " << c.t_s;
+    const RecordingRow* r = row_of(l.rows, c);
+    if (r == nullptr || r->safety_gain != 1.0 || norm(r->cmd_force_W_N) <= 2.5) continue;
+    ++asked_more;  // the proxy asked for more than the limit, at full gain
+    if (std::abs(norm(c) - 2.0) <= 2.0 * 1e-12) ++at_limit;
+  }
+  EXPECT_GT(asked_more, 100u) << "the press never asked for more than the limit";
+  EXPECT_EQ(at_limit, asked_more);
+}
+
+TEST(DeviceForceLimit, AForceBelowTheLimitReachesTheDeviceUnchanged) {
+  const LimitRun l = press_with_device_limit("8.5");
+  ASSERT_TRUE(l.run.opened);
+  EXPECT_EQ(l.run.settings.tick.safety.max_force_N, 8.5);
+  EXPECT_TRUE(l.run.warnings.empty());
+  std::size_t pressing = 0, unchanged = 0;
+  for (const LogRow& c : l.device) {
+    const RecordingRow* r = row_of(l.rows, c);
+    if (r == nullptr || r->safety_gain != 1.0 || norm(r->cmd_force_W_N) <= kContactForce_N) continue;
+    ++pressing;
+    // What the device got is what the server sent, and that is the proxy's force, unscaled.
+    if (c.a == r->force_D_N[0] && c.b == r->force_D_N[1] && c.c == r->force_D_N[2] &&
+        std::abs(norm(c) - norm(r->cmd_force_W_N)) <= 1e-12 * norm(c)) {
+      ++unchanged;
+    }
+  }
+  EXPECT_GT(pressing, 100u) << "the press never pushed";
+  EXPECT_EQ(unchanged, pressing);
+}
+
 // ---- 6. kill -9 of `mhd run` -----------------------------------------------------------
 
 #ifdef MHD_CLI

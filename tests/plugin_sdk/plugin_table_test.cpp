@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -226,6 +229,72 @@ TEST_F(PluginTableTest, AGoodParameterSetIsNeverRefusedAndReachesTheClass) {
 TEST_F(PluginTableTest, TheEntryServesOnlyItsOwnAbi) {
   EXPECT_EQ(mhd::sdk::entry(kProbe, MHD_PLUGIN_ABI_VERSION), &kProbe);
   EXPECT_EQ(mhd::sdk::entry(kProbe, 2), nullptr);
+}
+
+}  // namespace
+
+namespace {
+
+/// A tracker whose tracker_read reports its own status (the form for a tracker that can
+/// fail or be deactivated), and one whose tracker_read returns a count only.
+class StatusTracker {
+ public:
+  static constexpr std::array kParams{
+      mhd::sdk::choice("mode", "ok|empty|deactivate", "ok", "what tracker_read reports"),
+  };
+  explicit StatusTracker(const mhd::sdk::Params& params) : mode_(params.text("mode")) {}
+  mhd_status tracker_read(std::span<mhd_tracker_sample> out, std::size_t& count) {
+    if (mode_ == "deactivate") return MHD_DEACTIVATE;
+    if (mode_ == "empty" || out.empty()) return MHD_NO_DATA;
+    out[0] = {};
+    out[0].sequence = 7;
+    count = 1;
+    return MHD_OK;
+  }
+
+ private:
+  std::string mode_;
+};
+
+constexpr mhd::sdk::PluginInfo kStatusTrackerInfo{
+    .kind = MHD_KIND_TRACKER, .name = "status_tracker", .version = "1.0.0", .description = "test tracker"};
+constexpr mhd_plugin_api kStatusTracker = mhd::sdk::plugin_table<StatusTracker, kStatusTrackerInfo>();
+
+double fixed_now(void*) { return 1.0; }
+
+struct TrackerRead {
+  mhd_status status;
+  std::size_t count;
+  std::uint64_t first_sequence;
+};
+
+TrackerRead read_status_tracker(const char* mode) {
+  const mhd_host host{MHD_PLUGIN_ABI_VERSION, sizeof(mhd_host), fixed_now, nullptr, nullptr, nullptr};
+  const mhd_param params[] = {{"mode", mode}};
+  mhd_error err{};
+  mhd_plugin_instance* t = kStatusTracker.open(&host, params, 1, &err);
+  EXPECT_NE(t, nullptr) << err.message;
+  if (t == nullptr) return {MHD_ERROR, 0, 0};
+  EXPECT_EQ(kStatusTracker.start(t, &err), MHD_OK);
+  std::array<mhd_tracker_sample, 4> out{};
+  std::size_t count = 99;
+  const mhd_status s = kStatusTracker.tracker_read(t, out.data(), out.size(), &count, &err);
+  kStatusTracker.close(t);
+  return {s, count, out[0].sequence};
+}
+
+TEST(PluginTableTracker, ATrackerReadWithAStatusPassesItsStatusAndCount) {
+  ASSERT_NE(kStatusTracker.tracker_read, nullptr);
+  const TrackerRead ok = read_status_tracker("ok");
+  EXPECT_EQ(ok.status, MHD_OK);
+  EXPECT_EQ(ok.count, 1u);
+  EXPECT_EQ(ok.first_sequence, 7u);
+  const TrackerRead deactivated = read_status_tracker("deactivate");
+  EXPECT_EQ(deactivated.status, MHD_DEACTIVATE);
+  EXPECT_EQ(deactivated.count, 0u);  // the count starts at 0 whatever the host left there
+  const TrackerRead empty = read_status_tracker("empty");
+  EXPECT_EQ(empty.status, MHD_NO_DATA);
+  EXPECT_EQ(empty.count, 0u);
 }
 
 }  // namespace

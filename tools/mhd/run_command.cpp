@@ -116,6 +116,10 @@ int run(const RunOptions& opt) {
 
   mhd::HapticServerBuild build = mhd::HapticServer::open(*read.scene, scene, std::move(options));
   for (const auto& d : build.diagnostics) fmt::print(stderr, "{}\n", d.to_string());
+  for (const auto& w : build.warnings) {
+    fmt::print(stderr, "{}{}: warning: {}\n", w.where.file, w.where.line > 0 ? fmt::format(":{}", w.where.line) : "",
+               w.message);
+  }
   if (!build.server) return 1;
   const double load_s = std::chrono::duration<double>(Clock::now() - t0).count();
   try {

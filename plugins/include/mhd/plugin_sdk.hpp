@@ -32,6 +32,10 @@
 // What the class promises: members return mhd_status or void (void is MHD_OK); read and
 // write calls never block (only tracker_wait may); the destructor is close().
 //   tracker_read(std::span<mhd_tracker_sample>) -> std::size_t  samples written (0: MHD_NO_DATA)
+//   tracker_read(std::span<mhd_tracker_sample>, std::size_t& count) -> mhd_status
+//                                               the form for a tracker that can fail or
+//                                               deactivate: count starts at 0, the status
+//                                               is the call's
 //   tracker_wait(double timeout_s)              -> mhd_status   MHD_OK with data, MHD_NO_DATA on timeout
 //   counters(std::span<mhd_counter>)            -> std::size_t  counters the class keeps
 //   base_read(mhd_base_state&), base_write(const mhd_base_command&),
@@ -46,6 +50,8 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <concepts>
+#include <cstddef>
 #include <cstring>
 #include <exception>
 #include <span>
@@ -132,6 +138,12 @@ constexpr std::span<const mhd_param_decl> params_of() {
     return {};
   }
 }
+
+/// Whether P's tracker_read reports its own status (and the count through a reference).
+template <class P>
+concept tracker_read_has_status = requires(P& p, std::span<mhd_tracker_sample> o, std::size_t& n) {
+  { p.tracker_read(o, n) } -> std::same_as<mhd_status>;
+};
 
 /// A member's result as a status: void is MHD_OK.
 template <class F>
@@ -229,8 +241,14 @@ struct Calls {
                                  mhd_error* err) noexcept {
     return with(self, Need::Running, err, [&](Inst& s) {
       if (count == nullptr || (out == nullptr && capacity > 0)) throw std::invalid_argument("tracker_read: NULL output");
-      *count = s.plugin.tracker_read(std::span<mhd_tracker_sample>(out, capacity));
-      return *count > 0 ? MHD_OK : MHD_NO_DATA;
+      const std::span<mhd_tracker_sample> samples(out, capacity);
+      if constexpr (tracker_read_has_status<P>) {
+        *count = 0;
+        return s.plugin.tracker_read(samples, *count);
+      } else {
+        *count = s.plugin.tracker_read(samples);
+        return *count > 0 ? MHD_OK : MHD_NO_DATA;
+      }
     });
   }
   static mhd_status tracker_wait(mhd_plugin_instance* self, double timeout_s, mhd_error* err) noexcept {
@@ -299,7 +317,10 @@ constexpr mhd_plugin_api plugin_table() {
   if constexpr (requires(P& p, mhd_device_info& o) { p.device_info(o); }) t.device_info = C::device_info;
   if constexpr (requires(P& p, mhd_device_state& o) { p.device_read(o); }) t.device_read = C::device_read;
   if constexpr (requires(P& p, const mhd_device_command& c) { p.device_write(c); }) t.device_write = C::device_write;
-  if constexpr (requires(P& p, std::span<mhd_tracker_sample> o) { p.tracker_read(o); }) t.tracker_read = C::tracker_read;
+  if constexpr (requires(P& p, std::span<mhd_tracker_sample> o) { p.tracker_read(o); } ||
+                detail::tracker_read_has_status<P>) {
+    t.tracker_read = C::tracker_read;
+  }
   if constexpr (requires(P& p, mhd_base_state& o) { p.base_read(o); }) t.base_read = C::base_read;
   if constexpr (requires(P& p, const mhd_base_command& c) { p.base_write(c); }) t.base_write = C::base_write;
   if constexpr (requires(P& p, const mhd_display_frame& f) { p.display_write(f); }) t.display_write = C::display_write;

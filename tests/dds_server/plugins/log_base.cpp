@@ -2,102 +2,54 @@
 // with the command's time stamp (the host clock, as the server's recording), written at
 // close to `command_log` as lines "<timestamp_s> <vx_mps> <vz_mps> <omega_radps>". So a
 // test sees when the server stopped the base, not only that it ended stopped.
-#include <mhd/plugin_abi.h>
+#include <mhd/plugin_sdk.hpp>
 
+#include <array>
 #include <cstdio>
-#include <new>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace {
 
-struct Command {
-  double t_s, vx_mps, vz_mps, omega_radps;
-};
+class LogBase {
+ public:
+  static constexpr std::array kParams{
+      mhd::sdk::text("command_log", nullptr, "where every command is logged"),
+  };
 
-struct Base {
-  const mhd_host* host = nullptr;
-  std::string command_log;
-  std::vector<Command> commands;  ///< reserved at open: base_write does not allocate
-};
-
-Base* of(mhd_plugin_instance* self) { return reinterpret_cast<Base*>(self); }
-
-mhd_plugin_instance* open_base(const mhd_host* host, const mhd_param* params, size_t count, mhd_error* err) try {
-  auto* b = new Base;
-  b->host = host;
-  for (size_t i = 0; i < count; ++i) {
-    const std::string name = params[i].name;
-    if (name == "command_log") {
-      b->command_log = params[i].value;
-    } else {
-      std::snprintf(err->message, sizeof(err->message), "unknown parameter '%s'", name.c_str());
-      delete b;
-      return nullptr;
-    }
+  LogBase(const mhd_host& host, const mhd::sdk::Params& params)
+      : host_(host), command_log_(params.optional_text("command_log").value_or("")) {
+    commands_.reserve(1 << 16);  // 100 minutes of commands at 10 Hz: base_write does not allocate
   }
-  b->commands.reserve(1 << 16);  // 100 minutes of commands at 10 Hz
-  return reinterpret_cast<mhd_plugin_instance*>(b);
-} catch (const std::bad_alloc&) {
-  std::snprintf(err->message, sizeof(err->message), "out of memory");
-  return nullptr;
-}
-
-mhd_status ok(mhd_plugin_instance*, mhd_error*) { return MHD_OK; }
-
-void close_base(mhd_plugin_instance* self) {
-  const Base& b = *of(self);
-  if (!b.command_log.empty()) {
-    if (std::FILE* f = std::fopen(b.command_log.c_str(), "w")) {
-      for (const Command& c : b.commands) {
-        std::fprintf(f, "%.9f %.17g %.17g %.17g\n", c.t_s, c.vx_mps, c.vz_mps, c.omega_radps);
+  LogBase(const LogBase&) = delete;
+  LogBase& operator=(const LogBase&) = delete;
+  ~LogBase() {
+    if (command_log_.empty()) return;
+    if (std::FILE* f = std::fopen(command_log_.c_str(), "w")) {
+      for (const mhd_base_command& c : commands_) {
+        std::fprintf(f, "%.9f %.17g %.17g %.17g\n", c.timestamp_s, c.vx_mps, c.vz_mps, c.omega_radps);
       }
       std::fclose(f);
     }
   }
-  delete of(self);
-}
 
-mhd_status read(mhd_plugin_instance* self, mhd_base_state* out, mhd_error*) {
-  *out = {};
-  out->timestamp_s = of(self)->host->now_s(of(self)->host->clock_context);
-  return MHD_OK;
-}
-
-mhd_status write(mhd_plugin_instance* self, const mhd_base_command* c, mhd_error* err) {
-  Base& b = *of(self);
-  if (b.commands.size() == b.commands.capacity()) {
-    std::snprintf(err->message, sizeof(err->message), "command log full");
-    return MHD_ERROR;
+  void base_read(mhd_base_state& out) {
+    out = {};
+    out.timestamp_s = mhd::sdk::host_now(host_);
   }
-  b.commands.push_back({c->timestamp_s, c->vx_mps, c->vz_mps, c->omega_radps});
-  return MHD_OK;
-}
+  void base_write(const mhd_base_command& c) {
+    if (commands_.size() == commands_.capacity()) throw std::runtime_error("command log full");
+    commands_.push_back(c);
+  }
+
+ private:
+  mhd_host host_;
+  std::string command_log_;
+  std::vector<mhd_base_command> commands_;
+};
 
 }  // namespace
 
-extern "C" MHD_PLUGIN_EXPORT const mhd_plugin_api* mhd_plugin_entry(uint32_t host_abi_version) {
-  if (host_abi_version != MHD_PLUGIN_ABI_VERSION) return nullptr;
-  static const mhd_plugin_api api = [] {
-    mhd_plugin_api a{};
-    a.abi_version = MHD_PLUGIN_ABI_VERSION;
-    a.struct_size = sizeof(mhd_plugin_api);
-    a.kind = MHD_PLUGIN_KIND;
-    a.name = MHD_PLUGIN_NAME;
-    a.version = "1.0.0";
-    a.description = "test base that logs every command with its time";
-    a.open = open_base;
-    a.start = ok;
-    a.stop = ok;
-    a.close = close_base;
-    static const mhd_param_decl params[] = {
-        {"command_log", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "where every command is logged"},
-    };
-    a.params = params;
-    a.param_count = 1;
-    a.base_read = read;
-    a.base_write = write;
-    return a;
-  }();
-  return &api;
-}
+MHD_PLUGIN_ENTRY(LogBase, {.kind = MHD_PLUGIN_KIND, .name = MHD_PLUGIN_NAME, .version = "1.0.0",
+                           .description = "test base that logs every command with its time"})

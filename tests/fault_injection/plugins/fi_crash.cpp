@@ -10,8 +10,9 @@
 #include <unistd.h>
 
 #include <csignal>
+#include <cstdint>
 #include <cstdlib>
-#include <memory>
+#include <exception>
 #include <stdexcept>
 #include <string>
 
@@ -26,16 +27,8 @@ Crash crash_from(const std::string& value) {
   if (value == "abort") return Crash::Abort;
   if (value == "throw") return Crash::Throw;
   if (value == "exit0") return Crash::Exit0;
-  throw std::invalid_argument("bad crash '" + value + "' (segfault, bus, fpe, abort, throw, exit0)");
+  throw std::logic_error("crash '" + value + "' is declared but not handled");
 }
-
-struct Crasher {
-  Crash crash = Crash::Segfault;
-  long crash_on_call = 30;
-  long calls = 0;
-};
-
-Crasher* of(mhd_plugin_instance* self) { return reinterpret_cast<Crasher*>(self); }
 
 int* volatile g_nowhere = nullptr;
 volatile int g_zero = 0;
@@ -65,56 +58,45 @@ void crash_now(Crash crash) {
       break;
     }
     case Crash::Abort: std::abort();
-    case Crash::Throw: throw std::runtime_error("fi_crash: injected exception");
+    case Crash::Throw:
+      // An exception no one catches: the SDK would turn one thrown out of display_write
+      // into MHD_ERROR, so this one ends in std::terminate here, still the current
+      // exception, as one escaping a hand-written plugin would.
+      try {
+        throw std::runtime_error("fi_crash: injected exception");
+      } catch (...) {
+        std::terminate();
+      }
     case Crash::Exit0: std::exit(0);
   }
 }
 
-mhd_plugin_instance* open_crasher(const mhd_host*, const mhd_param* params, size_t count, mhd_error* err) {
-  return probe::guarded_open(err, [&] {
-    auto c = std::make_unique<Crasher>();
-    bool given = false;
-    for (size_t i = 0; i < count; ++i) {
-      const std::string name = params[i].name, value = params[i].value;
-      if (name == "crash") {
-        c->crash = crash_from(value);
-        given = true;
-      } else if (name == "crash_on_call") {
-        c->crash_on_call = static_cast<long>(probe::number(name, value));
-      } else {
-        throw std::invalid_argument("unknown parameter '" + name + "'");
-      }
-    }
-    if (!given) throw std::invalid_argument("parameter 'crash' is required");
-    return c.release();
-  });
-}
+class FiCrash {
+ public:
+  static constexpr std::array kParams{
+      [] {
+        mhd_param_decl d = mhd::sdk::choice("crash", "segfault|bus|fpe|abort|throw|exit0", nullptr, "how it dies");
+        d.flags |= MHD_PARAM_REQUIRED;
+        return d;
+      }(),
+      mhd::sdk::integer("crash_on_call", "", "30", "the display_write that crashes", mhd::sdk::at_least(1)),
+  };
 
-void close_crasher(mhd_plugin_instance* self) { delete of(self); }
+  explicit FiCrash(const mhd::sdk::Params& params)
+      : crash_(crash_from(params.text("crash"))), crash_on_call_(params.integer("crash_on_call")) {}
 
-mhd_status write(mhd_plugin_instance* self, const mhd_display_frame*, mhd_error*) {
-  Crasher& c = *of(self);
-  if (++c.calls == c.crash_on_call) crash_now(c.crash);
-  return MHD_OK;
-}
+  void display_write(const mhd_display_frame&) {
+    if (++calls_ == crash_on_call_) crash_now(crash_);
+  }
+
+ private:
+  Crash crash_;
+  std::uint64_t crash_on_call_;
+  std::uint64_t calls_ = 0;
+};
 
 }  // namespace
 
-extern "C" MHD_PLUGIN_EXPORT const mhd_plugin_api* mhd_plugin_entry(uint32_t host_abi_version) {
-  if (host_abi_version != MHD_PLUGIN_ABI_VERSION) return nullptr;
-  static const mhd_plugin_api api = [] {
-    mhd_plugin_api a = probe::table("test display: crashes on its n-th frame (segfault, bus, fpe, abort, throw, exit0)");
-    a.open = open_crasher;
-    a.close = close_crasher;
-    // Declared as text: this probe parses its own values, the host checks only the names.
-    static const mhd_param_decl params[] = {
-        {"crash", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
-        {"crash_on_call", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
-    };
-    a.params = params;
-    a.param_count = sizeof(params) / sizeof(params[0]);
-    a.display_write = write;
-    return a;
-  }();
-  return &api;
-}
+MHD_PLUGIN_ENTRY(FiCrash,
+                 {.kind = MHD_PLUGIN_KIND, .name = MHD_PLUGIN_NAME, .version = "1.0.0",
+                  .description = "test display: crashes on its n-th frame (segfault, bus, fpe, abort, throw, exit0)"})

@@ -26,11 +26,10 @@
 #include <array>
 #include <deque>
 #include <limits>
-#include <memory>
 #include <numbers>
-#include <optional>
 #include <random>
-#include <string>
+#include <span>
+#include <stdexcept>
 
 namespace {
 
@@ -38,25 +37,6 @@ struct Pending {
   mhd_tracker_sample sample;
   double arrival_s;
 };
-
-struct Tracker {
-  explicit Tracker(const mhd::sim_is900::Is900Config& c) : model(c), rng(c.seed ^ 0x5eedu) {}
-  const mhd_host* host = nullptr;
-  mhd::sim_is900::Is900Model model;
-  std::mt19937_64 rng;
-  double silent_after_s = std::numeric_limits<double>::infinity();
-  double resume_after_s = std::numeric_limits<double>::infinity();
-  double loss = 0.0;
-  double delay_s = 0.0;
-  double jitter_s = 0.0;
-  bool with_head = false;
-  double t_start_s = 0.0;
-  double last_arrival_s = -std::numeric_limits<double>::infinity();
-  std::deque<Pending> in_flight;
-  probe::Log delivered;
-};
-
-Tracker* of(mhd_plugin_instance* self) { return reinterpret_cast<Tracker*>(self); }
 
 mhd::sim_is900::WorldTruth truth_of(const mhd_sim_world& w) {
   mhd::sim_is900::WorldTruth t;
@@ -68,144 +48,115 @@ mhd::sim_is900::WorldTruth truth_of(const mhd_sim_world& w) {
   return t;
 }
 
-mhd_plugin_instance* open_tracker(const mhd_host* host, const mhd_param* params, size_t count, mhd_error* err) {
-  return probe::guarded_open(err, [&] {
-    if (host->sim_world == nullptr) throw std::runtime_error("fi_tracker measures the simulated world: the host has none");
-    mhd::sim_is900::Is900Config c;
-    c.seed = 1;
-    double silent = std::numeric_limits<double>::infinity(), resume = std::numeric_limits<double>::infinity();
-    double loss = 0.0, delay_ms = 0.0, jitter_ms = 0.0;
-    bool with_head = true;
-    std::optional<std::array<double, 3>> head_p_W_m;
-    std::string log;
-    for (size_t i = 0; i < count; ++i) {
-      const std::string name = params[i].name, value = params[i].value;
-      if (name == "silent_after_s") silent = probe::number(name, value);
-      else if (name == "resume_after_s") resume = probe::number(name, value);
-      else if (name == "loss") loss = probe::number(name, value);
-      else if (name == "delay_ms") delay_ms = probe::number(name, value);
-      else if (name == "jitter_ms") jitter_ms = probe::number(name, value);
-      else if (name == "rate_hz") c.rate_hz = probe::number(name, value);
-      else if (name == "latency_s") c.latency_s = probe::number(name, value);
-      else if (name == "position_sigma_m") c.position_sigma_m = probe::number(name, value);
-      else if (name == "angle_sigma_deg") c.angle_sigma_rad = probe::number(name, value) * std::numbers::pi / 180.0;
-      else if (name == "seed") c.seed = static_cast<std::uint64_t>(probe::number(name, value));
-      else if (name == "with_head") with_head = value == "true";
-      else if (name == "head_p_W_m") probe::vector3(name, value, head_p_W_m.emplace().data());
-      else if (name == "delivery_log") log = value;
-      else throw std::invalid_argument("unknown parameter '" + name + "'");
+class FiTracker {
+ public:
+  static constexpr std::array kParams{
+      mhd::sdk::number("silent_after_s", "s", nullptr, "nothing measured from then (after start; absent: never)"),
+      mhd::sdk::number("resume_after_s", "s", nullptr, "measured again from then (after start; absent: never)"),
+      mhd::sdk::number("loss", "", "0", "each sample is lost with this probability", mhd::sdk::between(0.0, 1.0)),
+      mhd::sdk::number("delay_ms", "ms", "0", "extra delivery delay", mhd::sdk::non_negative()),
+      mhd::sdk::number("jitter_ms", "ms", "0", "extra delay +- U(jitter_ms)", mhd::sdk::non_negative()),
+      mhd::sdk::number("rate_hz", "Hz", nullptr, "the IS-900 model's rate (default the model's)", mhd::sdk::positive()),
+      mhd::sdk::number("latency_s", "s", nullptr, "the model's latency (default the model's)",
+                       mhd::sdk::non_negative()),
+      mhd::sdk::number("position_sigma_m", "m", nullptr, "the model's position noise", mhd::sdk::non_negative()),
+      mhd::sdk::number("angle_sigma_deg", "deg", nullptr, "the model's angle noise", mhd::sdk::non_negative()),
+      mhd::sdk::integer("seed", "", "1", "the model's and the faults' random numbers"),
+      mhd::sdk::boolean("with_head", "true", "also deliver the head sensor (id 1)"),
+      mhd::sdk::vector3("head_p_W_m", "m", nullptr, "at start, stand the simulated user's head here"),
+      mhd::sdk::text("delivery_log", nullptr, "where close() writes every delivered sample"),
+  };
+
+  FiTracker(const mhd_host& host, const mhd::sdk::Params& params)
+      : host_(host),
+        model_(config_from(params)),
+        rng_(model_.config().seed ^ 0x5eedu),
+        silent_after_s_(params.number("silent_after_s", std::numeric_limits<double>::infinity())),
+        resume_after_s_(params.number("resume_after_s", std::numeric_limits<double>::infinity())),
+        loss_(params.number("loss")),
+        delay_s_(params.number("delay_ms") * 1e-3),
+        jitter_s_(params.number("jitter_ms") * 1e-3),
+        with_head_(params.boolean("with_head")) {
+    if (host.sim_world == nullptr) {
+      throw std::runtime_error("fi_tracker measures the simulated world: the host has none");
     }
-    if (!(loss >= 0.0 && loss <= 1.0)) throw std::invalid_argument("parameter 'loss' must be in [0, 1]");
-    if (!(delay_ms >= 0.0 && jitter_ms >= 0.0)) throw std::invalid_argument("delay_ms and jitter_ms must be >= 0");
-    auto t = std::make_unique<Tracker>(c);
-    t->host = host;
-    t->silent_after_s = silent;
-    t->resume_after_s = resume;
-    t->loss = loss;
-    t->delay_s = delay_ms * 1e-3;
-    t->jitter_s = jitter_ms * 1e-3;
-    t->with_head = with_head;
-    if (head_p_W_m) {
+    if (const auto head_p_W_m = params.optional_vector3("head_p_W_m")) {
       const double q_W_wxyz[4] = {1.0, 0.0, 0.0, 0.0};
-      host->sim_world->set_head(host->sim_world->context, head_p_W_m->data(), q_W_wxyz);
+      host.sim_world->set_head(host.sim_world->context, head_p_W_m->data(), q_W_wxyz);
     }
-    t->delivered.open(log, 1u << 18);
-    return t.release();
-  });
-}
-
-mhd_status start(mhd_plugin_instance* self, mhd_error* err) {
-  Tracker& t = *of(self);
-  t.t_start_s = probe::now_s(*t.host);
-  try {
-    t.model.start(t.t_start_s, truth_of(*t.host->sim_world));
-  } catch (const std::exception& e) {
-    probe::set_error(err, e.what());
-    return MHD_ERROR;
+    delivered_.open(params.optional_text("delivery_log").value_or(""), 1u << 18);
   }
-  return MHD_OK;
-}
+  FiTracker(const FiTracker&) = delete;
+  FiTracker& operator=(const FiTracker&) = delete;
+  ~FiTracker() { delivered_.write(); }
 
-void close_tracker(mhd_plugin_instance* self) {
-  of(self)->delivered.write();
-  delete of(self);
-}
-
-/// Advances the model; what it measured goes in flight with its delivery time, or is lost.
-mhd_status simulate_until(mhd_plugin_instance* self, double t_s, mhd_error* err) {
-  Tracker& t = *of(self);
-  try {
-    t.model.simulate_until(t_s, truth_of(*t.host->sim_world));
-  } catch (const std::exception& e) {
-    probe::set_error(err, e.what());
-    return MHD_ERROR;
+  void start() {
+    t_start_s_ = mhd::sdk::host_now(host_);
+    model_.start(t_start_s_, truth_of(*host_.sim_world));
   }
-  std::array<mhd_tracker_sample, 32> measured{};
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  for (;;) {
-    const std::size_t n = t.model.read(measured);
-    for (std::size_t i = 0; i < n; ++i) {
-      const mhd_tracker_sample& s = measured[i];
-      if (s.sensor_id != 0 && !t.with_head) continue;
-      const double since_start_s = s.timestamp_s - t.t_start_s;
-      if (since_start_s >= t.silent_after_s && since_start_s < t.resume_after_s) continue;
-      if (t.loss > 0.0 && unit(t.rng) < t.loss) continue;
-      double extra_s = t.delay_s;
-      if (t.jitter_s > 0.0) extra_s += t.jitter_s * (2.0 * unit(t.rng) - 1.0);
-      // The model already held it for its latency; the extra delay comes on top, in order.
-      const double arrival_s = std::max(t.last_arrival_s, s.timestamp_s + t.model.config().latency_s + std::max(0.0, extra_s));
-      t.last_arrival_s = arrival_s;
-      t.in_flight.push_back({s, arrival_s});
+
+  /// Advances the model; what it measured goes in flight with its delivery time, or is lost.
+  void simulate_until(double t_s) {
+    model_.simulate_until(t_s, truth_of(*host_.sim_world));
+    std::array<mhd_tracker_sample, 32> measured{};
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (;;) {
+      const std::size_t n = model_.read(measured);
+      for (std::size_t i = 0; i < n; ++i) {
+        const mhd_tracker_sample& s = measured[i];
+        if (s.sensor_id != 0 && !with_head_) continue;
+        const double since_start_s = s.timestamp_s - t_start_s_;
+        if (since_start_s >= silent_after_s_ && since_start_s < resume_after_s_) continue;
+        if (loss_ > 0.0 && unit(rng_) < loss_) continue;
+        double extra_s = delay_s_;
+        if (jitter_s_ > 0.0) extra_s += jitter_s_ * (2.0 * unit(rng_) - 1.0);
+        // The model already held it for its latency; the extra delay comes on top, in order.
+        const double arrival_s =
+            std::max(last_arrival_s_, s.timestamp_s + model_.config().latency_s + std::max(0.0, extra_s));
+        last_arrival_s_ = arrival_s;
+        in_flight_.push_back({s, arrival_s});
+      }
+      if (n < measured.size()) break;
     }
-    if (n < measured.size()) break;
   }
-  return MHD_OK;
-}
 
-mhd_status read(mhd_plugin_instance* self, mhd_tracker_sample* out, size_t capacity, size_t* count, mhd_error*) {
-  Tracker& t = *of(self);
-  const double now = probe::now_s(*t.host);
-  std::size_t n = 0;
-  while (n < capacity && !t.in_flight.empty() && t.in_flight.front().arrival_s <= now) {
-    const Pending& p = t.in_flight.front();
-    out[n++] = p.sample;
-    t.delivered.add(p.sample.timestamp_s, now, static_cast<double>(p.sample.sequence), p.sample.sensor_id);
-    t.in_flight.pop_front();
+  std::size_t tracker_read(std::span<mhd_tracker_sample> out) {
+    const double now = mhd::sdk::host_now(host_);
+    std::size_t n = 0;
+    while (n < out.size() && !in_flight_.empty() && in_flight_.front().arrival_s <= now) {
+      const Pending& p = in_flight_.front();
+      out[n++] = p.sample;
+      delivered_.add(p.sample.timestamp_s, now, static_cast<double>(p.sample.sequence), p.sample.sensor_id);
+      in_flight_.pop_front();
+    }
+    return n;
   }
-  *count = n;
-  return n == 0 ? MHD_NO_DATA : MHD_OK;
-}
+
+ private:
+  static mhd::sim_is900::Is900Config config_from(const mhd::sdk::Params& params) {
+    mhd::sim_is900::Is900Config c;
+    c.seed = params.integer("seed");
+    c.rate_hz = params.number("rate_hz", c.rate_hz);
+    c.latency_s = params.number("latency_s", c.latency_s);
+    c.position_sigma_m = params.number("position_sigma_m", c.position_sigma_m);
+    if (const auto deg = params.optional_number("angle_sigma_deg")) c.angle_sigma_rad = *deg * std::numbers::pi / 180.0;
+    return c;
+  }
+
+  mhd_host host_;
+  mhd::sim_is900::Is900Model model_;
+  std::mt19937_64 rng_;
+  double silent_after_s_, resume_after_s_;
+  double loss_, delay_s_, jitter_s_;
+  bool with_head_;
+  double t_start_s_ = 0.0;
+  double last_arrival_s_ = -std::numeric_limits<double>::infinity();
+  std::deque<Pending> in_flight_;
+  probe::Log delivered_;
+};
 
 }  // namespace
 
-extern "C" MHD_PLUGIN_EXPORT const mhd_plugin_api* mhd_plugin_entry(uint32_t host_abi_version) {
-  if (host_abi_version != MHD_PLUGIN_ABI_VERSION) return nullptr;
-  static const mhd_plugin_api api = [] {
-    mhd_plugin_api a = probe::table("test tracker: the simulated IS-900 falling silent, lossy or jittery on cue");
-    a.open = open_tracker;
-    a.start = start;
-    a.close = close_tracker;
-    // Declared as text: this probe parses its own values, the host checks only the names.
-    static const mhd_param_decl params[] = {
-        {"silent_after_s", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
-        {"resume_after_s", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
-        {"loss", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
-        {"delay_ms", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
-        {"jitter_ms", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
-        {"rate_hz", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
-        {"latency_s", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
-        {"position_sigma_m", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
-        {"angle_sigma_deg", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
-        {"seed", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
-        {"with_head", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
-        {"head_p_W_m", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
-        {"delivery_log", MHD_PARAM_TEXT, "", 0u, 0.0, 0.0, nullptr, nullptr, "test probe parameter"},
-    };
-    a.params = params;
-    a.param_count = sizeof(params) / sizeof(params[0]);
-    a.tracker_read = read;
-    a.simulate_until = simulate_until;
-    return a;
-  }();
-  return &api;
-}
+MHD_PLUGIN_ENTRY(FiTracker,
+                 {.kind = MHD_PLUGIN_KIND, .name = MHD_PLUGIN_NAME, .version = "1.0.0",
+                  .description = "test tracker: the simulated IS-900 falling silent, lossy or jittery on cue"})

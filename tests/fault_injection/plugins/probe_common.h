@@ -1,65 +1,21 @@
 #pragma once
-// Shared by the fault-injection suite's test plugins (tests/fault_injection/plugins):
-// reading <param>s, filling mhd_error, the host clock, the plugin table's lifecycle, and
-// a preallocated log written to a file at close, so a test checks every command the
-// "hardware" received, with its time, from the hardware's side.
+// Shared by the fault-injection suite's test plugins (tests/fault_injection/plugins, SDK
+// classes over mhd/plugin_sdk.hpp): a preallocated log written to a file at close, so a
+// test checks every command the "hardware" received, with its time, from the hardware's
+// side; and a fault that strikes on cue, marked in that log.
 
-#include <mhd/plugin_abi.h>
+#include <mhd/plugin_sdk.hpp>
 
+#include <array>
+#include <cstddef>
 #include <cstdio>
-#include <cstdlib>
+#include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace probe {
-
-inline void set_error(mhd_error* err, const std::string& text) {
-  if (err != nullptr) std::snprintf(err->message, sizeof(err->message), "%s", text.c_str());
-}
-
-inline double now_s(const mhd_host& host) { return host.now_s(host.clock_context); }
-
-/// A number parameter; throws std::invalid_argument naming the parameter when it does not parse.
-inline double number(const std::string& name, const std::string& value) {
-  char* end = nullptr;
-  const double v = std::strtod(value.c_str(), &end);
-  if (value.empty() || end == nullptr || *end != '\0') throw std::invalid_argument("parameter '" + name + "' is not a number: '" + value + "'");
-  return v;
-}
-
-/// Three numbers separated by spaces.
-inline void vector3(const std::string& name, const std::string& value, double out[3]) {
-  char* p = const_cast<char*>(value.c_str());
-  for (int i = 0; i < 3; ++i) {
-    char* end = nullptr;
-    out[i] = std::strtod(p, &end);
-    if (end == p) throw std::invalid_argument("parameter '" + name + "' needs three numbers: '" + value + "'");
-    p = end;
-  }
-  while (*p == ' ') ++p;
-  if (*p != '\0') throw std::invalid_argument("parameter '" + name + "' needs three numbers: '" + value + "'");
-}
-
-/// What a fault plugin does once its fault time has come.
-enum class Fault { None, Nan, Error, Deactivate };
-
-inline Fault fault_from(const std::string& value) {
-  if (value == "none") return Fault::None;
-  if (value == "nan") return Fault::Nan;
-  if (value == "error") return Fault::Error;
-  if (value == "deactivate") return Fault::Deactivate;
-  throw std::invalid_argument("bad fault '" + value + "' (none, nan, error, deactivate)");
-}
-
-/// Which call fails.
-enum class FaultOn { Read, Write };
-
-inline FaultOn fault_on_from(const std::string& value) {
-  if (value == "read") return FaultOn::Read;
-  if (value == "write") return FaultOn::Write;
-  throw std::invalid_argument("bad fault_on '" + value + "' (read, write)");
-}
 
 /// Rows of four numbers (time and three values), kept in memory and written at close as
 /// "%.9f %.17g %.17g %.17g" lines. Reserved at open: logging never allocates.
@@ -89,49 +45,61 @@ class Log {
   std::vector<Row> rows_;
 };
 
-inline mhd_status no_op(mhd_plugin_instance*, mhd_error*) { return MHD_OK; }
+/// Which call fails.
+enum class FaultOn { Read, Write };
 
-/// A PHANToM Premium 1.5's device_info (its workspace box in the device frame).
-inline mhd_status phantom_like_info(mhd_plugin_instance*, mhd_device_info* out, mhd_error*) {
-  *out = mhd_device_info{};
-  out->max_force_N = 8.5;
-  out->max_stiffness_N_per_m = 3500.0;
-  out->dof_in = 3;
-  out->dof_out = 3;
-  out->workspace_box_count = 1;
-  const double lo[3] = {-0.1905, -0.0035, -0.1055}, hi[3] = {0.1905, 0.2635, 0.0855};
-  for (int i = 0; i < 3; ++i) {
-    out->workspace[0].min_m[i] = lo[i];
-    out->workspace[0].max_m[i] = hi[i];
+/// The parameters of FaultOnCue.
+inline constexpr std::array kFaultParams{
+    mhd::sdk::choice("fault", "none|nan|error|deactivate", "none",
+                     "what the plugin does once the fault strikes (nan: on read only)"),
+    mhd::sdk::number("fault_after_s", "s", nullptr, "when the fault strikes, after start (absent: never)"),
+    mhd::sdk::choice("fault_on", "read|write", "read", "which call fails"),
+    mhd::sdk::text("command_log", nullptr,
+                   "where close() writes every command, and a row 't_s nan nan nan' when the fault strikes"),
+};
+
+/// A fault that strikes fault_after_s after start, on reads or on writes, and the log of
+/// commands it marks. The destructor writes the log.
+class FaultOnCue {
+ public:
+  FaultOnCue(const mhd::sdk::Params& params, std::size_t log_capacity)
+      : fault_(params.text("fault")),
+        fault_after_s_(params.number("fault_after_s", std::numeric_limits<double>::infinity())),
+        fault_on_(params.text("fault_on") == "write" ? FaultOn::Write : FaultOn::Read) {
+    commands.open(params.optional_text("command_log").value_or(""), log_capacity);
   }
-  return MHD_OK;
-}
+  FaultOnCue(const FaultOnCue&) = delete;
+  FaultOnCue& operator=(const FaultOnCue&) = delete;
+  ~FaultOnCue() { commands.write(); }
 
-/// The table every probe plugin starts from.
-inline mhd_plugin_api table(const char* description) {
-  mhd_plugin_api a{};
-  a.abi_version = MHD_PLUGIN_ABI_VERSION;
-  a.struct_size = sizeof(mhd_plugin_api);
-  a.kind = MHD_PLUGIN_KIND;
-  a.name = MHD_PLUGIN_NAME;
-  a.version = "1.0.0";
-  a.description = description;
-  a.start = no_op;
-  a.stop = no_op;
-  return a;
-}
+  void start(double t_s) { t_start_s_ = t_s; }
 
-/// open() with C++ exceptions kept on this side of the ABI: make() returns the instance.
-template <class F>
-mhd_plugin_instance* guarded_open(mhd_error* err, F&& make) noexcept {
-  try {
-    return reinterpret_cast<mhd_plugin_instance*>(make());
-  } catch (const std::exception& e) {
-    set_error(err, e.what());
-  } catch (...) {
-    set_error(err, "unknown exception");
+  /// What `call` at t_s returns: MHD_OK (with `nan_out` set when a read must report NaN),
+  /// MHD_DEACTIVATE, or, for fault=error, throws error_message (the SDK's MHD_ERROR). The
+  /// first time the fault strikes, a row "t_s nan nan nan" goes into the command log, so
+  /// a test knows when it struck.
+  mhd_status on(FaultOn call, double t_s, const char* error_message, bool& nan_out) {
+    nan_out = false;
+    if (call != fault_on_ || fault_ == "none" || t_s - t_start_s_ < fault_after_s_) return MHD_OK;
+    if (!marked_) {
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      commands.add(t_s, nan, nan, nan);
+      marked_ = true;
+    }
+    if (fault_ == "error") throw std::runtime_error(error_message);
+    if (fault_ == "deactivate") return MHD_DEACTIVATE;
+    nan_out = call == FaultOn::Read;
+    return MHD_OK;
   }
-  return nullptr;
-}
+
+  Log commands;
+
+ private:
+  std::string fault_;
+  double fault_after_s_;
+  FaultOn fault_on_;
+  double t_start_s_ = 0.0;
+  bool marked_ = false;
+};
 
 }  // namespace probe

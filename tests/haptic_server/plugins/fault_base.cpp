@@ -2,37 +2,28 @@
 // commands it gets, then fails as fault_injection.h configures.
 #include "fault_injection.h"
 
-#include <limits>
-
 namespace {
 
-using fault_injection::of;
+class FaultBase {
+ public:
+  static constexpr auto kParams = fault_injection::kParams;
+  FaultBase(const mhd_host& host, const mhd::sdk::Params& params) : hardware_(host, params) {}
 
-mhd_status read(mhd_plugin_instance* self, mhd_base_state* out, mhd_error* err) {
-  fault_injection::Instance& b = *of(self);
-  bool nan = false;
-  const mhd_status s = fault_injection::next_read(b.config, nan, err);
-  if (s != MHD_OK) return s;
-  *out = {};
-  out->timestamp_s = b.host->now_s(b.host->clock_context);
-  if (nan) out->x_m = std::numeric_limits<double>::quiet_NaN();
-  return MHD_OK;
-}
+  mhd_status base_read(mhd_base_state& out) {
+    bool absurd = false;
+    if (const mhd_status s = hardware_.next_read(absurd); s != MHD_OK) return s;
+    out = {};
+    out.timestamp_s = hardware_.now_s();
+    if (absurd) out.x_m = hardware_.absurd();
+    return MHD_OK;
+  }
+  void base_write(const mhd_base_command& c) { hardware_.record(c.vx_mps, c.vz_mps, c.omega_radps); }
 
-mhd_status write(mhd_plugin_instance* self, const mhd_base_command* c, mhd_error*) {
-  fault_injection::record(of(self)->config, c->vx_mps, c->vz_mps, c->omega_radps);
-  return MHD_OK;
-}
+ private:
+  fault_injection::FaultyHardware hardware_;
+};
 
 }  // namespace
 
-extern "C" MHD_PLUGIN_EXPORT const mhd_plugin_api* mhd_plugin_entry(uint32_t host_abi_version) {
-  if (host_abi_version != MHD_PLUGIN_ABI_VERSION) return nullptr;
-  static const mhd_plugin_api api = [] {
-    mhd_plugin_api a = fault_injection::base_table(MHD_KIND_BASE, "fault_base");
-    a.base_read = read;
-    a.base_write = write;
-    return a;
-  }();
-  return &api;
-}
+MHD_PLUGIN_ENTRY(FaultBase, {.kind = MHD_PLUGIN_KIND, .name = MHD_PLUGIN_NAME, .version = "1.0.0",
+                             .description = "test base that fails on cue"})

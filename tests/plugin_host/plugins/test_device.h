@@ -125,4 +125,18 @@ constexpr mhd::sdk::PluginInfo kInfo{
 /// that break one entry of it.
 inline mhd_plugin_api make_api() { return mhd::sdk::plugin_table<Device, kInfo>(); }
 
+namespace {
+/// What a plugin with a broken table returns from mhd_plugin_entry, whatever the host:
+/// make_api() with `breaks` applied (a table the host must refuse), built once.
+template <class Break>
+const mhd_plugin_api* broken_table(Break breaks) {
+  static const mhd_plugin_api api = [&] {
+    mhd_plugin_api a = make_api();
+    breaks(a);
+    return a;
+  }();
+  return &api;
+}
+}  // namespace
+
 }  // namespace test_device
