@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <numbers>
 #include <optional>
 
 namespace mhd::stress {
@@ -96,7 +97,7 @@ MovingStressReport run_range(const CompiledScene& scene, int object, std::uint64
                  stroke.continues ? "continuing the previous stroke" : "proxy reset at the start");
       fmt::print(trace, "  chain {}: {} motion (origin up to {:.3f} m/s, up to {:.1f} deg/s), strokes {}", chain_first,
                  to_string(motion.kind), motion.motion.max_speed_mps(),
-                 motion.motion.max_rate_radps() * 180.0 / 3.141592653589793, to_string(motion.anchor));
+                 motion.motion.max_rate_radps() * 180.0 / std::numbers::pi, to_string(motion.anchor));
       if (motion.anchor == StrokeAnchor::Lagging) fmt::print(trace, " {:.3f} s behind", motion.lag_s);
       fmt::print(trace, "\n  tick t_s hip_W proxy_W contact carry(ride/push/squeeze) crossed inside not_followed "
                         "free_force overlap gap_mm\n");

@@ -17,6 +17,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <numbers>
 #include <string_view>
 
 namespace mhd::stress {
@@ -30,7 +31,7 @@ inline constexpr int kStrokeAnchorCount = 3;
 
 struct MotionDrawParams {
   double max_speed_mps = 0.5;
-  double max_rate_radps = 3.141592653589793;  ///< 180 deg/s
+  double max_rate_radps = std::numbers::pi;  ///< 180 deg/s
   /// Share of motions at exactly the maximum speed and rate; the others in [5 %, 100 %] of them.
   double full_speed_fraction = 0.3;
   double max_excursion_m = 0.1;        ///< keyframed: how far a key's centre is from the start

@@ -122,6 +122,7 @@ TEST(MovingStress, ObjectsTeleportedWithoutTheCarryAreCaught) {
     ASSERT_TRUE(scene);
     const std::uint64_t key = name_key(turning ? "turning_cube_test/cube" : "moving_stress_test/box");
     MovingStressSettings s = turning ? turning_run() : box_run();
+    s.strokes = 60;
     s.fault_skip_carry = true;
     const MovingStressReport r = stress_moving_object(*scene, 0, key, s);
     EXPECT_GT(r.crossing_ticks + r.inside_ticks, 0U);
