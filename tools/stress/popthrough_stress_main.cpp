@@ -5,11 +5,15 @@
 // the engine's own containment test) and follow failures: ticks where the proxy did not
 // go to a HIP it could reach (verification/follow_check.h). A share of the strokes are
 // continuous tours with free-space transits round the object. Long-running; never run
-// by ctest. Exit status 1 on any pop-through or follow failure, 2 on bad input. See
-// docs/reliability/pop_through.md.
+// by ctest. With --moving, each stroke chain gives the target object a random motion
+// (twist, loop or ping-pong keyframes, up to --max-object-speed-mps and
+// --max-object-rate-deg-s) and every tick is judged in each object's frame
+// (moving_stress_run.h). Exit status 1 on any pop-through or follow failure, 2 on bad
+// input. See docs/reliability/pop_through.md.
 
 #include "scene_compiler/scene_compiler.h"
 #include "scene_xml/scene_reader.h"
+#include "stress/moving_stress_run.h"
 #include "stress/stress_run.h"
 
 #include <CLI/CLI.hpp>
@@ -20,6 +24,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -48,6 +53,10 @@ struct Options {
   double follow_tolerance_m = mhd::verify::kFollowTolerance_m;
   std::optional<std::size_t> replay;
   bool no_cache = false;
+  bool moving = false;
+  double max_object_speed_mps = 0.5;
+  double max_object_rate_deg_s = 180.0;
+  double object_excursion_m = 0.1;
 };
 
 // One input: a scene file, or a mesh file wrapped in a one-object scene.
@@ -110,10 +119,80 @@ std::string reproducer(const Source& src, const Options& opt, const std::string&
   } else {
     line += src.file;
   }
+  if (opt.moving) {
+    line += fmt::format(" --moving --max-object-speed-mps {} --max-object-rate-deg-s {} --object-excursion-m {}",
+                        opt.max_object_speed_mps, opt.max_object_rate_deg_s, opt.object_excursion_m);
+  }
   return line + fmt::format(
                     " --object {} --seed {} --chain {} --max-speed-mps {} --rate-hz {} --follow-tolerance-m {} "
                     "--replay-stroke {}",
                     object, opt.seed, opt.chain, opt.max_speed_mps, opt.rate_hz, opt.follow_tolerance_m, stroke);
+}
+
+mhd::stress::MovingStressSettings moving_settings(const Options& opt) {
+  mhd::stress::MovingStressSettings s;
+  s.strokes = opt.strokes;
+  s.seed = opt.seed;
+  s.chain_length = opt.chain;
+  s.stroke.max_speed_m_per_s = opt.max_speed_mps;
+  s.stroke.rate_Hz = opt.rate_hz;
+  s.motion.max_speed_mps = opt.max_object_speed_mps;
+  s.motion.max_rate_radps = opt.max_object_rate_deg_s * std::numbers::pi / 180.0;
+  s.motion.max_excursion_m = opt.object_excursion_m;
+  return s;
+}
+
+// One object under the moving stress: its table row (stdout), its counts by kind (stderr),
+// its failures' reproducers. Returns whether it was clean.
+bool stress_moving(const Source& src, const Options& opt, const mhd::CompiledScene& scene, int object,
+                   std::vector<std::string>& reproducers) {
+  const std::string& name = scene.object_names[static_cast<std::size_t>(object)];
+  const std::uint64_t key = mhd::stress::name_key(scene.name + "/" + name);
+  const auto settings = moving_settings(opt);
+  if (opt.replay) {
+    const auto r = mhd::stress::replay_moving_stroke(scene, object, key, settings, *opt.replay, stdout);
+    const bool failed = !r.failures.empty() && r.failures.back().stroke == *opt.replay;
+    fmt::print("{} / {}: stroke {}: {}\n", src.file, name, *opt.replay, failed ? "FAILED" : "clean");
+    return r.clean();
+  }
+  const auto r = mhd::stress::stress_moving_object(scene, object, key, settings);
+  fmt::print("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {:.3f} / {:.0f} / {:.2f} | "
+             "{:.1f} | {:.1f} |\n",
+             src.file, name, r.triangles, r.closed ? "yes" : "no", r.strokes, r.ticks, r.contact_ticks, r.push_ticks,
+             r.strokes_with_push, r.squeeze_ticks, r.overlap_ticks, r.ride_ticks, r.crossing_ticks, r.inside_ticks, r.not_followed_ticks,
+             r.free_force_ticks, r.max_object_speed_mps, r.max_object_rate_radps * 180.0 / std::numbers::pi,
+             r.max_surface_speed_mps, 1e3 * r.max_hip_depth_m, r.seconds);
+  std::fflush(stdout);
+  fmt::print(stderr, "  {} / {}: strokes by kind:", src.file, name);
+  for (int k = 0; k < mhd::stress::kStrokeKindCount; ++k) {
+    fmt::print(stderr, " {} {}", to_string(static_cast<mhd::stress::StrokeKind>(k)),
+               r.strokes_by_kind[static_cast<std::size_t>(k)]);
+  }
+  fmt::print(stderr, "; {} chains:", r.chains);
+  for (int k = 0; k < mhd::stress::kMotionKindCount; ++k) {
+    fmt::print(stderr, " {} {}", to_string(static_cast<mhd::stress::MotionKind>(k)),
+               r.chains_by_motion[static_cast<std::size_t>(k)]);
+  }
+  fmt::print(stderr, ", strokes");
+  for (int k = 0; k < mhd::stress::kStrokeAnchorCount; ++k) {
+    fmt::print(stderr, " {} {}", to_string(static_cast<mhd::stress::StrokeAnchor>(k)),
+               r.chains_by_anchor[static_cast<std::size_t>(k)]);
+  }
+  fmt::print(stderr, "; {} proxy resets; most pushed stroke {} ({} push ticks): {}\n", r.resets, r.busiest_stroke,
+             r.busiest_stroke_pushes, reproducer(src, opt, name, r.busiest_stroke));
+  for (const auto& f : r.failures) {
+    reproducers.push_back(fmt::format("{} / {}: stroke {} ({}, {} motion) tick {}: {}{}{}{}\n  reproduce: {}", src.file,
+                                      name, f.stroke, to_string(f.kind), to_string(f.motion), f.tick,
+                                      f.verdict.crossed ? "crossed " : "", f.verdict.inside ? "inside " : "",
+                                      f.verdict.not_followed ? "not-followed " : "",
+                                      f.verdict.free_force ? "free-space-force " : "",
+                                      reproducer(src, opt, name, f.stroke)));
+  }
+  if (r.failing_strokes > r.failures.size()) {
+    reproducers.push_back(
+        fmt::format("{} / {}: ... and {} more failing strokes", src.file, name, r.failing_strokes - r.failures.size()));
+  }
+  return r.clean();
 }
 
 int run(const Options& opt) {
@@ -131,7 +210,17 @@ int run(const Options& opt) {
   bool any_failure = false;
   std::size_t objects_run = 0;
   std::vector<std::string> reproducers;
-  if (!opt.replay) {
+  if (!opt.replay && opt.moving) {
+    fmt::print("strokes per object: {}, seed {}, up to {} m/s at {} Hz, chains of {}; moving objects: origin up to {} "
+               "m/s, turning up to {} deg/s, keyframes within {} m\n\n",
+               opt.strokes, opt.seed, opt.max_speed_mps, opt.rate_hz, opt.chain, opt.max_object_speed_mps,
+               opt.max_object_rate_deg_s, opt.object_excursion_m);
+    fmt::print("| source | object | triangles | closed | strokes | ticks | contact ticks | push ticks | strokes pushed | "
+               "squeeze ticks | overlap ticks | ride ticks | crossings | inside | not followed | free-space force | "
+               "object m/s / deg/s / surface m/s | max HIP depth mm | time s |\n");
+    fmt::print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    std::fflush(stdout);
+  } else if (!opt.replay) {
     fmt::print("strokes per object: {}, seed {}, up to {} m/s at {} Hz, chains of {}, engine containment: {}, "
                "follow tolerance {} mm\n\n",
                opt.strokes, opt.seed, opt.max_speed_mps, opt.rate_hz, opt.chain, opt.engine,
@@ -179,6 +268,10 @@ int run(const Options& opt) {
       const std::string& name = scene.object_names[static_cast<std::size_t>(object)];
       const std::uint64_t key = mhd::stress::name_key(scene.name + "/" + name);
       ++objects_run;
+      if (opt.moving) {
+        if (!stress_moving(src, opt, scene, object, reproducers)) any_failure = true;
+        continue;
+      }
       if (opt.replay) {
         const auto r = mhd::stress::replay_stroke(scene, oracle, object, key, settings, *opt.replay, stdout);
         const bool failed = !r.failures.empty() && r.failures.back().stroke == *opt.replay;
@@ -274,6 +367,16 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   app.add_option("--replay-stroke", opt.replay, "Rerun one stroke (and its chain) and print every tick");
   app.add_flag("--no-cache", opt.no_cache, "Build every BVH instead of using the on-disk cache");
+  app.add_flag("--moving", opt.moving,
+               "Move the stressed object: each chain a random twist or looping / ping-pong keyframes, the strokes "
+               "riding with it, lagging behind it or still; every tick judged in each object's frame");
+  app.add_option("--max-object-speed-mps", opt.max_object_speed_mps, "--moving: fastest speed of the object's origin")
+      ->check(CLI::Range(0.0, 20.0));
+  app.add_option("--max-object-rate-deg-s", opt.max_object_rate_deg_s, "--moving: fastest rotation, deg/s")
+      ->check(CLI::Range(0.0, 720.0));
+  app.add_option("--object-excursion-m", opt.object_excursion_m,
+                 "--moving: how far a keyframed motion's keys move the object's centre")
+      ->check(CLI::Range(0.0, 10.0));
   CLI11_PARSE(app, argc, argv);
   return run(opt);
 }

@@ -1,14 +1,13 @@
 #pragma once
 // Drives the proxy along a HIP path through a world whose objects move (MovingWorld), and
-// judges every tick with the exact oracle in each object's own frame: relative to a moving
-// object, the proxy's motion over a tick is the chord from where it was (in the object's
-// old pose) to where it was carried (in the new pose), then the legs of its step. Both
-// halves of the contract are counted: crossings, and follow failures (the straight segment
-// from the carried proxy to the HIP is free, yet the proxy does not end at the HIP; or a
-// force with the HIP in view). No GoogleTest here: the stress tool uses it too.
+// judges every tick with the exact oracle in each object's own frame (moving_tick_check.h).
+// Both halves of the contract are counted: crossings, and follow failures (the straight
+// segment from the carried proxy to the HIP is free, yet the proxy does not end at the HIP;
+// or a force with the HIP in view). No GoogleTest here.
 
 #include "geometry/object_motion.h"
 #include "proxy/god_object.h"
+#include "verification/moving_tick_check.h"
 
 #include <Eigen/Core>
 
@@ -29,9 +28,6 @@ struct MovingDrive {
   std::size_t squeezes = 0;       ///< ticks the proxy was squeezed against another surface
   std::vector<ProxyOutput> out;   ///< every tick's output, in order
 };
-
-/// "At the HIP", as the follow check judges it (10 µm: the skin and the sweeps' margin).
-inline constexpr double kMovingFollowTolerance_m = 1e-5;
 
 /// Places the objects at t = 0 (motions[i] moves object i of `world`; none: it stays),
 /// resets the proxy at hip_path_W[0] (free space), then per sample k (k = 1, 2, ...)
