@@ -7,10 +7,12 @@ namespace mhd::verify {
 
 MovingDrive drive_moving_proxy(const CollisionWorld& world, std::span<const std::optional<ObjectMotion>> motions,
                                std::span<const HapticMaterial> materials, const ProxySettings& settings,
-                               std::span<const Eigen::Vector3d> hip_path_W, double rate_Hz) {
+                               std::span<const Eigen::Vector3d> hip_path_W, double rate_Hz,
+                               std::span<const std::optional<ObjectDynamics>> dynamics,
+                               const RigidBodySettings& physics) {
   MovingDrive d;
   if (hip_path_W.empty()) return d;
-  MovingWorld moving(world, std::vector<std::optional<ObjectMotion>>(motions.begin(), motions.end()));
+  MovingWorld moving(world, std::vector<std::optional<ObjectMotion>>(motions.begin(), motions.end()), dynamics, physics);
   moving.place(0.0);
   const CollisionWorld& w = moving.world();
   const auto n_objects = static_cast<std::size_t>(w.object_count());
@@ -39,6 +41,7 @@ MovingDrive drive_moving_proxy(const CollisionWorld& world, std::span<const std:
     const CarryOutput carry = moving.advance(static_cast<double>(k) * dt_s, state, settings.skin_m);
     const Eigen::Vector3d p_carried_W = state.proxy_W;
     const ProxyOutput out = step_proxy(w, materials, settings, state, hip_W, dt_s, moving.twists());
+    moving.apply_reaction(state, out.force_W);
     ++d.ticks;
     d.pushes += carry.pushed > 0 ? 1 : 0;
     d.squeezes += carry.squeezed ? 1 : 0;
@@ -63,6 +66,8 @@ MovingDrive drive_moving_proxy(const CollisionWorld& world, std::span<const std:
       if (out.force_W.norm() > 0.0 && !touches(out.proxy_W, hip_W)) ++d.free_force;
     }
     d.out.push_back(out);
+    auto& poses = d.X_WO.emplace_back(n_objects);
+    for (std::size_t o = 0; o < n_objects; ++o) poses[o] = w.pose(static_cast<int>(o));
   }
   return d;
 }
