@@ -15,10 +15,13 @@ find_package(Threads REQUIRED)
 find_path(MHD_BULLET_INCLUDE_DIR btBulletCollisionCommon.h PATH_SUFFIXES bullet REQUIRED)
 find_library(MHD_BULLET_COLLISION_LIB BulletCollision-float64 REQUIRED)
 find_library(MHD_BULLET_LINEARMATH_LIB LinearMath-float64 REQUIRED)
+find_library(MHD_BULLET_DYNAMICS_LIB BulletDynamics-float64 REQUIRED)
 add_library(mhd_bullet INTERFACE)
 target_include_directories(mhd_bullet SYSTEM INTERFACE "${MHD_BULLET_INCLUDE_DIR}")
 target_compile_definitions(mhd_bullet INTERFACE BT_USE_DOUBLE_PRECISION)
-target_link_libraries(mhd_bullet INTERFACE ${MHD_BULLET_COLLISION_LIB} ${MHD_BULLET_LINEARMATH_LIB})
+# BulletDynamics: rigid bodies of pushable objects (engine/dynamics); before the
+# collision library it uses.
+target_link_libraries(mhd_bullet INTERFACE ${MHD_BULLET_DYNAMICS_LIB} ${MHD_BULLET_COLLISION_LIB} ${MHD_BULLET_LINEARMATH_LIB})
 add_library(mhd::bullet ALIAS mhd_bullet)
 
 # xxHash (content keys of the BVH cache); Debian ships no CMake config for it.

@@ -13,7 +13,7 @@ HapticTick::HapticTick(const CompiledScene& scene, const Rig& rig, const HapticT
       settings_(settings),
       predictor_(settings.prediction),
       safety_(settings.safety),
-      moving_(scene.world, scene.motions) {}
+      moving_(scene.world, scene.motions, scene.dynamics) {}
 
 BaseSampleStatus HapticTick::add_base_sensor_sample(double t_s, const Pose& X_is900_base_sensor) noexcept {
   const BasePose pose = rig_.base_from_sensor(X_is900_base_sensor);
@@ -72,6 +72,7 @@ HapticTickOutput HapticTick::render(double t_s, double dt_s, const Eigen::Vector
         out.proxy_W_m = out.hip_W_m;
         safety_in.force_W_N.setConstant(std::numeric_limits<double>::quiet_NaN());  // no force known
         (void)safety_.apply(safety_in);  // zero force; the fade-in starts once the proxy does
+        moving_.apply_reaction(proxy_, Eigen::Vector3d::Zero());
         return out;
       }
       reset_proxy(proxy_, out.hip_W_m);
@@ -93,6 +94,9 @@ HapticTickOutput HapticTick::render(double t_s, double dt_s, const Eigen::Vector
     out.clamped = s.clamped;
     out.force_D_N = rig_.force_P_from_W(X_W_robot, out.force_W_N);
     if (!out.force_D_N.allFinite()) out.force_D_N.setZero();
+    // The bodies the proxy touches are pushed back by what the hand is sent to feel.
+    moving_.apply_reaction(proxy_, out.force_W_N);
+    return out;
   } else if (!base.has_value() && p_D_tool_m.allFinite()) {
     // Start-up: no base pose yet, so no HIP and no force. Normal, not a fault; the safety
     // stage starts from zero gain when the first pose arrives.
@@ -110,6 +114,7 @@ HapticTickOutput HapticTick::render(double t_s, double dt_s, const Eigen::Vector
     out.hip_W_m.setConstant(std::numeric_limits<double>::quiet_NaN());
     out.proxy_W_m = out.hip_W_m;
   }
+  moving_.apply_reaction(proxy_, Eigen::Vector3d::Zero());  // no hand: nothing pushes
   return out;
 }
 

@@ -1,6 +1,9 @@
 #include "proxy/moving_world.h"
 
+#include "proxy/contact_reaction.h"
+
 #include <stdexcept>
+#include <string>
 
 namespace mhd {
 
@@ -12,6 +15,27 @@ MovingWorld::MovingWorld(const CollisionWorld& world, std::vector<std::optional<
   X_WO_before_.resize(motions_.size());
   twists_.resize(motions_.size());
   for (const auto& m : motions_) moving_count_ += m.has_value() ? 1 : 0;
+}
+
+MovingWorld::MovingWorld(const CollisionWorld& world, std::vector<std::optional<ObjectMotion>> motions,
+                         std::span<const std::optional<ObjectDynamics>> dynamics, const RigidBodySettings& physics)
+    : MovingWorld(world, std::move(motions)) {
+  bool any_body = false;
+  for (const auto& d : dynamics) any_body = any_body || d.has_value();
+  if (!any_body) return;
+  if (dynamics.size() != motions_.size()) {
+    throw std::invalid_argument("MovingWorld: one dynamics entry per object is needed");
+  }
+  // Still objects are the bodies' static colliders; scripted ones are left out.
+  const auto still = std::make_unique<bool[]>(motions_.size());
+  for (std::size_t i = 0; i < motions_.size(); ++i) {
+    if (motions_[i] && dynamics[i]) {
+      throw std::invalid_argument("MovingWorld: object " + std::to_string(i) + " has both a motion and dynamics");
+    }
+    still[i] = !motions_[i] && !dynamics[i];
+  }
+  physics_ = std::make_unique<RigidBodyWorld>(world_, dynamics, std::span<const bool>(still.get(), motions_.size()),
+                                              physics);
 }
 
 void MovingWorld::place(double t_s) noexcept {
@@ -26,7 +50,26 @@ CarryOutput MovingWorld::advance(double t_s, ProxyState& proxy, double skin_m) n
   if (!moves()) return {};
   for (std::size_t i = 0; i < motions_.size(); ++i) X_WO_before_[i] = world_.pose(static_cast<int>(i));
   place(t_s);
+  if (physics_) {
+    (void)physics_->advance(t_s);
+    for (std::size_t i = 0; i < motions_.size(); ++i) {
+      const int object = static_cast<int>(i);
+      if (!physics_->is_body(object)) continue;
+      world_.set_pose(object, physics_->X_WO(object));
+      twists_[i] = ObjectTwist{physics_->v_W_origin_mps(object), physics_->omega_W_radps(object)};
+    }
+  }
   return carry_proxy(world_, X_WO_before_, skin_m, proxy);
+}
+
+void MovingWorld::apply_reaction(const ProxyState& proxy, const Eigen::Vector3d& force_W_N) noexcept {
+  if (!physics_) return;
+  physics_->clear_forces();
+  const ContactReactions r = contact_reactions(proxy, force_W_N);
+  for (int i = 0; i < r.count; ++i) {
+    const ContactReaction& on = r.on[static_cast<std::size_t>(i)];
+    physics_->apply_force(on.object, on.f_W_N, proxy.proxy_W);
+  }
 }
 
 }  // namespace mhd

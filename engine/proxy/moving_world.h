@@ -1,11 +1,16 @@
 #pragma once
-// A scene's collision world whose objects follow their scripted motions: the haptic
-// thread's own copy of the world (shapes shared, poses its own), moved once per tick
-// before the proxy steps, the proxy carried by what moved (carry_proxy).
+// A scene's collision world whose objects follow their scripted motions or are pushed
+// (rigid bodies, RigidBodyWorld): the haptic thread's own copy of the world (shapes
+// shared, poses its own), moved once per tick before the proxy steps, the proxy carried
+// by what moved (carry_proxy). After the step, apply_reaction() pushes the touched bodies
+// with the force the hand felt; they move by it from the next tick on.
 
+#include "dynamics/rigid_body_world.h"
+#include "geometry/object_dynamics.h"
 #include "geometry/object_motion.h"
 #include "proxy/proxy_carry.h"
 
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -17,8 +22,15 @@ class MovingWorld {
   /// Copies `world` (its shapes are shared, not copied); motions[i] moves object i, none
   /// leaves it where it is. Throws std::invalid_argument unless there is one entry per object.
   MovingWorld(const CollisionWorld& world, std::vector<std::optional<ObjectMotion>> motions);
+  /// Also makes each object with dynamics[i] a pushable body (none: scripted or still).
+  /// Throws std::invalid_argument unless dynamics has one entry per object (or none at
+  /// all), no object has both a motion and dynamics, and each body's dynamics is valid.
+  MovingWorld(const CollisionWorld& world, std::vector<std::optional<ObjectMotion>> motions,
+              std::span<const std::optional<ObjectDynamics>> dynamics, const RigidBodySettings& physics = {});
 
-  [[nodiscard]] bool moves() const noexcept { return moving_count_ > 0; }
+  [[nodiscard]] bool moves() const noexcept { return moving_count_ > 0 || physics_ != nullptr; }
+  /// The pushable bodies' physics; null when the world has none.
+  [[nodiscard]] const RigidBodyWorld* physics() const noexcept { return physics_.get(); }
   [[nodiscard]] const CollisionWorld& world() const noexcept { return world_; }
   /// Each object's velocity at the last advance() or place(); empty when nothing moves
   /// (step_proxy then damps against still surfaces at no cost).
@@ -26,12 +38,19 @@ class MovingWorld {
     return moves() ? std::span<const ObjectTwist>(twists_) : std::span<const ObjectTwist>();
   }
 
-  /// Puts every moving object at its pose at t_s, no proxy involved (start-up, seeking).
+  /// Puts every scripted object at its pose at t_s, no proxy involved (start-up, seeking).
+  /// Bodies stay where their physics has them.
   void place(double t_s) noexcept;
 
-  /// Moves every moving object from its last pose to its pose at t_s and carries the
-  /// proxy with what moved. Allocates nothing.
+  /// Moves every scripted object from its last pose to its pose at t_s, steps the bodies'
+  /// physics to t_s, and carries the proxy with what moved. Allocates nothing (once the
+  /// bodies' contacts have been met: RigidBodyWorld::advance).
   CarryOutput advance(double t_s, ProxyState& proxy, double skin_m) noexcept;
+
+  /// The hand felt force_W_N (the force on it) with the proxy at proxy's end of tick: the
+  /// bodies of its constraint planes get the reaction, at the proxy (contact_reactions),
+  /// held until the next call; every other body none. Allocates nothing.
+  void apply_reaction(const ProxyState& proxy, const Eigen::Vector3d& force_W_N) noexcept;
 
  private:
   CollisionWorld world_;
@@ -39,6 +58,7 @@ class MovingWorld {
   std::vector<Pose> X_WO_before_;
   std::vector<ObjectTwist> twists_;
   int moving_count_ = 0;
+  std::unique_ptr<RigidBodyWorld> physics_;  // null without bodies
 };
 
 }  // namespace mhd

@@ -3,6 +3,7 @@
 // fills it; the scene compiler turns it into collision geometry. Nothing here loads
 // meshes or knows about XML.
 
+#include "geometry/object_dynamics.h"
 #include "geometry/object_motion.h"
 #include "geometry/pose.h"
 #include "material/haptic_material.h"
@@ -43,6 +44,9 @@ struct ObjectDescription {
   HapticMaterial material;        ///< resolved (named or inline)
   /// Scripted motion (<motion>); none for a still object. X_WO is then its pose at t = 0.
   std::optional<ObjectMotion> motion;
+  /// Mass and friction (<dynamics>): a body the hand can push; none for a still or
+  /// scripted object (an object has a motion or dynamics, not both).
+  std::optional<ObjectDynamics> dynamics;
   SourceLocation where;
 };
 

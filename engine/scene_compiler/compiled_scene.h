@@ -4,6 +4,7 @@
 // objects move in a copy of the world, never the BVHs).
 
 #include "collision/collision_world.h"
+#include "geometry/object_dynamics.h"
 #include "geometry/object_motion.h"
 #include "material/haptic_material.h"
 #include "proxy/god_object.h"
@@ -22,6 +23,9 @@ struct CompiledScene {
   /// Scripted motions, indexed like world objects (none: the object stays). The world
   /// holds every object at its pose at t = 0; MovingWorld moves a copy.
   std::vector<std::optional<ObjectMotion>> motions;
+  /// Pushable objects' mass and friction, indexed like world objects (none: not pushable).
+  /// MovingWorld simulates them (RigidBodyWorld).
+  std::vector<std::optional<ObjectDynamics>> dynamics;
   ProxySettings proxy;
   std::size_t triangle_count = 0;
 };

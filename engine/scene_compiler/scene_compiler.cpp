@@ -1,5 +1,6 @@
 #include "scene_compiler/scene_compiler.h"
 
+#include "dynamics/body_shape.h"
 #include "geometry/primitive_mesh.h"
 #include "geometry/shading_normals.h"
 #include "mesh_io/mesh_cache.h"
@@ -97,6 +98,8 @@ class Compiler {
           const SharedShape& shape = shape_for(object);
           if (shape.bvh) {
             shapes[i] = shape.bvh;
+            // A pushable object is its mesh's convex hull: one with no volume cannot be one.
+            if (object.dynamics) (void)make_body_hull(shape.bvh->mesh());
           } else {
             error = shape.error;
           }
@@ -120,6 +123,7 @@ class Compiler {
     scene->materials.reserve(objects.size());
     scene->object_names.reserve(objects.size());
     scene->motions.reserve(objects.size());
+    scene->dynamics.reserve(objects.size());
     for (std::size_t i = 0; i < objects.size(); ++i) {
       const int id = scene->world.add_object(shapes[i], objects[i].X_WO);
       if (objects[i].material.force_shading) {
@@ -129,6 +133,7 @@ class Compiler {
       if (textures[i]) scene->materials.back().texture = textures[i];
       scene->object_names.push_back(objects[i].name);
       scene->motions.push_back(objects[i].motion);
+      scene->dynamics.push_back(objects[i].dynamics);
       scene->triangle_count += shapes[i]->mesh().triangle_count();
     }
     const auto& stats = cache_.stats();

@@ -7,6 +7,7 @@
 #include "scene_xml/frame_graph.h"
 #include "scene_xml/message_text.h"
 #include "scene_xml/number_parser.h"
+#include "scene_xml/dynamics_reader.h"
 #include "scene_xml/motion_reader.h"
 #include "scene_xml/pose_reader.h"
 #include "scene_xml/readable_file.h"
@@ -37,6 +38,7 @@ using scene_xml::concat;
 using scene_xml::DiagnosticSink;
 using scene_xml::Emptiness;
 using scene_xml::Presence;
+using scene_xml::read_dynamics;
 using scene_xml::read_motion;
 using scene_xml::read_pose_attributes;
 
@@ -437,6 +439,7 @@ class SceneReader {
     const tinyxml2::XMLElement* scale = nullptr;
     const tinyxml2::XMLElement* inline_material = nullptr;
     const tinyxml2::XMLElement* motion = nullptr;
+    const tinyxml2::XMLElement* dynamics = nullptr;
     Eigen::Vector3d scale_factors = Eigen::Vector3d::Ones();
 
     // Only the first of each child counts; a repeat is reported against it.
@@ -468,6 +471,9 @@ class SceneReader {
         object.X_WO = read_pose_attributes(pa, ctx.sink, ctx.unit_to_m);
       } else if (child_name == "motion") {
         (void)first_of(motion, child);  // read below, once the <pose> is known
+      } else if (child_name == "dynamics") {
+        if (!first_of(dynamics, child)) return;
+        object.dynamics = read_dynamics(child, ctx.sink);
       } else if (child_name == "scale") {
         if (!first_of(scale, child)) return;
         scale_factors = read_scale(child, ctx);
@@ -495,6 +501,11 @@ class SceneReader {
     if (motion != nullptr) {
       object.motion = read_motion(*motion, ctx.sink, ctx.unit_to_m, object.X_WO, pose != nullptr);
       if (object.motion) object.X_WO = object.motion->X_WO_at(0.0);
+    }
+    if (motion != nullptr && dynamics != nullptr) {
+      ctx.sink.error(dynamics->GetLineNum(), concat(label, " has both <motion> (line ", motion->GetLineNum(),
+                                                     ") and <dynamics>: it is scripted or pushed, not both"));
+      object.dynamics.reset();
     }
     if (scale != nullptr) {
       if (shape != nullptr && !std::holds_alternative<MeshSource>(object.shape)) {

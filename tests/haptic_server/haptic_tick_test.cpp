@@ -121,6 +121,23 @@ TEST(HapticTick, AMovingBoxRisesIntoTheStillHandAndPushesItUp) {
   EXPECT_EQ(tick.squeeze_ticks(), 0u);
 }
 
+TEST(HapticTick, APushableBoxWithNothingUnderItFallsAwayFromTheHand) {
+  // The tick steps the scene's bodies: a pushable box 20 mm below the hand, with no floor,
+  // falls g t^2 / 2 from the first tick and never reaches the hand.
+  Fixture f = make_fixture(0.02, R"(<dynamics mass_kg="2"/>)");
+  HapticTick tick(*f.scene, *f.rig, no_fade_in());
+  ASSERT_NE(tick.add_base_sensor_sample(0.0, f.rig->X_is900_base_sensor_from_base({})), BaseSampleStatus::Invalid);
+  const double y0_m = tick.world().pose(0).translation().y();
+  HapticTickOutput out;
+  for (int k = 0; k <= 300; ++k) {
+    tick.add_base_sensor_sample(1e-3 * k, f.rig->X_is900_base_sensor_from_base({}));
+    out = tick.tick(1e-3 * k, 0.001, tool(kQ));
+    ASSERT_FALSE(out.in_contact) << "tick " << k;
+    ASSERT_EQ(out.force_W_N, Eigen::Vector3d::Zero()) << "tick " << k;
+  }
+  EXPECT_NEAR(y0_m - tick.world().pose(0).translation().y(), 0.5 * 9.81 * 0.3 * 0.3, 0.01 * 0.5 * 9.81 * 0.09);
+}
+
 TEST(HapticTick, HipFollowsTheRigChainFromTheTrackedBasePose) {
   Fixture f = make_fixture(0.05);
   HapticTick tick(*f.scene, *f.rig, no_fade_in());

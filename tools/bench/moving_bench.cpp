@@ -6,6 +6,8 @@
 // (median / p99 / p99.9 / max, one core) over all ticks and over contact ticks, then
 // replays the same path through verify::drive_moving_proxy for the exact counts
 // (crossings, ticks inside, follow failures, squeezes). Prints a Markdown table.
+// Pushable objects (<dynamics>) are visited too: waiting round where the body started, the
+// hand pushes it about; the timed tick then includes its physics and the reaction.
 
 #include "proxy/moving_world.h"
 #include "scene_compiler/scene_compiler.h"
@@ -43,13 +45,16 @@ std::vector<V> hand_path(const mhd::CompiledScene& scene, const V& start, int vi
   std::uniform_real_distribution<double> when(0.0, 8.0);
   std::vector<int> moving;
   for (std::size_t i = 0; i < scene.motions.size(); ++i) {
-    if (scene.motions[i]) moving.push_back(static_cast<int>(i));
+    if (scene.motions[i] || scene.dynamics[i]) moving.push_back(static_cast<int>(i));
   }
   std::vector<V> path{start};
   if (moving.empty()) return path;
   for (int k = 0; k < visits; ++k) {
-    const auto& motion = *scene.motions[static_cast<std::size_t>(moving[static_cast<std::size_t>(k) % moving.size()])];
-    const V place = motion.X_WO_at(when(rng)).translation() + reach_m * V(u(rng), u(rng), u(rng));
+    const auto object = static_cast<std::size_t>(moving[static_cast<std::size_t>(k) % moving.size()]);
+    const auto& motion = scene.motions[object];
+    const double t_s = when(rng);
+    const V origin = motion ? V(motion->X_WO_at(t_s).translation()) : V(scene.world.pose(static_cast<int>(object)).translation());
+    const V place = origin + reach_m * V(u(rng), u(rng), u(rng));
     go(path, place, 0.3, rate_Hz);
     const int wander = static_cast<int>(wait_s * 4.0);  // a new heading every 0.25 s
     for (int w = 0; w < wander; ++w) go(path, place + 0.02 * V(u(rng), u(rng), u(rng)), 0.05, rate_Hz);
@@ -69,7 +74,9 @@ int main(int argc, char** argv) {
   double rate = 1000.0;
   CLI::App app{"Proxy update benchmark with moving objects (docs/benchmarks.md, \"Moving objects\")",
                "mhd-moving-bench"};
-  app.add_option("scenes", scenes, "Scene files with moving objects (default: scenes/moving_objects.xml)");
+  app.add_option("scenes", scenes,
+                 "Scene files with moving or pushable objects (default: scenes/moving_objects.xml; "
+                 "scenes/pushable_box.xml pushes a box)");
   app.add_option("--visits", visits, "Waits in a moving object's way, over the objects in turn");
   app.add_option("--wait-s", wait_s, "Seconds of each wait");
   app.add_option("--reach-m", reach_m, "How far from the object's origin a waiting hand may be");
@@ -95,7 +102,7 @@ int main(int argc, char** argv) {
     const std::vector<V> path = hand_path(scene, V(0.0, 1.0, 0.0), visits, wait_s, reach_m, seed, rate);
 
     // Timed pass: what the haptic tick does, nothing else.
-    mhd::MovingWorld moving(scene.world, scene.motions);
+    mhd::MovingWorld moving(scene.world, scene.motions, scene.dynamics);
     moving.place(0.0);
     mhd::ProxyState state;
     mhd::reset_proxy(state, path.front());
@@ -107,6 +114,7 @@ int main(int argc, char** argv) {
       (void)moving.advance(static_cast<double>(k) / rate, state, scene.proxy.skin_m);
       const mhd::ProxyOutput out =
           mhd::step_proxy(moving.world(), scene.materials, scene.proxy, state, path[k], 1.0 / rate, moving.twists());
+      moving.apply_reaction(state, out.force_W);
       const double us = std::chrono::duration<double, std::micro>(Clock::now() - t0).count();
       all_us.push_back(us);
       if (out.in_contact) contact_us.push_back(us);
@@ -115,7 +123,7 @@ int main(int argc, char** argv) {
     const auto c = mhd::verify::summarize_latency(contact_us);
     // Judged pass: the same path, every tick checked exactly.
     const mhd::verify::MovingDrive d =
-        mhd::verify::drive_moving_proxy(scene.world, scene.motions, scene.materials, scene.proxy, path, rate);
+        mhd::verify::drive_moving_proxy(scene.world, scene.motions, scene.materials, scene.proxy, path, rate, scene.dynamics);
     fmt::print("| {} | {} | {} | {:.2f} | {:.2f} | {:.2f} | {:.1f} | {:.2f} | {:.2f} | {:.2f} | {:.1f} | {} | {} | {} "
                "| {} | {} |\n",
                file, a.count, c.count, c.median_us, c.p99_us, c.p999_us, c.max_us, a.median_us, a.p99_us, a.p999_us,

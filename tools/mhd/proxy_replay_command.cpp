@@ -66,6 +66,7 @@ void replay_tick(const mhd::CompiledScene& scene, mhd::MovingWorld& moving, mhd:
   (void)moving.advance(t_rel_s, state, scene.proxy.skin_m);
   const mhd::ProxyOutput p = mhd::step_proxy(moving.world(), scene.materials, scene.proxy, state, hip.p_W_hip_m, dt_s,
                                              moving.twists());
+  moving.apply_reaction(state, p.force_W);  // pushable objects are pushed back
   const double step_us = std::chrono::duration<double, std::micro>(Clock::now() - t0).count();
   const Eigen::Vector3d& h = hip.p_W_hip_m;
   fmt::print(out, "{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{},{},{:.3f},{}\n",
@@ -97,7 +98,7 @@ int proxy_replay(const ProxyReplayOptions& opt) {
   if (!compiled.ok()) return 1;
   const mhd::CompiledScene& scene = *compiled.scene;
 
-  mhd::MovingWorld moving(scene.world, scene.motions);
+  mhd::MovingWorld moving(scene.world, scene.motions, scene.dynamics);
   moving.place(0.0);
   const double t_first_s = previous->t_s;
   if (const auto why = mhd::proxy_start_blocked(moving.world(), previous->p_W_hip_m, scene.proxy.skin_m)) {

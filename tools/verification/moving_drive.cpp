@@ -8,10 +8,12 @@ namespace mhd::verify {
 
 MovingDrive drive_moving_proxy(const CollisionWorld& world, std::span<const std::optional<ObjectMotion>> motions,
                                std::span<const HapticMaterial> materials, const ProxySettings& settings,
-                               std::span<const Eigen::Vector3d> hip_path_W, double rate_Hz) {
+                               std::span<const Eigen::Vector3d> hip_path_W, double rate_Hz,
+                               std::span<const std::optional<ObjectDynamics>> dynamics,
+                               const RigidBodySettings& physics) {
   MovingDrive d;
   if (hip_path_W.empty()) return d;
-  MovingWorld moving(world, std::vector<std::optional<ObjectMotion>>(motions.begin(), motions.end()));
+  MovingWorld moving(world, std::vector<std::optional<ObjectMotion>>(motions.begin(), motions.end()), dynamics, physics);
   moving.place(0.0);
   const CollisionWorld& w = moving.world();
   MovingTickCheck check(w);
@@ -27,6 +29,7 @@ MovingDrive drive_moving_proxy(const CollisionWorld& world, std::span<const std:
     const CarryOutput carry = moving.advance(static_cast<double>(k) * dt_s, state, settings.skin_m);
     const Eigen::Vector3d p_carried_W = state.proxy_W;
     const ProxyOutput out = step_proxy(w, materials, settings, state, hip_W, dt_s, moving.twists());
+    moving.apply_reaction(state, out.force_W);
     ++d.ticks;
     d.pushes += carry.pushed > 0 ? 1 : 0;
     d.squeezes += carry.squeezed ? 1 : 0;
@@ -40,6 +43,8 @@ MovingDrive drive_moving_proxy(const CollisionWorld& world, std::span<const std:
     d.not_followed += v.not_followed ? 1 : 0;
     d.free_force += v.free_force ? 1 : 0;
     d.out.push_back(out);
+    auto& poses = d.X_WO.emplace_back(n_objects);
+    for (std::size_t o = 0; o < n_objects; ++o) poses[o] = w.pose(static_cast<int>(o));
   }
   return d;
 }

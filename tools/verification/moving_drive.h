@@ -5,6 +5,8 @@
 // segment from the carried proxy to the HIP is free, yet the proxy does not end at the HIP;
 // or a force with the HIP in view). No GoogleTest here.
 
+#include "dynamics/rigid_body_world.h"
+#include "geometry/object_dynamics.h"
 #include "geometry/object_motion.h"
 #include "proxy/god_object.h"
 #include "verification/moving_tick_check.h"
@@ -27,15 +29,21 @@ struct MovingDrive {
   std::size_t pushes = 0;         ///< ticks a moving surface pushed the free proxy
   std::size_t squeezes = 0;       ///< ticks the proxy was squeezed against another surface
   std::vector<ProxyOutput> out;   ///< every tick's output, in order
+  std::vector<std::vector<Pose>> X_WO;  ///< every tick's object poses (after it), in order
 };
 
 /// Places the objects at t = 0 (motions[i] moves object i of `world`; none: it stays),
 /// resets the proxy at hip_path_W[0] (free space), then per sample k (k = 1, 2, ...)
-/// moves the objects to t = k / rate_Hz, carries the proxy and steps it.
-/// Precondition: rate_Hz > 0; motions and materials indexed like the world's objects.
+/// moves the objects to t = k / rate_Hz, carries the proxy and steps it. Objects with
+/// dynamics[i] are pushable bodies (physics as given): the hand's force pushes them back
+/// after each step (MovingWorld::apply_reaction); their poses are in `body_poses_W`.
+/// Precondition: rate_Hz > 0; motions, materials (and dynamics, unless empty) indexed like
+/// the world's objects.
 [[nodiscard]] MovingDrive drive_moving_proxy(const CollisionWorld& world,
                                              std::span<const std::optional<ObjectMotion>> motions,
                                              std::span<const HapticMaterial> materials, const ProxySettings& settings,
-                                             std::span<const Eigen::Vector3d> hip_path_W, double rate_Hz);
+                                             std::span<const Eigen::Vector3d> hip_path_W, double rate_Hz,
+                                             std::span<const std::optional<ObjectDynamics>> dynamics = {},
+                                             const RigidBodySettings& physics = {});
 
 }  // namespace mhd::verify

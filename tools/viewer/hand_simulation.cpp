@@ -12,7 +12,7 @@ std::optional<std::string> HandSimulation::start_blocked(const CompiledScene& sc
 }
 
 HandSimulation::HandSimulation(const CompiledScene& scene, const Eigen::Vector3d& p_W_start_m)
-    : scene_(scene), moving_(scene.world, scene.motions) {
+    : scene_(scene), moving_(scene.world, scene.motions, scene.dynamics) {
   moving_.place(0.0);
   reset_proxy(state_, p_W_start_m);
   sample_.p_W_hip_m = p_W_start_m;
@@ -32,6 +32,7 @@ const HandSample& HandSimulation::advance(const Eigen::Vector3d& p_W_hip_m, doub
     (void)moving_.advance(static_cast<double>(sample_.ticks + i) * kTick_s, state_, scene_.proxy.skin_m);
     const ProxyOutput out =
         step_proxy(moving_.world(), scene_.materials, scene_.proxy, state_, p_W_tick_m, kTick_s, moving_.twists());
+    moving_.apply_reaction(state_, out.force_W);  // a pushable object is pushed back
     sample_.p_W_hip_m = p_W_tick_m;
     sample_.p_W_proxy_m = out.proxy_W;
     sample_.force_W_N = out.force_W;
