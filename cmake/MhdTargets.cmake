@@ -36,10 +36,11 @@ function(mhd_add_library name)
   endif()
 endfunction()
 
-# mhd_layer_include_root(<out-var>): for the calling folder engine/<layer>/, the folder
-# ${PROJECT_BINARY_DIR}/layer_include/<layer>/ holding one entry, <layer>, a symbolic
-# link to engine/<layer>/. Made at configure time, so the source layout and the include
-# spelling stay as they are. Both libraries of one folder share the root.
+# mhd_layer_include_root(<out-var>): for the calling folder .../<layer>/ (an engine layer,
+# or a library folder under tools/), the folder ${PROJECT_BINARY_DIR}/layer_include/<layer>/
+# holding one entry, <layer>, a symbolic link to the calling folder. Made at configure
+# time, so the source layout and the include spelling ("<layer>/<file>.h") stay as they
+# are. Both libraries of one folder share the root.
 function(mhd_layer_include_root out_var)
   cmake_path(GET CMAKE_CURRENT_SOURCE_DIR FILENAME layer)
   set(root "${PROJECT_BINARY_DIR}/layer_include/${layer}")
