@@ -1,4 +1,4 @@
-// The HIP under the mouse and keys (tools/viewer/hand_control.h): a drag moves it in
+// The HIP under the mouse and keys (engine/viewer/hand_control.h): a drag moves it in
 // the screen's plane by the pixels' size at its depth, the wheel and keys along the
 // view, never behind the eye, and R goes back to the start.
 

@@ -1,4 +1,4 @@
-// `mhd try` driven as a user would (tools/viewer/hand_session.h): mouse and key events
+// `mhd try` driven as a user would (engine/viewer/hand_session.h): mouse and key events
 // go into the viewer's event queue, and the drawn image and the reported numbers are
 // checked. On scenes/cube_wall.xml (cube top face y = 1.2 m over x in [-0.2, 0.2],
 // z in [-0.7, -0.3]), seen from above and in front: a drag moves the HIP in the screen

@@ -1,4 +1,4 @@
-// `mhd try`'s haptic side (tools/viewer/hand_simulation.h) on scenes/cube_wall.xml, whose
+// `mhd try`'s haptic side (engine/viewer/hand_simulation.h) on scenes/cube_wall.xml, whose
 // cube's front face is z = -0.3 m over x, y in [-0.2, 0.2] x [0.8, 1.2] m (wall: 2000 N/m):
 // free space gives no force and the proxy at the HIP; pressing in gives the spring force
 // out of the face with the proxy on it; a hand that jumps through the whole cube in one

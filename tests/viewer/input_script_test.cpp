@@ -1,4 +1,4 @@
-// `mhd try --script`'s timed input (tools/viewer/input_script.h): every event kind, and
+// `mhd try --script`'s timed input (engine/viewer/input_script.h): every event kind, and
 // each kind of mistake named at its line.
 
 #include "viewer/input_script.h"

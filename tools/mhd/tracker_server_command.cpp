@@ -1,7 +1,7 @@
 #include "tracker_server_command.h"
 
 #include "command_exit.h"
-#include "dds_common/tracker_server.h"
+#include "tracker_server/tracker_server.h"
 
 #include <fmt/core.h>
 

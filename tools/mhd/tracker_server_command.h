@@ -1,7 +1,7 @@
 #pragma once
 // `mhd tracker-server SCENE.xml [--rate-hz 190] [--duration S] [--rig-id ID]
 // [--domain-id D] [--plugin-path DIR]... [--seed N]`: runs the scene's tracker plugin
-// and publishes its samples over Cyclone DDS (plugins/dds_common/tracker_server.h)
+// and publishes its samples over Cyclone DDS (tools/tracker_server/tracker_server.h)
 // until --duration passes or SIGINT/SIGTERM. Exit status 0, or 1 with
 // "mhd tracker-server: error: ..." on stderr.
 

@@ -1,4 +1,4 @@
-// The osg_stereo display plugin: the viewer (tools/viewer) in a thread of its own.
+// The osg_stereo display plugin: the viewer (engine/viewer) in a thread of its own.
 // display_write() only converts the frame and publishes it into a lock-free
 // latest-value slot, so the haptic side never waits for drawing; the render thread
 // draws the newest state at up to 60 Hz. All OSG calls happen in the render thread.

@@ -1,4 +1,4 @@
-#include "dds_common/tracker_server.h"
+#include "tracker_server/tracker_server.h"
 
 #include "dds_common/dds_convert.h"
 #include "dds_common/dds_topics.h"
