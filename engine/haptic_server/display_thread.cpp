@@ -16,7 +16,7 @@ void HapticServer::Impl::display_thread() {
     mhd_display_frame frame{};
     frame.timestamp_s = snap.t_s;
     for (int i = 0; i < 3; ++i) {
-      frame.p_W_hip_m[i] = snap.hip_W_m[i];
+      frame.p_W_hip_m[i] = snap.p_W_hip[i];
       frame.p_W_proxy_m[i] = snap.proxy_W_m[i];
       frame.force_W_N[i] = snap.force_W_N[i];
       frame.p_W_head_m[i] = h.p_W_m[i];

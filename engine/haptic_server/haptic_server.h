@@ -48,7 +48,7 @@ struct BasePlanInput {
   double t_s = 0.0;
   BasePose base;  ///< predicted, as the haptic loop uses it
   bool hip_valid = false;
-  Eigen::Vector3d hip_W_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d p_W_hip = Eigen::Vector3d::Zero();
   bool user_known = false;  ///< a head pose has arrived
   Eigen::Vector2d user_xz_W_m = Eigen::Vector2d::Zero();
   double user_heading_rad = 0.0;  ///< the head's line of sight, projected on the floor

@@ -76,9 +76,9 @@ void HapticServer::Impl::haptic_thread() {
 
     HapticSnapshot snap;
     snap.t_s = t_s;
-    snap.valid = out.hip_W_m.allFinite();
+    snap.valid = out.p_W_hip.allFinite();
     if (snap.valid) {
-      snap.hip_W_m = out.hip_W_m;
+      snap.p_W_hip = out.p_W_hip;
       snap.proxy_W_m = out.proxy_W_m;
     }
     snap.force_W_N = out.force_W_N;
@@ -94,7 +94,7 @@ void HapticServer::Impl::haptic_thread() {
       row.dt_s = dt_s;
       for (int i = 0; i < 3; ++i) {
         row.p_D_tool_m[static_cast<std::size_t>(i)] = out.p_D_tool_m[i];
-        row.hip_W_m[static_cast<std::size_t>(i)] = out.hip_W_m[i];
+        row.p_W_hip[static_cast<std::size_t>(i)] = out.p_W_hip[i];
         row.proxy_W_m[static_cast<std::size_t>(i)] = out.proxy_W_m[i];
         row.force_W_N[static_cast<std::size_t>(i)] = out.force_W_N[i];
         row.cmd_force_W_N[static_cast<std::size_t>(i)] = out.proxy_force_W_N[i];

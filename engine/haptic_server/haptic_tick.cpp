@@ -63,29 +63,29 @@ HapticTickOutput HapticTick::render(double t_s, double dt_s, const Eigen::Vector
   if (can_render) {
     out.base = *base;
     const Pose X_W_robot = rig_.X_W_robot_from_base(out.base);
-    out.hip_W_m = rig_.p_W_from_device(X_W_robot, p_D_tool_m);
+    out.p_W_hip = rig_.p_W_from_device(X_W_robot, p_D_tool_m);
     if (!proxy_.initialised) {
       // The proxy starts only with the hand in free space: started inside an object it
       // would render the object inside out and pull the hand in. Until then, no force.
-      if (point_inside_surface(moving_.world(), out.hip_W_m)) {
+      if (point_inside_surface(moving_.world(), out.p_W_hip)) {
         out.hip_inside_object = true;
-        out.proxy_W_m = out.hip_W_m;
+        out.proxy_W_m = out.p_W_hip;
         safety_in.force_W_N.setConstant(std::numeric_limits<double>::quiet_NaN());  // no force known
         (void)safety_.apply(safety_in);  // zero force; the fade-in starts once the proxy does
         moving_.apply_reaction(proxy_, Eigen::Vector3d::Zero());
         return out;
       }
-      reset_proxy(proxy_, out.hip_W_m);
+      reset_proxy(proxy_, out.p_W_hip);
     }
     const ProxyOutput p =
-        step_proxy(moving_.world(), scene_.materials, scene_.proxy, proxy_, out.hip_W_m, dt_s, moving_.twists());
+        step_proxy(moving_.world(), scene_.materials, scene_.proxy, proxy_, out.p_W_hip, dt_s, moving_.twists());
     out.proxy_W_m = p.proxy_W;
     out.proxy_force_W_N = p.force_W;
     out.in_contact = p.in_contact;
     out.contact_object = p.contact_object;
     out.proxy_budget_exhausted = p.budget_exhausted;
     safety_in.force_W_N = p.force_W;
-    safety_in.hip_W_m = out.hip_W_m;
+    safety_in.p_W_hip = out.p_W_hip;
     const ForceSafetyOutput s = safety_.apply(safety_in);
     out.force_W_N = s.force_W_N;
     out.safety_gain = s.gain;
@@ -103,16 +103,16 @@ HapticTickOutput HapticTick::render(double t_s, double dt_s, const Eigen::Vector
     ++startup_ticks_;
     safety_.reset();
     out.startup = true;
-    out.hip_W_m.setConstant(std::numeric_limits<double>::quiet_NaN());
-    out.proxy_W_m = out.hip_W_m;
+    out.p_W_hip.setConstant(std::numeric_limits<double>::quiet_NaN());
+    out.proxy_W_m = out.p_W_hip;
   } else {
     // The device gave no position: nothing is known, nothing is pushed; a fault.
     safety_in.force_W_N.setConstant(std::numeric_limits<double>::quiet_NaN());
-    safety_in.hip_W_m.setConstant(std::numeric_limits<double>::quiet_NaN());
+    safety_in.p_W_hip.setConstant(std::numeric_limits<double>::quiet_NaN());
     const ForceSafetyOutput s = safety_.apply(safety_in);
     out.stale = s.stale;
-    out.hip_W_m.setConstant(std::numeric_limits<double>::quiet_NaN());
-    out.proxy_W_m = out.hip_W_m;
+    out.p_W_hip.setConstant(std::numeric_limits<double>::quiet_NaN());
+    out.proxy_W_m = out.p_W_hip;
   }
   moving_.apply_reaction(proxy_, Eigen::Vector3d::Zero());  // no hand: nothing pushes
   return out;

@@ -37,7 +37,7 @@ struct HapticTickSettings {
 struct HapticTickOutput {
   double t_s = 0.0;
   Eigen::Vector3d p_D_tool_m = Eigen::Vector3d::Zero();  ///< what the device reported, in its frame
-  Eigen::Vector3d hip_W_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d p_W_hip = Eigen::Vector3d::Zero();
   Eigen::Vector3d proxy_W_m = Eigen::Vector3d::Zero();
   Eigen::Vector3d force_W_N = Eigen::Vector3d::Zero();  ///< after safety: what the device gets
   Eigen::Vector3d proxy_force_W_N = Eigen::Vector3d::Zero();  ///< before safety

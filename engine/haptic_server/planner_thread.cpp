@@ -24,7 +24,7 @@ void HapticServer::Impl::planner_thread() {
     in.t_s = host.now_s();
     in.base = snap.base;
     in.hip_valid = snap.valid;
-    in.hip_W_m = snap.hip_W_m;
+    in.p_W_hip = snap.p_W_hip;
     in.user_known = h.known;
     in.user_xz_W_m = Eigen::Vector2d(h.p_W_m.x(), h.p_W_m.z());
     in.user_heading_rad = user_motion.heading_rad();

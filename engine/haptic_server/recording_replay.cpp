@@ -43,7 +43,7 @@ ReplayResult replay_recording(const CompiledScene& scene, const Rig& rig, const 
     const HapticTickOutput out = tick.render(in.t_s, in.dt_s, vec(in.p_D_tool_m), base, age_s);
 
     RecordingRow r = in;
-    r.hip_W_m = arr(out.hip_W_m);
+    r.p_W_hip = arr(out.p_W_hip);
     r.proxy_W_m = arr(out.proxy_W_m);
     r.force_W_N = arr(out.force_W_N);
     r.cmd_force_W_N = arr(out.proxy_force_W_N);

@@ -38,7 +38,7 @@ ScenePlannerResult scene_planner(const SceneDescription& scene, const Rig& rig) 
     p.user_W = in.user_xz_W_m;
     p.user_heading_rad = in.user_heading_rad;
     p.user_velocity_W = in.user_velocity_W_mps;
-    p.p_W_hip = in.hip_W_m;
+    p.p_W_hip = in.p_W_hip;
     return planner->update(p).twist_B;
   };
   return out;

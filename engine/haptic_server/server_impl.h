@@ -49,7 +49,7 @@ struct HapticServer::Impl {
   struct HapticSnapshot {
     double t_s = 0.0;
     bool valid = false;  ///< a HIP is known
-    Eigen::Vector3d hip_W_m = Eigen::Vector3d::Zero();
+    Eigen::Vector3d p_W_hip = Eigen::Vector3d::Zero();
     Eigen::Vector3d proxy_W_m = Eigen::Vector3d::Zero();
     Eigen::Vector3d force_W_N = Eigen::Vector3d::Zero();
     bool in_contact = false;

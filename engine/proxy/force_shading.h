@@ -24,12 +24,12 @@ namespace mhd::proxy_detail {
 /// or an edge sharper than the crease angle, whose interpolated normals are the faces').
 [[nodiscard]] std::optional<Eigen::Vector3d> shaded_goal_W(const CollisionWorld& world, const ProxyState& state,
                                                            const Eigen::Vector3d& contact_W,
-                                                           const Eigen::Vector3d& hip_W, double skin_m);
+                                                           const Eigen::Vector3d& p_W_hip, double skin_m);
 
 /// True when the straight segment from the proxy at p_W to the HIP passes through one of
 /// the triangles of the planes in `state`: the HIP is then out of the proxy's sight, so a
 /// force is due (docs/proxy.md, follow failures). False says only "not shown here".
 [[nodiscard]] bool hip_hidden_by_contact(const CollisionWorld& world, const ProxyState& state,
-                                         const Eigen::Vector3d& p_W, const Eigen::Vector3d& hip_W);
+                                         const Eigen::Vector3d& p_W, const Eigen::Vector3d& p_W_hip);
 
 }  // namespace mhd::proxy_detail

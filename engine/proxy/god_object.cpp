@@ -65,19 +65,19 @@ const HapticMaterial& material_of(std::span<const HapticMaterial> materials, int
 // the proxy's sight; otherwise (off an open boundary, out of work) the first pass stands.
 // Returns the goal the proxy went for.
 Eigen::Vector3d shade_motion(const CollisionWorld& world, double skin_m, const Eigen::Vector3d& start,
-                             const Eigen::Vector3d& hip_W, const TriangleRef* resting_on, Motion& motion,
+                             const Eigen::Vector3d& p_W_hip, const TriangleRef* resting_on, Motion& motion,
                              ProxyState& state, TickWork& work) {
-  const auto goal = proxy_detail::shaded_goal_W(world, state, motion.p, hip_W, skin_m);
-  if (!goal) return hip_W;
+  const auto goal = proxy_detail::shaded_goal_W(world, state, motion.p, p_W_hip, skin_m);
+  if (!goal) return p_W_hip;
   const Motion unshaded = motion;
   const ProxyState unshaded_state = state;
   proxy_detail::solve_motion(world, skin_m, start, *goal, motion, state, work, resting_on);
   store_active_planes(motion, skin_m, state);
   bool keep = state.plane_count > 0 && !work.exhausted;
-  if (keep && !proxy_detail::hip_hidden_by_contact(world, state, motion.p, hip_W)) {
+  if (keep && !proxy_detail::hip_hidden_by_contact(world, state, motion.p, p_W_hip)) {
     Motion probe = motion;
     ProxyState probe_state = state;
-    keep = !proxy_detail::go_if_visible(world, skin_m, hip_W, probe, probe_state, work) && !work.exhausted;
+    keep = !proxy_detail::go_if_visible(world, skin_m, p_W_hip, probe, probe_state, work) && !work.exhausted;
   }
   if (keep) return *goal;
   motion = unshaded;
@@ -85,37 +85,37 @@ Eigen::Vector3d shade_motion(const CollisionWorld& world, double skin_m, const E
   // The first pass was complete: running out in the optional second one is no shortfall.
   work.exhausted = false;
   work.sweep.exhausted = false;
-  return hip_W;
+  return p_W_hip;
 }
 
 }  // namespace
 
-void reset_proxy(ProxyState& state, const Eigen::Vector3d& hip_W) {
+void reset_proxy(ProxyState& state, const Eigen::Vector3d& p_W_hip) {
   state = ProxyState{};
-  state.proxy_W = hip_W;
-  state.hip_W = hip_W;
+  state.proxy_W = p_W_hip;
+  state.p_W_hip = p_W_hip;
   state.initialised = true;
-  state.path_W[0] = hip_W;
+  state.path_W[0] = p_W_hip;
   state.path_points = 1;
 }
 
 ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMaterial> materials,
-                       const ProxySettings& settings, ProxyState& state, const Eigen::Vector3d& hip_W,
+                       const ProxySettings& settings, ProxyState& state, const Eigen::Vector3d& p_W_hip,
                        double dt_s, std::span<const ObjectTwist> twists) {
   ProxyOutput out;
-  if (!hip_W.allFinite() || !std::isfinite(dt_s) || !(dt_s > 0.0)) {
+  if (!p_W_hip.allFinite() || !std::isfinite(dt_s) || !(dt_s > 0.0)) {
     // Bad input: hold the proxy, command nothing.
     out.proxy_W = state.proxy_W;
     state.path_points = 1;
     state.path_W[0] = state.proxy_W;
     return out;
   }
-  if (!state.initialised) reset_proxy(state, hip_W);
+  if (!state.initialised) reset_proxy(state, p_W_hip);
 
   // First-order low-pass of the HIP velocity for damping.
   const double alpha = 1.0 - std::exp(-2.0 * std::numbers::pi * settings.velocity_cutoff_Hz * dt_s);
-  state.hip_velocity_W += alpha * ((hip_W - state.hip_W) / dt_s - state.hip_velocity_W);
-  state.hip_W = hip_W;
+  state.hip_velocity_W += alpha * ((p_W_hip - state.p_W_hip) / dt_s - state.hip_velocity_W);
+  state.p_W_hip = p_W_hip;
 
   const Eigen::Vector3d start = state.proxy_W;
   const bool was_in_contact = state.plane_count > 0;
@@ -134,22 +134,22 @@ ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMateri
   work.sweep.max_triangle_tests = max_triangle_tests - max_triangle_tests / 8;
   Motion motion;
   const TriangleRef resting_on = previous_planes[0].triangle;
-  proxy_detail::solve_motion(world, settings.skin_m, start, hip_W, motion, state, work,
+  proxy_detail::solve_motion(world, settings.skin_m, start, p_W_hip, motion, state, work,
                              previous_plane_count > 0 ? &resting_on : nullptr);
   store_active_planes(motion, settings.skin_m, state);
 
   // What the proxy is drawn to: the HIP, or with force shading its foot on the shaded planes.
-  Eigen::Vector3d goal_W = hip_W;
+  Eigen::Vector3d goal_W = p_W_hip;
   if (state.plane_count > 0 && !work.exhausted &&
       material_of(materials, state.planes[0].triangle.object).force_shading) {
-    goal_W = shade_motion(world, settings.skin_m, start, hip_W, previous_plane_count > 0 ? &resting_on : nullptr,
+    goal_W = shade_motion(world, settings.skin_m, start, p_W_hip, previous_plane_count > 0 ? &resting_on : nullptr,
                           motion, state, work);
   }
 
   bool sticking = false;
   if (state.plane_count > 0 && was_in_contact) {
     const HapticMaterial& mat = material_of(materials, state.planes[0].triangle.object);
-    const Eigen::Vector3d to_proxy = motion.p - hip_W;
+    const Eigen::Vector3d to_proxy = motion.p - p_W_hip;
     const double depth = to_proxy.norm();
     // A friction map scales both coefficients where the proxy rests (docs/textures.md).
     const double mu_scale = texture_friction_scale(world, mat, state.planes[0].triangle.object, start);
@@ -179,7 +179,7 @@ ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMateri
           motion = sliding;
           // The cone's rim is not the hand: slid to where the rim is blocked, the proxy
           // may see the HIP itself (round an edge), and then it goes there, free.
-          if (proxy_detail::go_if_visible(world, settings.skin_m, hip_W, motion, state, work)) state.plane_count = 0;
+          if (proxy_detail::go_if_visible(world, settings.skin_m, p_W_hip, motion, state, work)) state.plane_count = 0;
         } else {
           // The rim of the cone lies in free space (the surface turned away): friction has
           // nothing to act on, and the proxy must not stop short of the hand there.
@@ -189,11 +189,11 @@ ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMateri
     }
   }
 
-  if (work.exhausted && motion.p != hip_W) {
+  if (work.exhausted && motion.p != p_W_hip) {
     work.max_sweeps = max_sweeps;
     work.sweep.max_triangle_tests = max_triangle_tests;
     work.sweep.exhausted = false;
-    if (proxy_detail::go_if_visible(world, settings.skin_m, hip_W, motion, state, work)) {
+    if (proxy_detail::go_if_visible(world, settings.skin_m, p_W_hip, motion, state, work)) {
       state.plane_count = 0;
       sticking = false;
     }
@@ -213,14 +213,14 @@ ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMateri
   out.sticking = sticking;
   out.plane_count = state.plane_count;
 
-  const Eigen::Vector3d to_proxy = motion.p - hip_W;
+  const Eigen::Vector3d to_proxy = motion.p - p_W_hip;
   const double depth = to_proxy.norm();
   // Contact starts when the HIP is behind the surface of a plane the proxy rests on;
   // a HIP inside the proxy's skin, or beside it, touches nothing (no spring, no damping).
   double behind_m = 0.0;  // how far the HIP is behind the surface of a plane it rests on
   for (int i = 0; i < state.plane_count; ++i) {
     const ConstraintPlane& plane = state.planes[static_cast<std::size_t>(i)];
-    behind_m = std::max(behind_m, plane.offset_m - settings.skin_m - plane.normal_W.dot(hip_W));
+    behind_m = std::max(behind_m, plane.offset_m - settings.skin_m - plane.normal_W.dot(p_W_hip));
   }
   if (!(behind_m > 0.0) || !(depth > 0.0)) return out;
 

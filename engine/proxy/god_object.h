@@ -43,7 +43,7 @@ struct ConstraintPlane {
 
 struct ProxyState {
   Eigen::Vector3d proxy_W = Eigen::Vector3d::Zero();
-  Eigen::Vector3d hip_W = Eigen::Vector3d::Zero();  ///< HIP of the previous tick
+  Eigen::Vector3d p_W_hip = Eigen::Vector3d::Zero();  ///< HIP of the previous tick
   Eigen::Vector3d hip_velocity_W = Eigen::Vector3d::Zero();
   bool initialised = false;
   bool sticking = false;  ///< static friction held the proxy last tick
@@ -73,12 +73,12 @@ struct ProxyOutput {
 };
 
 /// Places the proxy at the HIP with no contact. Precondition: the HIP is in free space.
-void reset_proxy(ProxyState& state, const Eigen::Vector3d& hip_W);
+void reset_proxy(ProxyState& state, const Eigen::Vector3d& p_W_hip);
 
-/// One haptic tick: moves the proxy towards hip_W and computes the force.
+/// One haptic tick: moves the proxy towards p_W_hip and computes the force.
 /// Promises (docs/proxy.md): every leg of the proxy's path (ProxyState::path_W) is
-/// crossing-free; if the straight segment from the last proxy to hip_W is, the proxy
-/// ends at hip_W with zero force; otherwise it ends where no small crossing-free move
+/// crossing-free; if the straight segment from the last proxy to p_W_hip is, the proxy
+/// ends at p_W_hip with zero force; otherwise it ends where no small crossing-free move
 /// brings it nearer the HIP, unless the work budget ran out (ProxyOutput says so), in
 /// which case it ends at the last crossing-free point it reached and keeps its contact.
 /// Friction and force shading move a proxy in contact on from that minimum along the
@@ -90,6 +90,6 @@ void reset_proxy(ProxyState& state, const Eigen::Vector3d& hip_W);
 /// surface. Moving objects carry the proxy before this step (carry_proxy).
 ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMaterial> materials,
                        const ProxySettings& settings, ProxyState& state,
-                       const Eigen::Vector3d& hip_W, double dt_s, std::span<const ObjectTwist> twists = {});
+                       const Eigen::Vector3d& p_W_hip, double dt_s, std::span<const ObjectTwist> twists = {});
 
 }  // namespace mhd

@@ -39,7 +39,7 @@ void CsvRecording::write(const RecordingRow& r) {
   fmt::format_to(out, "{},{}", r.t_s, r.dt_s);
   const auto put3 = [&](const std::array<double, 3>& v) { fmt::format_to(out, ",{},{},{}", v[0], v[1], v[2]); };
   put3(r.p_D_tool_m);
-  put3(r.hip_W_m);
+  put3(r.p_W_hip);
   put3(r.proxy_W_m);
   put3(r.force_W_N);
   put3(r.cmd_force_W_N);

@@ -109,7 +109,7 @@ RecordingReadResult read_recording(const std::filesystem::path& file) {
     get("tool_D_x_m", row.p_D_tool_m[0]);
     get("tool_D_y_m", row.p_D_tool_m[1]);
     get("tool_D_z_m", row.p_D_tool_m[2]);
-    get3("hip_", "_m", row.hip_W_m);
+    get3("hip_", "_m", row.p_W_hip);
     get3("proxy_", "_m", row.proxy_W_m);
     get3("force_", "_N", row.force_W_N);
     get3("cmd_force_", "_N", row.cmd_force_W_N);

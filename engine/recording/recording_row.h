@@ -11,7 +11,7 @@ struct RecordingRow {
   double t_s = 0.0;   ///< host clock
   double dt_s = 0.0;  ///< time since the previous tick, as the tick used it
   std::array<double, 3> p_D_tool_m{};  ///< the tool as the device reported it, device frame
-  std::array<double, 3> hip_W_m{};
+  std::array<double, 3> p_W_hip{};
   std::array<double, 3> proxy_W_m{};
   std::array<double, 3> force_W_N{};      ///< rendered: what the device was told
   std::array<double, 3> cmd_force_W_N{};  ///< the proxy's force before the safety stage

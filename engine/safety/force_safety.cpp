@@ -18,15 +18,15 @@ ForceSafetyOutput ForceSafety::apply(const ForceSafetyInput& in) noexcept {
   ForceSafetyOutput out;
   const double dt_s = std::isfinite(in.dt_s) && in.dt_s > 0.0 ? in.dt_s : 0.0;
 
-  out.fault = !in.force_W_N.allFinite() || !in.hip_W_m.allFinite() || std::isnan(in.tracker_age_s);
+  out.fault = !in.force_W_N.allFinite() || !in.p_W_hip.allFinite() || std::isnan(in.tracker_age_s);
   out.stale = !(in.tracker_age_s < settings_.tracker_timeout_s);
   if (out.fault || out.stale) {
     recovery_ = 0.0;
     stale_gain_ = 1.0;  // from zero, the fade-in ramp brings the force back
     if (out.fault) ++counters_.fault_ticks;
     if (out.stale) ++counters_.stale_ticks;
-    if (in.hip_W_m.allFinite()) {
-      last_hip_W_m_ = in.hip_W_m;
+    if (in.p_W_hip.allFinite()) {
+      last_p_W_hip_ = in.p_W_hip;
       has_hip_ = true;
     }
     last_output_N_ = 0.0;
@@ -57,7 +57,7 @@ ForceSafetyOutput ForceSafety::apply(const ForceSafetyInput& in) noexcept {
 
   // The threshold is per millisecond: a late tick (dt > 1 ms) lets the hand move further.
   const double jump_threshold_m = settings_.hip_jump_m * std::max(1.0, dt_s / 0.001);
-  out.jump = has_hip_ && (in.hip_W_m - last_hip_W_m_).norm() > jump_threshold_m;
+  out.jump = has_hip_ && (in.p_W_hip - last_p_W_hip_).norm() > jump_threshold_m;
   if (out.jump) {
     ++counters_.jumps;
     // Keep the previous tick's force magnitude; the ramp brings the rest back.
@@ -67,7 +67,7 @@ ForceSafetyOutput ForceSafety::apply(const ForceSafetyInput& in) noexcept {
       gain = std::min(gain, keep);
     }
   }
-  last_hip_W_m_ = in.hip_W_m;
+  last_p_W_hip_ = in.p_W_hip;
   has_hip_ = true;
 
   out.gain = gain;

@@ -31,7 +31,7 @@ struct ForceSafetySettings {
 struct ForceSafetyInput {
   double dt_s = 0.001;
   Eigen::Vector3d force_W_N = Eigen::Vector3d::Zero();  ///< from the proxy
-  Eigen::Vector3d hip_W_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d p_W_hip = Eigen::Vector3d::Zero();
   double tracker_age_s = 0.0;  ///< age of the newest base pose (+inf: none yet)
 };
 
@@ -68,7 +68,7 @@ class ForceSafety {
   double recovery_ = 0.0;  ///< the fade-in ramp, 0..1
   double stale_gain_ = 1.0;  ///< the stale fade's factor, rising no faster than it falls
   bool has_hip_ = false;
-  Eigen::Vector3d last_hip_W_m_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d last_p_W_hip_ = Eigen::Vector3d::Zero();
   double last_output_N_ = 0.0;
 };
 

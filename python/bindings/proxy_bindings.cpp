@@ -88,9 +88,9 @@ class Proxy {
       const std::lock_guard lock(mutex_);
       const CompiledScene& scene = *scene_.compiled;
       for (py::ssize_t k = 0; k < n; ++k) {
-        const Eigen::Vector3d hip_W(hip[3 * k], hip[3 * k + 1], hip[3 * k + 2]);
+        const Eigen::Vector3d p_W_hip(hip[3 * k], hip[3 * k + 1], hip[3 * k + 2]);
         const ProxyOutput out =
-            step_proxy(scene.world, scene.materials, scene.proxy, state_, hip_W, dt[dt_per_row ? k : 0]);
+            step_proxy(scene.world, scene.materials, scene.proxy, state_, p_W_hip, dt[dt_per_row ? k : 0]);
         for (int i = 0; i < 3; ++i) {
           proxy[3 * k + i] = out.proxy_W[i];
           force[3 * k + i] = out.force_W[i];

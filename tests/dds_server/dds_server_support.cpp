@@ -188,7 +188,7 @@ std::vector<Row> read_recording(const fs::path& file) {
     if (v.size() != header.size()) continue;  // a partial last line
     Row r;
     r.t_s = v[t];
-    r.hip_W_m = {v[hip], v[hip + 1], v[hip + 2]};
+    r.p_W_hip = {v[hip], v[hip + 1], v[hip + 2]};
     r.proxy_W_m = {v[proxy], v[proxy + 1], v[proxy + 2]};
     r.force_W_N = {v[force], v[force + 1], v[force + 2]};
     r.base_x_m = v[base_x];

@@ -97,7 +97,7 @@ class ServerThread {
 /// One row of the recording (docs/haptic_server.md, "Recording"), the columns used here.
 struct Row {
   double t_s = 0.0;
-  Eigen::Vector3d hip_W_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d p_W_hip = Eigen::Vector3d::Zero();
   Eigen::Vector3d proxy_W_m = Eigen::Vector3d::Zero();
   Eigen::Vector3d force_W_N = Eigen::Vector3d::Zero();
   double base_x_m = 0.0, base_z_m = 0.0, base_heading_rad = 0.0;

@@ -292,7 +292,7 @@ TEST(DdsHapticServer, LossyTrackerStreamNeverMakesTheHipLeap) {
   EXPECT_NE(dropped_counts_text(report.status.tracker_plugin_counters).find("non_finite "), std::string::npos);
 
   const std::vector<Row> rows = read_recording(options.recording);
-  const auto first = std::find_if(rows.begin(), rows.end(), [](const Row& r) { return r.hip_W_m.allFinite(); });
+  const auto first = std::find_if(rows.begin(), rows.end(), [](const Row& r) { return r.p_W_hip.allFinite(); });
   ASSERT_NE(first, rows.end());
   // The stream moves the sensor 1 mm per sample number; with 8 sends of every 10
   // numbers 2 ms apart (one lost, one pair sent together) that is at most 0.625 m/s.
@@ -313,13 +313,13 @@ TEST(DdsHapticServer, LossyTrackerStreamNeverMakesTheHipLeap) {
   for (auto it = first + 1; it != rows.end(); ++it) {
     const auto prev = it - 1;
     const double jump_threshold_m = 0.01 * std::max(1.0, (it->t_s - prev->t_s) / 0.001);
-    if ((it->hip_W_m - prev->hip_W_m).norm() > jump_threshold_m) ++recorded_jumps;
+    if ((it->p_W_hip - prev->p_W_hip).norm() > jump_threshold_m) ++recorded_jumps;
     if (arrivals < 10) {
       if (it->tracker_age_s < prev->tracker_age_s) ++arrivals;
       continue;
     }
-    ASSERT_TRUE(it->hip_W_m.allFinite()) << "the HIP was lost at t = " << it->t_s;
-    const double step_m = (it->hip_W_m - prev->hip_W_m).norm();
+    ASSERT_TRUE(it->p_W_hip.allFinite()) << "the HIP was lost at t = " << it->t_s;
+    const double step_m = (it->p_W_hip - prev->p_W_hip).norm();
     const double bound_m = 1.0 * (it->t_s - prev->t_s) + 0.25e-3;
     EXPECT_LE(step_m, bound_m) << "at t = " << it->t_s << " s (dt " << it->t_s - prev->t_s << " s)";
     hip_travel_m += step_m;

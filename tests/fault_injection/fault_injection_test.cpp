@@ -74,7 +74,7 @@ std::vector<RecordingRow> rows_after_start(const std::vector<RecordingRow>& rows
   std::vector<RecordingRow> out;
   double first_s = -1.0;
   for (const RecordingRow& r : rows) {
-    if (first_s < 0.0 && std::isfinite(r.hip_W_m[0])) first_s = r.t_s;
+    if (first_s < 0.0 && std::isfinite(r.p_W_hip[0])) first_s = r.t_s;
     if (first_s >= 0.0 && r.t_s >= first_s + settle_s) out.push_back(r);
   }
   return out;
@@ -84,8 +84,8 @@ std::vector<RecordingRow> rows_after_start(const std::vector<RecordingRow>& rows
 double max_hip_step_per_ms(const std::vector<RecordingRow>& rows) {
   double worst = 0.0;
   for (std::size_t i = 1; i < rows.size(); ++i) {
-    const double d = std::hypot(rows[i].hip_W_m[0] - rows[i - 1].hip_W_m[0], rows[i].hip_W_m[1] - rows[i - 1].hip_W_m[1],
-                                rows[i].hip_W_m[2] - rows[i - 1].hip_W_m[2]);
+    const double d = std::hypot(rows[i].p_W_hip[0] - rows[i - 1].p_W_hip[0], rows[i].p_W_hip[1] - rows[i - 1].p_W_hip[1],
+                                rows[i].p_W_hip[2] - rows[i - 1].p_W_hip[2]);
     worst = std::max(worst, d / std::max(1.0, rows[i].dt_s / 0.001));
   }
   return worst;
@@ -94,7 +94,7 @@ double max_hip_step_per_ms(const std::vector<RecordingRow>& rows) {
 bool row_finite(const RecordingRow& r) {
   for (int i = 0; i < 3; ++i) {
     const auto k = static_cast<std::size_t>(i);
-    if (!std::isfinite(r.hip_W_m[k]) || !std::isfinite(r.force_W_N[k]) || !std::isfinite(r.force_D_N[k])) return false;
+    if (!std::isfinite(r.p_W_hip[k]) || !std::isfinite(r.force_W_N[k]) || !std::isfinite(r.force_D_N[k])) return false;
   }
   return std::isfinite(r.safety_gain);
 }

@@ -75,7 +75,7 @@ verify::TickRecord proxy_path(const DesktopRun& run) {
     const ProxyState& state = tick.proxy_state();
     if (!state.initialised) continue;
     verify::TickSample s;
-    s.hip_W = out.hip_W_m;
+    s.p_W_hip = out.p_W_hip;
     s.proxy_W = out.proxy_W_m;
     s.force_W = out.proxy_force_W_N;
     s.in_contact = out.in_contact;
@@ -110,7 +110,7 @@ void expect_desktop_strokes(const std::string& name, double device_limit_N) {
     // Same columns as a mobile recording; those of the tracker and the base are empty.
     EXPECT_TRUE(std::isnan(row.base_x_m) && std::isnan(row.base_heading_rad));
     EXPECT_EQ(row.tracker_age_s, -1.0);
-    ASSERT_TRUE(vec(row.hip_W_m).allFinite());
+    ASSERT_TRUE(vec(row.p_W_hip).allFinite());
     const double force_N = vec(row.force_W_N).norm();
     max_force_N = std::max(max_force_N, force_N);
     if (row.contact != 0) {
@@ -132,7 +132,7 @@ void expect_desktop_strokes(const std::string& name, double device_limit_N) {
   for (const verify::Crossing& c : crossings) {
     ADD_FAILURE() << "the proxy crossed the surface at tick " << c.tick << ": (" << c.from_W.transpose() << ") -> ("
                   << c.to_W.transpose() << "), object " << c.first_hit.where.object << " triangle "
-                  << c.first_hit.where.triangle << ", hip (" << record[c.tick].hip_W.transpose() << ")";
+                  << c.first_hit.where.triangle << ", hip (" << record[c.tick].p_W_hip.transpose() << ")";
   }
   EXPECT_EQ(verify::count_ticks_inside(oracle, record), 0u);
 }

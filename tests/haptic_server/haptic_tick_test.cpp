@@ -80,7 +80,7 @@ TEST(HapticTick, NoForceAndNoHipBeforeTheFirstBasePose) {
   Fixture f = make_fixture(0.005);
   HapticTick tick(*f.scene, *f.rig, no_fade_in());
   const auto out = tick.tick(0.0, 0.001, tool(kQ));
-  EXPECT_FALSE(out.hip_W_m.allFinite());
+  EXPECT_FALSE(out.p_W_hip.allFinite());
   EXPECT_EQ(out.force_W_N, Eigen::Vector3d::Zero());
   EXPECT_EQ(out.force_D_N, Eigen::Vector3d::Zero());
   // Start-up, counted apart: not stale tracking and not a fault.
@@ -93,7 +93,7 @@ TEST(HapticTick, NoForceAndNoHipBeforeTheFirstBasePose) {
   ASSERT_NE(tick.add_base_sensor_sample(0.001, f.rig->X_is900_base_sensor_from_base({})), BaseSampleStatus::Invalid);
   const auto tracked = tick.tick(0.002, 0.001, tool(kQ));
   EXPECT_FALSE(tracked.startup);
-  EXPECT_TRUE(tracked.hip_W_m.allFinite());
+  EXPECT_TRUE(tracked.p_W_hip.allFinite());
   EXPECT_EQ(tick.startup_ticks(), 1u);
 }
 
@@ -117,7 +117,7 @@ TEST(HapticTick, AMovingBoxRisesIntoTheStillHandAndPushesItUp) {
   ASSERT_TRUE(out.in_contact);
   EXPECT_NEAR(out.force_W_N.y(), 500.0 * 0.01, 1e-3);
   EXPECT_LT(out.force_W_N.cwiseAbs().x() + out.force_W_N.cwiseAbs().z(), 1e-6);
-  EXPECT_NEAR(out.proxy_W_m.y() - out.hip_W_m.y(), 0.01, 2e-6);  // the proxy rode the face up
+  EXPECT_NEAR(out.proxy_W_m.y() - out.p_W_hip.y(), 0.01, 2e-6);  // the proxy rode the face up
   EXPECT_EQ(tick.squeeze_ticks(), 0u);
 }
 
@@ -145,7 +145,7 @@ TEST(HapticTick, HipFollowsTheRigChainFromTheTrackedBasePose) {
   ASSERT_NE(tick.add_base_sensor_sample(0.0, f.rig->X_is900_base_sensor_from_base(base)), BaseSampleStatus::Invalid);
   const auto out = tick.tick(0.001, 0.001, tool(kQ));
   const Eigen::Vector3d expected = f.rig->p_W_hip(f.rig->X_W_robot_from_base(base), kQ);
-  EXPECT_LT((out.hip_W_m - expected).norm(), 1e-9);
+  EXPECT_LT((out.p_W_hip - expected).norm(), 1e-9);
   EXPECT_FALSE(out.in_contact);
   EXPECT_EQ(out.force_W_N, Eigen::Vector3d::Zero());
 }
@@ -172,7 +172,7 @@ TEST(HapticTick, PressingIntoTheBoxGivesTheSpringForceAndItsJointTorques) {
   }
   ASSERT_TRUE(out.in_contact);
   const double face_y = out.proxy_W_m.y();
-  const double depth = face_y - out.hip_W_m.y();
+  const double depth = face_y - out.p_W_hip.y();
   ASSERT_GT(depth, 0.001);
   EXPECT_NEAR(out.force_W_N.y(), 500.0 * depth, 500.0 * 2e-6 + 1e-9);  // k * depth (skin 1 um)
   EXPECT_NEAR(out.force_W_N.x(), 0.0, 1e-9);
@@ -252,10 +252,10 @@ TEST(HapticTick, CarriesTheProxyWorkBudgetFlagOfEveryTick) {
     q.y() -= 0.0005;
     (void)tick.add_base_sensor_sample(t, sensor);
     const auto out = tick.tick(t += 0.001, 0.001, tool(q));
-    ASSERT_TRUE(out.hip_W_m.allFinite());
-    if (!twin.initialised) reset_proxy(twin, out.hip_W_m);
+    ASSERT_TRUE(out.p_W_hip.allFinite());
+    if (!twin.initialised) reset_proxy(twin, out.p_W_hip);
     const ProxyOutput direct =
-        step_proxy(f.scene->world, f.scene->materials, f.scene->proxy, twin, out.hip_W_m, 0.001);
+        step_proxy(f.scene->world, f.scene->materials, f.scene->proxy, twin, out.p_W_hip, 0.001);
     ASSERT_EQ(out.proxy_W_m, direct.proxy_W) << "tick " << i;
     EXPECT_EQ(out.proxy_budget_exhausted, direct.budget_exhausted) << "tick " << i;
     if (out.proxy_budget_exhausted) ++exhausted_ticks;
@@ -283,7 +283,7 @@ TEST(HapticTick, ADesktopRigRendersFromTheFirstTickAndNeverGoesStale) {
   HapticTick tick(*f.scene, desk, no_fade_in());
   const auto first = tick.tick(0.0, 0.001, tool(kQ));
   EXPECT_FALSE(first.startup);
-  EXPECT_LT((first.hip_W_m - f.rig->p_W_hip(f.rig->X_W_robot_from_base({}), kQ)).norm(), 1e-9);
+  EXPECT_LT((first.p_W_hip - f.rig->p_W_hip(f.rig->X_W_robot_from_base({}), kQ)).norm(), 1e-9);
   EXPECT_TRUE(std::isnan(first.tracker_age_s));  // none, rather than a made-up age
   // 10 s without any tracker sample, 4 mm into the box's top (P's y is up): pushed out all along.
   const Eigen::Vector3d pressed = tool(kQ) - Eigen::Vector3d(0.0, 0.006, 0.0);

@@ -62,8 +62,8 @@ TEST(ImpedanceHandDemo, StrokesTheDolphinWellBelowTheClampWithMillimetrePenetrat
   for (const RecordingRow& row : recording.rows) {
     if (row.contact == 0) continue;
     force_N.push_back(norm(row.force_W_N));
-    penetration_m.push_back(norm({row.proxy_W_m[0] - row.hip_W_m[0], row.proxy_W_m[1] - row.hip_W_m[1],
-                                  row.proxy_W_m[2] - row.hip_W_m[2]}));
+    penetration_m.push_back(norm({row.proxy_W_m[0] - row.p_W_hip[0], row.proxy_W_m[1] - row.p_W_hip[1],
+                                  row.proxy_W_m[2] - row.p_W_hip[2]}));
   }
   ASSERT_GT(force_N.size(), 1000u) << "the hand should stroke the dolphin for over a second";
   // Ordinary strokes: well below 8.5 N (the kinematic hand: 8.5 N at the 90th percentile).

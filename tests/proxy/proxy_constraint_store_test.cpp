@@ -22,7 +22,7 @@ namespace {
 using V = Eigen::Vector3d;
 
 struct RecordedTick {
-  V proxy_W, previous_hip_W, hip_velocity_W, hip_W;
+  V proxy_W, p_W_hip_previous, hip_velocity_W, p_W_hip;
   std::vector<std::pair<V, double>> planes;  ///< normal, offset: the contact the tick starts in
 };
 
@@ -52,14 +52,14 @@ TEST(ProxyConstraintStore, ATickThatOutgrowsItsStoreDropsPlanesItHasLeftAndGoesO
     ProxyState state;
     state.initialised = true;
     state.proxy_W = r.proxy_W;
-    state.hip_W = r.previous_hip_W;
+    state.p_W_hip = r.p_W_hip_previous;
     state.hip_velocity_W = r.hip_velocity_W;
     state.plane_count = static_cast<int>(r.planes.size());
     for (std::size_t k = 0; k < r.planes.size(); ++k) {
       state.planes[k] = ConstraintPlane{r.planes[k].first, r.planes[k].second, TriangleRef{0, 0}};
     }
     const V start = state.proxy_W;
-    const ProxyOutput out = step_proxy(scene.world, scene.materials, scene.proxy, state, r.hip_W, 1e-3);
+    const ProxyOutput out = step_proxy(scene.world, scene.materials, scene.proxy, state, r.p_W_hip, 1e-3);
     EXPECT_FALSE(out.budget_exhausted) << "tick " << i << ": " << out.sweeps << " sweeps";
     // Safety first: every leg of the path is crossing-free.
     V at = start;
@@ -69,11 +69,11 @@ TEST(ProxyConstraintStore, ATickThatOutgrowsItsStoreDropsPlanesItHasLeftAndGoesO
       at = next;
     }
     // And it follows: a HIP in free view of where the proxy ended is where it ended.
-    if (!oracle.segment_touches_surface(out.proxy_W, r.hip_W)) {
-      EXPECT_EQ(out.proxy_W, r.hip_W) << "tick " << i;
+    if (!oracle.segment_touches_surface(out.proxy_W, r.p_W_hip)) {
+      EXPECT_EQ(out.proxy_W, r.p_W_hip) << "tick " << i;
       EXPECT_EQ(out.force_W, V::Zero()) << "tick " << i;
     }
-    reached += out.proxy_W == r.hip_W ? 1 : 0;
+    reached += out.proxy_W == r.p_W_hip ? 1 : 0;
   }
   std::printf("%d of %zu ticks end at the HIP\n", reached, recorded_ticks().size());
 }

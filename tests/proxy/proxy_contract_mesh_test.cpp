@@ -129,13 +129,13 @@ TEST(ProxyContractOnAScan, TheBunnyAlongAContinuousPathNeverCrossedNeverStuck) {
   std::size_t contact = 0, free_segments = 0, not_followed = 0, free_force = 0;
   double worst_gap_m = 0.0;
   for (std::size_t k = 1; k < rec.size(); ++k) {
-    const double gap = (rec[k].proxy_W - rec[k].hip_W).norm();
+    const double gap = (rec[k].proxy_W - rec[k].p_W_hip).norm();
     if (rec[k].in_contact) ++contact;
-    if (!oracle.segment_touches_surface(rec[k - 1].proxy_W, rec[k].hip_W)) {
+    if (!oracle.segment_touches_surface(rec[k - 1].proxy_W, rec[k].p_W_hip)) {
       ++free_segments;
       if (gap > kFollow_m) ++not_followed;
     }
-    if (gap > kFollow_m && !oracle.segment_touches_surface(rec[k].proxy_W, rec[k].hip_W)) {
+    if (gap > kFollow_m && !oracle.segment_touches_surface(rec[k].proxy_W, rec[k].p_W_hip)) {
       ++free_force;
       worst_gap_m = std::max(worst_gap_m, gap);
     }

@@ -57,14 +57,14 @@ ContractCount judge(const verify::SurfaceCrossingOracle& oracle, const Rig& rig,
   c.crossings = verify::count_crossings(oracle, rec);
   for (std::size_t k = 1; k < rec.size(); ++k) {
     const verify::TickSample& s = rec[k];
-    const double gap = (s.proxy_W - s.hip_W).norm();
+    const double gap = (s.proxy_W - s.p_W_hip).norm();
     if (s.in_contact) ++c.contact_ticks;
-    if (!oracle.segment_touches_surface(rec[k - 1].proxy_W, s.hip_W)) {
+    if (!oracle.segment_touches_surface(rec[k - 1].proxy_W, s.p_W_hip)) {
       ++c.free_segments;
       if (gap > kFollow_m) ++c.not_followed;
       c.worst_gap_m = std::max(c.worst_gap_m, gap);
     }
-    if (gap > kFollow_m && !oracle.segment_touches_surface(s.proxy_W, s.hip_W)) ++c.free_force;
+    if (gap > kFollow_m && !oracle.segment_touches_surface(s.proxy_W, s.p_W_hip)) ++c.free_force;
   }
   return c;
 }
@@ -319,11 +319,11 @@ TEST(ProxyContract, ATickOutOfWorkStaysCrossingFreeAndKeepsItsForce) {
   bool touched = false;
   int exhausted = 0;
   for (std::size_t k = 0; k < rec.size(); ++k) {
-    if (rec[k].hip_W.z() < 0.0) {
+    if (rec[k].p_W_hip.z() < 0.0) {
       touched = touched || rec[k].in_contact;
       if (touched) {
         EXPECT_TRUE(rec[k].in_contact) << "tick " << k;  // the force never drops out
-        EXPECT_NEAR(rec[k].force_W.z(), 1000 * (rec[k].proxy_W.z() - rec[k].hip_W.z()), 1e-9);
+        EXPECT_NEAR(rec[k].force_W.z(), 1000 * (rec[k].proxy_W.z() - rec[k].p_W_hip.z()), 1e-9);
       }
     }
   }

@@ -44,8 +44,8 @@ struct ProxyRig {
     world.add_object(shape_of(std::move(mesh)), X_WO);
     materials.push_back(mat);
   }
-  ProxyOutput step(const Eigen::Vector3d& hip_W) {
-    return step_proxy(world, materials, settings, state, hip_W, kProxyTestDt_s);
+  ProxyOutput step(const Eigen::Vector3d& p_W_hip) {
+    return step_proxy(world, materials, settings, state, p_W_hip, kProxyTestDt_s);
   }
   /// Moves the HIP in a straight line with `steps` ticks; returns the last tick's output.
   ProxyOutput move(const Eigen::Vector3d& from_W, const Eigen::Vector3d& to_W, int steps) {

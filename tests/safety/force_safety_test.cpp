@@ -28,7 +28,7 @@ ForceSafetyInput input(const Eigen::Vector3d& force, double age_s = 0.005,
   ForceSafetyInput in;
   in.dt_s = kDt;
   in.force_W_N = force;
-  in.hip_W_m = hip;
+  in.p_W_hip = hip;
   in.tracker_age_s = age_s;
   return in;
 }

@@ -27,7 +27,7 @@ TEST_P(FastStrokes, NeverLeaveTheProxyInsideOrBehindTheSurface) {
   const double limit = scene().proxy.max_force_N;
   std::size_t crossings = 0, inside = 0, contact_ticks = 0;
   for (const Stroke& stroke : set.strokes) {
-    const TickRecord record = drive(stroke.hip_W, 1000.0);
+    const TickRecord record = drive(stroke.p_W_hip, 1000.0);
     for (const auto& crossing : find_crossings(record)) {
       if (++crossings <= 3) {
         ADD_FAILURE() << "pop-through at tick " << crossing.tick << " leg " << crossing.leg << " from "

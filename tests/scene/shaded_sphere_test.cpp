@@ -59,7 +59,7 @@ class ShadedSphereScene : public SceneFixture {
       ++s.ticks;
       if (!record[i].in_contact) continue;
       ++s.contact_ticks;
-      const Eigen::Vector3d radial = (record[i].hip_W - c_W).normalized();
+      const Eigen::Vector3d radial = (record[i].p_W_hip - c_W).normalized();
       const Eigen::Vector3d& f = record[i].force_W;
       const double normal = f.dot(radial);
       const double angle = std::atan2((f - normal * radial).norm(), normal);

@@ -7,7 +7,7 @@
 //   TEST_F(BunnyTest, NoPopThrough) {
 //     ASSERT_NO_FATAL_FAILURE(load("tests/data/scenes/bunny.xml"));
 //     for (const auto& s : anchor_strokes(1, 200).strokes)
-//       EXPECT_EQ(count_crossings(drive(s.hip_W, 1000.0)), 0U);
+//       EXPECT_EQ(count_crossings(drive(s.p_W_hip, 1000.0)), 0U);
 //   }
 
 #include "verification/proxy_drive.h"

@@ -59,7 +59,7 @@ TEST_F(SceneFixtureTest, DriveRecordsEveryTick) {
   bool touched = false;
   for (std::size_t k = 0; k < records.size(); ++k) {
     const TickSample& s = records[k];
-    EXPECT_EQ(s.hip_W, path[k]);
+    EXPECT_EQ(s.p_W_hip, path[k]);
     ASSERT_GE(s.path_points, 1);
     ASSERT_LE(s.path_points, kMaxProxyPath);
     EXPECT_TRUE(s.force_W.allFinite());
@@ -106,8 +106,8 @@ TEST_F(SceneFixtureTest, AnchorStrokesOnTheBallDoNotPopThrough) {
   std::size_t contact_ticks = 0;
   for (std::size_t i = 0; i < set.strokes.size(); ++i) {
     SCOPED_TRACE("stroke " + std::to_string(i));
-    const TickRecord records = drive(set.strokes[i].hip_W, 1000.0);
-    ASSERT_EQ(records.size(), set.strokes[i].hip_W.size());
+    const TickRecord records = drive(set.strokes[i].p_W_hip, 1000.0);
+    ASSERT_EQ(records.size(), set.strokes[i].p_W_hip.size());
     for (const TickSample& s : records) contact_ticks += s.in_contact ? 1U : 0U;
     EXPECT_EQ(count_crossings(records), 0U);
     EXPECT_EQ(count_ticks_inside(records), 0U);

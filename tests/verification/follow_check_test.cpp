@@ -22,12 +22,12 @@ constexpr double k_N_per_m = 1000.0;
 // An open 0.2 m square sheet in z = 0, x and y in [-0.1, 0.1].
 SurfaceCrossingOracle sheet() { return SurfaceCrossingOracle(make_test_square(-0.1, 0.1, -0.1, 0.1, 0.0)); }
 
-TickSample tick(const Vector3d& hip_W, const Vector3d& proxy_W) {
+TickSample tick(const Vector3d& p_W_hip, const Vector3d& proxy_W) {
   TickSample s;
-  s.hip_W = hip_W;
+  s.p_W_hip = p_W_hip;
   s.proxy_W = proxy_W;
-  s.force_W = k_N_per_m * (proxy_W - hip_W);
-  s.in_contact = proxy_W != hip_W;
+  s.force_W = k_N_per_m * (proxy_W - p_W_hip);
+  s.in_contact = proxy_W != p_W_hip;
   s.path_points = 1;
   s.path_W[0] = proxy_W;
   return s;

@@ -30,12 +30,12 @@ TEST(DriveProxy, RecordsEveryTickAndAContinuousPath) {
   const SurfaceCrossingOracle oracle(box.world);
   const StrokeSet set = make_anchor_strokes(oracle, 77, 10);
   for (const Stroke& stroke : set.strokes) {
-    const TickRecord records = drive_proxy(box.world, box.materials, box.settings, stroke.hip_W, 1000.0);
-    ASSERT_EQ(records.size(), stroke.hip_W.size());
+    const TickRecord records = drive_proxy(box.world, box.materials, box.settings, stroke.p_W_hip, 1000.0);
+    ASSERT_EQ(records.size(), stroke.p_W_hip.size());
     std::size_t contact = 0;
     for (std::size_t k = 0; k < records.size(); ++k) {
       const TickSample& s = records[k];
-      EXPECT_EQ(s.hip_W, stroke.hip_W[k]);
+      EXPECT_EQ(s.p_W_hip, stroke.p_W_hip[k]);
       ASSERT_GE(s.path_points, 1);
       ASSERT_LE(s.path_points, kMaxProxyPath);
       // The path ends where the proxy ends.
@@ -57,7 +57,7 @@ TEST(DriveProxy, FastStrokesDoNotPopThrough) {
   const StrokeSet set = make_fast_strokes(oracle, 78, 50);
   std::size_t crossings = 0, inside = 0;
   for (const Stroke& stroke : set.strokes) {
-    const TickRecord records = drive_proxy(box.world, box.materials, box.settings, stroke.hip_W, 1000.0);
+    const TickRecord records = drive_proxy(box.world, box.materials, box.settings, stroke.p_W_hip, 1000.0);
     crossings += count_crossings(oracle, records);
     inside += count_ticks_inside(oracle, records);
   }
@@ -69,9 +69,9 @@ TEST(DriveProxy, AProxyThatFollowsTheHipIsCaught) {
   const BoxWorld box;
   const SurfaceCrossingOracle oracle(box.world);
   const Stroke stroke = make_anchor_strokes(oracle, 79, 1).strokes.front();
-  TickRecord records(stroke.hip_W.size());
+  TickRecord records(stroke.p_W_hip.size());
   for (std::size_t k = 0; k < records.size(); ++k) {
-    records[k].hip_W = records[k].proxy_W = records[k].path_W[0] = stroke.hip_W[k];
+    records[k].p_W_hip = records[k].proxy_W = records[k].path_W[0] = stroke.p_W_hip[k];
     records[k].path_points = 1;
   }
   // In through the face on the way down, out again on the retract (or past an edge).

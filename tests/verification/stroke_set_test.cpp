@@ -18,13 +18,13 @@ constexpr double kTol = 1e-12;
 
 // Every step between samples is at most speed / rate, and exactly that except where
 // a step cuts one of the polyline's interior corners or ends the path.
-void expect_speed(const std::vector<Vector3d>& hip_W, double speed_m_per_s, double rate_Hz,
+void expect_speed(const std::vector<Vector3d>& p_W_hip, double speed_m_per_s, double rate_Hz,
                   std::size_t corner_count) {
   const double step = speed_m_per_s / rate_Hz;
-  ASSERT_GE(hip_W.size(), 2U);
+  ASSERT_GE(p_W_hip.size(), 2U);
   std::size_t short_steps = 0;
-  for (std::size_t k = 1; k < hip_W.size(); ++k) {
-    const double d = (hip_W[k] - hip_W[k - 1]).norm();
+  for (std::size_t k = 1; k < p_W_hip.size(); ++k) {
+    const double d = (p_W_hip[k] - p_W_hip[k - 1]).norm();
     ASSERT_LE(d, step * (1.0 + 1e-9)) << "step " << k;
     if (std::abs(d - step) > 1e-9 * step) ++short_steps;
   }
@@ -104,11 +104,11 @@ TEST(AnchorStrokes, FollowTheProtocol) {
     // Retract to 20 mm outside along the normal.
     EXPECT_NEAR((s.corners_W[3] - s.corners_W[2] - 0.025 * n).norm(), 0.0, kTol);
     // Samples: start to end at 0.5 mm per tick over 100 mm.
-    EXPECT_EQ(s.hip_W.front(), start);
-    EXPECT_EQ(s.hip_W.back(), s.corners_W[3]);
-    EXPECT_EQ(s.hip_W.size(), 201U);
+    EXPECT_EQ(s.p_W_hip.front(), start);
+    EXPECT_EQ(s.p_W_hip.back(), s.corners_W[3]);
+    EXPECT_EQ(s.p_W_hip.size(), 201U);
     EXPECT_EQ(s.speed_m_per_s, 0.5);
-    expect_speed(s.hip_W, 0.5, 1000.0, s.corners_W.size());
+    expect_speed(s.p_W_hip, 0.5, 1000.0, s.corners_W.size());
   }
 }
 
@@ -119,10 +119,10 @@ TEST(AnchorStrokes, DeterministicForASeed) {
   const StrokeSet c = make_anchor_strokes(box, 4, 20);
   ASSERT_EQ(a.strokes.size(), b.strokes.size());
   for (std::size_t i = 0; i < a.strokes.size(); ++i) {
-    EXPECT_EQ(a.strokes[i].hip_W, b.strokes[i].hip_W);
+    EXPECT_EQ(a.strokes[i].p_W_hip, b.strokes[i].p_W_hip);
     EXPECT_EQ(a.strokes[i].anchor.where, b.strokes[i].anchor.where);
   }
-  EXPECT_NE(a.strokes[0].hip_W, c.strokes[0].hip_W);
+  EXPECT_NE(a.strokes[0].p_W_hip, c.strokes[0].p_W_hip);
 }
 
 TEST(AnchorStrokes, RejectStartsBehindOtherSurface) {
@@ -196,7 +196,7 @@ TEST(FastStrokes, StartFreeAndPassThrough) {
     EXPECT_LE(s.grazing_angle_rad, params.max_grazing_angle_rad);
     EXPECT_GE(s.speed_m_per_s, params.min_speed_m_per_s);
     EXPECT_LE(s.speed_m_per_s, params.max_speed_m_per_s);
-    expect_speed(s.hip_W, s.speed_m_per_s, params.rate_Hz, s.corners_W.size());
+    expect_speed(s.p_W_hip, s.speed_m_per_s, params.rate_Hz, s.corners_W.size());
     slowest = std::min(slowest, s.speed_m_per_s);
     fastest = std::max(fastest, s.speed_m_per_s);
     shallowest = std::min(shallowest, s.grazing_angle_rad);

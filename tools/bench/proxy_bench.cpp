@@ -32,8 +32,8 @@ namespace {
 // Where a stroke can be left for free space: its last sample outside every closed object
 // and 5 mm clear (a slide over a curved closed mesh can end inside it).
 std::size_t last_free_sample(const mhd::verify::SurfaceCrossingOracle& oracle, const mhd::verify::Stroke& stroke) {
-  for (std::size_t k = stroke.hip_W.size(); k-- > 0;) {
-    const Eigen::Vector3d& p = stroke.hip_W[k];
+  for (std::size_t k = stroke.p_W_hip.size(); k-- > 0;) {
+    const Eigen::Vector3d& p = stroke.p_W_hip[k];
     if (!oracle.point_inside_closed_mesh(p) && oracle.distance_to_surface(p) >= 0.005) return k;
   }
   return 0;
@@ -49,7 +49,7 @@ std::vector<Eigen::Vector3d> sphere_join(const mhd::verify::SurfaceCrossingOracl
     const double t = -b + std::sqrt(std::max(0.0, b * b - d.squaredNorm() + radius * radius));
     return Eigen::Vector3d(p + t * n);
   };
-  const Eigen::Vector3d& s = to.hip_W.front();
+  const Eigen::Vector3d& s = to.p_W_hip.front();
   const Eigen::Vector3d a = out_to_sphere(e, from.anchor.normal_W);
   const Eigen::Vector3d b = out_to_sphere(s, to.anchor.normal_W);
   if (oracle.segment_touches_surface(e, a) || oracle.segment_touches_surface(b, s)) return {};
@@ -82,11 +82,11 @@ mhd::verify::StrokeSet join_in_free_space(const mhd::verify::SurfaceCrossingOrac
   const mhd::verify::Stroke* last = nullptr;
   for (const auto& stroke : set.strokes) {
     if (last != nullptr) {
-      std::vector<Eigen::Vector3d> corners = sphere_join(oracle, bounds.center(), radius, path.hip_W.back(), *last, stroke);
+      std::vector<Eigen::Vector3d> corners = sphere_join(oracle, bounds.center(), radius, path.p_W_hip.back(), *last, stroke);
       if (corners.empty()) {
         mhd::stress::TransitRequest request;
-        request.from.p_W = path.hip_W.back();
-        request.to.p_W = stroke.hip_W.front();
+        request.from.p_W = path.p_W_hip.back();
+        request.to.p_W = stroke.p_W_hip.front();
         request.bounds_W = bounds;
         request.around = 0.5 * bounds.diagonal().norm() <= transit_params.max_around_radius_m;
         if (const auto transit = mhd::stress::plan_free_transit(oracle, request, transit_params, rng)) {
@@ -98,10 +98,10 @@ mhd::verify::StrokeSet join_in_free_space(const mhd::verify::SurfaceCrossingOrac
         continue;
       }
       const auto legs = mhd::verify::sample_polyline(corners, speed, rate);
-      path.hip_W.insert(path.hip_W.end(), legs.begin() + 1, legs.end() - 1);
+      path.p_W_hip.insert(path.p_W_hip.end(), legs.begin() + 1, legs.end() - 1);
     }
-    const auto end = stroke.hip_W.begin() + static_cast<std::ptrdiff_t>(last_free_sample(oracle, stroke)) + 1;
-    path.hip_W.insert(path.hip_W.end(), stroke.hip_W.begin(), end);
+    const auto end = stroke.p_W_hip.begin() + static_cast<std::ptrdiff_t>(last_free_sample(oracle, stroke)) + 1;
+    path.p_W_hip.insert(path.p_W_hip.end(), stroke.p_W_hip.begin(), end);
     last = &stroke;
   }
   mhd::verify::StrokeSet joined;
@@ -115,7 +115,7 @@ bool write_hip_csv(const std::filesystem::path& file, const mhd::verify::StrokeS
   out << "t_s,x_m,y_m,z_m\n";
   std::size_t tick = 0;
   for (const auto& stroke : set.strokes) {
-    for (const auto& p : stroke.hip_W) {
+    for (const auto& p : stroke.p_W_hip) {
       out << fmt::format("{:.17g},{:.17g},{:.17g},{:.17g}\n", static_cast<double>(tick++) / rate, p.x(), p.y(), p.z());
     }
   }

@@ -190,17 +190,17 @@ LeapResult run_leap(const Loaded& l, bool predict, double noise_m, std::uint64_t
     }
     const HapticTickOutput out = tick.tick(t, 0.001, phantom_tool_position(rig.device().geometry, q));
     const Eigen::Vector3d now_true = hip_true(t);
-    if (has_previous && t > 1.0 && out.hip_W_m.allFinite()) {  // after a 1 s warm-up
-      const double leap_mm = ((out.hip_W_m - previous_hip) - (now_true - previous_true)).norm() * 1e3;
+    if (has_previous && t > 1.0 && out.p_W_hip.allFinite()) {  // after a 1 s warm-up
+      const double leap_mm = ((out.p_W_hip - previous_hip) - (now_true - previous_true)).norm() * 1e3;
       r.max_any_mm = std::max(r.max_any_mm, leap_mm);
       if (arrived) r.max_at_arrival_mm = std::max(r.max_at_arrival_mm, leap_mm);
       sum_sq += leap_mm * leap_mm;
       ++scored;
-      r.max_error_mm = std::max(r.max_error_mm, (out.hip_W_m - now_true).norm() * 1e3);
+      r.max_error_mm = std::max(r.max_error_mm, (out.p_W_hip - now_true).norm() * 1e3);
     }
-    previous_hip = out.hip_W_m;
+    previous_hip = out.p_W_hip;
     previous_true = now_true;
-    has_previous = out.hip_W_m.allFinite();
+    has_previous = out.p_W_hip.allFinite();
   }
   r.rms_mm = scored > 0 ? std::sqrt(sum_sq / static_cast<double>(scored)) : 0.0;
   return r;

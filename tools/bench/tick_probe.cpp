@@ -98,11 +98,11 @@ int main(int argc, char** argv) {
       const double us = std::chrono::duration<double, std::micro>(Clock::now() - t1).count();
       again_us = r == 0 ? us : std::min(again_us, us);
     }
-    const Eigen::Vector3d& previous_hip_W = hips_W[i > 0 ? i - 1 : 0];
+    const Eigen::Vector3d& p_W_hip_previous = hips_W[i > 0 ? i - 1 : 0];
     fmt::print(out, "{},{:.3f},{:.3f},{},{},{},{},{},{},{},{:.4f},{:.4f},{:.4f},{}\n", i, first_us, again_us,
                o.in_contact ? 1 : 0, o.plane_count, o.sweeps, o.triangle_tests,
                state.near.gathers() - gathers_before, state.near.size(), after_contact ? 1 : 0,
-               (hips_W[i] - previous_hip_W).norm() * 1e3, (o.proxy_W - hips_W[i]).norm() * 1e3,
+               (hips_W[i] - p_W_hip_previous).norm() * 1e3, (o.proxy_W - hips_W[i]).norm() * 1e3,
                (o.proxy_W - before.proxy_W).norm() * 1e3, evicted ? 1 : 0);
     after_contact = o.in_contact;
   }

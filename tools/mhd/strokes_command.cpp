@@ -41,7 +41,7 @@ mhd::verify::StrokeSet strokes_on_object(const mhd::CompiledScene& scene, int ob
   for (int round = 0; round < 8 && static_cast<int>(out.strokes.size()) < count; ++round) {
     auto candidates = mhd::verify::make_anchor_strokes(just_object, seed + static_cast<std::uint64_t>(round), count, params);
     for (auto& stroke : candidates.strokes) {
-      const Eigen::Vector3d& start = stroke.hip_W.front();
+      const Eigen::Vector3d& start = stroke.p_W_hip.front();
       if (static_cast<int>(out.strokes.size()) == count) break;
       if (whole_scene.distance_to_surface(start) < params.min_start_clearance_m ||
           whole_scene.point_inside_closed_mesh(start)) {

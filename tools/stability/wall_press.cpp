@@ -75,8 +75,8 @@ WallPressResult press_wall(const WallPressSettings& s) {
   for (long k = 0; k <= ticks; ++k) {
     const double t_s = static_cast<double>(k) * T;
     device.simulate_until(t_s, base, intended_W(t_s));
-    const Eigen::Vector3d hip_W = X_W_P * device.p_P_hip_m();
-    const ProxyOutput out = step_proxy(world, materials, proxy_settings, proxy, hip_W, T);
+    const Eigen::Vector3d p_W_hip = X_W_P * device.p_P_hip_m();
+    const ProxyOutput out = step_proxy(world, materials, proxy_settings, proxy, p_W_hip, T);
     const Eigen::Vector3d F_P = X_W_P.linear().transpose() * out.force_W;
     device.command(phantom_joint_torques(config.device.geometry, device.joint_angles_rad(), F_P), t_s);
     const double normal_force_N = out.force_W.dot(up);

@@ -87,27 +87,27 @@ MovingStressReport run_range(const CompiledScene& scene, int object, std::uint64
       ++r.resets;
       t_s = 0.0;
       mover->restart(t_s);
-      reset_proxy(state, hip_at(stroke.hip_W.front(), t_s));
+      reset_proxy(state, hip_at(stroke.p_W_hip.front(), t_s));
       last_out = ProxyOutput{};
       last_out.proxy_W = state.proxy_W;
     }
     if (traced) {
       fmt::print(trace, "stroke {}: {} at {:.3f} m/s, {} ticks ({} connector), {}\n", i, to_string(stroke.kind),
-                 stroke.speed_m_per_s, stroke.hip_W.size(), stroke.connector_samples,
+                 stroke.speed_m_per_s, stroke.p_W_hip.size(), stroke.connector_samples,
                  stroke.continues ? "continuing the previous stroke" : "proxy reset at the start");
       fmt::print(trace, "  chain {}: {} motion (origin up to {:.3f} m/s, up to {:.1f} deg/s), strokes {}", chain_first,
                  to_string(motion.kind), motion.motion.max_speed_mps(),
                  motion.motion.max_rate_radps() * 180.0 / std::numbers::pi, to_string(motion.anchor));
       if (motion.anchor == StrokeAnchor::Lagging) fmt::print(trace, " {:.3f} s behind", motion.lag_s);
-      fmt::print(trace, "\n  tick t_s hip_W proxy_W contact carry(ride/push/squeeze) crossed inside not_followed "
+      fmt::print(trace, "\n  tick t_s p_W_hip proxy_W contact carry(ride/push/squeeze) crossed inside not_followed "
                         "free_force overlap gap_mm\n");
     }
     if (!stroke.continues) overlapping = false;
     std::optional<MovingStrokeFailure> failure;
     std::size_t pushes = 0;
-    for (std::size_t k = 0; k < stroke.hip_W.size(); ++k) {
+    for (std::size_t k = 0; k < stroke.p_W_hip.size(); ++k) {
       t_s += dt_s;
-      const Eigen::Vector3d hip_W = hip_at(stroke.hip_W[k], t_s);
+      const Eigen::Vector3d p_W_hip = hip_at(stroke.p_W_hip[k], t_s);
       check.before_move(mover->world());
       const Eigen::Vector3d p_before_W = state.proxy_W;
       CarryOutput carry;
@@ -118,12 +118,12 @@ MovingStressReport run_range(const CompiledScene& scene, int object, std::uint64
       }
       const Eigen::Vector3d p_carried_W = state.proxy_W;
       const ProxyOutput out =
-          step_proxy(mover->world(), scene.materials, scene.proxy, state, hip_W, dt_s, mover->twists());
+          step_proxy(mover->world(), scene.materials, scene.proxy, state, p_W_hip, dt_s, mover->twists());
       const auto path_points = static_cast<std::size_t>(std::clamp(state.path_points, 0, kMaxProxyPath));
       overlapping = overlapping || carry.squeezed;
       const verify::MovingTickVerdict v =
           check.judge(mover->world(), p_before_W, p_carried_W,
-                      std::span<const Eigen::Vector3d>(state.path_W.data(), path_points), out, hip_W,
+                      std::span<const Eigen::Vector3d>(state.path_W.data(), path_points), out, p_W_hip,
                       overlapping ? object : -1);
       r.overlap_ticks += v.overlap ? 1 : 0;
       overlapping = v.overlap;
@@ -131,7 +131,7 @@ MovingStressReport run_range(const CompiledScene& scene, int object, std::uint64
       ++r.ticks;
       if (out.in_contact) {
         ++r.contact_ticks;
-        r.max_hip_depth_m = std::max(r.max_hip_depth_m, (out.proxy_W - hip_W).norm());
+        r.max_hip_depth_m = std::max(r.max_hip_depth_m, (out.proxy_W - p_W_hip).norm());
       }
       pushes += carry.pushed > 0 ? 1 : 0;
       r.squeeze_ticks += carry.squeezed ? 1 : 0;
@@ -140,16 +140,16 @@ MovingStressReport run_range(const CompiledScene& scene, int object, std::uint64
       r.inside_ticks += v.inside ? 1 : 0;
       r.not_followed_ticks += v.not_followed ? 1 : 0;
       r.free_force_ticks += v.free_force ? 1 : 0;
-      if (v.failed() && !failure) failure = MovingStrokeFailure{i, stroke.kind, motion.kind, k, hip_W, out.proxy_W, v};
+      if (v.failed() && !failure) failure = MovingStrokeFailure{i, stroke.kind, motion.kind, k, p_W_hip, out.proxy_W, v};
       if (traced) {
         fmt::print(trace, "  {:4d} {:.3f} ", k, t_s);
-        print_vec(trace, hip_W);
+        print_vec(trace, p_W_hip);
         fmt::print(trace, "  ");
         print_vec(trace, out.proxy_W);
         fmt::print(trace, "  {} {}{}{} {} {} {} {} {} {:.4f}\n", out.in_contact ? "yes" : "no",
                    carry.rode > 0 ? "R" : "-", carry.pushed > 0 ? "P" : "-", carry.squeezed ? "S" : "-",
                    v.crossed ? "YES" : "no", v.inside ? "YES" : "no", v.not_followed ? "YES" : "no",
-                   v.free_force ? "YES" : "no", v.overlap ? "yes" : "no", 1e3 * (out.proxy_W - hip_W).norm());
+                   v.free_force ? "YES" : "no", v.overlap ? "yes" : "no", 1e3 * (out.proxy_W - p_W_hip).norm());
       }
     }
     r.push_ticks += pushes;
@@ -158,7 +158,7 @@ MovingStressReport run_range(const CompiledScene& scene, int object, std::uint64
       r.busiest_stroke_pushes = pushes;
       r.busiest_stroke = i;
     }
-    last_hip = stroke.hip_W.back();
+    last_hip = stroke.p_W_hip.back();
     if (failure) {
       ++r.failing_strokes;
       if (r.failures.size() < settings.max_failures_kept) r.failures.push_back(*failure);

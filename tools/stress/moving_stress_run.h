@@ -45,7 +45,7 @@ struct MovingStrokeFailure {
   StrokeKind kind = StrokeKind::Random;
   MotionKind motion = MotionKind::Twist;
   std::size_t tick = 0;  ///< within the stroke (connector samples included)
-  Eigen::Vector3d hip_W = Eigen::Vector3d::Zero();
+  Eigen::Vector3d p_W_hip = Eigen::Vector3d::Zero();
   Eigen::Vector3d proxy_W = Eigen::Vector3d::Zero();
   verify::MovingTickVerdict verdict;
 };

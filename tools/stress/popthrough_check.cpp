@@ -48,12 +48,12 @@ TickVerdict PopThroughChecker::check_reset(const Eigen::Vector3d& p_W) {
   return v;
 }
 
-TickVerdict PopThroughChecker::check_tick(const Eigen::Vector3d& hip_W, std::span<const Eigen::Vector3d> path_W,
+TickVerdict PopThroughChecker::check_tick(const Eigen::Vector3d& p_W_hip, std::span<const Eigen::Vector3d> path_W,
                                           const Eigen::Vector3d& proxy_W, const Eigen::Vector3d& force_W,
                                           bool in_contact) {
   TickVerdict v;
   if (!started_) (void)check_reset(path_W.empty() ? proxy_W : path_W.front());
-  const verify::FollowVerdict follow = verify::check_follow(oracle_, previous_, hip_W, proxy_W, force_W, follow_);
+  const verify::FollowVerdict follow = verify::check_follow(oracle_, previous_, p_W_hip, proxy_W, force_W, follow_);
   v.follow_failed = follow.failed();
   v.follow_kind = follow.kind;
   v.follow_brushed = follow.brushed;

@@ -75,10 +75,10 @@ class PopThroughChecker {
   /// makes it the previous position.
   TickVerdict check_reset(const Eigen::Vector3d& p_W);
 
-  /// One tick given hip_W: the proxy moved from the previous position through path_W
+  /// One tick given p_W_hip: the proxy moved from the previous position through path_W
   /// (may be empty) to proxy_W and rendered force_W. Checks every leg, where it ended,
   /// and whether it followed the HIP. Precondition: a reset.
-  TickVerdict check_tick(const Eigen::Vector3d& hip_W, std::span<const Eigen::Vector3d> path_W,
+  TickVerdict check_tick(const Eigen::Vector3d& p_W_hip, std::span<const Eigen::Vector3d> path_W,
                          const Eigen::Vector3d& proxy_W, const Eigen::Vector3d& force_W, bool in_contact);
 
   [[nodiscard]] const Eigen::Vector3d& previous() const { return previous_; }

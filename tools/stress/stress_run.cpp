@@ -83,7 +83,7 @@ ObjectStressReport run_range(const CompiledScene& scene, const verify::SurfaceCr
     const bool traced = trace.out != nullptr && trace.stroke == i;
     if (traced) {
       fmt::print(trace.out, "stroke {}: {} at {:.3f} m/s, {} ticks ({} connector), {}\n", i, to_string(stroke.kind),
-                 stroke.speed_m_per_s, stroke.hip_W.size(), stroke.connector_samples,
+                 stroke.speed_m_per_s, stroke.p_W_hip.size(), stroke.connector_samples,
                  reset ? "proxy reset at the start" : "continuing the previous stroke");
       fmt::print(trace.out, "  start ");
       print_vec(trace.out, stroke.start_W);
@@ -96,7 +96,7 @@ ObjectStressReport run_range(const CompiledScene& scene, const verify::SurfaceCr
         print_vec(trace.out, stroke.retract_W);
         fmt::print(trace.out, "  transit drawn {} times", stroke.transit_attempts);
       }
-      fmt::print(trace.out, "\n  tick  hip_W                                    proxy_W                                  "
+      fmt::print(trace.out, "\n  tick  p_W_hip                                    proxy_W                                  "
                             "contact planes path  crossed inside engine depth_m   follow gap_mm free force_N\n");
     }
     std::optional<StrokeFailure> failure;
@@ -119,11 +119,11 @@ ObjectStressReport run_range(const CompiledScene& scene, const verify::SurfaceCr
     };
     if (reset) {
       follow_run = 0;
-      reset_proxy(state, stroke.hip_W.front());
-      note(0, stroke.hip_W.front(), state.proxy_W, checker.check_reset(state.proxy_W));
+      reset_proxy(state, stroke.p_W_hip.front());
+      note(0, stroke.p_W_hip.front(), state.proxy_W, checker.check_reset(state.proxy_W));
     }
-    for (std::size_t k = 0; k < stroke.hip_W.size(); ++k) {
-      const Eigen::Vector3d& hip = stroke.hip_W[k];
+    for (std::size_t k = 0; k < stroke.p_W_hip.size(); ++k) {
+      const Eigen::Vector3d& hip = stroke.p_W_hip[k];
       const auto t_step = Clock::now();
       ProxyOutput out = step_proxy(scene.world, scene.materials, scene.proxy, state, hip, dt_s);
       step_times.add(std::chrono::duration<double, std::micro>(Clock::now() - t_step).count());
@@ -162,7 +162,7 @@ ObjectStressReport run_range(const CompiledScene& scene, const verify::SurfaceCr
         }
       }
     }
-    last_hip = stroke.hip_W.back();
+    last_hip = stroke.p_W_hip.back();
     if (failure) {
       ++r.failing_strokes;
       ++r.failing_strokes_by_kind[static_cast<std::size_t>(failure->kind)];

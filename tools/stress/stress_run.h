@@ -36,7 +36,7 @@ struct StressSettings {
   std::size_t max_failures_kept = 10;
   /// For the checker's own tests only: called after every step_proxy to break the
   /// proxy on purpose (e.g. move it to the HIP); the check sees the altered result.
-  std::function<void(const Eigen::Vector3d& hip_W, ProxyState&, ProxyOutput&)> tamper;
+  std::function<void(const Eigen::Vector3d& p_W_hip, ProxyState&, ProxyOutput&)> tamper;
 };
 
 /// The first failing tick of one stroke.
@@ -44,7 +44,7 @@ struct StrokeFailure {
   std::size_t stroke = 0;
   StrokeKind kind = StrokeKind::Random;
   std::size_t tick = 0;  ///< within the stroke (connector samples included)
-  Eigen::Vector3d hip_W = Eigen::Vector3d::Zero();
+  Eigen::Vector3d p_W_hip = Eigen::Vector3d::Zero();
   Eigen::Vector3d proxy_W = Eigen::Vector3d::Zero();
   TickVerdict verdict;
 };

@@ -302,11 +302,11 @@ StressStroke StressStrokeGenerator::make(std::uint64_t seed, std::uint64_t objec
     if (stroke.continues && (*continue_from - g.start).norm() > 0.0) {
       const std::array<Vector3d, 2> connector{*continue_from, g.start};
       std::vector<Vector3d> join = verify::sample_polyline(connector, params_.max_speed_m_per_s, params_.rate_Hz);
-      stroke.hip_W.assign(join.begin() + 1, join.end() - 1);  // the stroke's own samples start at `start`
-      stroke.connector_samples = stroke.hip_W.size();
+      stroke.p_W_hip.assign(join.begin() + 1, join.end() - 1);  // the stroke's own samples start at `start`
+      stroke.connector_samples = stroke.p_W_hip.size();
     }
     const std::vector<Vector3d> own = verify::sample_polyline(g.corners, g.speed, params_.rate_Hz);
-    stroke.hip_W.insert(stroke.hip_W.end(), own.begin(), own.end());
+    stroke.p_W_hip.insert(stroke.p_W_hip.end(), own.begin(), own.end());
     return stroke;
   }
   throw std::runtime_error("stress strokes: no free start found for stroke " + std::to_string(index) + " in " +

@@ -108,9 +108,9 @@ struct StressStroke {
   std::size_t index = 0;
   /// HIP samples, one per tick. A continuing stroke starts with its connector: the
   /// samples after the previous stroke's last one up to this stroke's start.
-  std::vector<Eigen::Vector3d> hip_W;
+  std::vector<Eigen::Vector3d> p_W_hip;
   std::size_t connector_samples = 0;
-  /// Continues the previous stroke without a proxy reset (hip_W starts with the connector).
+  /// Continues the previous stroke without a proxy reset (p_W_hip starts with the connector).
   bool continues = false;
   Eigen::Vector3d start_W = Eigen::Vector3d::Zero();
   Eigen::Vector3d direction_W = Eigen::Vector3d::Zero();

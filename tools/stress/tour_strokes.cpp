@@ -174,8 +174,8 @@ StressStroke StressStrokeGenerator::make_tour(std::uint64_t seed, std::uint64_t 
       if (transit) {
         const std::vector<Vector3d> samples =
             verify::sample_polyline(transit->corners_W, speed(0.4), params_.rate_Hz);
-        stroke.hip_W.assign(samples.begin() + 1, samples.end() - 1);  // own samples start at the approach start
-        stroke.connector_samples = stroke.hip_W.size();
+        stroke.p_W_hip.assign(samples.begin() + 1, samples.end() - 1);  // own samples start at the approach start
+        stroke.connector_samples = stroke.p_W_hip.size();
         stroke.continues = true;
         stroke.transit_attempts = transit->attempts;
       } else {
@@ -184,8 +184,8 @@ StressStroke StressStrokeGenerator::make_tour(std::uint64_t seed, std::uint64_t 
     }
     auto append = [&](std::vector<Vector3d> corners, double v) {
       const std::vector<Vector3d> samples = verify::sample_polyline(corners, v, params_.rate_Hz);
-      const bool joined = stroke.hip_W.size() > stroke.connector_samples;  // drop the shared first sample
-      stroke.hip_W.insert(stroke.hip_W.end(), samples.begin() + (joined ? 1 : 0), samples.end());
+      const bool joined = stroke.p_W_hip.size() > stroke.connector_samples;  // drop the shared first sample
+      stroke.p_W_hip.insert(stroke.p_W_hip.end(), samples.begin() + (joined ? 1 : 0), samples.end());
     };
     append({plan.approach_start, plan.slide.front()}, press_speed);
     // At 5-60 % of max speed a slide lasts about a second at most.

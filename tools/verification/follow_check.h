@@ -64,10 +64,10 @@ struct FollowVerdict {
   [[nodiscard]] bool failed() const { return kind != FollowFailureKind::None; }
 };
 
-/// One tick: the proxy was at previous_proxy_W, was given hip_W, and ended at proxy_W
+/// One tick: the proxy was at previous_proxy_W, was given p_W_hip, and ended at proxy_W
 /// with force_W. Asks the oracle at most three times, and not at all for a proxy at the HIP.
 [[nodiscard]] FollowVerdict check_follow(const SurfaceCrossingOracle& oracle, const Eigen::Vector3d& previous_proxy_W,
-                                         const Eigen::Vector3d& hip_W, const Eigen::Vector3d& proxy_W,
+                                         const Eigen::Vector3d& p_W_hip, const Eigen::Vector3d& proxy_W,
                                          const Eigen::Vector3d& force_W, const FollowTolerance& tolerance);
 
 }  // namespace mhd::verify

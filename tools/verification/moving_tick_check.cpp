@@ -29,7 +29,7 @@ bool MovingTickCheck::touches(const CollisionWorld& world, const Eigen::Vector3d
 
 MovingTickVerdict MovingTickCheck::judge(const CollisionWorld& world, const Eigen::Vector3d& p_before_W,
                                          const Eigen::Vector3d& p_carried_W, std::span<const Eigen::Vector3d> path_W,
-                                         const ProxyOutput& out, const Eigen::Vector3d& hip_W,
+                                         const ProxyOutput& out, const Eigen::Vector3d& p_W_hip,
                                          int overlap_object) const {
   MovingTickVerdict v;
   for (std::size_t o = 0; o < oracles_O_.size() && !v.crossed; ++o) {
@@ -46,9 +46,9 @@ MovingTickVerdict MovingTickCheck::judge(const CollisionWorld& world, const Eige
       v.inside = v.inside || inside;
     }
   }
-  if ((out.proxy_W - hip_W).norm() > kMovingFollowTolerance_m) {
-    v.not_followed = !touches(world, p_carried_W, hip_W);
-    v.free_force = out.force_W.norm() > 0.0 && !touches(world, out.proxy_W, hip_W);
+  if ((out.proxy_W - p_W_hip).norm() > kMovingFollowTolerance_m) {
+    v.not_followed = !touches(world, p_carried_W, p_W_hip);
+    v.free_force = out.force_W.norm() > 0.0 && !touches(world, out.proxy_W, p_W_hip);
   }
   return v;
 }

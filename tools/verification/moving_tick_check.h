@@ -43,13 +43,13 @@ class MovingTickCheck {
 
   /// Judges the tick: the proxy was at p_before_W (objects in their poses at before_move),
   /// was carried to p_carried_W (objects in their poses in `world` now), then stepped along
-  /// `path_W` to `out.proxy_W` towards hip_W. `overlap_object` (-1: none) is a moving
+  /// `path_W` to `out.proxy_W` towards p_W_hip. `overlap_object` (-1: none) is a moving
   /// object that squeezed the proxy against a still one and may overlap it (docs/proxy.md
   /// "Moving objects"): its crossings and containment go to `overlap`, apart from the others'.
   /// Precondition: same objects as at construction.
   [[nodiscard]] MovingTickVerdict judge(const CollisionWorld& world, const Eigen::Vector3d& p_before_W,
                                         const Eigen::Vector3d& p_carried_W, std::span<const Eigen::Vector3d> path_W,
-                                        const ProxyOutput& out, const Eigen::Vector3d& hip_W,
+                                        const ProxyOutput& out, const Eigen::Vector3d& p_W_hip,
                                         int overlap_object = -1) const;
 
   /// Whether a world segment, with the objects in their poses in `world`, touches any of them.

@@ -14,16 +14,16 @@ TickRecord drive_proxy(const CollisionWorld& world, std::span<const HapticMateri
   const double dt_s = 1.0 / rate_Hz;
   ProxyState state;
   reset_proxy(state, hip_path_W.front());
-  for (const Eigen::Vector3d& hip_W : hip_path_W) {
-    const ProxyOutput out = step_proxy(world, materials, settings, state, hip_W, dt_s);
-    records.push_back(make_tick_sample(hip_W, out, state));
+  for (const Eigen::Vector3d& p_W_hip : hip_path_W) {
+    const ProxyOutput out = step_proxy(world, materials, settings, state, p_W_hip, dt_s);
+    records.push_back(make_tick_sample(p_W_hip, out, state));
   }
   return records;
 }
 
-TickSample make_tick_sample(const Eigen::Vector3d& hip_W, const ProxyOutput& out, const ProxyState& state) {
+TickSample make_tick_sample(const Eigen::Vector3d& p_W_hip, const ProxyOutput& out, const ProxyState& state) {
   TickSample s;
-  s.hip_W = hip_W;
+  s.p_W_hip = p_W_hip;
   s.proxy_W = out.proxy_W;
   s.force_W = out.force_W;
   s.in_contact = out.in_contact;
@@ -77,12 +77,12 @@ FollowCheck find_follow_failures(const SurfaceCrossingOracle& oracle, const Tick
   for (std::size_t k = 0; k < records.size(); ++k) {
     const TickSample& s = records[k];
     const Eigen::Vector3d previous = k > 0 ? records[k - 1].proxy_W : (s.path_points > 0 ? s.path_W[0] : s.proxy_W);
-    const FollowVerdict v = check_follow(oracle, previous, s.hip_W, s.proxy_W, s.force_W, tolerance);
+    const FollowVerdict v = check_follow(oracle, previous, s.p_W_hip, s.proxy_W, s.force_W, tolerance);
     if (v.hip_in_free_view && v.gap_m > check.max_free_gap_m) {
       check.max_free_gap_m = v.gap_m;
       check.force_at_max_free_gap_N = v.force_N;
     }
-    if (v.failed()) check.failures.push_back(FollowFailure{k, v, previous, s.hip_W, s.proxy_W});
+    if (v.failed()) check.failures.push_back(FollowFailure{k, v, previous, s.p_W_hip, s.proxy_W});
   }
   return check;
 }

@@ -19,7 +19,7 @@ namespace mhd::verify {
 
 /// What one tick did.
 struct TickSample {
-  Eigen::Vector3d hip_W = Eigen::Vector3d::Zero();
+  Eigen::Vector3d p_W_hip = Eigen::Vector3d::Zero();
   Eigen::Vector3d proxy_W = Eigen::Vector3d::Zero();  ///< at the end of the tick
   Eigen::Vector3d force_W = Eigen::Vector3d::Zero();
   bool in_contact = false;
@@ -35,7 +35,7 @@ using TickRecord = std::vector<TickSample>;
 
 /// The sample of one tick: the HIP it was given, what step_proxy returned and the path
 /// it left in `state`.
-[[nodiscard]] TickSample make_tick_sample(const Eigen::Vector3d& hip_W, const ProxyOutput& out,
+[[nodiscard]] TickSample make_tick_sample(const Eigen::Vector3d& p_W_hip, const ProxyOutput& out,
                                           const ProxyState& state);
 
 /// Resets the proxy at hip_path_W[0] (which must be in free space), then steps it once
@@ -74,7 +74,7 @@ struct FollowFailure {
   std::size_t tick = 0;
   FollowVerdict verdict;
   Eigen::Vector3d previous_proxy_W = Eigen::Vector3d::Zero();
-  Eigen::Vector3d hip_W = Eigen::Vector3d::Zero();
+  Eigen::Vector3d p_W_hip = Eigen::Vector3d::Zero();
   Eigen::Vector3d proxy_W = Eigen::Vector3d::Zero();
 };
 

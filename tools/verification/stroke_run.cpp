@@ -40,13 +40,13 @@ StrokeRunReport run_strokes(const CompiledScene& scene, const SurfaceCrossingOra
   const FollowTolerance follow = follow_tolerance(scene.materials);
   TickRecord record;
   for (const Stroke& stroke : strokes.strokes) {
-    if (stroke.hip_W.empty()) continue;
+    if (stroke.p_W_hip.empty()) continue;
     ++report.strokes;
     record.clear();
-    record.reserve(stroke.hip_W.size());
+    record.reserve(stroke.p_W_hip.size());
     ProxyState state;
-    reset_proxy(state, stroke.hip_W.front());
-    for (const Eigen::Vector3d& hip : stroke.hip_W) {
+    reset_proxy(state, stroke.p_W_hip.front());
+    for (const Eigen::Vector3d& hip : stroke.p_W_hip) {
       const auto t0 = Clock::now();
       const ProxyOutput out = step_proxy(scene.world, scene.materials, scene.proxy, state, hip, dt_s);
       const auto t1 = Clock::now();

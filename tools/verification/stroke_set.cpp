@@ -139,7 +139,7 @@ StrokeSet make_anchor_strokes(const SurfaceCrossingOracle& surface, std::uint64_
       Stroke stroke;
       stroke.corners_W = {start, bottom, bottom + params.slide_m * tangent,
                           p + params.slide_m * tangent + params.outside_m * n};
-      stroke.hip_W = sample_polyline(stroke.corners_W, params.speed_m_per_s, params.rate_Hz);
+      stroke.p_W_hip = sample_polyline(stroke.corners_W, params.speed_m_per_s, params.rate_Hz);
       stroke.anchor = s;
       stroke.direction_W = tangent;
       stroke.speed_m_per_s = params.speed_m_per_s;
@@ -186,7 +186,7 @@ StrokeSet make_fast_strokes(const SurfaceCrossingOracle& surface, std::uint64_t 
       Stroke stroke;
       stroke.corners_W = {start, deepest};
       if (params.return_to_start) stroke.corners_W.push_back(start);
-      stroke.hip_W = sample_polyline(stroke.corners_W, speed, params.rate_Hz);
+      stroke.p_W_hip = sample_polyline(stroke.corners_W, speed, params.rate_Hz);
       stroke.anchor = s;
       stroke.direction_W = d;
       stroke.speed_m_per_s = speed;

@@ -30,7 +30,7 @@ struct SurfaceSample {
 struct Stroke {
   /// One HIP position per tick: consecutive samples are speed / rate apart along the
   /// corner polyline (closer only where a step cuts a corner, and at the very end).
-  std::vector<Eigen::Vector3d> hip_W;
+  std::vector<Eigen::Vector3d> p_W_hip;
   /// The polyline the samples follow. Anchor: start, bottom of the approach, end of
   /// the slide, retracted end. Fast: start, deepest point[, start again].
   std::vector<Eigen::Vector3d> corners_W;

@@ -139,7 +139,7 @@ TEST(MovingStress, ObjectsTeleportedWithoutTheCarryAreCaught) {
     ASSERT_FALSE(replay.failures.empty());
     EXPECT_EQ(replay.failures.back().stroke, f.stroke);
     EXPECT_EQ(replay.failures.back().tick, f.tick);
-    EXPECT_EQ(replay.failures.back().hip_W, f.hip_W);
+    EXPECT_EQ(replay.failures.back().p_W_hip, f.p_W_hip);
   }
 }
 

@@ -51,14 +51,14 @@ std::unique_ptr<CompiledScene> box_and_sheet() {
 }
 
 // Breaks the proxy on purpose: puts it at proxy_W (no planes, a one-point path) with the
-// spring force towards it from hip_W.
-void place_proxy(const Vector3d& proxy_W, const Vector3d& hip_W, ProxyState& state, ProxyOutput& out) {
+// spring force towards it from p_W_hip.
+void place_proxy(const Vector3d& proxy_W, const Vector3d& p_W_hip, ProxyState& state, ProxyOutput& out) {
   state.proxy_W = proxy_W;
   state.path_points = 1;
   state.path_W[0] = proxy_W;
   state.plane_count = 0;
   out.proxy_W = proxy_W;
-  out.force_W = 1000.0 * (proxy_W - hip_W);
+  out.force_W = 1000.0 * (proxy_W - p_W_hip);
 }
 
 StressSettings small_run(std::size_t strokes) {
@@ -113,8 +113,8 @@ TEST(StressRun, HipUsedAsProxyFailsAndItsReproducerReplaysIt) {
   ASSERT_TRUE(scene);
   const verify::SurfaceCrossingOracle oracle(scene->world);
   StressSettings settings = small_run(40);
-  settings.tamper = [](const Vector3d& hip_W, ProxyState& state, ProxyOutput& out) {
-    place_proxy(hip_W, hip_W, state, out);
+  settings.tamper = [](const Vector3d& p_W_hip, ProxyState& state, ProxyOutput& out) {
+    place_proxy(p_W_hip, p_W_hip, state, out);
   };
   const std::uint64_t key = name_key("stress_test/box");
   const ObjectStressReport r = stress_object(*scene, oracle, 0, key, settings);
@@ -142,7 +142,7 @@ TEST(StressRun, HipUsedAsProxyFailsAndItsReproducerReplaysIt) {
   const StrokeFailure& again = replay.failures.back();
   EXPECT_EQ(again.stroke, first.stroke);
   EXPECT_EQ(again.tick, first.tick);
-  EXPECT_EQ(again.hip_W, first.hip_W);
+  EXPECT_EQ(again.p_W_hip, first.p_W_hip);
   EXPECT_NE(text.find("stroke " + std::to_string(first.stroke) + ":"), std::string::npos);
   EXPECT_NE(text.find("YES"), std::string::npos);
 }
@@ -160,19 +160,19 @@ TEST(StressRun, ProxyFrozenWhileTheHipMovesAwayInFreeSpaceIsAFollowFailure) {
   std::size_t expected = 0, frozen_ticks = 0;
   StressSettings settings = small_run(24);
   const double max_step = settings.stroke.max_speed_m_per_s / settings.stroke.rate_Hz * (1.0 + 1e-9);
-  settings.tamper = [&](const Vector3d& hip_W, ProxyState& state, ProxyOutput& out) {
-    if (last_hip && (hip_W - *last_hip).norm() > max_step) frozen.reset();
-    last_hip = hip_W;
-    if (!frozen && static_cast<long long>(std::floor(hip_W.norm() * 1e6)) % 100 == 0 &&
-        oracle.distance_to_surface(hip_W) > 0.005 && !oracle.point_inside_closed_mesh(hip_W)) {
-      frozen = hip_W;
+  settings.tamper = [&](const Vector3d& p_W_hip, ProxyState& state, ProxyOutput& out) {
+    if (last_hip && (p_W_hip - *last_hip).norm() > max_step) frozen.reset();
+    last_hip = p_W_hip;
+    if (!frozen && static_cast<long long>(std::floor(p_W_hip.norm() * 1e6)) % 100 == 0 &&
+        oracle.distance_to_surface(p_W_hip) > 0.005 && !oracle.point_inside_closed_mesh(p_W_hip)) {
+      frozen = p_W_hip;
       frozen_left = 60;
     }
-    if (!frozen) return place_proxy(hip_W, hip_W, state, out);
-    place_proxy(*frozen, hip_W, state, out);
+    if (!frozen) return place_proxy(p_W_hip, p_W_hip, state, out);
+    place_proxy(*frozen, p_W_hip, state, out);
     ++frozen_ticks;
     // The definition, spelled out: the straight way from the proxy to the HIP is free.
-    if ((hip_W - *frozen).norm() > verify::kFollowTolerance_m && !oracle.segment_touches_surface(*frozen, hip_W)) {
+    if ((p_W_hip - *frozen).norm() > verify::kFollowTolerance_m && !oracle.segment_touches_surface(*frozen, p_W_hip)) {
       ++expected;
     }
     if (--frozen_left == 0) frozen.reset();
@@ -224,20 +224,20 @@ TEST(StressStrokes, ToursAreContinuousWithFreeTransitsAndDeepPushes) {
       EXPECT_EQ(s.kind, StrokeKind::Tour);
       EXPECT_TRUE(gen.start_is_free(s.start_W));
       EXPECT_TRUE(gen.start_is_free(s.retract_W));
-      EXPECT_EQ(s.hip_W[s.connector_samples], s.start_W);
-      EXPECT_EQ(s.hip_W.back(), s.retract_W);
+      EXPECT_EQ(s.p_W_hip[s.connector_samples], s.start_W);
+      EXPECT_EQ(s.p_W_hip.back(), s.retract_W);
       EXPECT_EQ(s.continues, last.has_value());  // a free transit was found every time
       if (s.continues) {
         ++continued;
-        EXPECT_LE((s.hip_W.front() - *last).norm(), max_step);
+        EXPECT_LE((s.p_W_hip.front() - *last).norm(), max_step);
         // The transit never touches a surface, and stays clear of it.
         Vector3d at = *last;
         for (std::size_t k = 0; k <= s.connector_samples; ++k) {
-          ASSERT_FALSE(oracle.segment_touches_surface(at, s.hip_W[k])) << "stroke " << i << " sample " << k;
-          at = s.hip_W[k];
+          ASSERT_FALSE(oracle.segment_touches_surface(at, s.p_W_hip[k])) << "stroke " << i << " sample " << k;
+          at = s.p_W_hip[k];
         }
       }
-      for (std::size_t k = 1; k < s.hip_W.size(); ++k) ASSERT_LE((s.hip_W[k] - s.hip_W[k - 1]).norm(), max_step);
+      for (std::size_t k = 1; k < s.p_W_hip.size(); ++k) ASSERT_LE((s.p_W_hip[k] - s.p_W_hip[k - 1]).norm(), max_step);
       // 20-50 mm below the surface it approached (inside the box; behind the sheet).
       const double depth = oracle.distance_to_surface(s.push_W);
       EXPECT_LE(depth, params.tour.max_depth_m + 1e-9);
@@ -246,8 +246,8 @@ TEST(StressStrokes, ToursAreContinuousWithFreeTransitsAndDeepPushes) {
       } else {
         EXPECT_TRUE(oracle.segment_touches_surface(s.start_W, s.push_W));
       }
-      EXPECT_EQ(gen.make_tour(5, 42, i, last).hip_W, s.hip_W);
-      last = s.hip_W.back();
+      EXPECT_EQ(gen.make_tour(5, 42, i, last).p_W_hip, s.p_W_hip);
+      last = s.p_W_hip.back();
     }
     EXPECT_EQ(continued, 11);
   }
@@ -265,23 +265,23 @@ TEST(StressStrokes, FreeStartsBoundedSpeedAndDeterminism) {
   int continued = 0;
   for (std::size_t i = 0; i < 200; ++i) {
     const StressStroke s = gen.make(3, 99, i, last);
-    ASSERT_GE(s.hip_W.size(), 2U);
+    ASSERT_GE(s.p_W_hip.size(), 2U);
     EXPECT_TRUE(gen.start_is_free(s.start_W));
-    EXPECT_EQ(s.hip_W[s.connector_samples], s.start_W);
+    EXPECT_EQ(s.p_W_hip[s.connector_samples], s.start_W);
     EXPECT_LE(s.speed_m_per_s, params.max_speed_m_per_s);
-    const double duration = static_cast<double>(s.hip_W.size() - s.connector_samples) / params.rate_Hz;
+    const double duration = static_cast<double>(s.p_W_hip.size() - s.connector_samples) / params.rate_Hz;
     EXPECT_GE(duration, 0.05);
     if (s.continues) {
-      EXPECT_LE((s.hip_W.front() - *last).norm(), max_step);
+      EXPECT_LE((s.p_W_hip.front() - *last).norm(), max_step);
       ++continued;
     } else {
       EXPECT_EQ(s.connector_samples, 0U);
     }
-    for (std::size_t k = 1; k < s.hip_W.size(); ++k) ASSERT_LE((s.hip_W[k] - s.hip_W[k - 1]).norm(), max_step);
+    for (std::size_t k = 1; k < s.p_W_hip.size(); ++k) ASSERT_LE((s.p_W_hip[k] - s.p_W_hip[k - 1]).norm(), max_step);
     const StressStroke again = gen.make(3, 99, i, last);
-    EXPECT_EQ(again.hip_W, s.hip_W);
-    EXPECT_NE(gen.make(4, 99, i, last).hip_W, s.hip_W);
-    last = s.hip_W.back();
+    EXPECT_EQ(again.p_W_hip, s.p_W_hip);
+    EXPECT_NE(gen.make(4, 99, i, last).p_W_hip, s.p_W_hip);
+    last = s.p_W_hip.back();
   }
   EXPECT_GT(continued, 100);  // near a 200 mm box, most strokes can continue
 }
