@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -72,16 +73,28 @@ TEST(ViewerWithServer, HapticLoopKeepsItsDeadlinesWhileTheViewerDraws) {
   std::printf("haptic tick with the viewer drawing: median %.1f us, p99 %.1f us, max %.1f us, %llu overruns\n",
               with_viewer.report.tick_median_us, with_viewer.report.tick_p99_us, with_viewer.report.tick_max_us,
               static_cast<unsigned long long>(with_viewer.report.status.overruns));
-  if (with_viewer.report.status.overruns == 0) return;
   // Overruns: the viewer's fault only if they clearly exceed those of the same run without
   // it. On a shared 2-core CI machine with software OpenGL a few wake-ups come late either
-  // way (0 on an idle machine); the viewer must not add more than a handful.
-  const ServerRun baseline = run_dolphin(1.5, {});
-  ASSERT_TRUE(baseline.ran);
-  const auto with = with_viewer.report.status.overruns, without = baseline.report.status.overruns;
-  std::printf("overruns: %llu with the viewer, %llu without any display\n", static_cast<unsigned long long>(with),
-              static_cast<unsigned long long>(without));
-  EXPECT_LE(with, 2 * without + 3) << "the viewer slowed the haptic loop";
+  // way (0 on an idle machine); the viewer must not add more than a handful. One pair of
+  // runs can be unlucky (a clean-clone CI run once saw 13 against 2, alone in ctest), so a
+  // viewer that slows the loop must do so in two pairs in a row, the second drawing too.
+  auto with = with_viewer.report.status.overruns;
+  std::uint64_t without = 0;
+  for (int pair = 0; pair < 2 && with > 0; ++pair) {
+    if (pair > 0) {
+      const ServerRun again = run_dolphin(1.5, png);
+      ASSERT_TRUE(again.ran);
+      with = again.report.status.overruns;
+      if (with == 0) break;
+    }
+    const ServerRun baseline = run_dolphin(1.5, {});
+    ASSERT_TRUE(baseline.ran);
+    without = baseline.report.status.overruns;
+    std::printf("pair %d: overruns %llu with the viewer, %llu without any display\n", pair + 1,
+                static_cast<unsigned long long>(with), static_cast<unsigned long long>(without));
+    if (with <= 2 * without + 3) break;
+  }
+  EXPECT_LE(with, 2 * without + 3) << "the viewer slowed the haptic loop in two pairs of runs";
 }
 
 }  // namespace
