@@ -23,6 +23,7 @@
 #include <cmath>
 #include <csignal>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <sstream>
 #include <sys/wait.h>
@@ -365,6 +366,51 @@ TEST(TrackerFaults, JitterOf20msOnA20msLateTrackerDipsTheGainButNeverStepsItUp) 
 
 // ---- 3. tracker lossy ------------------------------------------------------------------
 
+/// The ticks whose reduced gain the tracker does not explain. A tick's gain below 1 is
+/// explained when the newest sample delivered by then (`delivered_age_s(t)`) was at least
+/// `fade_from_s` old, or when it rises from the tick before: the way back from an
+/// explained fade (the stale fade's 1 per tracker_fade_s, and from zero the fade-in ramp)
+/// spans ticks whose samples are fresh again. A fall, or a flat dip, while the samples
+/// are fresh is unexplained.
+std::vector<std::string> unexplained_fades(const std::vector<RecordingRow>& rows,
+                                           const std::function<double(double)>& delivered_age_s, double fade_from_s) {
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const RecordingRow& row = rows[i];
+    if (!(row.safety_gain < 1.0)) continue;
+    const bool rising = i > 0 && row.safety_gain > rows[i - 1].safety_gain;
+    const double age_s = delivered_age_s(row.t_s);
+    if (rising || age_s >= fade_from_s) continue;
+    out.push_back(fmt::format("gain {} at {} s (tick before: {}): server age {} s, newest sample delivered {} s old",
+                              row.safety_gain, row.t_s, i > 0 ? rows[i - 1].safety_gain : 1.0, row.tracker_age_s,
+                              age_s));
+  }
+  return out;
+}
+
+std::vector<RecordingRow> gain_rows(const std::vector<double>& gains) {
+  std::vector<RecordingRow> rows(gains.size());
+  for (std::size_t i = 0; i < gains.size(); ++i) {
+    rows[i].t_s = 0.001 * static_cast<double>(i);
+    rows[i].safety_gain = gains[i];
+  }
+  return rows;
+}
+
+TEST(FadeJudgement, TheWayBackFromAnExplainedFadeIsExplainedThoughTheSamplesAreFreshAgain) {
+  // Stale from 2 ms to 4 ms (off at 4 ms), fresh from 5 ms on while the fade-in ramp rises.
+  const auto age = [](double t_s) { return t_s >= 0.0015 && t_s < 0.0045 ? 0.05 : 0.005; };
+  EXPECT_TRUE(unexplained_fades(gain_rows({1.0, 1.0, 0.5, 0.2, 0.0, 0.01, 0.02, 0.03, 0.04, 1.0}), age, 0.03).empty());
+}
+
+TEST(FadeJudgement, AFallOrAFlatDipWhileTheSamplesAreFreshIsUnexplained) {
+  const auto fresh = [](double) { return 0.005; };
+  EXPECT_EQ(unexplained_fades(gain_rows({1.0, 0.9, 1.0}), fresh, 0.03).size(), 1u);        // a fall
+  EXPECT_EQ(unexplained_fades(gain_rows({1.0, 0.9, 0.9, 0.9}), fresh, 0.03).size(), 3u);   // and a flat dip
+  EXPECT_EQ(unexplained_fades(gain_rows({0.5, 0.6, 0.5, 0.6}), fresh, 0.03).size(), 2u);   // the first tick, and the fall
+}
+
+
 TEST(TrackerFaults, LossyTrackerKeepsRenderingAndFadesOnlyInLongGaps) {
   const fs::path dir = temp_dir();
   const PressGeometry g = press_geometry(0.004);
@@ -409,24 +455,22 @@ TEST(TrackerFaults, LossyTrackerKeepsRenderingAndFadesOnlyInLongGaps) {
 
   const std::vector<RecordingRow> rows = rows_after_start(read_rows(dir / "run.csv"), 0.2);
   ASSERT_GT(rows.size(), 500u);
-  std::size_t reduced = 0, unexplained = 0, off = 0, pressing = 0;
+  std::size_t reduced = 0, off = 0, pressing = 0;
   for (const RecordingRow& row : rows) {
     EXPECT_TRUE(row_finite(row));
     if (force_N(row) > kContactForce_N) ++pressing;
     if (row.safety_gain == 0.0) ++off;
-    if (row.safety_gain < 1.0) {
-      ++reduced;
-      // A fade needs the newest measurement 30 ms old; with 4 ms latency that takes a gap
-      // of more than 26 ms (5 samples in a row lost at 190 Hz). Unexplained: a sample
-      // younger than 30 ms had been delivered 10 ms before and the force faded anyway.
-      if (delivered_age(row.t_s, 0.010) < 0.030) {
-        ++unexplained;
-        ADD_FAILURE() << "gain " << row.safety_gain << " at " << row.t_s << " s: server age " << row.tracker_age_s
-                      << " s, newest sample delivered 10 ms before " << delivered_age(row.t_s, 0.010) << " s old";
-      }
-    }
+    if (row.safety_gain < 1.0) ++reduced;
   }
-  EXPECT_EQ(unexplained, 0u) << "the force faded while the tracker's newest sample was fresh";
+  // A fade needs the newest measurement 30 ms old; with 4 ms latency that takes a gap of
+  // more than 26 ms (5 samples in a row lost at 190 Hz).
+  const std::vector<std::string> unexplained =
+      unexplained_fades(rows, [&](double t_s) { return delivered_age(t_s, 0.010); }, 0.030);
+  for (const std::string& u : unexplained) ADD_FAILURE() << u;
+  EXPECT_TRUE(unexplained.empty()) << "the force faded while the tracker's newest sample was fresh";
+  const ForceSafetySettings& fade = run.settings.tick.safety;
+  EXPECT_LE(gain_figures(rows, fade.max_force_N).max_rise_per_s,
+            1.01 * (1.0 / fade.tracker_fade_s + 1.0 / fade.fade_in_s));
   if (longest_gap < 0.04) {
     EXPECT_EQ(off, 0u);
   }
