@@ -12,7 +12,7 @@
 //   hip_x_m, hip_y_m, hip_z_m                          the HIP measured in the world
 
 #include "geometry/pose.h"
-#include "scene/diagnostic.h"
+#include "diagnostics/diagnostic.h"
 
 #include <Eigen/Core>
 

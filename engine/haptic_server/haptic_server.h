@@ -24,7 +24,7 @@
 #include "haptic_server/server_settings.h"
 #include "haptic_server/server_status.h"
 #include "kinematics/base_pose.h"
-#include "scene/diagnostic.h"
+#include "diagnostics/diagnostic.h"
 #include "scene/scene_description.h"
 #include "scene_compiler/compiled_scene.h"
 

@@ -6,7 +6,7 @@
 
 #include "haptic_server/haptic_server.h"
 #include "kinematics/rig.h"
-#include "scene/diagnostic.h"
+#include "diagnostics/diagnostic.h"
 #include "scene/scene_description.h"
 
 #include <optional>

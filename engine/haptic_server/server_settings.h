@@ -24,7 +24,7 @@
 
 #include "haptic_server/haptic_tick.h"
 #include "safety/base_command_guard.h"
-#include "scene/diagnostic.h"
+#include "diagnostics/diagnostic.h"
 #include "scene/scene_description.h"
 
 #include <cstdint>

@@ -32,7 +32,7 @@
 #include "geometry/pose.h"
 #include "kinematics/base_pose.h"
 #include "kinematics/phantom_kinematics.h"
-#include "scene/diagnostic.h"
+#include "diagnostics/diagnostic.h"
 #include "scene/scene_description.h"
 
 #include <Eigen/Core>

@@ -4,7 +4,7 @@
 // that does not parse is an error naming the file and line.
 
 #include "recording/recording_row.h"
-#include "scene/diagnostic.h"
+#include "diagnostics/diagnostic.h"
 
 #include <filesystem>
 #include <vector>

@@ -6,7 +6,7 @@
 // time into a fixed buffer, so memory stays bounded whatever the file holds. Every problem
 // is a Diagnostic at file:line naming the column.
 
-#include "scene/diagnostic.h"
+#include "diagnostics/diagnostic.h"
 
 #include <Eigen/Core>
 

@@ -4,7 +4,7 @@
 // diagnostic at the param's file:line when the value is malformed. finish() reports every
 // parameter nobody asked for. Numbers are C-locale decimals and must be finite.
 
-#include "scene/diagnostic.h"
+#include "diagnostics/diagnostic.h"
 #include "scene/scene_description.h"
 
 #include <cstdint>

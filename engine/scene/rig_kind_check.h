@@ -5,7 +5,7 @@
 // checks only what a file can get wrong by itself (check_rig_kind), the haptic server
 // also what running needs (check_rig_plugins_for_run), so a scene of objects alone stays valid.
 
-#include "scene/diagnostic.h"
+#include "diagnostics/diagnostic.h"
 #include "scene/scene_description.h"
 
 #include <string_view>

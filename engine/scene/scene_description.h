@@ -7,7 +7,7 @@
 #include "geometry/object_motion.h"
 #include "geometry/pose.h"
 #include "material/haptic_material.h"
-#include "scene/diagnostic.h"
+#include "diagnostics/diagnostic.h"
 #include "scene/plugin_kind.h"
 
 #include <Eigen/Core>

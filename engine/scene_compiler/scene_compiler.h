@@ -2,7 +2,7 @@
 // Turns a SceneDescription into a CompiledScene: loads meshes (assimp), tessellates
 // primitives, builds or fetches BVHs from the on-disk cache.
 
-#include "scene/diagnostic.h"
+#include "diagnostics/diagnostic.h"
 #include "scene/scene_description.h"
 #include "scene_compiler/compiled_scene.h"
 

@@ -2,7 +2,7 @@
 // Collects the errors found in one scene file: every message gets that file's name
 // and the line it concerns. Several sinks (one per included file) share one list.
 
-#include "scene/diagnostic.h"
+#include "diagnostics/diagnostic.h"
 
 #include <cstddef>
 #include <string>

@@ -2,7 +2,7 @@
 // Checks the rig's frame tree once every file is read: each parent is "world" or a
 // frame, and following parents from any frame reaches "world" (no cycles).
 
-#include "scene/diagnostic.h"
+#include "diagnostics/diagnostic.h"
 #include "scene/scene_description.h"
 
 #include <vector>

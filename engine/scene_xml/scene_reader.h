@@ -3,7 +3,7 @@
 // Every problem is reported with file:line; a scene with any error is not returned,
 // so nothing is ever half-loaded.
 
-#include "scene/diagnostic.h"
+#include "diagnostics/diagnostic.h"
 #include "scene/scene_description.h"
 
 #include <filesystem>

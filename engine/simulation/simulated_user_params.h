@@ -6,7 +6,7 @@
 // eye_height_m, hand_reach_m, hand_height_m, hand_motion_amplitude_m, gaze_target_m
 // ("x y z"). See docs/simulation.md for what each does.
 
-#include "scene/diagnostic.h"
+#include "diagnostics/diagnostic.h"
 #include "scene/scene_description.h"
 #include "simulation/simulated_user.h"
 

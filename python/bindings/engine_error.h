@@ -6,7 +6,7 @@
 // `report` is the server's report when a fault ended a run, else None.
 
 #include "haptic_server/haptic_server.h"
-#include "scene/diagnostic.h"
+#include "diagnostics/diagnostic.h"
 
 #include <optional>
 #include <stdexcept>

@@ -2,7 +2,7 @@
 // Shared by the scene_xml tests: run from the repository root (so paths given to the
 // reader are relative, as a user would type them) and flatten diagnostics to strings.
 
-#include "scene/diagnostic.h"
+#include "diagnostics/diagnostic.h"
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 // mistake (metre values in a unit="mm" scene shrink it 1000x; millimetre values in metres
 // grow it 1000x). A warning, not an error: such a scene loads, it just is not what was meant.
 
-#include "scene/diagnostic.h"
+#include "diagnostics/diagnostic.h"
 #include "scene/scene_description.h"
 #include "scene_compiler/compiled_scene.h"
 

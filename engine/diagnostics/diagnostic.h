@@ -21,4 +21,7 @@ struct Diagnostic {
 
 using Diagnostics = std::vector<Diagnostic>;
 
+/// One line per diagnostic, as Diagnostic::to_string; "" for none.
+[[nodiscard]] std::string to_string(const Diagnostics& diagnostics);
+
 }  // namespace mhd

@@ -1,4 +1,4 @@
-#include "scene/diagnostic.h"
+#include "diagnostics/diagnostic.h"
 
 namespace mhd {
 
@@ -10,6 +10,15 @@ std::string Diagnostic::to_string() const {
   }
   out += ": error: ";
   out += message;
+  return out;
+}
+
+std::string to_string(const Diagnostics& diagnostics) {
+  std::string out;
+  for (const Diagnostic& d : diagnostics) {
+    if (!out.empty()) out += '\n';
+    out += d.to_string();
+  }
   return out;
 }
 
