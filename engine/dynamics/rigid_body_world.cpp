@@ -185,6 +185,20 @@ void RigidBodyWorld::clear_forces() noexcept {
   }
 }
 
+void RigidBodyWorld::set_velocity(int object, const Eigen::Vector3d& v_W_origin_mps,
+                                  const Eigen::Vector3d& omega_W_radps) noexcept {
+  if (!is_body(object) || !v_W_origin_mps.allFinite() || !omega_W_radps.allFinite()) return;
+  Impl::Body& b = impl_->bodies[static_cast<std::size_t>(impl_->body_of_object[static_cast<std::size_t>(object)])];
+  // Bullet's linear velocity is its centre of mass's: v_C = v_O + omega x (p_C - p_O).
+  const Eigen::Vector3d p_W_centre = eig(b.body->getCenterOfMassPosition());
+  const Eigen::Vector3d v_W_centre = v_W_origin_mps + omega_W_radps.cross(p_W_centre - b.X_WO.translation());
+  b.body->setLinearVelocity(bt(v_W_centre));
+  b.body->setAngularVelocity(bt(omega_W_radps));
+  b.body->activate();
+  b.v_W_origin_mps = v_W_origin_mps;
+  b.omega_W_radps = omega_W_radps;
+}
+
 int RigidBodyWorld::advance(double t_s) noexcept {
   Impl& w = *impl_;
   if (!(t_s > w.t_forces_s) || !std::isfinite(t_s)) return 0;

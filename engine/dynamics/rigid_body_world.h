@@ -50,6 +50,10 @@ class RigidBodyWorld {
   void apply_force(int object, const Eigen::Vector3d& f_W_N, const Eigen::Vector3d& p_W_m) noexcept;
   /// No force on any body from now on.
   void clear_forces() noexcept;
+  /// Sets a body's velocity now (a body thrown or caught): its origin's v_W_origin_mps and
+  /// its angular velocity omega_W_radps, as v_W_origin_mps() and omega_W_radps() return
+  /// them from now on. Non-finite values and non-bodies are ignored. Allocates nothing.
+  void set_velocity(int object, const Eigen::Vector3d& v_W_origin_mps, const Eigen::Vector3d& omega_W_radps) noexcept;
 
   /// Steps the physics up to t_s (at most max_steps_per_advance steps) and renders every
   /// body's pose and velocity at t_s. Earlier t_s than the last: nothing moves. Returns

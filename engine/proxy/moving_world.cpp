@@ -62,6 +62,10 @@ CarryOutput MovingWorld::advance(double t_s, ProxyState& proxy, double skin_m) n
   return carry_proxy(world_, X_WO_before_, skin_m, proxy);
 }
 
+void MovingWorld::set_body_velocity(int object, const ObjectTwist& twist_W) noexcept {
+  if (physics_) physics_->set_velocity(object, twist_W.v_W_origin_mps, twist_W.omega_W_radps);
+}
+
 void MovingWorld::apply_reaction(const ProxyState& proxy, const Eigen::Vector3d& force_W_N) noexcept {
   if (!physics_) return;
   physics_->clear_forces();

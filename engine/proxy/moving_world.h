@@ -47,6 +47,10 @@ class MovingWorld {
   /// bodies' contacts have been met: RigidBodyWorld::advance).
   CarryOutput advance(double t_s, ProxyState& proxy, double skin_m) noexcept;
 
+  /// Sets pushable body `object`'s velocity now (RigidBodyWorld::set_velocity); its twist
+  /// shows from the next advance(). No-op for scripted or still objects.
+  void set_body_velocity(int object, const ObjectTwist& twist_W) noexcept;
+
   /// The hand felt force_W_N (the force on it) with the proxy at proxy's end of tick: the
   /// bodies of its constraint planes get the reaction, at the proxy (contact_reactions),
   /// held until the next call; every other body none. Allocates nothing.

@@ -128,6 +128,30 @@ TEST(RigidBodyWorld, LetGoTheBoxSlidesToAStop) {
   EXPECT_NEAR(ice.physics->v_W_origin_mps(1).x(), 1.0 * 0.2 / kMass_kg, 0.01);
 }
 
+TEST(RigidBodyWorld, AThrownBodyFliesAtItsSetVelocityAndAnUnthrownOneStaysPut) {
+  CollisionWorld world;
+  world.add_object(shape_of(make_box_mesh(V::Constant(kSide_m))), Pose::Identity());
+  world.add_object(shape_of(make_box_mesh(V::Constant(kSide_m))), Pose(Eigen::Translation3d(V(0.0, 1.0, 0.0))));
+  const std::optional<ObjectDynamics> d[] = {ObjectDynamics{kMass_kg, kFriction}, ObjectDynamics{kMass_kg, kFriction}};
+  const bool flags[] = {false, false};
+  RigidBodySettings weightless;
+  weightless.gravity_W_mps2.setZero();
+  RigidBodyWorld physics(world, d, flags, weightless);
+  const V v_W_mps(0.3, 0.0, -0.2);
+  const V omega_W_radps(0.0, 0.0, std::numbers::pi);  // 180 deg/s
+  physics.set_velocity(0, v_W_mps, omega_W_radps);
+  physics.set_velocity(1, V(std::nan(""), 0, 0), V::Zero());  // ignored
+  EXPECT_TRUE(physics.v_W_origin_mps(0).isApprox(v_W_mps));
+  for (int k = 1; k <= 500; ++k) (void)physics.advance(1e-3 * k);
+  EXPECT_TRUE(physics.v_W_origin_mps(0).isApprox(v_W_mps, 1e-6));
+  EXPECT_TRUE(physics.omega_W_radps(0).isApprox(omega_W_radps, 1e-6));
+  EXPECT_LT((physics.X_WO(0).translation() - 0.5 * v_W_mps).norm(), 1e-6);
+  const double turned_rad = Eigen::AngleAxisd(physics.X_WO(0).linear()).angle();
+  EXPECT_NEAR(turned_rad, std::numbers::pi / 2, 1e-3);
+  EXPECT_LT((physics.X_WO(1).translation() - V(0.0, 1.0, 0.0)).norm(), 1e-9);  // never thrown
+  EXPECT_EQ(physics.v_W_origin_mps(1), V::Zero());
+}
+
 TEST(RigidBodyWorld, RefusesANonPositiveOrNonFiniteMassAndANegativeFriction) {
   CollisionWorld world;
   world.add_object(shape_of(make_box_mesh(V::Constant(kSide_m))), Pose::Identity());

@@ -14,12 +14,19 @@
 namespace mhd::stress {
 namespace {
 
-// The one place where the stress chooses what moves the objects (stress_mover.h):
-// scripted motions today; a pushed-body mover goes here.
-std::unique_ptr<StressMover> make_mover(const CompiledScene& scene, int object, const StressMotion& m) {
+// The one place where the stress chooses what moves the objects (stress_mover.h).
+std::unique_ptr<StressMover> make_mover(const CompiledScene& scene, int object, const StressMotion& m,
+                                        const MovingStressSettings& settings) {
+  if (settings.mover == MoverKind::Pushed) {
+    const ObjectTwist throw_W{m.motion.v_W_origin_at(0.0), m.motion.omega_W_at(0.0)};
+    PushedBodyParams body = settings.pushed;
+    body.hand_speed_mps = settings.stroke.max_speed_m_per_s;
+    body.hand_rate_radps = settings.motion.max_rate_radps;
+    return std::make_unique<PushedMover>(scene, object, throw_W, body, 1.0 / settings.stroke.rate_Hz);
+  }
   std::vector<std::optional<ObjectMotion>> motions(static_cast<std::size_t>(scene.world.object_count()));
   motions[static_cast<std::size_t>(object)] = m.motion;
-  return std::make_unique<ScriptedMover>(scene.world, std::move(motions));
+  return std::make_unique<ScriptedMover>(scene.world, std::move(motions), object);
 }
 
 void print_vec(std::FILE* out, const Eigen::Vector3d& v) { fmt::print(out, "{:.9f} {:.9f} {:.9f}", v.x(), v.y(), v.z()); }
@@ -59,13 +66,16 @@ MovingStressReport run_range(const CompiledScene& scene, int object, std::uint64
   // Squeezed against a still surface, the proxy may be overlapped by the moving object
   // (docs/proxy.md): from the squeeze until it is clear of that object again.
   bool overlapping = false;
+  // A pushed body is thrown with a twist's starting velocity (keyframed motions start slow).
+  MotionDrawParams motion_params = settings.motion;
+  if (settings.mover == MoverKind::Pushed) motion_params.weight_loop = motion_params.weight_pingpong = 0.0;
   for (std::size_t i = first; i < last; ++i) {
     const std::size_t chain_first = i - i % chain;
     const bool traced = trace != nullptr && i == traced_stroke;
     if (i == chain_first || i == first) {
       last_hip.reset();
-      motion = draw_stress_motion(settings.seed, object_key, chain_first, X_WO_start, p_W_centre, settings.motion);
-      mover = make_mover(scene, object, motion);
+      motion = draw_stress_motion(settings.seed, object_key, chain_first, X_WO_start, p_W_centre, motion_params);
+      mover = make_mover(scene, object, motion, settings);
       ++r.chains;
       ++r.chains_by_motion[static_cast<std::size_t>(motion.kind)];
       ++r.chains_by_anchor[static_cast<std::size_t>(motion.anchor)];
@@ -79,9 +89,9 @@ MovingStressReport run_range(const CompiledScene& scene, int object, std::uint64
                                      : generator.make(settings.seed, object_key, i, last_hip);
     ++r.strokes;
     ++r.strokes_by_kind[static_cast<std::size_t>(stroke.kind)];
-    // The stroke's sample at chain time t, carried by the object's motion (the anchor).
+    // The stroke's sample at chain time t, carried by the object as it moved (the anchor).
     const auto hip_at = [&](const Eigen::Vector3d& p_W_stroke, double at_s) {
-      return Eigen::Vector3d(motion.motion.X_WO_at(motion.anchor_time_s(at_s)) * (X_OW_start * p_W_stroke));
+      return Eigen::Vector3d(mover->X_WO_at(motion.anchor_time_s(at_s)) * (X_OW_start * p_W_stroke));
     };
     if (!stroke.continues) {
       ++r.resets;
@@ -107,15 +117,18 @@ MovingStressReport run_range(const CompiledScene& scene, int object, std::uint64
     std::size_t pushes = 0;
     for (std::size_t k = 0; k < stroke.p_W_hip.size(); ++k) {
       t_s += dt_s;
-      const Eigen::Vector3d p_W_hip = hip_at(stroke.p_W_hip[k], t_s);
       check.before_move(mover->world());
       const Eigen::Vector3d p_before_W = state.proxy_W;
       CarryOutput carry;
       if (settings.fault_skip_carry) {
-        mover->restart(t_s);
+        const ProxyState uncarried = state;
+        (void)mover->advance(t_s, state, skin_m, last_out);
+        state = uncarried;
       } else {
         carry = mover->advance(t_s, state, skin_m, last_out);
       }
+      // After the move: a riding hand follows a pushed body's pose at t_s.
+      const Eigen::Vector3d p_W_hip = hip_at(stroke.p_W_hip[k], t_s);
       const Eigen::Vector3d p_carried_W = state.proxy_W;
       const ProxyOutput out =
           step_proxy(mover->world(), scene.materials, scene.proxy, state, p_W_hip, dt_s, mover->twists());
@@ -129,6 +142,17 @@ MovingStressReport run_range(const CompiledScene& scene, int object, std::uint64
       overlapping = v.overlap;
       last_out = out;
       ++r.ticks;
+      if (!mover->twists().empty()) {
+        const ObjectTwist& twist = mover->twists()[o];
+        const double speed_mps = twist.v_W_origin_mps.norm();
+        const double rate_radps = twist.omega_W_radps.norm();
+        r.max_reached_speed_mps = std::max(r.max_reached_speed_mps, speed_mps);
+        r.max_reached_rate_radps = std::max(r.max_reached_rate_radps, rate_radps);
+        r.max_reached_surface_speed_mps = std::max(r.max_reached_surface_speed_mps, speed_mps + rate_radps * reach_m);
+      }
+      r.max_travel_m = std::max(
+          r.max_travel_m, (mover->world().pose(object).translation() - X_WO_start.translation()).norm());
+      r.object_force_ticks += out.in_contact && out.contact_object == object && out.force_W.squaredNorm() > 0.0 ? 1 : 0;
       if (out.in_contact) {
         ++r.contact_ticks;
         r.max_hip_depth_m = std::max(r.max_hip_depth_m, (out.proxy_W - p_W_hip).norm());

@@ -12,8 +12,12 @@
 // start with the proxy in free space, as at the haptic server's start-up. A proxy squeezed
 // between the moving object and a still one may be overlapped by the moving one, by design
 // (docs/proxy.md): those ticks are counted apart (overlap_ticks), never the still object's.
+// With MoverKind::Pushed the object is instead a rigid body the proxy's force pushes, as
+// the haptic server pushes it (pushed_mover.h), thrown at each reset with the drawn
+// twist's starting velocity; the strokes follow it as a hand would.
 
 #include "scene_compiler/compiled_scene.h"
+#include "stress/pushed_mover.h"
 #include "stress/stress_motion.h"
 #include "stress/stress_strokes.h"
 #include "verification/moving_tick_check.h"
@@ -27,15 +31,21 @@
 
 namespace mhd::stress {
 
+/// What moves the stressed object: its drawn motion, or the hand (a pushed body thrown at
+/// each proxy reset with the drawn motion's starting twist: pushed_mover.h).
+enum class MoverKind { Scripted, Pushed };
+
 struct MovingStressSettings {
+  MoverKind mover = MoverKind::Scripted;
+  PushedBodyParams pushed;  ///< Pushed only
   std::size_t strokes = 100000;
   std::uint64_t seed = 1;
   std::size_t chain_length = 8;  ///< strokes per chain (and per motion); 1 resets before every stroke
   StressStrokeParams stroke;
   MotionDrawParams motion;
   std::size_t max_failures_kept = 10;
-  /// For the checker's own tests only: the objects jump to their new poses without
-  /// carrying the proxy (a broken engine: no carry, no relative sweep).
+  /// For the checker's own tests only: the objects move to their new poses and the proxy
+  /// is left where it was (a broken engine: no carry, no relative sweep).
   bool fault_skip_carry = false;
 };
 
@@ -79,6 +89,15 @@ struct MovingStressReport {
   double max_object_speed_mps = 0.0;
   double max_object_rate_radps = 0.0;
   double max_surface_speed_mps = 0.0;
+  /// Reached, tick by tick (for a pushed body, what the throws and the hand gave it): the
+  /// object's fastest origin speed and rotation rate, the bound on its fastest surface
+  /// point, and its origin's farthest distance from its start.
+  double max_reached_speed_mps = 0.0;
+  double max_reached_rate_radps = 0.0;
+  double max_reached_surface_speed_mps = 0.0;
+  double max_travel_m = 0.0;
+  /// Ticks the proxy pressed on the stressed object (it pushes a pushed body back).
+  std::size_t object_force_ticks = 0;
   double max_hip_depth_m = 0.0;  ///< largest HIP-proxy distance in contact
   /// The stroke with the most push ticks (to --replay-stroke a clean run's hardest stroke).
   std::size_t busiest_stroke = 0;

@@ -8,12 +8,14 @@
 // by ctest. With --moving, each stroke chain gives the target object a random motion
 // (twist, loop or ping-pong keyframes, up to --max-object-speed-mps and
 // --max-object-rate-deg-s) and every tick is judged in each object's frame
-// (moving_stress_run.h). Exit status 1 on any pop-through or follow failure, 2 on bad
+// (moving_stress_run.h); with --pushed too, the object is a body the proxy pushes
+// (pushed_stress_cli.h). Exit status 1 on any pop-through or follow failure, 2 on bad
 // input. See docs/reliability/pop_through.md.
 
 #include "scene_compiler/scene_compiler.h"
 #include "scene_xml/scene_reader.h"
 #include "stress/moving_stress_run.h"
+#include "stress/pushed_stress_cli.h"
 #include "stress/stress_run.h"
 
 #include <CLI/CLI.hpp>
@@ -57,6 +59,7 @@ struct Options {
   double max_object_speed_mps = 0.5;
   double max_object_rate_deg_s = 180.0;
   double object_excursion_m = 0.1;
+  mhd::stress::PushedCli pushed;
 };
 
 // One input: a scene file, or a mesh file wrapped in a one-object scene.
@@ -122,6 +125,7 @@ std::string reproducer(const Source& src, const Options& opt, const std::string&
   if (opt.moving) {
     line += fmt::format(" --moving --max-object-speed-mps {} --max-object-rate-deg-s {} --object-excursion-m {}",
                         opt.max_object_speed_mps, opt.max_object_rate_deg_s, opt.object_excursion_m);
+    line += mhd::stress::pushed_reproducer_flags(opt.pushed);
   }
   return line + fmt::format(
                     " --object {} --seed {} --chain {} --max-speed-mps {} --rate-hz {} --follow-tolerance-m {} "
@@ -139,6 +143,7 @@ mhd::stress::MovingStressSettings moving_settings(const Options& opt) {
   s.motion.max_speed_mps = opt.max_object_speed_mps;
   s.motion.max_rate_radps = opt.max_object_rate_deg_s * std::numbers::pi / 180.0;
   s.motion.max_excursion_m = opt.object_excursion_m;
+  mhd::stress::apply_pushed_options(opt.pushed, s);
   return s;
 }
 
@@ -163,6 +168,7 @@ bool stress_moving(const Source& src, const Options& opt, const mhd::CompiledSce
              r.free_force_ticks, r.max_object_speed_mps, r.max_object_rate_radps * 180.0 / std::numbers::pi,
              r.max_surface_speed_mps, 1e3 * r.max_hip_depth_m, r.seconds);
   std::fflush(stdout);
+  if (opt.pushed.pushed) mhd::stress::print_pushed_reached(stderr, src.file, name, r);
   fmt::print(stderr, "  {} / {}: strokes by kind:", src.file, name);
   for (int k = 0; k < mhd::stress::kStrokeKindCount; ++k) {
     fmt::print(stderr, " {} {}", to_string(static_cast<mhd::stress::StrokeKind>(k)),
@@ -377,6 +383,11 @@ int main(int argc, char** argv) {
   app.add_option("--object-excursion-m", opt.object_excursion_m,
                  "--moving: how far a keyframed motion's keys move the object's centre")
       ->check(CLI::Range(0.0, 10.0));
+  mhd::stress::add_pushed_options(app, opt.pushed);
   CLI11_PARSE(app, argc, argv);
+  if (opt.pushed.pushed && !opt.moving) {
+    fmt::print(stderr, "mhd-popthrough-stress: error: --pushed needs --moving\n");
+    return 2;
+  }
   return run(opt);
 }

@@ -1,0 +1,156 @@
+// The moving-object stress with a pushed body (pushed_mover.h) end to end: a box pushed on
+// a floor under gravity and a floating cube, each thrown at every proxy reset and pushed
+// by the proxy's force as the haptic tick pushes it. Both halves: the real engine is clean
+// (0 crossings, 0 follow failures) AND the body really moved, by the throws and by the
+// hand alone; the same runs with the proxy left behind by the moving body are caught, and
+// the reproducer replays the failure.
+
+#include "stress/moving_stress_run.h"
+
+#include "scene_compiler/scene_compiler.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <memory>
+#include <numbers>
+
+namespace mhd::stress {
+namespace {
+
+using Eigen::Vector3d;
+
+std::unique_ptr<CompiledScene> compile(SceneDescription d) {
+  CompileOptions options;
+  options.use_cache = false;
+  CompileResult r = compile_scene(d, options);
+  EXPECT_TRUE(r.ok());
+  return std::move(r.scene);
+}
+
+ObjectDescription object(const std::string& name, ShapeSource shape, const Vector3d& p_W_m) {
+  ObjectDescription o;
+  o.name = name;
+  o.shape = std::move(shape);
+  o.X_WO.translation() = p_W_m;
+  o.material.stiffness_N_per_m = 2000.0;
+  o.material.damping_Ns_per_m = 1.0;
+  o.material.static_friction = 0.2;
+  o.material.dynamic_friction = 0.15;
+  return o;
+}
+
+// A 150 mm, 0.6 kg box resting on a y-up floor (as scenes/pushable_box.xml): gravity acts.
+std::unique_ptr<CompiledScene> box_on_floor() {
+  SceneDescription d;
+  d.name = "pushed_stress_test";
+  ObjectDescription box = object("box", BoxSource{Vector3d::Constant(0.15)}, Vector3d(0.0, 0.075, -0.5));
+  box.dynamics = ObjectDynamics{0.6, 0.4};
+  d.objects.push_back(box);
+  ObjectDescription floor = object("floor", PlaneSource{6.0, 6.0}, Vector3d::Zero());
+  floor.X_WO.linear() = Eigen::AngleAxisd(-std::numbers::pi / 2, Vector3d::UnitX()).toRotationMatrix();
+  d.objects.push_back(floor);
+  return compile(d);
+}
+
+// A 120 mm cube alone, not pushable in its scene: it floats (no gravity), 1 kg.
+std::unique_ptr<CompiledScene> floating_cube() {
+  SceneDescription d;
+  d.name = "floating_cube_test";
+  d.objects.push_back(object("cube", BoxSource{Vector3d::Constant(0.12)}, Vector3d(0.0, 1.0, -0.5)));
+  return compile(d);
+}
+
+MovingStressSettings pushed_run() {
+  MovingStressSettings s;
+  s.mover = MoverKind::Pushed;
+  s.strokes = 200;
+  s.seed = 11;
+  s.chain_length = 4;
+  return s;
+}
+
+void expect_clean_moved_and_pushed(const MovingStressReport& r, std::size_t strokes) {
+  EXPECT_EQ(r.strokes, strokes);
+  EXPECT_EQ(r.crossing_ticks, 0U);
+  EXPECT_EQ(r.inside_ticks, 0U);
+  EXPECT_EQ(r.not_followed_ticks, 0U);
+  EXPECT_EQ(r.free_force_ticks, 0U);
+  EXPECT_TRUE(r.clean());
+  // ... and not vacuously: the strokes touched the body, pressed on it, and it moved.
+  EXPECT_GT(r.contact_ticks, r.ticks / 20);
+  EXPECT_GT(r.object_force_ticks, r.ticks / 20);
+  EXPECT_GT(r.ride_ticks, 0U);
+  EXPECT_GT(r.max_reached_speed_mps, 0.3);
+  EXPECT_GT(r.max_reached_rate_radps, 1.0);
+  EXPECT_GT(r.max_travel_m, 0.05);
+}
+
+TEST(PushedStress, ABoxPushedOnAFloorIsCleanAndMoves) {
+  const auto scene = box_on_floor();
+  ASSERT_TRUE(scene);
+  const MovingStressReport r = stress_moving_object(*scene, 0, name_key("pushed_stress_test/box"), pushed_run());
+  expect_clean_moved_and_pushed(r, 200);
+  EXPECT_EQ(r.chains_by_motion[static_cast<std::size_t>(MotionKind::Twist)], r.chains);  // thrown, never keyframed
+  EXPECT_GT(r.max_object_speed_mps, 0.49);  // full-speed throws were drawn
+}
+
+TEST(PushedStress, AFloatingCubeIsCleanAndMoves) {
+  const auto scene = floating_cube();
+  ASSERT_TRUE(scene);
+  const MovingStressReport r = stress_moving_object(*scene, 0, name_key("floating_cube_test/cube"), pushed_run());
+  expect_clean_moved_and_pushed(r, 200);
+}
+
+TEST(PushedStress, TheHandAloneMovesAnUnthrownBodyAndAStillObjectStaysPut) {
+  const auto scene = floating_cube();
+  ASSERT_TRUE(scene);
+  const std::uint64_t key = name_key("floating_cube_test/cube");
+  MovingStressSettings s = pushed_run();
+  s.strokes = 100;
+  s.motion.max_speed_mps = 0.0;  // no throws: only the proxy's force moves it
+  s.motion.max_rate_radps = 0.0;
+  const MovingStressReport pushed = stress_moving_object(*scene, 0, key, s);
+  EXPECT_TRUE(pushed.clean());
+  EXPECT_EQ(pushed.max_object_speed_mps, 0.0);
+  EXPECT_GT(pushed.max_reached_speed_mps, 0.1);
+  EXPECT_GT(pushed.max_travel_m, 0.02);
+  // The other half: the same strokes at a scripted object that does not move leave it put.
+  s.mover = MoverKind::Scripted;
+  const MovingStressReport still = stress_moving_object(*scene, 0, key, s);
+  EXPECT_TRUE(still.clean());
+  EXPECT_GT(still.contact_ticks, 0U);
+  EXPECT_EQ(still.max_reached_speed_mps, 0.0);
+  EXPECT_EQ(still.max_travel_m, 0.0);
+}
+
+TEST(PushedStress, BodiesMovedWithoutTheCarryAreCaught) {
+  for (const bool floating : {false, true}) {
+    SCOPED_TRACE(floating ? "floating cube" : "box on a floor");
+    const auto scene = floating ? floating_cube() : box_on_floor();
+    ASSERT_TRUE(scene);
+    const std::uint64_t key = name_key(floating ? "floating_cube_test/cube" : "pushed_stress_test/box");
+    MovingStressSettings s = pushed_run();
+    s.strokes = 60;
+    s.fault_skip_carry = true;
+    const MovingStressReport r = stress_moving_object(*scene, 0, key, s);
+    EXPECT_GT(r.crossing_ticks + r.inside_ticks, 0U);
+    EXPECT_FALSE(r.clean());
+    ASSERT_FALSE(r.failures.empty());
+    EXPECT_EQ(r.push_ticks, 0U);  // nothing carried the proxy
+
+    // The reproducer reruns the failing stroke's chain and fails at the same tick.
+    const MovingStrokeFailure& f = r.failures.front();
+    std::FILE* sink = std::tmpfile();
+    ASSERT_NE(sink, nullptr);
+    const MovingStressReport replay = replay_moving_stroke(*scene, 0, key, s, f.stroke, sink);
+    std::fclose(sink);
+    ASSERT_FALSE(replay.failures.empty());
+    EXPECT_EQ(replay.failures.back().stroke, f.stroke);
+    EXPECT_EQ(replay.failures.back().tick, f.tick);
+    EXPECT_EQ(replay.failures.back().p_W_hip, f.p_W_hip);
+  }
+}
+
+}  // namespace
+}  // namespace mhd::stress
