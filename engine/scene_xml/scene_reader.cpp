@@ -495,8 +495,8 @@ class SceneReader {
 
     if (shape == nullptr) {
       ctx.sink.error(e.GetLineNum(),
-                     concat(label, " has no shape (expected <mesh>, <plane>, <sphere>, <box> or "
-                                   "<cylinder>)"));
+                     concat(label, " has no shape (expected <mesh>, <plane>, <sphere>, <box>, "
+                                   "<cylinder> or <capsule>)"));
     }
     if (motion != nullptr) {
       object.motion = read_motion(*motion, ctx.sink, ctx.unit_to_m, object.X_WO, pose != nullptr);

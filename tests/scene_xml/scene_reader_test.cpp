@@ -329,7 +329,7 @@ TEST_F(SceneXmlReader, StringObjectStructureErrors) {
   <material name="m" stiffness_N_per_m="1"/>
   <object name="g">text<material stiffness_N_per_m="1"><sphere radius="1"/></material></object>
 </scene>)"),
-            (Lines{at(2, "object 'a' has no shape (expected <mesh>, <plane>, <sphere>, <box> or <cylinder>)"),
+            (Lines{at(2, "object 'a' has no shape (expected <mesh>, <plane>, <sphere>, <box>, <cylinder> or <capsule>)"),
                    at(3, "object 'b' has no material (set material=\"NAME\" or add an inline <material>)"),
                    at(4, "object 'c' has both material=\"m\" and an inline <material>"),
                    at(5, "missing required attribute 'name' on <object>"),
@@ -339,7 +339,7 @@ TEST_F(SceneXmlReader, StringObjectStructureErrors) {
                    at(9, "<scale> needs exactly one of 'value' or 'xyz'"),
                    at(11, "unexpected text in <object>"),
                    at(11, "unknown element <sphere> in <material>"),
-                   at(11, "object 'g' has no shape (expected <mesh>, <plane>, <sphere>, <box> or <cylinder>)")}));
+                   at(11, "object 'g' has no shape (expected <mesh>, <plane>, <sphere>, <box>, <cylinder> or <capsule>)")}));
 }
 
 TEST_F(SceneXmlReader, StringAttributeValueErrors) {
