@@ -1,5 +1,6 @@
 #include "collision/collision_world.h"
 
+#include "collision/exact_sweep.h"
 #include "collision/segment_triangle.h"
 
 #include <algorithm>
@@ -36,13 +37,80 @@ bool is_ignored(std::span<const TriangleRef> ignore, int object, std::uint32_t t
                      [&](const TriangleRef& t) { return t.object == object && t.triangle == triangle; });
 }
 
+// A name for a world's shapes, unique to the process.
+std::uint64_t next_geometry_id() {
+  static std::atomic<std::uint64_t> last_id{0};
+  return ++last_id;
+}
+
 }  // namespace
 
 int CollisionWorld::add_object(std::shared_ptr<const MeshBvh> shape, const Pose& X_WO) {
-  objects_.push_back(Object{std::move(shape), X_WO, X_WO.inverse(Eigen::Isometry), nullptr});
-  static std::atomic<std::uint64_t> last_id{0};
-  geometry_id_ = ++last_id;
+  objects_.push_back(Object{std::move(shape), std::nullopt, X_WO, X_WO.inverse(Eigen::Isometry), nullptr});
+  geometry_id_ = next_geometry_id();
   return static_cast<int>(objects_.size()) - 1;
+}
+
+void CollisionWorld::set_exact_shape(int object, const ExactShape& shape) {
+  auto& o = objects_.at(static_cast<std::size_t>(object));
+  const auto positive = [](double v) { return v > 0.0 && std::isfinite(v); };
+  bool ok = true;
+  switch (shape.kind) {
+    case ExactKind::Sphere: ok = positive(shape.radius_m); break;
+    case ExactKind::Capsule:
+    case ExactKind::Cylinder: ok = positive(shape.radius_m) && positive(shape.half_height_m); break;
+    case ExactKind::Box: ok = positive(shape.half_extents_m.minCoeff()) && shape.half_extents_m.allFinite(); break;
+    case ExactKind::HalfSpace: break;
+  }
+  if (!ok) throw std::invalid_argument("CollisionWorld::set_exact_shape: sizes must be positive and finite");
+  o.exact = shape;
+  // Candidate lists gathered before hold this object's triangles, which are no longer swept.
+  geometry_id_ = next_geometry_id();
+}
+
+const ExactShape* CollisionWorld::exact_shape(int object) const {
+  const auto& o = objects_.at(static_cast<std::size_t>(object));
+  return o.exact ? &*o.exact : nullptr;
+}
+
+std::optional<SweepHit> CollisionWorld::support_plane(int object, const Eigen::Vector3d& p_W) const {
+  const Object& o = objects_.at(static_cast<std::size_t>(object));
+  if (!o.exact) return std::nullopt;
+  const auto contact = exact_nearest_surface(*o.exact, o.X_OW * p_W);
+  if (!contact) return std::nullopt;
+  SweepHit h;
+  h.where = TriangleRef{object, kExactSurface};
+  h.normal_W = o.X_WO.linear() * contact->normal_O;
+  h.plane_offset_m = h.normal_W.dot(o.X_WO * contact->point_O);
+  return h;
+}
+
+std::optional<SweepHit> CollisionWorld::sweep_exact(int only_object, const Eigen::Vector3d& a_W,
+                                                    const Eigen::Vector3d& b_W, double skin_m,
+                                                    std::span<const TriangleRef> ignore, SweepWork* work) const {
+  std::optional<SweepHit> best;
+  for (std::size_t oi = 0; oi < objects_.size(); ++oi) {
+    const Object& o = objects_[oi];
+    const int object = static_cast<int>(oi);
+    if (!o.exact || (only_object >= 0 && object != only_object)) continue;
+    if (is_ignored(ignore, object, kExactSurface)) continue;
+    if (work != nullptr) {
+      if (work->triangle_tests >= work->max_triangle_tests) {
+        work->exhausted = true;
+        return std::nullopt;
+      }
+      ++work->triangle_tests;  // a primitive costs about what a triangle does
+    }
+    const auto hit = sweep_point_exact(*o.exact, o.X_OW * a_W, o.X_OW * b_W, skin_m);
+    if (!hit || (best && !(hit->t_stop < best->t_stop))) continue;  // ties: the lower index
+    SweepHit h;
+    h.where = TriangleRef{object, kExactSurface};
+    h.t_stop = hit->t_stop;
+    h.normal_W = o.X_WO.linear() * hit->contact.normal_O;
+    h.plane_offset_m = h.normal_W.dot(o.X_WO * hit->contact.point_O);
+    best = h;
+  }
+  return best;
 }
 
 void CollisionWorld::set_pose(int object, const Pose& X_WO) {
@@ -70,6 +138,13 @@ std::optional<SweepHit> CollisionWorld::sweep_among(int only_object, const Eigen
                                                     std::span<const TriangleRef> ignore, SweepWork* work,
                                                     SweepCandidates* near) const {
   if (near != nullptr) near->bind(geometry_id_);
+  // Exact shapes over the whole segment, triangles piece by piece; the earlier hit wins.
+  const std::optional<SweepHit> exact = sweep_exact(only_object, a_W, b_W, skin_m, ignore, work);
+  if (work != nullptr && work->exhausted) return std::nullopt;
+  const auto earliest = [&](std::optional<SweepHit> mesh) {
+    if (!exact || (mesh && mesh->t_stop < exact->t_stop)) return mesh;
+    return exact;
+  };
   // Bit (index mod 64) of every ignored triangle: a triangle whose bit is clear is not in
   // `ignore`, which the test then need not scan (the proxy's list holds up to 16).
   std::uint64_t ignored_bits = 0;
@@ -86,6 +161,7 @@ std::optional<SweepHit> CollisionWorld::sweep_among(int only_object, const Eigen
   for (std::size_t oi = 0; oi < objects_.size(); ++oi) {
     if (only_object >= 0 && static_cast<int>(oi) != only_object) continue;
     const Object& o = objects_[oi];
+    if (o.exact) continue;  // swept above
     const Eigen::Vector3d a_O = o.X_OW * piece_a_W;
     const Eigen::Vector3d b_O = o.X_OW * piece_b_W;
     const Eigen::Vector3d margin = Eigen::Vector3d::Constant(margin_m);
@@ -150,7 +226,7 @@ std::optional<SweepHit> CollisionWorld::sweep_among(int only_object, const Eigen
   // first: each box stays small, and the first piece that hits holds the first hit.
   const Eigen::Vector3d ab = b_W - a_W;
   const double length = ab.norm();
-  if (!(length > kFirstPiece_m)) return sweep_piece(a_W, b_W);
+  if (!(length > kFirstPiece_m)) return earliest(sweep_piece(a_W, b_W));
   double s = 0.0;
   double piece = kFirstPiece_m;
   while (s < length) {
@@ -161,16 +237,21 @@ std::optional<SweepHit> CollisionWorld::sweep_among(int only_object, const Eigen
     if (work != nullptr && work->exhausted) return std::nullopt;
     if (hit) {
       hit->t_stop = (s + hit->t_stop * (e - s)) / length;
-      return hit;
+      return earliest(hit);
     }
+    if (exact && exact->t_stop * length <= e) return exact;  // no triangle before it
     s = e;
     piece *= 2.0;
   }
-  return std::nullopt;
+  return exact;
 }
 
 std::optional<SweepHit> CollisionWorld::sweep_triangle(const TriangleRef& ref, const Eigen::Vector3d& a_W,
                                                        const Eigen::Vector3d& b_W, double skin_m) const {
+  if (ref.triangle == kExactSurface) {
+    if (exact_shape(ref.object) == nullptr) return std::nullopt;
+    return sweep_exact(ref.object, a_W, b_W, skin_m, {}, nullptr);
+  }
   const Object& o = objects_.at(static_cast<std::size_t>(ref.object));
   const TriangleMesh& mesh = o.shape->mesh();
   const TriangleIndices& t = mesh.triangles.at(ref.triangle);
@@ -195,6 +276,7 @@ std::array<Eigen::Vector3d, 3> CollisionWorld::triangle_W(const TriangleRef& ref
 
 bool CollisionWorld::projects_onto_triangle(const TriangleRef& ref, const Eigen::Vector3d& p_W,
                                             double margin_m) const {
+  if (ref.triangle == kExactSurface) return support_plane(ref.object, p_W).has_value();
   const auto v = triangle_W(ref);
   const Eigen::Vector3d n = (v[1] - v[0]).cross(v[2] - v[0]);
   if (!(n.squaredNorm() > 0.0)) return false;
@@ -207,6 +289,7 @@ bool CollisionWorld::projects_onto_triangle(const TriangleRef& ref, const Eigen:
 }
 
 Eigen::Vector3d CollisionWorld::face_normal_W(const TriangleRef& ref) const {
+  if (ref.triangle == kExactSurface) return Eigen::Vector3d::Zero();
   const auto v = triangle_W(ref);
   const Eigen::Vector3d n = (v[1] - v[0]).cross(v[2] - v[0]);
   const double len = n.norm();
@@ -222,6 +305,10 @@ void CollisionWorld::set_shading_normals(int object, std::shared_ptr<const Shadi
 }
 
 Eigen::Vector3d CollisionWorld::shaded_normal_W(const TriangleRef& ref, const Eigen::Vector3d& p_W) const {
+  if (ref.triangle == kExactSurface) {
+    const auto plane = support_plane(ref.object, p_W);
+    return plane ? plane->normal_W : Eigen::Vector3d::Zero();
+  }
   const Object& o = objects_.at(static_cast<std::size_t>(ref.object));
   const TriangleMesh& mesh = o.shape->mesh();
   if (o.shading) {

@@ -5,6 +5,7 @@
 
 #include "collision/mesh_bvh.h"
 #include "collision/sweep_candidates.h"
+#include "geometry/exact_shape.h"
 #include "geometry/pose.h"
 #include "geometry/shading_normals.h"
 
@@ -17,7 +18,10 @@
 
 namespace mhd {
 
-/// One triangle of one object.
+/// The `triangle` of a TriangleRef that names an object's exact shape, not a triangle.
+inline constexpr std::uint32_t kExactSurface = std::numeric_limits<std::uint32_t>::max();
+
+/// One triangle of one object (or, with kExactSurface, the object's exact shape).
 struct TriangleRef {
   int object = -1;
   std::uint32_t triangle = 0;
@@ -50,6 +54,20 @@ class CollisionWorld {
   /// Adds an object; returns its index (0, 1, ...).
   int add_object(std::shared_ptr<const MeshBvh> shape, const Pose& X_WO);
 
+  /// Makes the object an exact primitive (docs/proxy.md, "Exact primitives"): from now on
+  /// the sweeps test `shape`, placed by the object's pose, instead of its mesh's triangles
+  /// (the mesh stays, for display and for the rigid-body hull), and report its hits as
+  /// TriangleRef{object, kExactSurface}. Throws std::out_of_range for an object this world
+  /// does not have, std::invalid_argument for a size that is not positive and finite.
+  void set_exact_shape(int object, const ExactShape& shape);
+  /// The object's exact shape, or null where its triangles are swept.
+  [[nodiscard]] const ExactShape* exact_shape(int object) const;
+  /// For an exact object and a point outside it: the plane tangent to its surface at the
+  /// point nearest p_W, as a hit (where = its kExactSurface ref, t_stop 0, normal_W outward,
+  /// plane_offset_m through the surface point). The shape lies wholly behind that plane.
+  /// nullopt for a point inside, or an object that is not exact.
+  [[nodiscard]] std::optional<SweepHit> support_plane(int object, const Eigen::Vector3d& p_W) const;
+
   /// Moves an object. Never rebuilds its BVH.
   void set_pose(int object, const Pose& X_WO);
 
@@ -80,16 +98,17 @@ class CollisionWorld {
   [[nodiscard]] std::optional<SweepHit> sweep_object(int object, const Eigen::Vector3d& a_W,
                                                      const Eigen::Vector3d& b_W, double skin_m) const;
 
-  /// sweep() against the one triangle `t` (nothing else is tested, the segment is not cut
+  /// sweep() against the one triangle `t` (or exact shape; nothing else is tested, the segment is not cut
   /// into pieces): whether, and where, the segment a_W -> b_W meets it.
   [[nodiscard]] std::optional<SweepHit> sweep_triangle(const TriangleRef& t, const Eigen::Vector3d& a_W,
                                                        const Eigen::Vector3d& b_W, double skin_m) const;
 
   /// True if p_W's projection onto the triangle's plane lies inside the triangle grown
-  /// by margin_m on every edge (the proxy is "over" this triangle).
+  /// by margin_m on every edge (the proxy is "over" this triangle). For an exact shape's
+  /// ref: true when p_W is outside the shape (a tangent plane lies below it, support_plane()).
   [[nodiscard]] bool projects_onto_triangle(const TriangleRef& t, const Eigen::Vector3d& p_W, double margin_m) const;
 
-  /// Triangle corners in the world frame.
+  /// Triangle corners in the world frame. Throws std::out_of_range for an exact shape's ref.
   [[nodiscard]] std::array<Eigen::Vector3d, 3> triangle_W(const TriangleRef& t) const;
 
   /// Gives an object the normals force shading interpolates (set when the scene is
@@ -102,7 +121,8 @@ class CollisionWorld {
   }
 
   /// Unit geometric normal (CCW winding) in the world frame, and the force-shading
-  /// normal interpolated at the point closest to p_W: from the object's shading normals
+  /// normal interpolated at the point closest to p_W (for an exact shape's ref: zero, and
+  /// the outward normal at the surface point nearest p_W): from the object's shading normals
   /// (crease-aware, per corner) where it has them, else from the mesh's vertex normals.
   [[nodiscard]] Eigen::Vector3d face_normal_W(const TriangleRef& t) const;
   [[nodiscard]] Eigen::Vector3d shaded_normal_W(const TriangleRef& t, const Eigen::Vector3d& p_W) const;
@@ -114,8 +134,14 @@ class CollisionWorld {
                                                     std::span<const TriangleRef> ignore, SweepWork* work,
                                                     SweepCandidates* near) const;
 
+  // The earliest hit of a -> b on the exact shapes (all, or only_object's).
+  [[nodiscard]] std::optional<SweepHit> sweep_exact(int only_object, const Eigen::Vector3d& a_W,
+                                                    const Eigen::Vector3d& b_W, double skin_m,
+                                                    std::span<const TriangleRef> ignore, SweepWork* work) const;
+
   struct Object {
     std::shared_ptr<const MeshBvh> shape;
+    std::optional<ExactShape> exact;
     Pose X_WO;
     Pose X_OW;
     std::shared_ptr<const ShadingNormals> shading;

@@ -1,5 +1,7 @@
 #include "collision/point_containment.h"
 
+#include "collision/exact_sweep.h"
+
 #include <array>
 #include <cmath>
 
@@ -21,8 +23,23 @@ bool point_inside_surface(const CollisionWorld& world, const Eigen::Vector3d& p_
   // the side on which the proxy waits instead of starting inside an object.
   constexpr double kMinCosine = 0.05;
   constexpr double kEdgeClearance_m = 1e-7;
+  // Exact primitives are solids with a signed distance; the rays below pass them.
+  constexpr std::size_t kMaxExactPassed = 16;
+  for (int i = 0; i < world.object_count(); ++i) {
+    const ExactShape* shape = world.exact_shape(i);
+    if (shape != nullptr && exact_signed_distance(*shape, world.pose(i).inverse(Eigen::Isometry) * p_W) < 0.0) {
+      return true;
+    }
+  }
   for (const Eigen::Vector3d& d : kDirections) {
-    const auto hit = world.sweep(p_W, p_W + kRayLength_m * d, kSkin_m);
+    std::array<TriangleRef, kMaxExactPassed> passed{};
+    std::size_t n_passed = 0;
+    auto hit = world.sweep(p_W, p_W + kRayLength_m * d, kSkin_m);
+    while (hit && hit->where.triangle == kExactSurface) {
+      if (n_passed == kMaxExactPassed) return true;  // the conservative side, as below
+      passed[n_passed++] = hit->where;
+      hit = world.sweep(p_W, p_W + kRayLength_m * d, kSkin_m, std::span<const TriangleRef>(passed.data(), n_passed));
+    }
     if (!hit) return false;
     const Eigen::Vector3d n = world.face_normal_W(hit->where);
     const double cosine = n.dot(d);

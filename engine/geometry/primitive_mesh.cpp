@@ -128,6 +128,17 @@ TriangleMesh make_sphere_mesh(double radius_m, int subdivisions) {
   return mesh;
 }
 
+TriangleMesh make_capsule_mesh(double radius_m, double length_m, int rings, int segments) {
+  require(positive_finite(length_m), "make_capsule_mesh: length must be positive and finite");
+  require(rings >= 1, "make_capsule_mesh: rings must be at least 1");
+  // An odd number of bands puts no vertex on the equator: the band across it becomes the
+  // cylinder once the two halves move apart.
+  TriangleMesh mesh = make_uv_sphere_mesh(radius_m, 2 * rings + 1, segments);
+  for (Eigen::Vector3d& v : mesh.vertices_m) v.z() += v.z() > 0.0 ? 0.5 * length_m : -0.5 * length_m;
+  compute_vertex_normals(mesh);
+  return mesh;
+}
+
 TriangleMesh make_uv_sphere_mesh(double radius_m, int rings, int segments) {
   require(positive_finite(radius_m), "make_uv_sphere_mesh: radius must be positive and finite");
   require(rings >= 2, "make_uv_sphere_mesh: rings must be at least 2");

@@ -20,6 +20,12 @@ namespace mhd {
 /// (2 * segments * (rings - 1) triangles); used for large benchmark spheres.
 [[nodiscard]] TriangleMesh make_uv_sphere_mesh(double radius_m, int rings, int segments);
 
+/// Capsule along z, centred on the origin: a cylinder of `length_m` between the centres of
+/// two hemispherical caps of `radius_m`, tessellated as a UV sphere of 2 * rings + 1
+/// latitude bands split at its equator (every vertex on the true surface).
+[[nodiscard]] TriangleMesh make_capsule_mesh(double radius_m, double length_m, int rings, int segments);
+/// The latitude bands per cap that a capsule of `segments` round its axis is drawn with.
+[[nodiscard]] constexpr int capsule_rings(int segments) { return segments / 4 > 1 ? segments / 4 : 1; }
 /// Capped cylinder along z, centred on the origin.
 [[nodiscard]] TriangleMesh make_cylinder_mesh(double radius_m, double height_m, int segments);
 

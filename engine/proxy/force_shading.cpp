@@ -43,6 +43,10 @@ bool hip_hidden_by_contact(const CollisionWorld& world, const ProxyState& state,
                            const Eigen::Vector3d& p_W_hip) {
   for (int i = 0; i < state.plane_count; ++i) {
     const TriangleRef& t = state.planes[static_cast<std::size_t>(i)].triangle;
+    if (t.triangle == kExactSurface) {  // hidden when the HIP is inside the solid
+      if (!world.support_plane(t.object, p_W_hip)) return true;
+      continue;
+    }
     const auto v = world.triangle_W(t);
     const Eigen::Vector3d n = (v[1] - v[0]).cross(v[2] - v[0]);
     const double from = n.dot(p_W - v[0]);

@@ -57,6 +57,7 @@ constexpr double kGrazeMarginPerSkin = 1e-6;
 // proxy against nothing.
 bool only_grazes(const CollisionWorld& world, const TriangleRef& t, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                  double skin_m) {
+  if (t.triangle == kExactSurface) return false;  // an exact shape has no inflated band
   const auto v = world.triangle_W(t);
   return !sweep_point_triangle(a, b, v[0], v[1], v[2], skin_m, kGrazeMarginPerSkin * skin_m).has_value();
 }
@@ -179,6 +180,15 @@ bool drop_farthest_inactive_plane(Motion& m, double skin_m) {
 // Records a surface the proxy ran into. Returns false when the store is full of planes
 // that all hold the proxy, which ends the motion with the proxy where it is.
 bool add_constraint(Motion& m, const SweepHit& hit, double skin_m) {
+  if (hit.where.triangle == kExactSurface) {
+    // One plane per exact shape: met again, its tangent plane is the newer one.
+    for (int i = 0; i < m.plane_count; ++i) {
+      if (m.plane_triangles[at(i)] == hit.where) {
+        m.planes[at(i)] = HalfSpace{hit.normal_W, hit.plane_offset_m + skin_m};
+        return true;
+      }
+    }
+  }
   if (m.ignored_count == kMaxIgnored && !drop_farthest_inactive_plane(m, skin_m)) return false;
   const double offset = hit.plane_offset_m + skin_m;
   int plane = -1;
@@ -199,6 +209,31 @@ bool add_constraint(Motion& m, const SweepHit& hit, double skin_m) {
   m.ignored_refs[at(m.ignored_count)] = hit.where;
   ++m.ignored_count;
   return true;
+}
+
+// Turns each exact shape's plane to the shape's tangent plane at the surface point
+// nearest the proxy (Salisbury-Tarr): a convex shape lies wholly behind every tangent
+// plane, so the new plane keeps every move inside it off the shape as the old one did,
+// and projecting the goal onto it walks the proxy round the curved surface. A proxy
+// inside a shape (a moving one has engulfed it) loses the plane: a solid lets it out.
+// Returns true if the set has an exact shape's plane.
+bool turn_exact_planes(const CollisionWorld& world, Motion& m, double skin_m) {
+  bool any = false;
+  for (int i = 0; i < m.plane_count;) {
+    const TriangleRef& t = m.plane_triangles[at(i)];
+    if (t.triangle != kExactSurface) {
+      ++i;
+      continue;
+    }
+    if (const auto tangent = world.support_plane(t.object, m.p)) {
+      m.planes[at(i)] = HalfSpace{tangent->normal_W, tangent->plane_offset_m + skin_m};
+      any = true;
+      ++i;
+    } else {
+      drop_plane(m, i);
+    }
+  }
+  return any;
 }
 
 // True when the only plane's triangle (or a twin) lies straight under the proxy: the
@@ -337,6 +372,7 @@ void solve_motion(const CollisionWorld& world, double skin_m, const Eigen::Vecto
       last_look();
       return;
     }
+    const bool on_exact = turn_exact_planes(world, m, skin_m);
     const auto target = project_onto_half_spaces(goal, std::span<const HalfSpace>(m.planes.data(), at(m.plane_count)),
                                                  kFeasibleTolerancePerSkin * skin_m);
     if (!target) {  // numerically empty (e.g. both sides of a thin fin): stay, crossing-free
@@ -353,6 +389,9 @@ void solve_motion(const CollisionWorld& world, double skin_m, const Eigen::Vecto
         }
         continue;
       }
+      // A move on an exact shape's tangent plane leaves the curved surface: turn the
+      // plane and project again, until the projection no longer moves the proxy.
+      if (on_exact) continue;
     }
     // Off a triangle past a convex edge, whether this step moved or an earlier one did.
     if (release_passed_constraints(world, m, skin_m)) continue;

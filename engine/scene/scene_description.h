@@ -29,12 +29,17 @@ struct MeshSource {
   Eigen::Vector3d scale_to_m = Eigen::Vector3d::Ones();
 };
 
-struct PlaneSource { double size_x_m = 0, size_y_m = 0; };
-struct SphereSource { double radius_m = 0; int subdivisions = 4; };
-struct BoxSource { Eigen::Vector3d size_m = Eigen::Vector3d::Zero(); };
-struct CylinderSource { double radius_m = 0, height_m = 0; int segments = 64; };
+// `exact`: the proxy touches the shape itself, not its tessellation (docs/proxy.md, "Exact
+// primitives"); the tessellation stays for display. An exact plane is the infinite
+// half-space below it (z <= 0 in the object's frame), its size only what is drawn.
+struct PlaneSource { double size_x_m = 0, size_y_m = 0; bool exact = false; };
+struct SphereSource { double radius_m = 0; int subdivisions = 4; bool exact = false; };
+struct BoxSource { Eigen::Vector3d size_m = Eigen::Vector3d::Zero(); bool exact = false; };
+struct CylinderSource { double radius_m = 0, height_m = 0; int segments = 64; bool exact = false; };
+/// Along z: `length_m` of cylinder between the centres of its two hemispherical caps.
+struct CapsuleSource { double radius_m = 0, length_m = 0; int segments = 32; bool exact = true; };
 
-using ShapeSource = std::variant<MeshSource, PlaneSource, SphereSource, BoxSource, CylinderSource>;
+using ShapeSource = std::variant<MeshSource, PlaneSource, SphereSource, BoxSource, CylinderSource, CapsuleSource>;
 
 struct ObjectDescription {
   std::string name;

@@ -4,6 +4,7 @@
 #include "geometry/primitive_mesh.h"
 #include "geometry/shading_normals.h"
 #include "mesh_io/mesh_cache.h"
+#include "scene_compiler/exact_primitive.h"
 #include "scene_compiler/texture_compiler.h"
 
 #include <fmt/format.h>
@@ -126,6 +127,7 @@ class Compiler {
     scene->dynamics.reserve(objects.size());
     for (std::size_t i = 0; i < objects.size(); ++i) {
       const int id = scene->world.add_object(shapes[i], objects[i].X_WO);
+      if (const auto exact = exact_shape_of(objects[i].shape)) scene->world.set_exact_shape(id, *exact);
       if (objects[i].material.force_shading) {
         scene->world.set_shading_normals(id, shading_normals_for(shapes[i], objects[i].material));
       }
@@ -227,6 +229,19 @@ class Compiler {
               }
               return primitive(object, fmt::format("box {:a} {:a} {:a}", s.size_m.x(), s.size_m.y(), s.size_m.z()),
                                [&] { return make_box_mesh(s.size_m); });
+            },
+            [&](const CapsuleSource& s) -> const SharedShape& {
+              if (!positive_finite(s.radius_m) || !positive_finite(s.length_m)) {
+                return invalid(fmt::format("capsule radius and length must be positive and finite (got {} m, {} m)",
+                                           s.radius_m, s.length_m));
+              }
+              if (s.segments < 3 || s.segments > kMaxCylinderSegments) {
+                return invalid(
+                    fmt::format("capsule segments must be 3..{} (got {})", kMaxCylinderSegments, s.segments));
+              }
+              return primitive(object, fmt::format("capsule {:a} {:a} {}", s.radius_m, s.length_m, s.segments), [&] {
+                return make_capsule_mesh(s.radius_m, s.length_m, capsule_rings(s.segments), s.segments);
+              });
             },
             [&](const CylinderSource& s) -> const SharedShape& {
               if (!positive_finite(s.radius_m) || !positive_finite(s.height_m)) {

@@ -49,7 +49,7 @@ constexpr int kMaxMaxTriangles = 1'000'000'000;
 /// Includes below the root file, at most (docs/scene-format.md).
 constexpr std::size_t kMaxIncludeDepth = 64;
 constexpr double kMaxScaleToM = 1e6;
-constexpr std::array<std::string_view, 5> kShapes = {"mesh", "plane", "sphere", "box", "cylinder"};
+constexpr std::array<std::string_view, 6> kShapes = {"mesh", "plane", "sphere", "box", "cylinder", "capsule"};
 
 bool is_shape(std::string_view name) {
   for (const std::string_view s : kShapes) {
@@ -495,8 +495,8 @@ class SceneReader {
 
     if (shape == nullptr) {
       ctx.sink.error(e.GetLineNum(),
-                     concat(label, " has no shape (expected <mesh>, <plane>, <sphere>, <box> or "
-                                   "<cylinder>)"));
+                     concat(label, " has no shape (expected <mesh>, <plane>, <sphere>, <box>, "
+                                   "<cylinder> or <capsule>)"));
     }
     if (motion != nullptr) {
       object.motion = read_motion(*motion, ctx.sink, ctx.unit_to_m, object.X_WO, pose != nullptr);
@@ -588,8 +588,9 @@ class SceneReader {
       return value_m;
     };
     if (name == "plane") {
-      AttributeParser a(e, ctx.sink, {"size"});
+      AttributeParser a(e, ctx.sink, {"size", "exact"});
       PlaneSource plane;
+      plane.exact = a.boolean("exact", Presence::Optional).value_or(plane.exact);
       if (const auto size = a.numbers("size", Presence::Required, 2, Bound::Positive)) {
         plane.size_x_m = extent(a, "size", (*size)[0] * u);
         plane.size_y_m = extent(a, "size", (*size)[1] * u);
@@ -597,23 +598,35 @@ class SceneReader {
       return plane;
     }
     if (name == "sphere") {
-      AttributeParser a(e, ctx.sink, {"radius", "subdivisions"});
+      AttributeParser a(e, ctx.sink, {"radius", "subdivisions", "exact"});
       SphereSource sphere;
+      sphere.exact = a.boolean("exact", Presence::Optional).value_or(sphere.exact);
       sphere.radius_m = extent(a, "radius", a.number("radius", Presence::Required, Bound::Positive).value_or(0.0) * u);
       sphere.subdivisions =
           a.integer("subdivisions", Presence::Optional, 0, 7).value_or(sphere.subdivisions);
       return sphere;
     }
     if (name == "box") {
-      AttributeParser a(e, ctx.sink, {"size"});
+      AttributeParser a(e, ctx.sink, {"size", "exact"});
       BoxSource box;
+      box.exact = a.boolean("exact", Presence::Optional).value_or(box.exact);
       box.size_m = a.vector3("size", Presence::Required, Bound::Positive)
                        .value_or(Eigen::Vector3d::Zero()) * u;
       for (int i = 0; i < 3; ++i) (void)extent(a, "size", box.size_m[i]);
       return box;
     }
-    AttributeParser a(e, ctx.sink, {"radius", "height", "segments"});  // cylinder
+    if (name == "capsule") {
+      AttributeParser a(e, ctx.sink, {"radius", "length", "segments", "exact"});
+      CapsuleSource capsule;
+      capsule.radius_m = extent(a, "radius", a.number("radius", Presence::Required, Bound::Positive).value_or(0.0) * u);
+      capsule.length_m = extent(a, "length", a.number("length", Presence::Required, Bound::Positive).value_or(0.0) * u);
+      capsule.segments = a.integer("segments", Presence::Optional, 3, 4096).value_or(capsule.segments);
+      capsule.exact = a.boolean("exact", Presence::Optional).value_or(capsule.exact);
+      return capsule;
+    }
+    AttributeParser a(e, ctx.sink, {"radius", "height", "segments", "exact"});  // cylinder
     CylinderSource cylinder;
+    cylinder.exact = a.boolean("exact", Presence::Optional).value_or(cylinder.exact);
     cylinder.radius_m = extent(a, "radius", a.number("radius", Presence::Required, Bound::Positive).value_or(0.0) * u);
     cylinder.height_m = extent(a, "height", a.number("height", Presence::Required, Bound::Positive).value_or(0.0) * u);
     cylinder.segments = a.integer("segments", Presence::Optional, 3, 4096).value_or(cylinder.segments);

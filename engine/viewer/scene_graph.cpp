@@ -39,6 +39,8 @@ std::optional<TriangleMesh> shape_mesh(const ShapeSource& shape, std::string& er
           return make_sphere_mesh(s.radius_m, s.subdivisions);
         } else if constexpr (std::is_same_v<S, BoxSource>) {
           return make_box_mesh(s.size_m);
+        } else if constexpr (std::is_same_v<S, CapsuleSource>) {
+          return make_capsule_mesh(s.radius_m, s.length_m, capsule_rings(s.segments), s.segments);
         } else {
           return make_cylinder_mesh(s.radius_m, s.height_m, s.segments);
         }

@@ -274,3 +274,63 @@ TEST_F(SceneCompilerTest, LargeShapesReportProgress) {
 
 }  // namespace
 }  // namespace mhd
+
+namespace mhd {
+namespace {
+
+TEST(SceneCompilerExact, AnExactPrimitiveGetsItsShapeAndATessellatedOneDoesNot) {
+  SceneDescription d;
+  d.name = "exact";
+  d.file = "scene.xml";
+  const auto object = [&](const std::string& name, ShapeSource shape) {
+    ObjectDescription o;
+    o.name = name;
+    o.shape = std::move(shape);
+    o.X_WO = Pose::Identity();
+    d.objects.push_back(std::move(o));
+  };
+  object("floor", PlaneSource{2.0, 1.0, true});
+  object("ball", SphereSource{0.05, 2, true});
+  object("faceted", SphereSource{0.05, 2, false});
+  object("brick", BoxSource{Eigen::Vector3d(0.1, 0.2, 0.3), true});
+  object("can", CylinderSource{0.03, 0.1, 24, true});
+  object("rod", CapsuleSource{0.02, 0.1, 16, true});
+  CompileOptions options;
+  const CompileResult r = compile_scene(d, options);
+  ASSERT_TRUE(r.ok()) << (r.diagnostics.empty() ? "" : r.diagnostics.front().to_string());
+  const CollisionWorld& w = r.scene->world;
+  ASSERT_NE(w.exact_shape(0), nullptr);
+  EXPECT_EQ(w.exact_shape(0)->kind, ExactKind::HalfSpace);
+  ASSERT_NE(w.exact_shape(1), nullptr);
+  EXPECT_EQ(w.exact_shape(1)->radius_m, 0.05);
+  EXPECT_EQ(w.exact_shape(2), nullptr);
+  ASSERT_NE(w.exact_shape(3), nullptr);
+  EXPECT_EQ(w.exact_shape(3)->half_extents_m, Eigen::Vector3d(0.05, 0.1, 0.15));
+  ASSERT_NE(w.exact_shape(4), nullptr);
+  EXPECT_EQ(w.exact_shape(4)->half_height_m, 0.05);
+  ASSERT_NE(w.exact_shape(5), nullptr);
+  EXPECT_EQ(w.exact_shape(5)->kind, ExactKind::Capsule);
+  EXPECT_EQ(w.exact_shape(5)->half_height_m, 0.05);
+  // Every vertex of the capsule's tessellation lies on the exact capsule.
+  for (const Eigen::Vector3d& v : w.shape(5).mesh().vertices_m) {
+    const double z = std::max(std::abs(v.z()) - 0.05, 0.0);
+    EXPECT_NEAR(std::hypot(v.x(), v.y(), z), 0.02, 1e-12);
+  }
+}
+
+TEST(SceneCompilerExact, ACapsuleWithABadSizeIsRefused) {
+  SceneDescription d;
+  d.name = "bad";
+  d.file = "scene.xml";
+  ObjectDescription o;
+  o.name = "rod";
+  o.shape = CapsuleSource{0.02, -0.1, 16, true};
+  d.objects.push_back(o);
+  CompileOptions options;
+  EXPECT_FALSE(compile_scene(d, options).ok());
+  std::get<CapsuleSource>(d.objects[0].shape).length_m = 0.1;
+  EXPECT_TRUE(compile_scene(d, options).ok());
+}
+
+}  // namespace
+}  // namespace mhd

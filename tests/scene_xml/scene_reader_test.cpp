@@ -329,7 +329,7 @@ TEST_F(SceneXmlReader, StringObjectStructureErrors) {
   <material name="m" stiffness_N_per_m="1"/>
   <object name="g">text<material stiffness_N_per_m="1"><sphere radius="1"/></material></object>
 </scene>)"),
-            (Lines{at(2, "object 'a' has no shape (expected <mesh>, <plane>, <sphere>, <box> or <cylinder>)"),
+            (Lines{at(2, "object 'a' has no shape (expected <mesh>, <plane>, <sphere>, <box>, <cylinder> or <capsule>)"),
                    at(3, "object 'b' has no material (set material=\"NAME\" or add an inline <material>)"),
                    at(4, "object 'c' has both material=\"m\" and an inline <material>"),
                    at(5, "missing required attribute 'name' on <object>"),
@@ -339,7 +339,7 @@ TEST_F(SceneXmlReader, StringObjectStructureErrors) {
                    at(9, "<scale> needs exactly one of 'value' or 'xyz'"),
                    at(11, "unexpected text in <object>"),
                    at(11, "unknown element <sphere> in <material>"),
-                   at(11, "object 'g' has no shape (expected <mesh>, <plane>, <sphere>, <box> or <cylinder>)")}));
+                   at(11, "object 'g' has no shape (expected <mesh>, <plane>, <sphere>, <box>, <cylinder> or <capsule>)")}));
 }
 
 TEST_F(SceneXmlReader, StringAttributeValueErrors) {
@@ -474,6 +474,49 @@ TEST_F(SceneXmlReader, MissingRootFile) {
   const SceneReadResult dir = read_scene_file("tests/data/scenes");
   EXPECT_EQ(to_strings(dir.diagnostics),
             (Lines{"tests/data/scenes: error: scene file is not a regular file"}));
+}
+
+}  // namespace
+}  // namespace mhd
+
+namespace mhd {
+namespace {
+
+// --- exact primitives ------------------------------------------------------------------
+
+TEST(SceneXmlExactPrimitives, ExactIsReadOnEveryPrimitiveAndTheCapsuleIsExactByDefault) {
+  const SceneReadResult r = read_scene_string(R"(<scene version="1" unit="mm"><material name="m" stiffness_N_per_m="1000"/>
+  <object material="m" name="p"><plane size="100 200" exact="true"/></object>
+  <object material="m" name="s"><sphere radius="10" exact="true"/></object>
+  <object material="m" name="s2"><sphere radius="10"/></object>
+  <object material="m" name="b"><box size="1 2 3" exact="false"/></object>
+  <object material="m" name="c"><cylinder radius="5" height="8" exact="true"/></object>
+  <object material="m" name="k"><capsule radius="5" length="40" segments="16"/></object>
+  <object material="m" name="k2"><capsule radius="5" length="40" exact="false"/></object></scene>)", "x.xml");
+  ASSERT_TRUE(r.ok()) << test::to_strings(r.diagnostics).front();
+  const auto& o = r.scene->objects;
+  EXPECT_TRUE(std::get<PlaneSource>(o[0].shape).exact);
+  EXPECT_TRUE(std::get<SphereSource>(o[1].shape).exact);
+  EXPECT_FALSE(std::get<SphereSource>(o[2].shape).exact);
+  EXPECT_FALSE(std::get<BoxSource>(o[3].shape).exact);
+  EXPECT_TRUE(std::get<CylinderSource>(o[4].shape).exact);
+  const auto& k = std::get<CapsuleSource>(o[5].shape);
+  EXPECT_TRUE(k.exact);
+  EXPECT_DOUBLE_EQ(k.radius_m, 0.005);
+  EXPECT_DOUBLE_EQ(k.length_m, 0.04);
+  EXPECT_EQ(k.segments, 16);
+  EXPECT_FALSE(std::get<CapsuleSource>(o[6].shape).exact);
+}
+
+TEST(SceneXmlExactPrimitives, ABadExactOrCapsuleIsRefusedAndAGoodOneAccepted) {
+  EXPECT_TRUE(read_scene_string(R"(<scene version="1"><material name="m" stiffness_N_per_m="1000"/><object material="m" name="k"><capsule radius="1" length="1" exact="true"/></object></scene>)",
+                                "x.xml").ok());
+  EXPECT_FALSE(read_scene_string(R"(<scene version="1"><material name="m" stiffness_N_per_m="1000"/><object material="m" name="s"><sphere radius="1" exact="maybe"/></object></scene>)",
+                                 "x.xml").ok());
+  EXPECT_FALSE(read_scene_string(R"(<scene version="1"><material name="m" stiffness_N_per_m="1000"/><object material="m" name="k"><capsule radius="1"/></object></scene>)",
+                                 "x.xml").ok());
+  EXPECT_FALSE(read_scene_string(R"(<scene version="1"><material name="m" stiffness_N_per_m="1000"/><object material="m" name="k"><capsule radius="-1" length="1"/></object></scene>)",
+                                 "x.xml").ok());
 }
 
 }  // namespace

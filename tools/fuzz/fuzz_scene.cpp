@@ -133,6 +133,9 @@ std::size_t triangles_of(const mhd::ObjectDescription& object) {
     std::size_t operator()(const mhd::CylinderSource& s) const {
       return s.segments < 0 ? SIZE_MAX : 4 * static_cast<std::size_t>(s.segments);
     }
+    std::size_t operator()(const mhd::CapsuleSource& s) const {
+      return s.segments < 0 ? SIZE_MAX : static_cast<std::size_t>(s.segments) * static_cast<std::size_t>(s.segments);
+    }
   };
   return std::visit(Count{}, object.shape);
 }
@@ -176,6 +179,11 @@ bool check_scene(const mhd::SceneDescription& scene, bool& bad_mesh) {
       if (!positive_finite(cylinder->radius_m) || !positive_finite(cylinder->height_m) || cylinder->segments < 3 ||
           cylinder->segments > 4096) {
         violated(what + ": cylinder radius, height or segments");
+      }
+    } else if (const auto* capsule = std::get_if<mhd::CapsuleSource>(&object.shape)) {
+      if (!positive_finite(capsule->radius_m) || !positive_finite(capsule->length_m) || capsule->segments < 3 ||
+          capsule->segments > 4096) {
+        violated(what + ": capsule radius, length or segments");
       }
     }
     const std::size_t t = triangles_of(object);

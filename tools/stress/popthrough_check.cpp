@@ -13,7 +13,9 @@ PopThroughChecker::PopThroughChecker(const CollisionWorld& world, const verify::
     : world_(world), oracle_(oracle), engine_(engine), follow_(follow), engine_stride_(std::max(engine_stride, 1)) {
   for (int i = 0; i < world.object_count(); ++i) {
     const std::shared_ptr<const MeshBvh> shape(std::shared_ptr<const MeshBvh>{}, &world.shape(i));
-    if (oracle.is_closed(i)) closed_world_.add_object(shape, world.pose(i));
+    if (!oracle.is_closed(i)) continue;
+    const int id = closed_world_.add_object(shape, world.pose(i));
+    if (const ExactShape* exact = world.exact_shape(i)) closed_world_.set_exact_shape(id, *exact);
   }
 }
 
@@ -83,7 +85,7 @@ TickVerdict PopThroughChecker::check_tick(const Eigen::Vector3d& p_W_hip, std::s
     }
     check_end(proxy_W, ask_engine, v);
   }
-  if (v.crossed && !v.inside && v.hit) {
+  if (v.crossed && !v.inside && v.hit && v.hit->where.triangle != kExactSurface) {
     // Depth behind the plane of the crossed triangle, seen from where the leg came from.
     const auto t = world_.triangle_W(v.hit->where);
     Eigen::Vector3d normal = (t[1] - t[0]).cross(t[2] - t[0]);

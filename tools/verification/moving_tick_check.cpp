@@ -1,5 +1,7 @@
 #include "verification/moving_tick_check.h"
 
+#include <memory>
+
 namespace mhd::verify {
 namespace {
 
@@ -10,7 +12,15 @@ Pose X_OW(const CollisionWorld& world, std::size_t o) { return world.pose(static
 MovingTickCheck::MovingTickCheck(const CollisionWorld& world) {
   const auto n = static_cast<std::size_t>(world.object_count());
   oracles_O_.reserve(n);
-  for (std::size_t o = 0; o < n; ++o) oracles_O_.emplace_back(world.shape(static_cast<int>(o)).mesh());
+  for (std::size_t o = 0; o < n; ++o) {
+    // The object alone at the identity: its own frame, its exact shape where it has one.
+    const int i = static_cast<int>(o);
+    CollisionWorld alone;
+    (void)alone.add_object(std::shared_ptr<const MeshBvh>(std::shared_ptr<const MeshBvh>{}, &world.shape(i)),
+                           Pose::Identity());
+    if (const ExactShape* exact = world.exact_shape(i)) alone.set_exact_shape(0, *exact);
+    oracles_O_.emplace_back(alone);
+  }
   X_OW_before_.resize(n, Pose::Identity());
 }
 

@@ -1,5 +1,7 @@
 #include "verification/surface_crossing_oracle.h"
 
+#include "verification/exact_solid_oracle.h"
+
 // CGAL stays in this one translation unit (it is slow to compile).
 #include <CGAL/AABB_segment_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -123,12 +125,15 @@ struct SurfaceCrossingOracle::Impl {
   Eigen::AlignedBox3d bounds_W;
 
   std::once_flag distance_once;
+  ExactSolids exact;  // the exact primitives, judged as solids
+  std::vector<bool> is_exact;  // per object: its triangles are listed, not judged
 
   void add_triangle(const std::array<Eigen::Vector3d, 3>& abc, const TriangleRef& ref) {
     const std::size_t source = triangles_W.size();
     triangles_W.push_back(abc);
     refs.push_back(ref);
     for (const Eigen::Vector3d& v : abc) bounds_W.extend(v);
+    if (static_cast<std::size_t>(ref.object) < is_exact.size() && is_exact[static_cast<std::size_t>(ref.object)]) return;
     const Point a = to_point(abc[0]), b = to_point(abc[1]), c = to_point(abc[2]);
     if (!CGAL::collinear(a, b, c)) {
       cgal_triangles.emplace_back(a, b, c);
@@ -151,7 +156,7 @@ struct SurfaceCrossingOracle::Impl {
     for (std::size_t i = 0; i < meshes.size(); ++i) {
       const TriangleMesh& mesh = *meshes[i].mesh;
       const Pose& X_WO = meshes[i].X_WO;
-      closed.push_back(mesh_is_closed(mesh));
+      closed.push_back((i < is_exact.size() && is_exact[i]) || mesh_is_closed(mesh));
       const std::size_t n = mesh.vertices_m.size();
       for (std::size_t j = 0; j < mesh.triangles.size(); ++j) {
         const TriangleIndices& t = mesh.triangles[j];
@@ -201,6 +206,13 @@ struct SurfaceCrossingOracle::Impl {
 
   template <class Query>
   bool touches(const Query& query) const {
+    if (!exact.empty()) {
+      if constexpr (std::is_same_v<Query, Point>) {
+        if (exact.signed_distance(to_eigen(query)) <= 0.0) return true;
+      } else {
+        if (exact.touches(to_eigen(query.source()), to_eigen(query.target()))) return true;
+      }
+    }
     if (!triangle_tree.empty() && triangle_tree.do_intersect(query)) return true;
     if (!segment_tree.empty() && segment_tree.do_intersect(query)) return true;
     for (const Point& p : cgal_points) {
@@ -238,6 +250,7 @@ CGAL::Bbox_3 grown_box(const Eigen::Vector3d& a, const Eigen::Vector3d& b, doubl
 bool SurfaceCrossingOracle::segment_brushes_surface(const Eigen::Vector3d& a_W, const Eigen::Vector3d& b_W,
                                                     double clearance_m) const {
   const Impl& m = *impl_;
+  if (m.exact.brushes(a_W, b_W, clearance_m)) return true;
   const Segment s(to_point(a_W), to_point(b_W));
   const Point a = to_point(a_W);
   const CGAL::Bbox_3 box = grown_box(a_W, b_W, clearance_m);
@@ -268,7 +281,12 @@ bool SurfaceCrossingOracle::segment_brushes_surface(const Eigen::Vector3d& a_W, 
 SurfaceCrossingOracle::SurfaceCrossingOracle(const CollisionWorld& world) : impl_(std::make_unique<Impl>()) {
   std::vector<PlacedMesh> meshes;
   meshes.reserve(static_cast<std::size_t>(world.object_count()));
-  for (int i = 0; i < world.object_count(); ++i) meshes.push_back({&world.shape(i).mesh(), world.pose(i)});
+  for (int i = 0; i < world.object_count(); ++i) {
+    meshes.push_back({&world.shape(i).mesh(), world.pose(i)});
+    const ExactShape* exact = world.exact_shape(i);
+    impl_->is_exact.push_back(exact != nullptr);
+    if (exact != nullptr) impl_->exact.add(i, *exact, world.pose(i));
+  }
   impl_->build(meshes);
 }
 
@@ -311,6 +329,9 @@ std::vector<OracleHit> SurfaceCrossingOracle::touched_triangles(const Eigen::Vec
     if (i > 0 && touched[i].first == touched[i - 1].first) continue;
     hits.push_back({impl_->refs[touched[i].first], touched[i].second});
   }
+  for (const ExactSolids::Touch& t : impl_->exact.all_touches(a_W, b_W)) {
+    hits.push_back({TriangleRef{t.object, kExactSurface}, t.t});
+  }
   std::sort(hits.begin(), hits.end(), [](const OracleHit& x, const OracleHit& y) {
     if (x.t != y.t) return x.t < y.t;
     if (x.where.object != y.where.object) return x.where.object < y.where.object;
@@ -328,6 +349,11 @@ std::optional<OracleHit> SurfaceCrossingOracle::first_touched_triangle(const Eig
 
 SurfaceSide SurfaceCrossingOracle::side_of_closed_surfaces(const Eigen::Vector3d& p_W) const {
   const Impl& m = *impl_;
+  if (!m.exact.empty()) {
+    const double d = m.exact.signed_distance(p_W);
+    if (d < 0.0) return SurfaceSide::Inside;
+    if (d == 0.0) return SurfaceSide::OnSurface;
+  }
   if (std::none_of(m.closed.begin(), m.closed.end(), [](bool c) { return c; })) return SurfaceSide::Outside;
   const Point p = to_point(p_W);
 
@@ -393,7 +419,7 @@ double SurfaceCrossingOracle::distance_to_surface(const Eigen::Vector3d& p_W) co
   if (!m.triangle_tree.empty()) d2 = std::min(d2, CGAL::to_double(m.triangle_tree.squared_distance(p)));
   if (!m.segment_tree.empty()) d2 = std::min(d2, CGAL::to_double(m.segment_tree.squared_distance(p)));
   for (const Point& q : m.cgal_points) d2 = std::min(d2, CGAL::to_double(CGAL::squared_distance(p, q)));
-  return std::sqrt(d2);
+  return std::min(std::sqrt(d2), std::abs(m.exact.signed_distance(p_W)));
 }
 
 bool SurfaceCrossingOracle::is_closed(int object) const {

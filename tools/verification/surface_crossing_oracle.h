@@ -3,6 +3,9 @@
 // no code with the collision layer: it copies the triangles into the world frame and
 // answers with CGAL's exact predicates (Epick) over its own AABB tree, so a bug in the
 // engine's conservative sweeps cannot hide itself here. Touching counts as crossing.
+// Objects that the world sweeps as exact primitives are judged as the solids they are
+// (exact_solid_oracle.h), not by their tessellations: touching or entering one crosses it,
+// and a hit on one is reported as TriangleRef{object, kExactSurface}.
 
 #include "collision/collision_world.h"
 #include "geometry/pose.h"
@@ -81,13 +84,15 @@ class SurfaceCrossingOracle {
   /// structure on first use (thread-safe).
   [[nodiscard]] double distance_to_surface(const Eigen::Vector3d& p_W) const;
 
-  /// An object is closed when, after welding vertices with identical coordinates, every
+  /// An exact primitive is closed. Another object is closed when, after welding vertices with identical coordinates, every
   /// edge of its non-degenerate triangles is shared by an even number of them (so ray
   /// parity defines an inside). Not closed: open scans, planes, meshes with cracks.
   [[nodiscard]] bool is_closed(int object) const;
   [[nodiscard]] int object_count() const;
 
-  /// The triangles as the oracle holds them (world frame), in a fixed order.
+  /// The triangles as the oracle holds them (world frame), in a fixed order. An exact
+  /// primitive's tessellation is among them (stroke sets aim at it) though its solid,
+  /// not they, decides contact.
   [[nodiscard]] std::size_t triangle_count() const;
   [[nodiscard]] const std::array<Eigen::Vector3d, 3>& triangle_W(std::size_t i) const;
   [[nodiscard]] const TriangleRef& triangle_ref(std::size_t i) const;
