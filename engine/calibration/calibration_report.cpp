@@ -36,7 +36,7 @@ std::string split_text(OffsetSplit split) {
 
 }  // namespace
 
-std::string format_calibration_report(const CalibrationResult& r, OffsetSplit split) {
+std::string format_calibration_report(const CalibrationFit& r, OffsetSplit split) {
   std::string out = line_of("residual RMSE (mm)        x         y         z       3-D\n");
   out += rmse_row("before", r.residuals_before);
   out += rmse_row("after", r.residuals_after);
@@ -55,7 +55,7 @@ std::string format_calibration_report(const CalibrationResult& r, OffsetSplit sp
 }
 
 std::string format_residuals_csv(const Rig& rig, const std::vector<CalibrationSample>& samples,
-                                 const CalibrationResult& result) {
+                                 const CalibrationFit& result) {
   std::string out(kResidualsHeader);
   out += "\n";
   std::array<char, 512> b{};
@@ -70,7 +70,7 @@ std::string format_residuals_csv(const Rig& rig, const std::vector<CalibrationSa
   return out;
 }
 
-std::vector<std::string> calibration_note_lines(const CalibrationResult& r, const std::string& samples_file,
+std::vector<std::string> calibration_note_lines(const CalibrationFit& r, const std::string& samples_file,
                                                 OffsetSplit split) {
   std::array<char, 256> b{};
   std::vector<std::string> lines;

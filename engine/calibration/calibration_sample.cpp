@@ -75,10 +75,11 @@ bool is_skipped(std::string_view line) {
 
 }  // namespace
 
-SampleReadResult parse_calibration_samples(std::string_view text, const std::string& file) {
-  SampleReadResult result;
+Result<std::vector<CalibrationSample>> parse_calibration_samples(std::string_view text, const std::string& file) {
+  std::vector<CalibrationSample> samples;
+  Diagnostics errors;
   const auto error = [&](int line, std::string message) {
-    result.errors.push_back({SourceLocation{file, line}, std::move(message)});
+    errors.push_back({SourceLocation{file, line}, std::move(message)});
   };
 
   std::vector<std::string_view> lines;
@@ -92,7 +93,7 @@ SampleReadResult parse_calibration_samples(std::string_view text, const std::str
   while (header_index < lines.size() && is_skipped(lines[header_index])) ++header_index;
   if (header_index == lines.size()) {
     error(0, concat("no header line (expected the columns ", expected_columns(), ")"));
-    return result;
+    return errors;
   }
   const int header_line = static_cast<int>(header_index) + 1;
   const std::vector<std::string_view> header = split_fields(lines[header_index]);
@@ -116,7 +117,7 @@ SampleReadResult parse_calibration_samples(std::string_view text, const std::str
     }
     column[k] = static_cast<std::size_t>(first - header.begin());
   }
-  if (!header_ok) return result;
+  if (!header_ok) return errors;
 
   for (std::size_t i = header_index + 1; i < lines.size(); ++i) {
     if (is_skipped(lines[i])) continue;
@@ -155,19 +156,17 @@ SampleReadResult parse_calibration_samples(std::string_view text, const std::str
     sample.q_rad = Eigen::Vector3d(v[7], v[8], v[9]);
     sample.p_W_hip_measured_m = Eigen::Vector3d(v[10], v[11], v[12]);
     sample.line = line;
-    result.samples.push_back(sample);
+    samples.push_back(sample);
   }
-  if (!result.errors.empty()) result.samples.clear();
-  return result;
+  if (!errors.empty()) return errors;
+  return samples;
 }
 
-SampleReadResult read_calibration_samples(const std::filesystem::path& file) {
+Result<std::vector<CalibrationSample>> read_calibration_samples(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) {
-    SampleReadResult result;
     const char* why = std::filesystem::exists(file) ? "cannot be read" : "not found";
-    result.errors.push_back({SourceLocation{file.string(), 0}, concat("samples file ", why)});
-    return result;
+    return Diagnostic{SourceLocation{file.string(), 0}, concat("samples file ", why)};
   }
   std::ostringstream bytes;
   bytes << in.rdbuf();

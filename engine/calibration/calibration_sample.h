@@ -12,7 +12,7 @@
 //   hip_x_m, hip_y_m, hip_z_m                          the HIP measured in the world
 
 #include "geometry/pose.h"
-#include "diagnostics/diagnostic.h"
+#include "diagnostics/result.h"
 
 #include <Eigen/Core>
 
@@ -39,18 +39,12 @@ inline constexpr std::array<std::string_view, 13> kCalibrationSampleColumns = {
 /// A sensor quaternion's norm may be off 1 by this much (it is normalised); more is an error.
 inline constexpr double kQuaternionNormTolerance = 1e-3;
 
-struct SampleReadResult {
-  std::vector<CalibrationSample> samples;  ///< empty when errors is not
-  Diagnostics errors;                      ///< every problem found, "file:line: error: ..."
-  [[nodiscard]] bool ok() const { return errors.empty(); }
-};
-
 /// Reads a samples CSV. Errors name the line: missing or duplicate columns, a wrong field
 /// count, a field that is not a number, NaN or infinity, a quaternion that is not unit.
-[[nodiscard]] SampleReadResult read_calibration_samples(const std::filesystem::path& file);
+[[nodiscard]] Result<std::vector<CalibrationSample>> read_calibration_samples(const std::filesystem::path& file);
 
 /// The same from memory; `file` names the source in messages.
-[[nodiscard]] SampleReadResult parse_calibration_samples(std::string_view text, const std::string& file);
+[[nodiscard]] Result<std::vector<CalibrationSample>> parse_calibration_samples(std::string_view text, const std::string& file);
 
 /// The CSV text for `samples`: each comment line (without '#') first, then the header.
 [[nodiscard]] std::string format_calibration_samples(const std::vector<CalibrationSample>& samples,

@@ -253,12 +253,10 @@ RigOffsets split_offsets(const Rig& rig, const RigOffsets& start, const Eigen::V
   return out;
 }
 
-CalibrationOutcome calibrate_rig(const Rig& rig, const std::vector<CalibrationSample>& samples,
-                                 const CalibrationOptions& options) {
-  CalibrationOutcome outcome;
-  const auto fail = [&](CalibrationErrorKind kind, std::string parameter, std::string message) {
-    outcome.error = CalibrationError{kind, std::move(parameter), std::move(message)};
-    return outcome;
+Result<CalibrationFit, CalibrationError> calibrate_rig(const Rig& rig, const std::vector<CalibrationSample>& samples,
+                                                       const CalibrationOptions& options) {
+  const auto fail = [](CalibrationErrorKind kind, std::string parameter, std::string message) {
+    return CalibrationError{kind, std::move(parameter), std::move(message)};
   };
   if (static_cast<int>(samples.size()) < options.min_samples) {
     return fail(CalibrationErrorKind::TooFewSamples, "",
@@ -315,7 +313,7 @@ CalibrationOutcome calibrate_rig(const Rig& rig, const std::vector<CalibrationSa
                 concat("the fit did not converge in ", std::to_string(options.max_iterations), " iterations"));
   }
 
-  CalibrationResult result;
+  CalibrationFit result;
   result.iterations = iteration;
   result.condition_number = conditioning_of(normal.JtJ, n).condition_number;
 
@@ -351,8 +349,7 @@ CalibrationOutcome calibrate_rig(const Rig& rig, const std::vector<CalibrationSa
   result.after = split_offsets(rig, before, x.c, x.psi_rad, options.split);
   result.residuals_before = residual_stats(rig, result.before, samples);
   result.residuals_after = residual_stats(rig, result.after, samples);
-  outcome.result = std::move(result);
-  return outcome;
+  return result;
 }
 
 }  // namespace mhd

@@ -98,10 +98,10 @@ struct CalibrationError {
   std::string message;
 };
 
-/// Indices into CalibrationResult::sigma and the Jacobian's columns.
+/// Indices into CalibrationFit::sigma and the Jacobian's columns.
 enum CalibrationParameter : int { kPhantomInSensorX = 0, kPhantomInSensorY, kPhantomInSensorZ, kPsi };
 
-struct CalibrationResult {
+struct CalibrationFit {
   RigOffsets before;  ///< the rig's offsets
   RigOffsets after;   ///< calibrated (SR, RP split per options.split)
   Eigen::Vector3d p_S_phantom_before_m = Eigen::Vector3d::Zero();  ///< c with the rig's values
@@ -113,14 +113,9 @@ struct CalibrationResult {
   ResidualStats residuals_after;
 };
 
-struct CalibrationOutcome {
-  std::optional<CalibrationResult> result;  ///< set only without error
-  std::optional<CalibrationError> error;
-  [[nodiscard]] bool ok() const { return result.has_value(); }
-};
-
 /// Least-squares fit of (c, psi) to the samples, starting from the rig's values.
-[[nodiscard]] CalibrationOutcome calibrate_rig(const Rig& rig, const std::vector<CalibrationSample>& samples,
+[[nodiscard]] Result<CalibrationFit, CalibrationError> calibrate_rig(const Rig& rig,
+                                                                     const std::vector<CalibrationSample>& samples,
                                                const CalibrationOptions& options = {});
 
 /// SR and RP from the estimated c and psi, starting from `start`, per `split`.

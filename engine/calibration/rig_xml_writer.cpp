@@ -255,22 +255,22 @@ RigWriteResult write_calibrated_rig(const SceneDescription& scene, const Rig& ri
   }
 
   // Read it back as any user of the rig will.
-  const SceneReadResult read = read_scene_file(temporary);
+  const Result<SceneDescription> read = read_scene_file(temporary);
   if (!read.ok()) {
     discard();
     std::string message = concat(output.string(), ": the written rig does not read back:");
-    for (const Diagnostic& d : read.diagnostics) message += concat("\n  ", d.to_string());
+    for (const Diagnostic& d : read.diagnostics()) message += concat("\n  ", d.to_string());
     return failure(message);
   }
-  const RigBuildResult built = Rig::from_scene(*read.scene, rig.device());
+  const Result<Rig, std::vector<RigError>> built = Rig::from_scene(*read, rig.device());
   if (!built.ok()) {
     discard();
     std::string message = concat(output.string(), ": the written rig is not a valid rig:");
-    for (const RigError& e : built.errors) message += concat("\n  ", e.to_string());
+    for (const RigError& e : built.error()) message += concat("\n  ", e.to_string());
     return failure(message);
   }
-  if (!close(built.rig->X_base_sensor_robot(), X_S_robot) || !close(built.rig->X_robot_phantom(), X_R_phantom) ||
-      !close(built.rig->X_robot_base(), X_R_base)) {
+  if (!close(built->X_base_sensor_robot(), X_S_robot) || !close(built->X_robot_phantom(), X_R_phantom) ||
+      !close(built->X_robot_base(), X_R_base)) {
     discard();
     return failure(concat(output.string(), ": the written rig reads back with other offsets than calibrated"));
   }

@@ -4,6 +4,11 @@
 
 namespace mhd::result_detail {
 
+const Diagnostics& no_diagnostics() noexcept {
+  static const Diagnostics none;
+  return none;
+}
+
 void never_empty(Diagnostics& errors) {
   if (!errors.empty()) return;
   Diagnostic d;

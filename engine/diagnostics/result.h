@@ -29,12 +29,22 @@ template <class E>
 [[nodiscard]] std::string describe(const E& e) {
   if constexpr (requires { e.to_string(); }) {
     return e.to_string();
+  } else if constexpr (requires { e.begin()->to_string(); }) {
+    std::string out;
+    for (const auto& item : e) {
+      if (!out.empty()) out += '\n';
+      out.append(item.to_string());
+    }
+    return out;
+  } else if constexpr (requires { e.message(); }) {
+    return e.message();
   } else if constexpr (requires { e.message; }) {
     return std::string(e.message);
   } else {
     return "an error";
   }
 }
+[[nodiscard]] const Diagnostics& no_diagnostics() noexcept;
 /// Adds "failed, no diagnostic given" to an empty list.
 void never_empty(Diagnostics& errors);
 [[noreturn]] void throw_bad_value_access(const std::string& error);
@@ -67,6 +77,8 @@ class [[nodiscard]] Result {
   [[nodiscard]] T& value() & { return check(), std::get<0>(state_); }
   [[nodiscard]] const T& value() const& { return check(), std::get<0>(state_); }
   [[nodiscard]] T&& value() && { return check(), std::get<0>(std::move(state_)); }
+  /// The value, or `fallback` when !ok().
+  [[nodiscard]] T value_or(T fallback) const& { return ok() ? std::get<0>(state_) : std::move(fallback); }
   T& operator*() & { return value(); }
   const T& operator*() const& { return value(); }
   T* operator->() { return &value(); }
@@ -79,6 +91,12 @@ class [[nodiscard]] Result {
   }
   /// The error as text, one line per diagnostic; "" when ok().
   [[nodiscard]] std::string error_text() const { return ok() ? std::string() : result_detail::describe(error()); }
+  /// The diagnostics whatever the outcome: the error's, or none when ok().
+  [[nodiscard]] const Diagnostics& diagnostics() const noexcept
+    requires std::is_same_v<E, Diagnostics>
+  {
+    return ok() ? result_detail::no_diagnostics() : std::get<1>(state_);
+  }
 
  private:
   void check() const {
@@ -109,6 +127,12 @@ class [[nodiscard]] Result<void, E> {
     return *error_;
   }
   [[nodiscard]] std::string error_text() const { return ok() ? std::string() : result_detail::describe(*error_); }
+  /// The diagnostics whatever the outcome: the error's, or none when ok().
+  [[nodiscard]] const Diagnostics& diagnostics() const noexcept
+    requires std::is_same_v<E, Diagnostics>
+  {
+    return ok() ? result_detail::no_diagnostics() : *error_;
+  }
 
  private:
   std::optional<E> error_;

@@ -49,17 +49,22 @@ HapticServerBuild HapticServer::open(const SceneDescription& scene, const Compil
   HapticServerBuild out;
   const SourceLocation scene_where{scene.file.string(), 0};
 
-  ServerSettingsResult settings = server_settings_from(scene);
-  out.diagnostics.insert(out.diagnostics.end(), settings.diagnostics.begin(), settings.diagnostics.end());
+  Result<ServerSettings> settings = server_settings_from(scene);
+  out.diagnostics.insert(out.diagnostics.end(), settings.diagnostics().begin(), settings.diagnostics().end());
 
-  RigBuildResult rig = Rig::from_scene(scene);
-  for (const RigError& e : rig.errors) out.diagnostics.push_back({e.where.file.empty() ? scene_where : e.where, e.message});
+  Result<Rig, std::vector<RigError>> rig = Rig::from_scene(scene);
+  if (!rig.ok()) {
+    for (const RigError& e : rig.error()) out.diagnostics.push_back({e.where.file.empty() ? scene_where : e.where, e.message});
+  }
 
   std::optional<simulation::SimulatedUserConfig> user_config;
   if (scene.simulated_user) {
     auto u = simulation::simulated_user_config_from(*scene.simulated_user);
-    out.diagnostics.insert(out.diagnostics.end(), u.diagnostics.begin(), u.diagnostics.end());
-    user_config = std::move(u.config);
+    if (u.ok()) {
+      user_config = std::move(u).value();
+    } else {
+      out.diagnostics.insert(out.diagnostics.end(), u.error().begin(), u.error().end());
+    }
   }
 
   // One device, one tracker, at most one base.
@@ -87,10 +92,14 @@ HapticServerBuild HapticServer::open(const SceneDescription& scene, const Compil
   for (const Diagnostics& d : {check_rig_kind(scene), check_rig_plugins_for_run(scene)}) {
     out.diagnostics.insert(out.diagnostics.end(), d.begin(), d.end());
   }
-  ScenePlannerResult planner;
-  if (rig.rig && !desktop && !options.plan_base) {
-    planner = scene_planner(scene, *rig.rig);
-    out.diagnostics.insert(out.diagnostics.end(), planner.diagnostics.begin(), planner.diagnostics.end());
+  ScenePlanner planner;
+  if (rig.ok() && !desktop && !options.plan_base) {
+    Result<ScenePlanner> made = scene_planner(scene, *rig);
+    if (made.ok()) {
+      planner = std::move(made).value();
+    } else {
+      out.diagnostics.insert(out.diagnostics.end(), made.error().begin(), made.error().end());
+    }
   }
   if (!out.diagnostics.empty()) return out;
 
@@ -98,10 +107,10 @@ HapticServerBuild HapticServer::open(const SceneDescription& scene, const Compil
     options.plan_base = std::move(planner.plan);
     // The guard's keep-out is the planner's user cylinder unless <server> says otherwise.
     if (!(scene.server && scene.server->params.count("keep_out_m") != 0)) {
-      settings.settings->base_guard.keep_out_m = planner.collision_radius_m;
+      settings->base_guard.keep_out_m = planner.collision_radius_m;
     }
   }
-  auto impl = std::make_unique<Impl>(compiled, *settings.settings, std::move(options), std::move(*rig.rig));
+  auto impl = std::make_unique<Impl>(compiled, *settings, std::move(options), std::move(*rig));
   impl->user_config = std::move(user_config);
   impl->host.set_scene_file(scene.file);
   const PluginSearchPath search = PluginSearchPath::standard(impl->options.plugin_path);

@@ -188,7 +188,7 @@ void HapticServer::Impl::io_thread() {
       judged.p_W_head_xz_m = Eigen::Vector2d(h.p_W_m.x(), h.p_W_m.z());
       judged.head_age_s = t_s - h.t_s;
     }
-    const BaseGuardResult guarded = guard.apply(planned, judged);
+    const BaseGuardDecision guarded = guard.apply(planned, judged);
     if (guard.counts().stops() != counts_published.stops() ||
         guard.counts().keep_out_deflections != counts_published.keep_out_deflections) {
       counts_published = guard.counts();

@@ -25,9 +25,9 @@ double difference(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
 
 }  // namespace
 
-ReplayResult replay_recording(const CompiledScene& scene, const Rig& rig, const HapticTickSettings& settings,
+ReplayComparison replay_recording(const CompiledScene& scene, const Rig& rig, const HapticTickSettings& settings,
                               const std::vector<RecordingRow>& rows) {
-  ReplayResult result;
+  ReplayComparison result;
   HapticTick tick(scene, rig, settings);
   result.replayed.reserve(rows.size());
   for (std::size_t i = 0; i < rows.size(); ++i) {

@@ -16,7 +16,7 @@
 
 namespace mhd {
 
-struct ReplayResult {
+struct ReplayComparison {
   std::vector<RecordingRow> replayed;  ///< the recomputed rows (user pose copied)
   std::size_t rows = 0;
   std::size_t differing_rows = 0;     ///< rows whose force, proxy or device force differ at all
@@ -26,7 +26,7 @@ struct ReplayResult {
   double max_device_force_difference_N = 0.0;
 };
 
-[[nodiscard]] ReplayResult replay_recording(const CompiledScene& scene, const Rig& rig,
+[[nodiscard]] ReplayComparison replay_recording(const CompiledScene& scene, const Rig& rig,
                                             const HapticTickSettings& settings, const std::vector<RecordingRow>& rows);
 
 }  // namespace mhd

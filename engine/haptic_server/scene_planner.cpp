@@ -7,13 +7,13 @@
 
 namespace mhd {
 
-ScenePlannerResult scene_planner(const SceneDescription& scene, const Rig& rig) {
-  ScenePlannerResult out;
-  if (!scene.planner) return out;
+Result<ScenePlanner> scene_planner(const SceneDescription& scene, const Rig& rig) {
+  if (!scene.planner) return ScenePlanner{};
+  Diagnostics errors;
   const ParamBlock& block = *scene.planner;
   PlannerKind kind = PlannerKind::Seed;
   if (!parse_planner_kind(block.kind, kind)) {
-    out.diagnostics.push_back({block.where, "unknown planner kind '" + block.kind + "' (expected seed or predictive)"});
+    errors.push_back({block.where, "unknown planner kind '" + block.kind + "' (expected seed or predictive)"});
   }
   PlannerSettings defaults;
   defaults.usable_B = usable_box_in_base(rig);
@@ -24,11 +24,12 @@ ScenePlannerResult scene_planner(const SceneDescription& scene, const Rig& rig) 
     for (const auto& [name, line] : block.param_where) {
       if (e.find("'" + name + "'") != std::string::npos) where = line;
     }
-    out.diagnostics.push_back({where, e});
+    errors.push_back({where, e});
   }
-  if (!out.diagnostics.empty()) return out;
+  if (!errors.empty()) return errors;
 
   std::shared_ptr<Planner> planner = make_planner(kind, parsed.settings);
+  ScenePlanner out;
   out.collision_radius_m = parsed.settings.collision_radius_m();
   out.plan = [planner](const BasePlanInput& in) {
     if (!in.hip_valid || !in.user_known || !in.fresh()) return BaseTwist{};  // nothing fresh to follow: hold still

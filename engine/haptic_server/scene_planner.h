@@ -6,19 +6,19 @@
 
 #include "haptic_server/haptic_server.h"
 #include "kinematics/rig.h"
-#include "diagnostics/diagnostic.h"
+#include "diagnostics/result.h"
 #include "scene/scene_description.h"
 
 #include <optional>
 
 namespace mhd {
 
-struct ScenePlannerResult {
-  BasePlanFn plan;  ///< empty without <planner> or on error
+struct ScenePlanner {
+  BasePlanFn plan;  ///< empty without <planner>
   double collision_radius_m = 0.0;  ///< robot + human radius, for the server's keep-out guard
-  Diagnostics diagnostics;
 };
 
-[[nodiscard]] ScenePlannerResult scene_planner(const SceneDescription& scene, const Rig& rig);
+/// The scene's planner, or every error in its <planner> block.
+[[nodiscard]] Result<ScenePlanner> scene_planner(const SceneDescription& scene, const Rig& rig);
 
 }  // namespace mhd

@@ -10,7 +10,7 @@
 
 namespace mhd {
 
-ServerSettingsResult server_settings_from(const SceneDescription& scene) {
+Result<ServerSettings> server_settings_from(const SceneDescription& scene) {
   constexpr double kDegToRad = std::numbers::pi / 180.0;
   ServerSettings s;
   s.base_guard.keep_out_m = 0.475;  // robot radius 0.225 + human radius 0.25 (docs/planner.md)
@@ -57,10 +57,9 @@ ServerSettingsResult server_settings_from(const SceneDescription& scene) {
   }
   s.base_guard.tracker_timeout_s = s.tick.safety.tracker_timeout_s;
 
-  ServerSettingsResult out;
-  out.diagnostics = r.finish();
-  if (out.diagnostics.empty()) out.settings = s;
-  return out;
+  Diagnostics errors = r.finish();
+  if (!errors.empty()) return errors;
+  return s;
 }
 
 }  // namespace mhd

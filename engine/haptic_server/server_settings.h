@@ -24,7 +24,7 @@
 
 #include "haptic_server/haptic_tick.h"
 #include "safety/base_command_guard.h"
-#include "diagnostics/diagnostic.h"
+#include "diagnostics/result.h"
 #include "scene/scene_description.h"
 
 #include <cstdint>
@@ -48,11 +48,7 @@ struct ServerSettings {
   double tracking_range_m = 50.0;
 };
 
-struct ServerSettingsResult {
-  std::optional<ServerSettings> settings;  ///< set when diagnostics is empty
-  Diagnostics diagnostics;
-};
-
-[[nodiscard]] ServerSettingsResult server_settings_from(const SceneDescription& scene);
+/// The <server> parameters, or every one that is wrong (each at its file:line).
+[[nodiscard]] Result<ServerSettings> server_settings_from(const SceneDescription& scene);
 
 }  // namespace mhd

@@ -98,10 +98,10 @@ std::string_view to_string(PhantomIkStatus status) noexcept {
   return "unknown";
 }
 
-PhantomIkResult phantom_inverse_kinematics(const PhantomModel& model, const Eigen::Vector3d& p_P_tool) noexcept {
+PhantomIkSolution phantom_inverse_kinematics(const PhantomModel& model, const Eigen::Vector3d& p_P_tool) noexcept {
   const double l1 = model.geometry.l1_m;
   const double l2 = model.geometry.l2_m;
-  PhantomIkResult result;
+  PhantomIkSolution result;
   if (!p_P_tool.allFinite()) return result;
 
   // Seen from above, the arm points from the base axis (x = 0, z = -l1) to the tool.

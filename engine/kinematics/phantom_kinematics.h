@@ -104,7 +104,7 @@ enum class PhantomIkStatus {
 
 [[nodiscard]] std::string_view to_string(PhantomIkStatus status) noexcept;
 
-struct PhantomIkResult {
+struct PhantomIkSolution {
   PhantomIkStatus status = PhantomIkStatus::OutOfReach;
   Eigen::Vector3d q_rad = Eigen::Vector3d::Zero();  ///< set for Ok and OutsideJointLimits
   [[nodiscard]] bool ok() const noexcept { return status == PhantomIkStatus::Ok; }
@@ -113,6 +113,6 @@ struct PhantomIkResult {
 /// Joint angles that put the tool at p_P_tool, in closed form: theta1 from the direction
 /// seen from above, then the two-link planar problem with the elbow above the line from
 /// the shoulder to the tool (the device's only assembly). Used by the simulated device.
-[[nodiscard]] PhantomIkResult phantom_inverse_kinematics(const PhantomModel& model, const Eigen::Vector3d& p_P_tool) noexcept;
+[[nodiscard]] PhantomIkSolution phantom_inverse_kinematics(const PhantomModel& model, const Eigen::Vector3d& p_P_tool) noexcept;
 
 }  // namespace mhd

@@ -57,19 +57,15 @@ std::string RigError::to_string() const {
   return concat(where.file, ":", std::to_string(where.line), ": error: ", message);
 }
 
-RigBuildResult Rig::from_scene(const SceneDescription& scene, const PhantomModel& device) {
+Result<Rig, std::vector<RigError>> Rig::from_scene(const SceneDescription& scene, const PhantomModel& device) {
   if (scene.rig_kind.kind == RigKind::Mobile) return from_frames(scene.rig_frames, device);
-  RigBuildResult result;
   for (const FrameDescription& frame : scene.rig_frames) {
-    if (frame.name == "device" && frame.parent == "world") result.rig = desktop(frame.X_PF, device);
+    if (frame.name == "device" && frame.parent == "world") return desktop(frame.X_PF, device);
   }
-  if (!result.rig) {
-    // The scene reader refuses such a scene already; a description built in code may not.
-    result.errors.push_back({RigErrorKind::MissingFrame, "device",
-                             "desktop rig has no frame 'device' (expected <frame name=\"device\" parent=\"world\" .../>)",
-                             scene.rig_kind.where.value_or(SourceLocation{})});
-  }
-  return result;
+  // The scene reader refuses such a scene already; a description built in code may not.
+  return std::vector<RigError>{{RigErrorKind::MissingFrame, "device",
+                                "desktop rig has no frame 'device' (expected <frame name=\"device\" parent=\"world\" .../>)",
+                                scene.rig_kind.where.value_or(SourceLocation{})}};
 }
 
 Rig Rig::desktop(const Pose& X_WD, const PhantomModel& device) {
@@ -81,15 +77,15 @@ Rig Rig::desktop(const Pose& X_WD, const PhantomModel& device) {
   return rig;
 }
 
-RigBuildResult Rig::from_frames(const std::vector<FrameDescription>& frames, const PhantomModel& device) {
-  RigBuildResult result;
+Result<Rig, std::vector<RigError>> Rig::from_frames(const std::vector<FrameDescription>& frames, const PhantomModel& device) {
+  std::vector<RigError> errors;
   std::array<const FrameDescription*, kRequired.size()> found{};
   for (std::size_t i = 0; i < kRequired.size(); ++i) {
     const RequiredFrame& required = kRequired[i];
     for (const FrameDescription& frame : frames) {
       if (frame.name != required.name) continue;
       if (found[i] != nullptr) {
-        result.errors.push_back({RigErrorKind::DuplicateFrame, frame.name,
+        errors.push_back({RigErrorKind::DuplicateFrame, frame.name,
                                  concat("rig frame ", in_quotes(frame.name), " is defined twice (first at ",
                                         found[i]->where.file, ":", std::to_string(found[i]->where.line), ")"),
                                  frame.where});
@@ -98,18 +94,18 @@ RigBuildResult Rig::from_frames(const std::vector<FrameDescription>& frames, con
       found[i] = &frame;
     }
     if (found[i] == nullptr) {
-      result.errors.push_back({RigErrorKind::MissingFrame, std::string(required.name),
+      errors.push_back({RigErrorKind::MissingFrame, std::string(required.name),
                                concat("rig has no frame ", in_quotes(required.name), " (expected <frame name=\"",
                                       required.name, "\" parent=\"", required.parent, "\" .../>)"),
                                SourceLocation{}});
     } else if (found[i]->parent != required.parent) {
-      result.errors.push_back({RigErrorKind::WrongParent, found[i]->name,
+      errors.push_back({RigErrorKind::WrongParent, found[i]->name,
                                concat("rig frame ", in_quotes(found[i]->name), " must have parent ",
                                       in_quotes(required.parent), ", not ", in_quotes(found[i]->parent)),
                                found[i]->where});
     }
   }
-  if (!result.errors.empty()) return result;
+  if (!errors.empty()) return errors;
 
   Rig rig;
   rig.device_ = device;
@@ -124,7 +120,7 @@ RigBuildResult Rig::from_frames(const std::vector<FrameDescription>& frames, con
   const double tilt_rad = std::acos(std::clamp(X_W_base.linear().col(1).dot(Eigen::Vector3d::UnitY()), -1.0, 1.0));
   const FrameDescription& base = *found[4];
   if (tilt_rad > kLevelTolerance_rad) {
-    result.errors.push_back({RigErrorKind::BaseNotLevel, base.name,
+    errors.push_back({RigErrorKind::BaseNotLevel, base.name,
                              concat("rig frame 'base' is not level: with base_sensor at its nominal pose, its y "
                                     "axis is ",
                                     format_degrees(tilt_rad), " degrees from world up"),
@@ -132,14 +128,14 @@ RigBuildResult Rig::from_frames(const std::vector<FrameDescription>& frames, con
   }
   const double height_m = X_W_base.translation().y();
   if (std::abs(height_m) > kFloorTolerance_m) {
-    result.errors.push_back({RigErrorKind::BaseNotOnFloor, base.name,
+    errors.push_back({RigErrorKind::BaseNotOnFloor, base.name,
                              concat("rig frame 'base' is not on the floor: with base_sensor at its nominal pose, "
                                     "it is at y = ",
                                     format_metres(height_m), " m"),
                              base.where});
   }
-  if (result.errors.empty()) result.rig = rig;
-  return result;
+  if (!errors.empty()) return errors;
+  return rig;
 }
 
 Pose Rig::X_W_robot_from_sensor(const Pose& X_is900_base_sensor) const noexcept {

@@ -32,7 +32,7 @@
 #include "geometry/pose.h"
 #include "kinematics/base_pose.h"
 #include "kinematics/phantom_kinematics.h"
-#include "diagnostics/diagnostic.h"
+#include "diagnostics/result.h"
 #include "scene/scene_description.h"
 
 #include <Eigen/Core>
@@ -70,8 +70,6 @@ struct RigError {
   [[nodiscard]] std::string to_string() const;
 };
 
-struct RigBuildResult;
-
 /// Columns of Rig::hip_jacobian: base translation in the world (x, y, z), base heading,
 /// then the device's joints (thesis eq. 5.1; eq. 5.2 drops the y column).
 enum RigJacobianColumn : int { kBaseX = 0, kBaseY, kBaseZ, kBaseHeading, kTheta1, kTheta2, kTheta3 };
@@ -81,11 +79,11 @@ class Rig {
   using HipJacobian = Eigen::Matrix<double, 3, 7>;
 
   /// Builds the rig from the scene's frames; every problem is reported, not only the first.
-  [[nodiscard]] static RigBuildResult from_frames(const std::vector<FrameDescription>& frames,
+  [[nodiscard]] static Result<Rig, std::vector<RigError>> from_frames(const std::vector<FrameDescription>& frames,
                                                   const PhantomModel& device = phantom_premium_1_5());
   /// A mobile scene's frames through from_frames(); a desktop scene's "device" frame
   /// through desktop().
-  [[nodiscard]] static RigBuildResult from_scene(const SceneDescription& scene,
+  [[nodiscard]] static Result<Rig, std::vector<RigError>> from_scene(const SceneDescription& scene,
                                                  const PhantomModel& device = phantom_premium_1_5());
   /// A device fixed in the world at X_WD: X_W_robot_from_base(BasePose{}) is the identity.
   [[nodiscard]] static Rig desktop(const Pose& X_WD, const PhantomModel& device = phantom_premium_1_5());
@@ -143,12 +141,6 @@ class Rig {
   Pose X_robot_phantom_ = Pose::Identity();
   Pose X_robot_base_ = Pose::Identity();
   Pose X_base_robot_ = Pose::Identity();  ///< inverse of X_robot_base_
-};
-
-struct RigBuildResult {
-  std::optional<Rig> rig;  ///< set only when errors is empty
-  std::vector<RigError> errors;
-  [[nodiscard]] bool ok() const { return rig.has_value(); }
 };
 
 }  // namespace mhd

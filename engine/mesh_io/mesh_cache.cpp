@@ -384,13 +384,13 @@ CachedMesh MeshCache::load(const std::filesystem::path& file, const Eigen::Vecto
   // Roughly 16+ bytes per triangle in binary formats; text formats are larger, so this
   // errs towards reporting.
   if (progress && !ec && file_bytes >= kProgressMinTriangles * 16) read_progress = progress;
-  MeshLoadResult loaded = load_mesh_file(file, scale_to_m, read_progress, budget);
+  Result<LoadedMesh, MeshLoadError> loaded = load_mesh_file(file, scale_to_m, read_progress, budget);
   if (!loaded.ok()) {
-    result.error = std::move(loaded.error);
+    result.error = loaded.error();
     return result;
   }
-  result.dropped_triangles = loaded.dropped_triangles;
-  auto mesh = std::make_shared<const TriangleMesh>(std::move(*loaded.mesh));
+  result.dropped_triangles = loaded->dropped_triangles;
+  auto mesh = std::make_shared<const TriangleMesh>(std::move(loaded->mesh));
   const bool big = mesh->triangle_count() >= kProgressMinTriangles;
   const std::string what = fmt::format("building BVH of {} ({} triangles)", name, mesh->triangle_count());
   if (big && progress) progress(what, 0.0);

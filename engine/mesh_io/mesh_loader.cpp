@@ -64,10 +64,8 @@ std::optional<std::string> read_head(int fd, std::size_t bytes) {
   return head;
 }
 
-MeshLoadResult fail(const std::filesystem::path& file, std::string reason) {
-  MeshLoadResult r;
-  r.error = MeshLoadError{file, std::move(reason)};
-  return r;
+MeshLoadError fail(const std::filesystem::path& file, std::string reason) {
+  return MeshLoadError{file, std::move(reason)};
 }
 
 /// Key of a position for welding: the bit patterns, with -0 folded into +0.
@@ -149,7 +147,7 @@ std::size_t finish_loaded_mesh(TriangleMesh& mesh, const Eigen::Vector3d& scale_
   return dropped;
 }
 
-MeshLoadResult load_mesh_file(const std::filesystem::path& file, const Eigen::Vector3d& scale_to_m,
+Result<LoadedMesh, MeshLoadError> load_mesh_file(const std::filesystem::path& file, const Eigen::Vector3d& scale_to_m,
                               const MeshProgress& progress, std::optional<TriangleBudget> budget) {
   if (!scale_to_m.allFinite() || (scale_to_m.array() == 0.0).any()) {
     return fail(file, fmt::format("invalid scale ({}, {}, {}): every factor must be finite and non-zero",
@@ -256,10 +254,7 @@ MeshLoadResult load_mesh_file(const std::filesystem::path& file, const Eigen::Ve
     if (!v.allFinite()) return fail(file, "non-finite vertex coordinates");
   }
 
-  MeshLoadResult result;
-  result.mesh = std::move(mesh);
-  result.dropped_triangles = dropped;
-  return result;
+  return LoadedMesh{std::move(mesh), dropped};
 }
 
 }  // namespace mhd

@@ -1,6 +1,7 @@
 #pragma once
 // Loads a mesh file (any format assimp reads) into one TriangleMesh in metres.
 
+#include "diagnostics/result.h"
 #include "geometry/triangle_mesh.h"
 #include "mesh_io/triangle_budget.h"
 
@@ -27,12 +28,10 @@ struct MeshLoadError {
   [[nodiscard]] std::string message() const;
 };
 
-struct MeshLoadResult {
-  std::optional<TriangleMesh> mesh;    ///< set on success
-  std::optional<MeshLoadError> error;  ///< set on failure
+struct LoadedMesh {
+  TriangleMesh mesh;
   /// Triangles dropped: bad or repeated indices, zero area, non-triangle faces.
   std::size_t dropped_triangles = 0;
-  [[nodiscard]] bool ok() const { return mesh.has_value(); }
 };
 
 /// Loads every triangle of every mesh in `file` (scene-graph transforms applied, points
@@ -46,10 +45,10 @@ struct MeshLoadResult {
 /// files, and so must textures that exist; a PLY's or binary STL's header counts must fit
 /// the file's size, and with a `budget` neither the header's face count (checked before
 /// assimp allocates) nor the loaded triangles may exceed what is left of it.
-[[nodiscard]] MeshLoadResult load_mesh_file(const std::filesystem::path& file,
-                                            const Eigen::Vector3d& scale_to_m,
-                                            const MeshProgress& progress = {},
-                                            std::optional<TriangleBudget> budget = std::nullopt);
+[[nodiscard]] Result<LoadedMesh, MeshLoadError> load_mesh_file(const std::filesystem::path& file,
+                                                              const Eigen::Vector3d& scale_to_m,
+                                                              const MeshProgress& progress = {},
+                                                              std::optional<TriangleBudget> budget = std::nullopt);
 
 /// Applies the loader's clean-up to a mesh in memory: scale (and winding flip for a
 /// mirroring scale), invalid/degenerate triangle and unused vertex removal, vertex

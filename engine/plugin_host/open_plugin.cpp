@@ -6,12 +6,12 @@
 
 namespace mhd {
 
-PluginResult<PluginInstance> open_plugin(const PluginSearchPath& search, const PluginDescription& description,
+Result<PluginInstance, PluginError> open_plugin(const PluginSearchPath& search, const PluginDescription& description,
                                          const mhd_host& host) {
-  PluginResult<std::shared_ptr<const PluginLibrary>> library = load_scene_plugin(search, description);
+  Result<std::shared_ptr<const PluginLibrary>, PluginError> library = load_scene_plugin(search, description);
   if (!library) return library.error();
   PluginInstance instance(std::move(library).value());
-  if (PluginStatus opened = instance.open(description.params, host); !opened) return opened.error();
+  if (Status<PluginError> opened = instance.open(description.params, host); !opened) return opened.error();
   return instance;
 }
 

@@ -4,7 +4,8 @@
 // with the scene's parameters.
 
 #include "plugin_host/plugin_instance.h"
-#include "plugin_host/plugin_result.h"
+#include "diagnostics/result.h"
+#include "plugin_host/plugin_error.h"
 #include "plugin_host/plugin_search_path.h"
 #include "scene/scene_description.h"
 
@@ -14,7 +15,7 @@ namespace mhd {
 
 /// An Open instance, or the first error (NotFound ... WrongKind ... OpenFailed).
 /// `host` must outlive the instance.
-[[nodiscard]] PluginResult<PluginInstance> open_plugin(const PluginSearchPath& search,
+[[nodiscard]] Result<PluginInstance, PluginError> open_plugin(const PluginSearchPath& search,
                                                        const PluginDescription& description, const mhd_host& host);
 
 }  // namespace mhd

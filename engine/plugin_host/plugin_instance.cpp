@@ -156,14 +156,14 @@ PluginError PluginInstance::error(PluginErrorKind kind, std::string message) con
   return PluginError{kind, name(), {}, std::move(message)};
 }
 
-PluginStatus PluginInstance::check_call(std::string_view call, PluginKind needed_kind) const {
+Status<PluginError> PluginInstance::check_call(std::string_view call, PluginKind needed_kind) const {
   if (library_ && kind() != needed_kind) {
     return error(PluginErrorKind::WrongKind, fmt::format("{} called on a {} plugin", call, to_string(kind())));
   }
   return {};
 }
 
-PluginStatus PluginInstance::check_running(std::string_view call) const {
+Status<PluginError> PluginInstance::check_running(std::string_view call) const {
   if (state_ != PluginState::Running) {
     return error(PluginErrorKind::WrongState,
                  fmt::format("{} called while the plugin is {}; it must be running", call, to_string(state_)));
@@ -171,7 +171,7 @@ PluginStatus PluginInstance::check_running(std::string_view call) const {
   return {};
 }
 
-PluginStatus PluginInstance::open(const std::map<std::string, std::string>& params, const mhd_host& host) {
+Status<PluginError> PluginInstance::open(const std::map<std::string, std::string>& params, const mhd_host& host) {
   if (state_ != PluginState::Loaded) {
     return error(PluginErrorKind::WrongState,
                  fmt::format("open called while the plugin is {}; it must be loaded", to_string(state_)));
@@ -192,7 +192,7 @@ PluginStatus PluginInstance::open(const std::map<std::string, std::string>& para
   state_ = PluginState::Open;
 
   if (kind() == PluginKind::Device) {
-    PluginStatus info = read_device_info();
+    Status<PluginError> info = read_device_info();
     if (!info) {
       close_handle();
       state_ = PluginState::Loaded;
@@ -202,7 +202,7 @@ PluginStatus PluginInstance::open(const std::map<std::string, std::string>& para
   return {};
 }
 
-PluginStatus PluginInstance::read_device_info() {
+Status<PluginError> PluginInstance::read_device_info() {
   mhd_error err{};
   mhd_device_info info{};
   const StatusCode code = static_cast<StatusCode>(library_->api().device_info(handle_, &info, &err));
@@ -218,7 +218,7 @@ PluginStatus PluginInstance::read_device_info() {
   return {};
 }
 
-PluginStatus PluginInstance::start() {
+Status<PluginError> PluginInstance::start() {
   if (state_ != PluginState::Open && state_ != PluginState::Stopped) {
     return error(PluginErrorKind::WrongState,
                  fmt::format("start called while the plugin is {}; it must be open or stopped", to_string(state_)));
@@ -234,7 +234,7 @@ PluginStatus PluginInstance::start() {
   return {};
 }
 
-PluginStatus PluginInstance::stop() {
+Status<PluginError> PluginInstance::stop() {
   if (state_ != PluginState::Running) {
     return error(PluginErrorKind::WrongState,
                  fmt::format("stop called while the plugin is {}; it must be running", to_string(state_)));
@@ -250,8 +250,8 @@ PluginStatus PluginInstance::stop() {
   return {};
 }
 
-PluginStatus PluginInstance::close() {
-  PluginStatus result;
+Status<PluginError> PluginInstance::close() {
+  Status<PluginError> result;
   if (state_ == PluginState::Running) result = stop();
   close_handle();
   state_ = PluginState::Closed;
@@ -263,8 +263,8 @@ void PluginInstance::close_handle() noexcept {
   handle_ = nullptr;
 }
 
-PluginResult<mhd_device_info> PluginInstance::device_info() const {
-  if (PluginStatus s = check_call("device_info", PluginKind::Device); !s) return s.error();
+Result<mhd_device_info, PluginError> PluginInstance::device_info() const {
+  if (Status<PluginError> s = check_call("device_info", PluginKind::Device); !s) return s.error();
   if (state_ != PluginState::Open && state_ != PluginState::Running && state_ != PluginState::Stopped) {
     return error(PluginErrorKind::WrongState,
                  fmt::format("device_info called while the plugin is {}; it must be open, running or stopped",
@@ -276,7 +276,7 @@ PluginResult<mhd_device_info> PluginInstance::device_info() const {
 namespace {
 
 /// Maps a read/write status; MHD_ERROR becomes CallFailed and unknown numbers InvalidData.
-PluginResult<PluginCallStatus> call_outcome(const std::string& plugin, std::string_view call, StatusCode code,
+Result<PluginCallStatus, PluginError> call_outcome(const std::string& plugin, std::string_view call, StatusCode code,
                                             const mhd_error& err) {
   switch (code) {
     case MHD_OK: return PluginCallStatus::Ok;
@@ -291,12 +291,12 @@ PluginResult<PluginCallStatus> call_outcome(const std::string& plugin, std::stri
 
 }  // namespace
 
-PluginResult<PluginCallStatus> PluginInstance::device_read(mhd_device_state& out) {
-  if (PluginStatus s = check_call("device_read", PluginKind::Device); !s) return s.error();
-  if (PluginStatus s = check_running("device_read"); !s) return s.error();
+Result<PluginCallStatus, PluginError> PluginInstance::device_read(mhd_device_state& out) {
+  if (Status<PluginError> s = check_call("device_read", PluginKind::Device); !s) return s.error();
+  if (Status<PluginError> s = check_running("device_read"); !s) return s.error();
   mhd_error err{};
   mhd_device_state state{};
-  PluginResult<PluginCallStatus> outcome =
+  Result<PluginCallStatus, PluginError> outcome =
       call_outcome(name(), "device_read", static_cast<StatusCode>(library_->api().device_read(handle_, &state, &err)), err);
   if (!outcome || outcome.value() != PluginCallStatus::Ok) return outcome;
   if (auto problem = device_state_problem(state)) {
@@ -306,9 +306,9 @@ PluginResult<PluginCallStatus> PluginInstance::device_read(mhd_device_state& out
   return outcome;
 }
 
-PluginResult<PluginCallStatus> PluginInstance::device_write(const mhd_device_command& command) {
-  if (PluginStatus s = check_call("device_write", PluginKind::Device); !s) return s.error();
-  if (PluginStatus s = check_running("device_write"); !s) return s.error();
+Result<PluginCallStatus, PluginError> PluginInstance::device_write(const mhd_device_command& command) {
+  if (Status<PluginError> s = check_call("device_write", PluginKind::Device); !s) return s.error();
+  if (Status<PluginError> s = check_running("device_write"); !s) return s.error();
   if (auto field = non_finite_in(command)) {
     return error(PluginErrorKind::InvalidData, fmt::format("refused to send a non-finite {} to device_write", *field));
   }
@@ -317,13 +317,13 @@ PluginResult<PluginCallStatus> PluginInstance::device_write(const mhd_device_com
   return call_outcome(name(), "device_write", static_cast<StatusCode>(library_->api().device_write(handle_, &clamped, &err)), err);
 }
 
-PluginResult<PluginCallStatus> PluginInstance::tracker_read(std::span<mhd_tracker_sample> out, std::size_t& count) {
+Result<PluginCallStatus, PluginError> PluginInstance::tracker_read(std::span<mhd_tracker_sample> out, std::size_t& count) {
   count = 0;
-  if (PluginStatus s = check_call("tracker_read", PluginKind::Tracker); !s) return s.error();
-  if (PluginStatus s = check_running("tracker_read"); !s) return s.error();
+  if (Status<PluginError> s = check_call("tracker_read", PluginKind::Tracker); !s) return s.error();
+  if (Status<PluginError> s = check_running("tracker_read"); !s) return s.error();
   mhd_error err{};
   std::size_t returned = 0;
-  PluginResult<PluginCallStatus> outcome = call_outcome(
+  Result<PluginCallStatus, PluginError> outcome = call_outcome(
       name(), "tracker_read",
       static_cast<StatusCode>(library_->api().tracker_read(handle_, out.data(), out.size(), &returned, &err)), err);
   if (!outcome || outcome.value() != PluginCallStatus::Ok) return outcome;
@@ -348,12 +348,12 @@ PluginResult<PluginCallStatus> PluginInstance::tracker_read(std::span<mhd_tracke
   return outcome;
 }
 
-PluginResult<PluginCallStatus> PluginInstance::base_read(mhd_base_state& out) {
-  if (PluginStatus s = check_call("base_read", PluginKind::Base); !s) return s.error();
-  if (PluginStatus s = check_running("base_read"); !s) return s.error();
+Result<PluginCallStatus, PluginError> PluginInstance::base_read(mhd_base_state& out) {
+  if (Status<PluginError> s = check_call("base_read", PluginKind::Base); !s) return s.error();
+  if (Status<PluginError> s = check_running("base_read"); !s) return s.error();
   mhd_error err{};
   mhd_base_state state{};
-  PluginResult<PluginCallStatus> outcome =
+  Result<PluginCallStatus, PluginError> outcome =
       call_outcome(name(), "base_read", static_cast<StatusCode>(library_->api().base_read(handle_, &state, &err)), err);
   if (!outcome || outcome.value() != PluginCallStatus::Ok) return outcome;
   if (auto field = non_finite_in(state)) {
@@ -363,9 +363,9 @@ PluginResult<PluginCallStatus> PluginInstance::base_read(mhd_base_state& out) {
   return outcome;
 }
 
-PluginResult<PluginCallStatus> PluginInstance::base_write(const mhd_base_command& command) {
-  if (PluginStatus s = check_call("base_write", PluginKind::Base); !s) return s.error();
-  if (PluginStatus s = check_running("base_write"); !s) return s.error();
+Result<PluginCallStatus, PluginError> PluginInstance::base_write(const mhd_base_command& command) {
+  if (Status<PluginError> s = check_call("base_write", PluginKind::Base); !s) return s.error();
+  if (Status<PluginError> s = check_running("base_write"); !s) return s.error();
   if (auto field = non_finite_in(command)) {
     return error(PluginErrorKind::InvalidData, fmt::format("refused to send a non-finite {} to base_write", *field));
   }
@@ -373,9 +373,9 @@ PluginResult<PluginCallStatus> PluginInstance::base_write(const mhd_base_command
   return call_outcome(name(), "base_write", static_cast<StatusCode>(library_->api().base_write(handle_, &command, &err)), err);
 }
 
-PluginResult<PluginCallStatus> PluginInstance::display_write(const mhd_display_frame& frame) {
-  if (PluginStatus s = check_call("display_write", PluginKind::Display); !s) return s.error();
-  if (PluginStatus s = check_running("display_write"); !s) return s.error();
+Result<PluginCallStatus, PluginError> PluginInstance::display_write(const mhd_display_frame& frame) {
+  if (Status<PluginError> s = check_call("display_write", PluginKind::Display); !s) return s.error();
+  if (Status<PluginError> s = check_running("display_write"); !s) return s.error();
   if (auto field = non_finite_in(frame)) {
     return error(PluginErrorKind::InvalidData, fmt::format("refused to send a non-finite {} to display_write", *field));
   }
@@ -383,11 +383,11 @@ PluginResult<PluginCallStatus> PluginInstance::display_write(const mhd_display_f
   return call_outcome(name(), "display_write", static_cast<StatusCode>(library_->api().display_write(handle_, &frame, &err)), err);
 }
 
-PluginResult<PluginCallStatus> PluginInstance::simulate_until(double t_s) {
+Result<PluginCallStatus, PluginError> PluginInstance::simulate_until(double t_s) {
   if (library_ && !simulates()) {
     return error(PluginErrorKind::WrongKind, "simulate_until called on a plugin that does not simulate");
   }
-  if (PluginStatus s = check_running("simulate_until"); !s) return s.error();
+  if (Status<PluginError> s = check_running("simulate_until"); !s) return s.error();
   if (!std::isfinite(t_s)) {
     return error(PluginErrorKind::InvalidData, "refused to send a non-finite t_s to simulate_until");
   }
@@ -395,9 +395,9 @@ PluginResult<PluginCallStatus> PluginInstance::simulate_until(double t_s) {
   return call_outcome(name(), "simulate_until", static_cast<StatusCode>(library_->api().simulate_until(handle_, t_s, &err)), err);
 }
 
-PluginResult<PluginCallStatus> PluginInstance::tracker_wait(double timeout_s) {
+Result<PluginCallStatus, PluginError> PluginInstance::tracker_wait(double timeout_s) {
   if (library_ && !waits()) return error(PluginErrorKind::WrongKind, "tracker_wait called on a plugin that does not wait");
-  if (PluginStatus s = check_running("tracker_wait"); !s) return s.error();
+  if (Status<PluginError> s = check_running("tracker_wait"); !s) return s.error();
   if (!std::isfinite(timeout_s)) {
     return error(PluginErrorKind::InvalidData, "refused to send a non-finite timeout_s to tracker_wait");
   }
@@ -407,7 +407,7 @@ PluginResult<PluginCallStatus> PluginInstance::tracker_wait(double timeout_s) {
                       err);
 }
 
-PluginResult<std::size_t> PluginInstance::counters(std::span<mhd_counter> out) {
+Result<std::size_t, PluginError> PluginInstance::counters(std::span<mhd_counter> out) {
   if (library_ && !counts()) return error(PluginErrorKind::WrongKind, "counters called on a plugin that keeps none");
   if (state_ != PluginState::Open && state_ != PluginState::Running && state_ != PluginState::Stopped) {
     return error(PluginErrorKind::WrongState,
@@ -415,7 +415,7 @@ PluginResult<std::size_t> PluginInstance::counters(std::span<mhd_counter> out) {
   }
   mhd_error err{};
   std::size_t count = 0;
-  PluginResult<PluginCallStatus> outcome = call_outcome(
+  Result<PluginCallStatus, PluginError> outcome = call_outcome(
       name(), "counters", static_cast<StatusCode>(library_->api().counters(handle_, out.data(), out.size(), &count, &err)), err);
   if (!outcome) return outcome.error();
   if (outcome.value() != PluginCallStatus::Ok) return std::size_t{0};

@@ -13,7 +13,8 @@
 // An instance is driven by one thread at a time; wrappers allocate only on error.
 
 #include "plugin_host/plugin_library.h"
-#include "plugin_host/plugin_result.h"
+#include "diagnostics/result.h"
+#include "plugin_host/plugin_error.h"
 
 #include <mhd/plugin_abi.h>
 
@@ -51,14 +52,14 @@ class PluginInstance {
   /// Loaded -> Open: calls open(params) with `host`, which must outlive this instance
   /// (the plugin may keep the pointer). A device's info is read and checked here.
   /// On failure the instance stays Loaded.
-  PluginStatus open(const std::map<std::string, std::string>& params, const mhd_host& host);
+  Status<PluginError> open(const std::map<std::string, std::string>& params, const mhd_host& host);
   /// Open or Stopped -> Running. On failure the state does not change.
-  PluginStatus start();
+  Status<PluginError> start();
   /// Running -> Stopped; the state changes even when the plugin reports an error.
-  PluginStatus stop();
+  Status<PluginError> stop();
   /// Any state -> Closed (stops a running plugin first and returns that error, if any).
   /// Closing a closed instance does nothing.
-  PluginStatus close();
+  Status<PluginError> close();
 
   [[nodiscard]] PluginState state() const noexcept { return state_; }
   [[nodiscard]] const std::string& name() const noexcept;
@@ -74,31 +75,31 @@ class PluginInstance {
 
   /// Device: what it reported at open (Open, Running or Stopped), checked
   /// (plugin_host/device_info_check.h).
-  [[nodiscard]] PluginResult<mhd_device_info> device_info() const;
-  [[nodiscard]] PluginResult<PluginCallStatus> device_read(mhd_device_state& out);
+  [[nodiscard]] Result<mhd_device_info, PluginError> device_info() const;
+  [[nodiscard]] Result<PluginCallStatus, PluginError> device_read(mhd_device_state& out);
   /// The force (torque) is scaled down to the device's max_force_N (max_torque_Nm) before
   /// the plugin sees it; a 3-DOF-out device gets a zero torque.
-  [[nodiscard]] PluginResult<PluginCallStatus> device_write(const mhd_device_command& command);
+  [[nodiscard]] Result<PluginCallStatus, PluginError> device_write(const mhd_device_command& command);
   /// Tracker: up to out.size() samples; `count` is how many were written (0 unless Ok).
-  [[nodiscard]] PluginResult<PluginCallStatus> tracker_read(std::span<mhd_tracker_sample> out, std::size_t& count);
-  [[nodiscard]] PluginResult<PluginCallStatus> base_read(mhd_base_state& out);
-  [[nodiscard]] PluginResult<PluginCallStatus> base_write(const mhd_base_command& command);
-  [[nodiscard]] PluginResult<PluginCallStatus> display_write(const mhd_display_frame& frame);
+  [[nodiscard]] Result<PluginCallStatus, PluginError> tracker_read(std::span<mhd_tracker_sample> out, std::size_t& count);
+  [[nodiscard]] Result<PluginCallStatus, PluginError> base_read(mhd_base_state& out);
+  [[nodiscard]] Result<PluginCallStatus, PluginError> base_write(const mhd_base_command& command);
+  [[nodiscard]] Result<PluginCallStatus, PluginError> display_write(const mhd_display_frame& frame);
   /// Simulated backends: advance to host time t_s (WrongKind when the plugin does not simulate).
-  [[nodiscard]] PluginResult<PluginCallStatus> simulate_until(double t_s);
+  [[nodiscard]] Result<PluginCallStatus, PluginError> simulate_until(double t_s);
   /// Tracker with tracker_wait (WrongKind otherwise): blocks up to timeout_s (clamped to
   /// 0..1 s) until tracker_read has data; Ok when it has, NoData on timeout.
-  [[nodiscard]] PluginResult<PluginCallStatus> tracker_wait(double timeout_s);
+  [[nodiscard]] Result<PluginCallStatus, PluginError> tracker_wait(double timeout_s);
   /// The plugin's counters (WrongKind when it keeps none): writes up to out.size() and
   /// returns how many were written. Every name is checked (present, printable, at most
   /// 64 characters) before it is handed on.
-  [[nodiscard]] PluginResult<std::size_t> counters(std::span<mhd_counter> out);
+  [[nodiscard]] Result<std::size_t, PluginError> counters(std::span<mhd_counter> out);
 
  private:
   [[nodiscard]] PluginError error(PluginErrorKind kind, std::string message) const;
-  [[nodiscard]] PluginStatus check_call(std::string_view call, PluginKind needed_kind) const;
-  [[nodiscard]] PluginStatus check_running(std::string_view call) const;
-  PluginStatus read_device_info();
+  [[nodiscard]] Status<PluginError> check_call(std::string_view call, PluginKind needed_kind) const;
+  [[nodiscard]] Status<PluginError> check_running(std::string_view call) const;
+  Status<PluginError> read_device_info();
   void close_handle() noexcept;
 
   std::shared_ptr<const PluginLibrary> library_;

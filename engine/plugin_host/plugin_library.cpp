@@ -79,7 +79,7 @@ PluginLibrary::PluginLibrary(void* handle, const mhd_plugin_api* api, PluginInfo
 
 PluginLibrary::~PluginLibrary() { dlclose(handle_); }
 
-PluginResult<std::shared_ptr<const PluginLibrary>> PluginLibrary::load(const fs::path& path) {
+Result<std::shared_ptr<const PluginLibrary>, PluginError> PluginLibrary::load(const fs::path& path) {
   const std::string file_name = plugin_name_from_file(path);
   auto fail = [&](PluginErrorKind kind, std::string message, const std::string& plugin = {}) {
     return PluginError{kind, plugin.empty() ? (file_name.empty() ? path.filename().string() : file_name) : plugin,

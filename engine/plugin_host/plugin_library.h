@@ -7,7 +7,8 @@
 // display: display_write). Any failure unloads the file and returns the reason.
 // The library stays loaded while a PluginLibrary exists; instances share it.
 
-#include "plugin_host/plugin_result.h"
+#include "diagnostics/result.h"
+#include "plugin_host/plugin_error.h"
 #include "scene/scene_description.h"
 
 #include <mhd/plugin_abi.h>
@@ -29,7 +30,7 @@ struct PluginInfo {
 class PluginLibrary {
  public:
   /// Loads and checks `path`. Errors name the plugin by its file name (libmhd_N.so: N).
-  [[nodiscard]] static PluginResult<std::shared_ptr<const PluginLibrary>> load(const std::filesystem::path& path);
+  [[nodiscard]] static Result<std::shared_ptr<const PluginLibrary>, PluginError> load(const std::filesystem::path& path);
 
   ~PluginLibrary();
   PluginLibrary(const PluginLibrary&) = delete;

@@ -89,7 +89,7 @@ PluginSearchPath PluginSearchPath::standard(const std::vector<fs::path>& command
   return PluginSearchPath(plugin_folders(command_line, env != nullptr ? env : "", ec ? fs::path() : executable));
 }
 
-PluginResult<fs::path> PluginSearchPath::find(std::string_view name) const {
+Result<fs::path, PluginError> PluginSearchPath::find(std::string_view name) const {
   if (!is_valid_plugin_name(name)) {
     return PluginError{PluginErrorKind::NotFound, std::string(name), {},
                        fmt::format("not a valid plugin name ({})", kValidPluginNameRule)};
@@ -111,8 +111,8 @@ PluginResult<fs::path> PluginSearchPath::find(std::string_view name) const {
                      fmt::format("not found (looked for {} in {})", file, searched)};
 }
 
-PluginResult<std::shared_ptr<const PluginLibrary>> PluginSearchPath::load(std::string_view name) const {
-  PluginResult<fs::path> path = find(name);
+Result<std::shared_ptr<const PluginLibrary>, PluginError> PluginSearchPath::load(std::string_view name) const {
+  Result<fs::path, PluginError> path = find(name);
   if (!path) return path.error();
   return PluginLibrary::load(path.value());
 }
@@ -129,9 +129,9 @@ std::vector<PluginListing> PluginSearchPath::list() const {
     std::sort(files.begin(), files.end());
     for (const fs::path& file : files) {
       const bool shadowed = !names_seen.insert(plugin_name_from_file(file)).second;
-      PluginResult<std::shared_ptr<const PluginLibrary>> library = PluginLibrary::load(file);
-      PluginResult<PluginInfo> loaded = library ? PluginResult<PluginInfo>(library.value()->info())
-                                                : PluginResult<PluginInfo>(library.error());
+      Result<std::shared_ptr<const PluginLibrary>, PluginError> library = PluginLibrary::load(file);
+      Result<PluginInfo, PluginError> loaded = library ? Result<PluginInfo, PluginError>(library.value()->info())
+                                                : Result<PluginInfo, PluginError>(library.error());
       listings.push_back(PluginListing{file, std::move(loaded), shadowed});
     }
   }

@@ -11,7 +11,8 @@
 // not that file loads (a broken file is reported, never silently skipped).
 
 #include "plugin_host/plugin_library.h"
-#include "plugin_host/plugin_result.h"
+#include "diagnostics/result.h"
+#include "plugin_host/plugin_error.h"
 
 #include <filesystem>
 #include <memory>
@@ -52,7 +53,7 @@ struct PluginFolder {
 /// One plugin file found by list().
 struct PluginListing {
   std::filesystem::path path;
-  PluginResult<PluginInfo> loaded;  ///< what the plugin says, or why it did not load
+  Result<PluginInfo, PluginError> loaded;  ///< what the plugin says, or why it did not load
   bool shadowed = false;            ///< an earlier folder holds the same name; find() never returns this file
 };
 
@@ -66,10 +67,10 @@ class PluginSearchPath {
   [[nodiscard]] const std::vector<PluginFolder>& folders() const noexcept { return folders_; }
 
   /// The first folder's libmhd_NAME.so; NotFound names every folder searched.
-  [[nodiscard]] PluginResult<std::filesystem::path> find(std::string_view name) const;
+  [[nodiscard]] Result<std::filesystem::path, PluginError> find(std::string_view name) const;
 
   /// find() and PluginLibrary::load().
-  [[nodiscard]] PluginResult<std::shared_ptr<const PluginLibrary>> load(std::string_view name) const;
+  [[nodiscard]] Result<std::shared_ptr<const PluginLibrary>, PluginError> load(std::string_view name) const;
 
   /// Every libmhd_*.so in every folder, folder by folder in search order and by file
   /// name within a folder; each is loaded (and unloaded) to read what it says. A file

@@ -24,9 +24,9 @@ std::optional<std::string> declared_param_problems(const PluginLibrary& library,
   return message;
 }
 
-PluginResult<std::shared_ptr<const PluginLibrary>> load_scene_plugin(const PluginSearchPath& search,
+Result<std::shared_ptr<const PluginLibrary>, PluginError> load_scene_plugin(const PluginSearchPath& search,
                                                                      const PluginDescription& description) {
-  PluginResult<std::shared_ptr<const PluginLibrary>> library = search.load(description.name);
+  Result<std::shared_ptr<const PluginLibrary>, PluginError> library = search.load(description.name);
   if (!library) return library.error();
   const PluginLibrary& loaded = *library.value();
   if (loaded.kind() != description.kind) {
@@ -37,8 +37,8 @@ PluginResult<std::shared_ptr<const PluginLibrary>> load_scene_plugin(const Plugi
   return library;
 }
 
-PluginStatus check_scene_plugin(const PluginSearchPath& search, const PluginDescription& description) {
-  PluginResult<std::shared_ptr<const PluginLibrary>> library = load_scene_plugin(search, description);
+Status<PluginError> check_scene_plugin(const PluginSearchPath& search, const PluginDescription& description) {
+  Result<std::shared_ptr<const PluginLibrary>, PluginError> library = load_scene_plugin(search, description);
   if (!library) return library.error();
   const PluginLibrary& loaded = *library.value();
   if (auto problems = declared_param_problems(loaded, description.params)) {

@@ -5,7 +5,8 @@
 // validate` reports these; `mhd run` refuses the same things before open().
 
 #include "plugin_host/plugin_library.h"
-#include "plugin_host/plugin_result.h"
+#include "diagnostics/result.h"
+#include "plugin_host/plugin_error.h"
 #include "plugin_host/plugin_search_path.h"
 #include "scene/scene_description.h"
 
@@ -25,11 +26,11 @@ namespace mhd {
 /// Loads the plugin the scene names and checks it is the kind the scene asks for: the
 /// library, or the first error (NotFound ... WrongKind). open_plugin and
 /// check_scene_plugin both start here.
-[[nodiscard]] PluginResult<std::shared_ptr<const PluginLibrary>> load_scene_plugin(
+[[nodiscard]] Result<std::shared_ptr<const PluginLibrary>, PluginError> load_scene_plugin(
     const PluginSearchPath& search, const PluginDescription& description);
 
 /// Loads the plugin the scene names (and unloads it again), checks its kind and the
 /// scene's parameters: the first error (NotFound ... WrongKind, BadParameter), else ok.
-[[nodiscard]] PluginStatus check_scene_plugin(const PluginSearchPath& search, const PluginDescription& description);
+[[nodiscard]] Status<PluginError> check_scene_plugin(const PluginSearchPath& search, const PluginDescription& description);
 
 }  // namespace mhd

@@ -7,8 +7,8 @@
 
 namespace mhd::realtime {
 
-PriorityResult make_current_thread_realtime(int priority) noexcept {
-  PriorityResult r;
+RealtimePriority make_current_thread_realtime(int priority) noexcept {
+  RealtimePriority r;
   try {
     sched_param param{};
     param.sched_priority = priority;

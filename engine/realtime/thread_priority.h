@@ -7,12 +7,12 @@
 
 namespace mhd::realtime {
 
-struct PriorityResult {
+struct RealtimePriority {
   bool realtime = false;
   std::string detail;  ///< "SCHED_FIFO 80", or why it was refused
 };
 
 /// Asks for SCHED_FIFO at `priority` (1-99) for the calling thread.
-PriorityResult make_current_thread_realtime(int priority) noexcept;
+RealtimePriority make_current_thread_realtime(int priority) noexcept;
 
 }  // namespace mhd::realtime

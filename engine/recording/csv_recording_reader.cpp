@@ -50,14 +50,12 @@ Diagnostic at(const std::string& file, int line, std::string message) {
 
 }  // namespace
 
-RecordingReadResult read_recording(const std::filesystem::path& file) {
-  RecordingReadResult out;
+Result<std::vector<RecordingRow>> read_recording(const std::filesystem::path& file) {
   const std::string name = file.string();
   std::ifstream in(file, std::ios::binary);
-  if (!in) {
-    out.diagnostics.push_back(at(name, 0, "cannot read the recording"));
-    return out;
-  }
+  if (!in) return at(name, 0, "cannot read the recording");
+  std::vector<RecordingRow> rows;
+  Diagnostics errors;
   std::stringstream buffer;
   buffer << in.rdbuf();
   const std::string text = buffer.str();
@@ -77,17 +75,16 @@ RecordingReadResult read_recording(const std::filesystem::path& file) {
       for (std::size_t i = 0; i < cells.size(); ++i) column.emplace(std::string(cells[i]), i);
       for (const std::string_view name_expected : expected) {
         if (column.find(name_expected) == column.end()) {
-          out.diagnostics.push_back(at(name, 1, "missing column '" + std::string(name_expected) + "'"));
+          errors.push_back(at(name, 1, "missing column '" + std::string(name_expected) + "'"));
         }
       }
-      if (!out.diagnostics.empty()) return out;
+      if (!errors.empty()) return errors;
       continue;
     }
     if (cells.size() != column.size()) {
-      out.diagnostics.push_back(at(name, line_number, "expected " + std::to_string(column.size()) + " fields, found " +
+      errors.push_back(at(name, line_number, "expected " + std::to_string(column.size()) + " fields, found " +
                                                           std::to_string(cells.size())));
-      out.rows.clear();
-      return out;
+      return errors;
     }
     RecordingRow row;
     bool ok = true;
@@ -95,7 +92,7 @@ RecordingReadResult read_recording(const std::filesystem::path& file) {
       if (!ok) return;
       const std::string_view cell = cells[column.find(col)->second];
       if (!parse_number(cell, value)) {
-        out.diagnostics.push_back(
+        errors.push_back(
             at(name, line_number, "column '" + std::string(col) + "' is not a number: '" + std::string(cell) + "'"));
         ok = false;
       }
@@ -128,15 +125,14 @@ RecordingReadResult read_recording(const std::filesystem::path& file) {
     get("contact", contact);
     get("contact_object", contact_object);
     if (!ok) {
-      out.rows.clear();
-      return out;
+      return errors;
     }
     row.contact = contact != 0.0 ? 1 : 0;
     row.contact_object = static_cast<std::int32_t>(contact_object);
-    out.rows.push_back(row);
+    rows.push_back(row);
   }
-  if (line_number == 0) out.diagnostics.push_back(at(name, 0, "the recording has no header line"));
-  return out;
+  if (line_number == 0) return at(name, 0, "the recording has no header line");
+  return rows;
 }
 
 }  // namespace mhd

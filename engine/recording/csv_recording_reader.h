@@ -4,21 +4,15 @@
 // that does not parse is an error naming the file and line.
 
 #include "recording/recording_row.h"
-#include "diagnostics/diagnostic.h"
+#include "diagnostics/result.h"
 
 #include <filesystem>
 #include <vector>
 
 namespace mhd {
 
-struct RecordingReadResult {
-  std::vector<RecordingRow> rows;
-  Diagnostics diagnostics;  ///< rows is empty when there is any
-  [[nodiscard]] bool ok() const noexcept { return diagnostics.empty(); }
-};
-
-/// A last line without its newline (a recording cut short by a crash) is skipped, not an
+/// Every row, or the first problem found (no rows then). A last line without its newline (a recording cut short by a crash) is skipped, not an
 /// error: everything up to the last complete line is read.
-[[nodiscard]] RecordingReadResult read_recording(const std::filesystem::path& file);
+[[nodiscard]] Result<std::vector<RecordingRow>> read_recording(const std::filesystem::path& file);
 
 }  // namespace mhd

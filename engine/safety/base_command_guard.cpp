@@ -45,8 +45,8 @@ bool BaseCommandGuard::keep_out(BaseTwist& t, const BaseGuardInput& in) const no
   return true;
 }
 
-BaseGuardResult BaseCommandGuard::apply(const BaseTwist& command_B, const BaseGuardInput& in) noexcept {
-  BaseGuardResult out;
+BaseGuardDecision BaseCommandGuard::apply(const BaseTwist& command_B, const BaseGuardInput& in) noexcept {
+  BaseGuardDecision out;
   const BaseStopCause cause = stop_cause(command_B, in);
   if (cause != BaseStopCause::None) {
     if (cause != previous_cause_) {

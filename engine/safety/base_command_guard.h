@@ -48,7 +48,7 @@ struct BaseGuardInput {
 enum class BaseGuardAction { Passed, Scaled, Stopped, Deflected };
 enum class BaseStopCause { None, NotFinite, BaseStale, HeadStale };
 
-struct BaseGuardResult {
+struct BaseGuardDecision {
   BaseTwist twist_B;
   BaseGuardAction action = BaseGuardAction::Passed;
   BaseStopCause stop_cause = BaseStopCause::None;
@@ -67,7 +67,7 @@ class BaseCommandGuard {
  public:
   explicit BaseCommandGuard(const BaseCommandGuardSettings& settings = {}) noexcept;
 
-  [[nodiscard]] BaseGuardResult apply(const BaseTwist& command_B, const BaseGuardInput& input) noexcept;
+  [[nodiscard]] BaseGuardDecision apply(const BaseTwist& command_B, const BaseGuardInput& input) noexcept;
 
   [[nodiscard]] const BaseCommandGuardSettings& settings() const noexcept { return settings_; }
   [[nodiscard]] const BaseStopCounts& counts() const noexcept { return counts_; }

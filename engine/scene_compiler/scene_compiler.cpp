@@ -78,14 +78,14 @@ class Compiler {
         cache_(options.use_cache ? (options.cache_dir ? options.cache_dir : default_mesh_cache_dir())
                                  : std::nullopt) {}
 
-  CompileResult run() {
-    CompileResult result;
+  Result<std::unique_ptr<CompiledScene>> run() {
+    Diagnostics errors;
     const auto& objects = description_.objects;
     std::vector<std::shared_ptr<const MeshBvh>> shapes(objects.size());
     std::vector<std::shared_ptr<const HapticTexture>> textures(objects.size());
 
     if (!positive_finite(description_.haptics.max_force_N)) {
-      result.diagnostics.push_back(
+      errors.push_back(
           make_diagnostic(file_location(description_.file),
                           fmt::format("haptics: max force must be positive and finite (got {} N)",
                                       description_.haptics.max_force_N)));
@@ -109,14 +109,14 @@ class Compiler {
         }
       }
       if (!error.empty()) {
-        result.diagnostics.push_back(make_diagnostic(object.where, fmt::format("object '{}': {}", object.name, error)));
+        errors.push_back(make_diagnostic(object.where, fmt::format("object '{}': {}", object.name, error)));
       }
       if (std::string texture_error = texture_for(object, textures[i]); !texture_error.empty()) {
-        result.diagnostics.push_back(
+        errors.push_back(
             make_diagnostic(object.where, fmt::format("object '{}': texture: {}", object.name, texture_error)));
       }
     }
-    if (!result.diagnostics.empty()) return result;  // nothing half-loaded
+    if (!errors.empty()) return errors;  // nothing half-loaded
 
     auto scene = std::make_unique<CompiledScene>();
     scene->name = description_.name;
@@ -143,8 +143,7 @@ class Compiler {
                   "{} rejected)",
                   scene->name, objects.size(), scene->triangle_count, meshes_.size() + primitives_.size(),
                   stats.hits, stats.misses, stats.rejected);
-    result.scene = std::move(scene);
-    return result;
+    return scene;
   }
 
  private:
@@ -316,14 +315,12 @@ class Compiler {
 
 }  // namespace
 
-CompileResult compile_scene(const SceneDescription& description, const CompileOptions& options) {
+Result<std::unique_ptr<CompiledScene>> compile_scene(const SceneDescription& description,
+                                                     const CompileOptions& options) {
   try {
     return Compiler(description, options).run();
   } catch (const std::exception& e) {
-    CompileResult result;
-    result.diagnostics.push_back(
-        make_diagnostic(file_location(description.file), fmt::format("cannot compile scene: {}", e.what())));
-    return result;
+    return make_diagnostic(file_location(description.file), fmt::format("cannot compile scene: {}", e.what()));
   }
 }
 

@@ -2,7 +2,7 @@
 // Turns a SceneDescription into a CompiledScene: loads meshes (assimp), tessellates
 // primitives, builds or fetches BVHs from the on-disk cache.
 
-#include "diagnostics/diagnostic.h"
+#include "diagnostics/result.h"
 #include "scene/scene_description.h"
 #include "scene_compiler/compiled_scene.h"
 
@@ -22,13 +22,8 @@ struct CompileOptions {
   std::function<void(std::string_view, double)> progress;
 };
 
-struct CompileResult {
-  std::unique_ptr<CompiledScene> scene;  ///< null when diagnostics is non-empty
-  Diagnostics diagnostics;
-  [[nodiscard]] bool ok() const { return scene != nullptr; }
-};
-
-[[nodiscard]] CompileResult compile_scene(const SceneDescription& description,
-                                          const CompileOptions& options = {});
+/// The compiled scene (never null), or every object's problem (nothing half-loaded).
+[[nodiscard]] Result<std::unique_ptr<CompiledScene>> compile_scene(const SceneDescription& description,
+                                                                   const CompileOptions& options = {});
 
 }  // namespace mhd

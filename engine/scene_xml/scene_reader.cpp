@@ -178,16 +178,14 @@ class SceneReader {
     read_root(*bytes, file);
   }
 
-  SceneReadResult finish() {
+  Result<SceneDescription> finish() {
     resolve_material_references();
     check_stiffness_against_rate();
     scene_xml::check_frame_graph(scene_.rig_frames, diagnostics_);
     const Diagnostics rig = check_rig_kind(scene_);
     diagnostics_.insert(diagnostics_.end(), rig.begin(), rig.end());
-    SceneReadResult result;
-    result.diagnostics = std::move(diagnostics_);
-    if (result.diagnostics.empty()) result.scene = std::move(scene_);
-    return result;
+    if (!diagnostics_.empty()) return std::move(diagnostics_);
+    return std::move(scene_);
   }
 
  private:
@@ -799,13 +797,13 @@ class SceneReader {
 
 }  // namespace
 
-SceneReadResult read_scene_file(const std::filesystem::path& file) {
+Result<SceneDescription> read_scene_file(const std::filesystem::path& file) {
   SceneReader reader;
   reader.read_root_file(file);
   return reader.finish();
 }
 
-SceneReadResult read_scene_string(std::string_view xml, const std::filesystem::path& file) {
+Result<SceneDescription> read_scene_string(std::string_view xml, const std::filesystem::path& file) {
   SceneReader reader;
   reader.read_root(xml, file);
   return reader.finish();

@@ -3,7 +3,7 @@
 // Every problem is reported with file:line; a scene with any error is not returned,
 // so nothing is ever half-loaded.
 
-#include "diagnostics/diagnostic.h"
+#include "diagnostics/result.h"
 #include "scene/scene_description.h"
 
 #include <filesystem>
@@ -12,18 +12,13 @@
 
 namespace mhd {
 
-struct SceneReadResult {
-  std::optional<SceneDescription> scene;  ///< set only when diagnostics is empty
-  Diagnostics diagnostics;                ///< every problem found, in file order
-  [[nodiscard]] bool ok() const { return scene.has_value(); }
-};
-
-/// Reads a scene file and its includes. Mesh files are checked to exist and be
+/// Reads a scene file and its includes: the scene, or every problem found in it, in
+/// file order (never half a scene). Mesh files are checked to exist and be
 /// readable, not loaded.
-[[nodiscard]] SceneReadResult read_scene_file(const std::filesystem::path& file);
+[[nodiscard]] Result<SceneDescription> read_scene_file(const std::filesystem::path& file);
 
 /// Reads scene XML from memory; relative paths resolve against `file`'s folder and
 /// diagnostics name `file`.
-[[nodiscard]] SceneReadResult read_scene_string(std::string_view xml, const std::filesystem::path& file);
+[[nodiscard]] Result<SceneDescription> read_scene_string(std::string_view xml, const std::filesystem::path& file);
 
 }  // namespace mhd

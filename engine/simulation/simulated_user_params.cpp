@@ -9,7 +9,7 @@
 
 namespace mhd::simulation {
 
-SimulatedUserParamsResult simulated_user_config_from(const ParamBlock& block) {
+Result<SimulatedUserConfig> simulated_user_config_from(const ParamBlock& block) {
   constexpr double kDegToRad = std::numbers::pi / 180.0;
   ParamBlockReader r(&block, "<simulated_user>");
   SimulatedUserConfig c;
@@ -46,17 +46,14 @@ SimulatedUserParamsResult simulated_user_config_from(const ParamBlock& block) {
       c.gaze_target_W = g;
     }
   }
-  SimulatedUserParamsResult out;
-  out.diagnostics = r.finish();
-  if (!out.diagnostics.empty()) return out;
+  Diagnostics errors = r.finish();
+  if (!errors.empty()) return errors;
   try {
     SimulatedUser check(c);  // the constructor validates the whole configuration
   } catch (const std::invalid_argument& e) {
-    out.diagnostics.push_back({block.where, std::string("<simulated_user>: ") + e.what()});
-    return out;
+    return Diagnostic{block.where, std::string("<simulated_user>: ") + e.what()};
   }
-  out.config = std::move(c);
-  return out;
+  return c;
 }
 
 }  // namespace mhd::simulation

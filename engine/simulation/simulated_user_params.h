@@ -6,7 +6,7 @@
 // eye_height_m, hand_reach_m, hand_height_m, hand_motion_amplitude_m, gaze_target_m
 // ("x y z"). See docs/simulation.md for what each does.
 
-#include "diagnostics/diagnostic.h"
+#include "diagnostics/result.h"
 #include "scene/scene_description.h"
 #include "simulation/simulated_user.h"
 
@@ -14,13 +14,8 @@
 
 namespace mhd::simulation {
 
-struct SimulatedUserParamsResult {
-  std::optional<SimulatedUserConfig> config;  ///< set when diagnostics is empty
-  Diagnostics diagnostics;
-};
-
 /// Reads and checks every parameter (each error at its param's file:line), and checks
 /// the whole configuration as SimulatedUser would.
-[[nodiscard]] SimulatedUserParamsResult simulated_user_config_from(const ParamBlock& block);
+[[nodiscard]] Result<SimulatedUserConfig> simulated_user_config_from(const ParamBlock& block);
 
 }  // namespace mhd::simulation

@@ -27,12 +27,12 @@ std::optional<TriangleMesh> shape_mesh(const ShapeSource& shape, std::string& er
       [&](const auto& s) -> std::optional<TriangleMesh> {
         using S = std::decay_t<decltype(s)>;
         if constexpr (std::is_same_v<S, MeshSource>) {
-          MeshLoadResult loaded = load_mesh_file(s.file, s.scale_to_m);
+          Result<LoadedMesh, MeshLoadError> loaded = load_mesh_file(s.file, s.scale_to_m);
           if (!loaded.ok()) {
-            error = loaded.error ? loaded.error->message() : fmt::format("mesh file '{}': cannot load", s.file.string());
+            error = loaded.error().message();
             return std::nullopt;
           }
-          return std::move(*loaded.mesh);
+          return std::move(loaded->mesh);
         } else if constexpr (std::is_same_v<S, PlaneSource>) {
           return make_plane_mesh(s.size_x_m, s.size_y_m);
         } else if constexpr (std::is_same_v<S, SphereSource>) {

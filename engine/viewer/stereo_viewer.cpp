@@ -58,17 +58,17 @@ Pose pick_default_head(const Eigen::AlignedBox3d& bounds, const ViewerOptions& o
 ViewerSceneResult load_viewer_scene(const std::filesystem::path& scene_file,
                                     const std::optional<std::filesystem::path>& rig_file) {
   ViewerSceneResult result;
-  SceneReadResult read = read_scene_file(scene_file);
-  for (const Diagnostic& d : read.diagnostics) result.errors.push_back(d.to_string());
+  Result<SceneDescription> read = read_scene_file(scene_file);
+  for (const Diagnostic& d : read.diagnostics()) result.errors.push_back(d.to_string());
   if (!read.ok()) return result;
-  ViewerScene viewer_scene{std::move(*read.scene), std::nullopt};
+  ViewerScene viewer_scene{std::move(*read), std::nullopt};
 
   std::vector<FrameDescription> frames = viewer_scene.scene.rig_frames;
   if (rig_file) {
-    SceneReadResult rig_read = read_scene_file(*rig_file);
-    for (const Diagnostic& d : rig_read.diagnostics) result.errors.push_back(d.to_string());
+    Result<SceneDescription> rig_read = read_scene_file(*rig_file);
+    for (const Diagnostic& d : rig_read.diagnostics()) result.errors.push_back(d.to_string());
     if (!rig_read.ok()) return result;
-    frames = rig_read.scene->rig_frames;
+    frames = rig_read->rig_frames;
     if (frames.empty()) {
       result.errors.push_back(fmt::format("{}: error: the rig file defines no rig frames", rig_file->string()));
       return result;
@@ -79,10 +79,12 @@ ViewerSceneResult load_viewer_scene(const std::filesystem::path& scene_file,
                            "workspace is not drawn (give a rig file, e.g. scenes/rigs/pomhi.xml)");
   } else {
     // The scene's own rig may be a desktop one (a device frame alone); a rig file is mobile.
-    RigBuildResult rig = rig_file ? Rig::from_frames(frames) : Rig::from_scene(viewer_scene.scene);
-    for (const RigError& e : rig.errors) result.errors.push_back(e.to_string());
-    if (!rig.ok()) return result;
-    viewer_scene.rig = std::move(rig.rig);
+    Result<Rig, std::vector<RigError>> rig = rig_file ? Rig::from_frames(frames) : Rig::from_scene(viewer_scene.scene);
+    if (!rig.ok()) {
+      for (const RigError& e : rig.error()) result.errors.push_back(e.to_string());
+      return result;
+    }
+    viewer_scene.rig = std::move(rig).value();
   }
   result.scene = std::move(viewer_scene);
   return result;

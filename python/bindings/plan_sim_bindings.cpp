@@ -73,7 +73,7 @@ py::dict simulate_cases(const py::array_t<double, py::array::c_style | py::array
   {
     py::gil_scoped_release unlocked;
     for (py::ssize_t k = 0; k < n; ++k) {
-      const plan_sim::CaseResult r = plan_sim::simulate_case(kind, s, spec, Eigen::Vector2d(user[2 * k], user[2 * k + 1]));
+      const plan_sim::CaseFigures r = plan_sim::simulate_case(kind, s, spec, Eigen::Vector2d(user[2 * k], user[2 * k + 1]));
       f[k] = r.followed;
       t[k] = r.followed ? r.time_s : std::nan("");
       e[k] = r.base_entered;

@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <string_view>
 #include <utility>
+#include <optional>
 #include <vector>
 
 namespace py = pybind11;
@@ -79,14 +80,14 @@ py::dtype recording_dtype() {
 }
 
 py::array read(const std::filesystem::path& file) {
-  RecordingReadResult read;
+  std::optional<Result<std::vector<RecordingRow>>> read;
   {
     py::gil_scoped_release unlocked;
-    read = read_recording(file);
+    read.emplace(read_recording(file));
   }
-  if (!read.ok()) throw EngineError(std::move(read.diagnostics));
+  if (!read->ok()) throw EngineError(read->error());
   // The array borrows the rows' memory; the capsule frees it with the array.
-  auto* rows = new std::vector<RecordingRow>(std::move(read.rows));
+  auto* rows = new std::vector<RecordingRow>(std::move(*read).value());
   const py::capsule owner(rows, [](void* p) { delete static_cast<std::vector<RecordingRow>*>(p); });
   return py::array(recording_dtype(), {static_cast<py::ssize_t>(rows->size())}, {}, rows->data(), owner);
 }

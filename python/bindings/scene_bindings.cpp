@@ -24,19 +24,17 @@ namespace py = pybind11;
 namespace mhd::python {
 namespace {
 
-SceneHandle scene_or_throw(SceneReadResult read) {
-  if (!read.ok()) throw EngineError(std::move(read.diagnostics));
-  return SceneHandle{std::make_shared<const SceneDescription>(std::move(*read.scene))};
+SceneHandle scene_or_throw(Result<SceneDescription> read) {
+  if (!read.ok()) throw EngineError(read.error());
+  return SceneHandle{std::make_shared<const SceneDescription>(std::move(*read))};
 }
 
 /// compile_scene, with an exception from a mesh library turned into a file-level diagnostic.
-CompileResult compile(const SceneDescription& description, const CompileOptions& options) {
+Result<std::unique_ptr<CompiledScene>> compile(const SceneDescription& description, const CompileOptions& options) {
   try {
     return compile_scene(description, options);
   } catch (const std::exception& e) {
-    CompileResult failed;
-    failed.diagnostics.push_back(Diagnostic{SourceLocation{description.file.string(), 0}, e.what()});
-    return failed;
+    return Diagnostic{SourceLocation{description.file.string(), 0}, e.what()};
   }
 }
 
@@ -103,12 +101,12 @@ void bind_scene(py::module_& m) {
   m.def(
       "read_scene",
       [](const std::filesystem::path& file) {
-        SceneReadResult read;
+        std::optional<Result<SceneDescription>> read;
         {
           py::gil_scoped_release unlocked;
-          read = read_scene_file(file);
+          read.emplace(read_scene_file(file));
         }
-        return scene_or_throw(std::move(read));
+        return scene_or_throw(std::move(*read));
       },
       py::arg("file"), "Reads a scene XML file and its includes; MhdError lists every problem at file:line.");
   m.def(
@@ -122,9 +120,9 @@ void bind_scene(py::module_& m) {
       "validate",
       [](const std::filesystem::path& file, bool meshes, bool use_cache) {
         py::gil_scoped_release unlocked;
-        SceneReadResult read = read_scene_file(file);
-        if (!read.ok() || !meshes) return std::move(read.diagnostics);
-        return compile(*read.scene, compile_options(use_cache, std::nullopt)).diagnostics;
+        Result<SceneDescription> read = read_scene_file(file);
+        if (!read.ok() || !meshes) return read.diagnostics();
+        return compile(*read, compile_options(use_cache, std::nullopt)).diagnostics();
       },
       py::arg("file"), py::arg("meshes") = true, py::arg("use_cache") = true,
       "Every problem of a scene file, as `mhd validate` finds them: read, then (meshes=True) compile. "
@@ -132,13 +130,13 @@ void bind_scene(py::module_& m) {
   m.def(
       "compile_scene",
       [](const SceneHandle& scene, bool use_cache, const std::optional<std::filesystem::path>& cache_dir) {
-        CompileResult compiled;
+        std::optional<Result<std::unique_ptr<CompiledScene>>> compiled;
         {
           py::gil_scoped_release unlocked;
-          compiled = compile(*scene.description, compile_options(use_cache, cache_dir));
+          compiled.emplace(compile(*scene.description, compile_options(use_cache, cache_dir)));
         }
-        if (!compiled.ok()) throw EngineError(std::move(compiled.diagnostics));
-        return CompiledSceneHandle{scene.description, std::shared_ptr<const CompiledScene>(std::move(compiled.scene))};
+        if (!compiled->ok()) throw EngineError(compiled->error());
+        return CompiledSceneHandle{scene.description, std::shared_ptr<const CompiledScene>(std::move(*compiled).value())};
       },
       py::arg("scene"), py::arg("use_cache") = true, py::arg("cache_dir") = py::none(),
       "Loads the meshes and builds (or reads from the cache) their BVHs; MhdError names each problem.");

@@ -84,9 +84,9 @@ TEST_F(CalibrateCommand, SynthesizeThenCalibrateWritesARigThatReadsBack) {
   EXPECT_NE(c.out.find("psi (robot yaw about base_sensor z): 1.5"), std::string::npos) << c.out;
   EXPECT_NE(c.out.find("wrote " + rig + " (calibrated copy of " + kPomhi + ")"), std::string::npos) << c.out;
 
-  const mhd::SceneReadResult read = mhd::read_scene_file(rig);
+  const mhd::Result<mhd::SceneDescription> read = mhd::read_scene_file(rig);
   ASSERT_TRUE(read.ok());
-  EXPECT_TRUE(mhd::Rig::from_scene(*read.scene).ok());
+  EXPECT_TRUE(mhd::Rig::from_scene(*read).ok());
 
   std::ifstream in(residuals);
   std::string header;

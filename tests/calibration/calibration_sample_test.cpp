@@ -18,9 +18,9 @@ constexpr const char* kHeader =
     "hip_x_m,hip_y_m,hip_z_m\n";
 constexpr const char* kRow = "0.2,0.1,1.4,1,0,0,0,0.1,0.2,0.3,0.5,1.0,-0.2\n";
 
-std::string messages(const SampleReadResult& r) {
+std::string messages(const Result<std::vector<CalibrationSample>>& r) {
   std::string out;
-  for (const Diagnostic& d : r.errors) out += d.to_string() + "\n";
+  for (const Diagnostic& d : r.diagnostics()) out += d.to_string() + "\n";
   return out;
 }
 
@@ -35,14 +35,14 @@ TEST(CalibrationSamples, RoundTripKeepsEveryValue) {
   }
   const std::string text = format_calibration_samples(samples, {"a comment", "another"});
   EXPECT_EQ(text.rfind("# a comment\n# another\nsensor_x_m,", 0), 0U) << text;
-  const SampleReadResult read = parse_calibration_samples(text, "round.csv");
+  const Result<std::vector<CalibrationSample>> read = parse_calibration_samples(text, "round.csv");
   ASSERT_TRUE(read.ok()) << messages(read);
-  ASSERT_EQ(read.samples.size(), samples.size());
+  ASSERT_EQ(read.value().size(), samples.size());
   for (std::size_t i = 0; i < samples.size(); ++i) {
-    EXPECT_TRUE(read.samples[i].X_is900_base_sensor.isApprox(samples[i].X_is900_base_sensor, 1e-9));
-    EXPECT_TRUE(read.samples[i].q_rad.isApprox(samples[i].q_rad, 1e-9));
-    EXPECT_TRUE(read.samples[i].p_W_hip_measured_m.isApprox(samples[i].p_W_hip_measured_m, 1e-9));
-    EXPECT_EQ(read.samples[i].line, static_cast<int>(i) + 4);  // two comments and the header first
+    EXPECT_TRUE(read.value()[i].X_is900_base_sensor.isApprox(samples[i].X_is900_base_sensor, 1e-9));
+    EXPECT_TRUE(read.value()[i].q_rad.isApprox(samples[i].q_rad, 1e-9));
+    EXPECT_TRUE(read.value()[i].p_W_hip_measured_m.isApprox(samples[i].p_W_hip_measured_m, 1e-9));
+    EXPECT_EQ(read.value()[i].line, static_cast<int>(i) + 4);  // two comments and the header first
   }
 }
 
@@ -52,47 +52,47 @@ TEST(CalibrationSamples, ColumnsAreFoundByNameInAnyOrderAndExtraColumnsAreIgnore
       "sensor_z_m,sensor_y_m,sensor_x_m\n"
       "\n# a note\n"
       "7.5,-0.2,1.0,0.5,0.3,0.2,0.1,0,0,0,1,1.4,0.1,0.2\n";
-  const SampleReadResult read = parse_calibration_samples(text, "any_order.csv");
+  const Result<std::vector<CalibrationSample>> read = parse_calibration_samples(text, "any_order.csv");
   ASSERT_TRUE(read.ok()) << messages(read);
-  ASSERT_EQ(read.samples.size(), 1U);
-  EXPECT_TRUE(read.samples[0].X_is900_base_sensor.translation().isApprox(Eigen::Vector3d(0.2, 0.1, 1.4)));
-  EXPECT_TRUE(read.samples[0].q_rad.isApprox(Eigen::Vector3d(0.1, 0.2, 0.3)));
-  EXPECT_TRUE(read.samples[0].p_W_hip_measured_m.isApprox(Eigen::Vector3d(0.5, 1.0, -0.2)));
-  EXPECT_EQ(read.samples[0].line, 4);
+  ASSERT_EQ(read.value().size(), 1U);
+  EXPECT_TRUE(read.value()[0].X_is900_base_sensor.translation().isApprox(Eigen::Vector3d(0.2, 0.1, 1.4)));
+  EXPECT_TRUE(read.value()[0].q_rad.isApprox(Eigen::Vector3d(0.1, 0.2, 0.3)));
+  EXPECT_TRUE(read.value()[0].p_W_hip_measured_m.isApprox(Eigen::Vector3d(0.5, 1.0, -0.2)));
+  EXPECT_EQ(read.value()[0].line, 4);
 }
 
 TEST(CalibrationSamples, MissingColumnNamesTheHeaderLine) {
   const std::string text = "# comment\nsensor_x_m,sensor_y_m,sensor_z_m,sensor_qw,sensor_qx,sensor_qy,sensor_qz,"
                            "theta1_rad,theta3_rad,hip_x_m,hip_y_m,hip_z_m\n";
-  const SampleReadResult read = parse_calibration_samples(text, "s.csv");
+  const Result<std::vector<CalibrationSample>> read = parse_calibration_samples(text, "s.csv");
   ASSERT_FALSE(read.ok());
   EXPECT_EQ(messages(read),
             "s.csv:2: error: missing column 'theta2_rad' (a samples file needs the columns "
             "sensor_x_m,sensor_y_m,sensor_z_m,sensor_qw,sensor_qx,sensor_qy,sensor_qz,theta1_rad,theta2_rad,"
             "theta3_rad,hip_x_m,hip_y_m,hip_z_m)\n");
-  EXPECT_TRUE(read.samples.empty());
+  EXPECT_FALSE(read.ok());
 }
 
 TEST(CalibrationSamples, DuplicateColumnIsAnError) {
   const std::string text = std::string("hip_x_m,") + kHeader;
-  const SampleReadResult read = parse_calibration_samples(text, "s.csv");
+  const Result<std::vector<CalibrationSample>> read = parse_calibration_samples(text, "s.csv");
   EXPECT_EQ(messages(read), "s.csv:1: error: column 'hip_x_m' appears twice\n");
 }
 
 TEST(CalibrationSamples, NanAndInfinityNameLineAndColumn) {
   const std::string text = std::string(kHeader) + kRow + "0.2,0.1,1.4,1,0,0,0,0.1,0.2,0.3,nan,1.0,-0.2\n" +
                            "0.2,0.1,1.4,1,0,0,0,inf,0.2,0.3,0.5,1.0,-0.2\n";
-  const SampleReadResult read = parse_calibration_samples(text, "s.csv");
+  const Result<std::vector<CalibrationSample>> read = parse_calibration_samples(text, "s.csv");
   EXPECT_EQ(messages(read),
             "s.csv:3: error: column 'hip_x_m' is not finite (nan)\n"
             "s.csv:4: error: column 'theta1_rad' is not finite (inf)\n");
-  EXPECT_TRUE(read.samples.empty()) << "no samples from a file with errors";
+  EXPECT_FALSE(read.ok()) << "no samples from a file with errors";
 }
 
 TEST(CalibrationSamples, NotANumberAndWrongFieldCount) {
   const std::string text = std::string(kHeader) + "0.2,0.1,1.4,1,0,0,0,0.1,0.2,0.3,0.5,1.0mm,-0.2\n" +
                            "0.2,0.1,1.4,1,0,0,0,0.1,0.2,0.3,0.5,1.0\n" + "0.2,0.1,1.4,1,0,0,0,0.1,,0.3,0.5,1.0,-0.2\n";
-  const SampleReadResult read = parse_calibration_samples(text, "s.csv");
+  const Result<std::vector<CalibrationSample>> read = parse_calibration_samples(text, "s.csv");
   EXPECT_EQ(messages(read),
             "s.csv:2: error: column 'hip_y_m': '1.0mm' is not a number\n"
             "s.csv:3: error: expected 13 fields (as in the header), found 12\n"
@@ -102,30 +102,30 @@ TEST(CalibrationSamples, NotANumberAndWrongFieldCount) {
 TEST(CalibrationSamples, QuaternionMustBeUnit) {
   const std::string text = std::string(kHeader) + "0.2,0.1,1.4,0.5,0,0,0,0.1,0.2,0.3,0.5,1.0,-0.2\n" +
                            "0.2,0.1,1.4,1.0004,0,0,0,0.1,0.2,0.3,0.5,1.0,-0.2\n";
-  const SampleReadResult read = parse_calibration_samples(text, "s.csv");
+  const Result<std::vector<CalibrationSample>> read = parse_calibration_samples(text, "s.csv");
   EXPECT_EQ(messages(read),
             "s.csv:2: error: sensor quaternion (sensor_qw, sensor_qx, sensor_qy, sensor_qz) has norm 0.5; it must "
             "be a unit quaternion\n");
 }
 
 TEST(CalibrationSamples, EmptyFileHasNoHeader) {
-  const SampleReadResult read = parse_calibration_samples("# only a comment\n\n", "e.csv");
-  ASSERT_EQ(read.errors.size(), 1U);
-  EXPECT_EQ(read.errors[0].where.line, 0);
-  EXPECT_EQ(read.errors[0].to_string().rfind("e.csv: error: no header line (expected the columns sensor_x_m,", 0), 0U)
-      << read.errors[0].to_string();
+  const Result<std::vector<CalibrationSample>> read = parse_calibration_samples("# only a comment\n\n", "e.csv");
+  ASSERT_EQ(read.error().size(), 1U);
+  EXPECT_EQ(read.error()[0].where.line, 0);
+  EXPECT_EQ(read.error()[0].to_string().rfind("e.csv: error: no header line (expected the columns sensor_x_m,", 0), 0U)
+      << read.error()[0].to_string();
 }
 
 TEST(CalibrationSamples, MissingFileIsReported) {
-  const SampleReadResult read = read_calibration_samples("tests/data/calibration/no_such.csv");
+  const Result<std::vector<CalibrationSample>> read = read_calibration_samples("tests/data/calibration/no_such.csv");
   EXPECT_EQ(messages(read), "tests/data/calibration/no_such.csv: error: samples file not found\n");
 }
 
 TEST(CalibrationSamples, ReadsTheCheckedInFile) {
-  const SampleReadResult read =
+  const Result<std::vector<CalibrationSample>> read =
       read_calibration_samples(std::filesystem::path(MHD_SOURCE_DIR) / "tests/data/calibration/synthetic_100.csv");
   ASSERT_TRUE(read.ok()) << messages(read);
-  EXPECT_EQ(read.samples.size(), 100U);
+  EXPECT_EQ(read.value().size(), 100U);
 }
 
 }  // namespace

@@ -21,19 +21,17 @@ namespace {
 constexpr double kDeg = std::numbers::pi / 180.0;
 
 Rig pomhi_rig() {
-  const SceneReadResult read = read_scene_file(std::filesystem::path(MHD_SOURCE_DIR) / "scenes/rigs/pomhi.xml");
+  const Result<SceneDescription> read = read_scene_file(std::filesystem::path(MHD_SOURCE_DIR) / "scenes/rigs/pomhi.xml");
   EXPECT_TRUE(read.ok());
-  const RigBuildResult built = Rig::from_scene(*read.scene);
+  const Result<Rig, std::vector<RigError>> built = Rig::from_scene(*read);
   EXPECT_TRUE(built.ok());
-  return *built.rig;
+  return *built;
 }
 
 /// c = SR + Rz(psi) R_SR RP: what the samples determine.
 Eigen::Vector3d phantom_in_sensor(const Rig& rig, const RigOffsets& o) {
   return calibrated_X_base_sensor_robot(rig, o) * o.p_R_phantom_m;
 }
-
-std::string error_text(const CalibrationOutcome& outcome) { return outcome.error ? outcome.error->message : ""; }
 
 TEST(RigCalibration, RigOffsetsPredictWhatTheRigPredicts) {
   const Rig rig = pomhi_rig();
@@ -65,9 +63,9 @@ TEST(RigCalibration, NoiseFreeSamplesGiveTheTruthExactly) {
   SynthesisOptions options;
   options.sensor_noise_m = 0.0;
   options.hip_noise_m = 0.0;
-  const CalibrationOutcome outcome = calibrate_rig(rig, synthesize_samples(rig, options));
-  ASSERT_TRUE(outcome.ok()) << error_text(outcome);
-  const CalibrationResult& r = *outcome.result;
+  const Result<CalibrationFit, CalibrationError> outcome = calibrate_rig(rig, synthesize_samples(rig, options));
+  ASSERT_TRUE(outcome.ok()) << outcome.error_text();
+  const CalibrationFit& r = *outcome;
   EXPECT_LT((r.p_S_phantom_m - phantom_in_sensor(rig, options.truth)).norm(), 1e-9);
   EXPECT_NEAR(r.after.psi_rad, options.truth.psi_rad, 1e-9);
   EXPECT_LT(r.residuals_after.rmse_3d_m, 1e-9);
@@ -79,10 +77,10 @@ TEST(RigCalibration, LargePsiConvergesFromZero) {
   options.sensor_noise_m = 0.0;
   options.hip_noise_m = 0.0;
   options.truth.psi_rad = 30.0 * kDeg;
-  const CalibrationOutcome outcome = calibrate_rig(rig, synthesize_samples(rig, options));
-  ASSERT_TRUE(outcome.ok()) << error_text(outcome);
-  EXPECT_NEAR(outcome.result->after.psi_rad, options.truth.psi_rad, 1e-9);
-  EXPECT_LT(outcome.result->residuals_after.rmse_3d_m, 1e-9);
+  const Result<CalibrationFit, CalibrationError> outcome = calibrate_rig(rig, synthesize_samples(rig, options));
+  ASSERT_TRUE(outcome.ok()) << outcome.error_text();
+  EXPECT_NEAR(outcome->after.psi_rad, options.truth.psi_rad, 1e-9);
+  EXPECT_LT(outcome->residuals_after.rmse_3d_m, 1e-9);
 }
 
 // The acceptance test: thesis-like samples (bases within +-1 m, random heading and
@@ -94,9 +92,9 @@ TEST(RigCalibration, RecoversOffsetsWithin1mmAndPsiWithinATenthOfADegreeAt2mmNoi
   SynthesisOptions options;  // thesis values, psi 1.5 deg, 2 mm noise, seed 1
   options.samples = 1000;
   const std::vector<CalibrationSample> samples = synthesize_samples(rig, options);
-  const CalibrationOutcome outcome = calibrate_rig(rig, samples);
-  ASSERT_TRUE(outcome.ok()) << error_text(outcome);
-  const CalibrationResult& r = *outcome.result;
+  const Result<CalibrationFit, CalibrationError> outcome = calibrate_rig(rig, samples);
+  ASSERT_TRUE(outcome.ok()) << outcome.error_text();
+  const CalibrationFit& r = *outcome;
 
   EXPECT_LT((r.p_S_phantom_m - phantom_in_sensor(rig, options.truth)).cwiseAbs().maxCoeff(), 1e-3);
   EXPECT_LT(std::abs(r.after.psi_rad - options.truth.psi_rad), 0.1 * kDeg);
@@ -137,10 +135,10 @@ SeedStats run_seeds(const Rig& rig, int samples, int seeds) {
     SynthesisOptions options;
     options.samples = samples;
     options.seed = static_cast<std::uint64_t>(seed);
-    const CalibrationOutcome outcome = calibrate_rig(rig, synthesize_samples(rig, options));
-    EXPECT_TRUE(outcome.ok()) << seed << ": " << error_text(outcome);
+    const Result<CalibrationFit, CalibrationError> outcome = calibrate_rig(rig, synthesize_samples(rig, options));
+    EXPECT_TRUE(outcome.ok()) << seed << ": " << outcome.error_text();
     if (!outcome.ok()) continue;
-    const CalibrationResult& r = *outcome.result;
+    const CalibrationFit& r = *outcome;
     const double psi_error = r.after.psi_rad - options.truth.psi_rad;
     const Eigen::Vector3d c_error = r.p_S_phantom_m - phantom_in_sensor(rig, options.truth);
     ++st.count;
@@ -203,17 +201,17 @@ TEST(RigCalibration, SplitBetweenSensorAndArmOffsetsIsNotObservable) {
   for (const OffsetSplit split : {OffsetSplit::Even, OffsetSplit::HoldSensorToRobot, OffsetSplit::HoldRobotToPhantom}) {
     CalibrationOptions options;
     options.split = split;
-    const CalibrationOutcome outcome = calibrate_rig(rig, sa, options);
-    ASSERT_TRUE(outcome.ok()) << error_text(outcome);
-    EXPECT_LT(outcome.result->residuals_after.rmse_3d_m, 1e-9) << to_string(split);
-    EXPECT_LT((phantom_in_sensor(rig, outcome.result->after) - phantom_in_sensor(rig, a.truth)).norm(), 1e-9);
+    const Result<CalibrationFit, CalibrationError> outcome = calibrate_rig(rig, sa, options);
+    ASSERT_TRUE(outcome.ok()) << outcome.error_text();
+    EXPECT_LT(outcome->residuals_after.rmse_3d_m, 1e-9) << to_string(split);
+    EXPECT_LT((phantom_in_sensor(rig, outcome->after) - phantom_in_sensor(rig, a.truth)).norm(), 1e-9);
   }
   CalibrationOptions hold_sr;
   hold_sr.split = OffsetSplit::HoldSensorToRobot;
-  EXPECT_EQ(calibrate_rig(rig, sa, hold_sr).result->after.p_S_robot_m, offsets_of(rig).p_S_robot_m);
+  EXPECT_EQ(calibrate_rig(rig, sa, hold_sr)->after.p_S_robot_m, offsets_of(rig).p_S_robot_m);
   CalibrationOptions hold_rp;
   hold_rp.split = OffsetSplit::HoldRobotToPhantom;
-  EXPECT_EQ(calibrate_rig(rig, sa, hold_rp).result->after.p_R_phantom_m, offsets_of(rig).p_R_phantom_m);
+  EXPECT_EQ(calibrate_rig(rig, sa, hold_rp)->after.p_R_phantom_m, offsets_of(rig).p_R_phantom_m);
 }
 
 TEST(RigCalibration, SplitNamesRoundTrip) {
@@ -231,13 +229,13 @@ TEST(RigCalibration, WithoutPsiXAndZStayAboveTheNoise) {
   const std::vector<CalibrationSample> samples = synthesize_samples(rig, options);
   CalibrationOptions no_psi;
   no_psi.estimate_psi = false;
-  const CalibrationOutcome outcome = calibrate_rig(rig, samples, no_psi);
-  ASSERT_TRUE(outcome.ok()) << error_text(outcome);
+  const Result<CalibrationFit, CalibrationError> outcome = calibrate_rig(rig, samples, no_psi);
+  ASSERT_TRUE(outcome.ok()) << outcome.error_text();
   const double floor_m = position_noise_floor_m(options);
-  EXPECT_LT(outcome.result->residuals_after.rmse_m.y(), 1.15 * floor_m);
-  EXPECT_GT(outcome.result->residuals_after.rmse_m.x(), 1.5 * floor_m);
-  EXPECT_GT(outcome.result->residuals_after.rmse_m.z(), 1.5 * floor_m);
-  EXPECT_EQ(outcome.result->after.psi_rad, 0.0);
+  EXPECT_LT(outcome->residuals_after.rmse_m.y(), 1.15 * floor_m);
+  EXPECT_GT(outcome->residuals_after.rmse_m.x(), 1.5 * floor_m);
+  EXPECT_GT(outcome->residuals_after.rmse_m.z(), 1.5 * floor_m);
+  EXPECT_EQ(outcome->after.psi_rad, 0.0);
 }
 
 // One heading for every sample is enough: the station's pose is measured in full, so the
@@ -251,20 +249,20 @@ TEST(RigCalibration, OneHeadingForAllSamplesStillCalibrates) {
     s.X_is900_base_sensor = X_is900_S;
     s.p_W_hip_measured_m = predicted_p_W_hip(rig, options.truth, X_is900_S, s.q_rad);
   }
-  const CalibrationOutcome outcome = calibrate_rig(rig, samples);
-  ASSERT_TRUE(outcome.ok()) << error_text(outcome);
-  EXPECT_NEAR(outcome.result->after.psi_rad, options.truth.psi_rad, 1e-9);
+  const Result<CalibrationFit, CalibrationError> outcome = calibrate_rig(rig, samples);
+  ASSERT_TRUE(outcome.ok()) << outcome.error_text();
+  EXPECT_NEAR(outcome->after.psi_rad, options.truth.psi_rad, 1e-9);
 }
 
 TEST(RigCalibration, SameJointAnglesLeavePsiUnobservable) {
   const Rig rig = pomhi_rig();
   std::vector<CalibrationSample> samples = synthesize_samples(rig, SynthesisOptions{});
   for (CalibrationSample& s : samples) s.q_rad = Eigen::Vector3d(0.2, 0.3, 0.1);
-  const CalibrationOutcome outcome = calibrate_rig(rig, samples);
+  const Result<CalibrationFit, CalibrationError> outcome = calibrate_rig(rig, samples);
   ASSERT_FALSE(outcome.ok());
-  EXPECT_EQ(outcome.error->kind, CalibrationErrorKind::Unobservable);
-  EXPECT_EQ(outcome.error->parameter, "psi");
-  const std::string& m = outcome.error->message;
+  EXPECT_EQ(outcome.error().kind, CalibrationErrorKind::Unobservable);
+  EXPECT_EQ(outcome.error().parameter, "psi");
+  const std::string& m = outcome.error().message;
   EXPECT_EQ(m.rfind("the samples leave psi (the robot's yaw about base_sensor z) unobservable: it is confounded with "
                     "phantom_in_sensor_",
                     0),
@@ -279,33 +277,33 @@ TEST(RigCalibration, JointAnglesThatBarelyMoveLeavePsiPoorlyDetermined) {
   for (std::size_t i = 0; i < samples.size(); ++i) {
     samples[i].q_rad = Eigen::Vector3d(0.2, 0.3, 0.1) + Eigen::Vector3d::Constant(0.002 * std::sin(static_cast<double>(i)));
   }
-  const CalibrationOutcome outcome = calibrate_rig(rig, samples);
+  const Result<CalibrationFit, CalibrationError> outcome = calibrate_rig(rig, samples);
   ASSERT_FALSE(outcome.ok());
-  EXPECT_EQ(outcome.error->parameter, "psi");
-  EXPECT_TRUE(outcome.error->kind == CalibrationErrorKind::PoorlyDetermined ||
-              outcome.error->kind == CalibrationErrorKind::Unobservable)
-      << outcome.error->message;
+  EXPECT_EQ(outcome.error().parameter, "psi");
+  EXPECT_TRUE(outcome.error().kind == CalibrationErrorKind::PoorlyDetermined ||
+              outcome.error().kind == CalibrationErrorKind::Unobservable)
+      << outcome.error().message;
 }
 
 TEST(RigCalibration, TooFewSamples) {
   const Rig rig = pomhi_rig();
   SynthesisOptions options;
   options.samples = 9;
-  const CalibrationOutcome outcome = calibrate_rig(rig, synthesize_samples(rig, options));
+  const Result<CalibrationFit, CalibrationError> outcome = calibrate_rig(rig, synthesize_samples(rig, options));
   ASSERT_FALSE(outcome.ok());
-  EXPECT_EQ(outcome.error->kind, CalibrationErrorKind::TooFewSamples);
-  EXPECT_EQ(outcome.error->message, "9 samples; calibration needs at least 10");
-  EXPECT_EQ(calibrate_rig(rig, {}).error->message, "0 samples; calibration needs at least 10");
+  EXPECT_EQ(outcome.error().kind, CalibrationErrorKind::TooFewSamples);
+  EXPECT_EQ(outcome.error().message, "9 samples; calibration needs at least 10");
+  EXPECT_EQ(calibrate_rig(rig, {}).error().message, "0 samples; calibration needs at least 10");
 }
 
 TEST(RigCalibration, IterationLimitIsReported) {
   const Rig rig = pomhi_rig();
   CalibrationOptions options;
   options.max_iterations = 1;
-  const CalibrationOutcome outcome = calibrate_rig(rig, synthesize_samples(rig, SynthesisOptions{}), options);
+  const Result<CalibrationFit, CalibrationError> outcome = calibrate_rig(rig, synthesize_samples(rig, SynthesisOptions{}), options);
   ASSERT_FALSE(outcome.ok());
-  EXPECT_EQ(outcome.error->kind, CalibrationErrorKind::NotConverged);
-  EXPECT_EQ(outcome.error->message, "the fit did not converge in 1 iterations");
+  EXPECT_EQ(outcome.error().kind, CalibrationErrorKind::NotConverged);
+  EXPECT_EQ(outcome.error().message, "the fit did not converge in 1 iterations");
 }
 
 TEST(RigCalibration, SynthesisIsDeterministicPerSeed) {
@@ -333,13 +331,13 @@ TEST(RigCalibration, OrientationNoiseRaisesTheFloorNotTheError) {
   SynthesisOptions options;
   options.sensor_noise_rad = 0.25 * kDeg;
   const std::vector<CalibrationSample> samples = synthesize_samples(rig, options);
-  const CalibrationOutcome outcome = calibrate_rig(rig, samples);
-  ASSERT_TRUE(outcome.ok()) << error_text(outcome);
+  const Result<CalibrationFit, CalibrationError> outcome = calibrate_rig(rig, samples);
+  ASSERT_TRUE(outcome.ok()) << outcome.error_text();
   const ResidualStats at_truth = residual_stats(rig, options.truth, samples);
-  EXPECT_LE(outcome.result->residuals_after.rmse_3d_m, at_truth.rmse_3d_m);
-  EXPECT_GT(outcome.result->residuals_after.rmse_3d_m, 0.95 * at_truth.rmse_3d_m);
-  EXPECT_LT((outcome.result->p_S_phantom_m - phantom_in_sensor(rig, options.truth)).cwiseAbs().maxCoeff(), 2e-3);
-  EXPECT_LT(std::abs(outcome.result->after.psi_rad - options.truth.psi_rad), 0.2 * kDeg);
+  EXPECT_LE(outcome->residuals_after.rmse_3d_m, at_truth.rmse_3d_m);
+  EXPECT_GT(outcome->residuals_after.rmse_3d_m, 0.95 * at_truth.rmse_3d_m);
+  EXPECT_LT((outcome->p_S_phantom_m - phantom_in_sensor(rig, options.truth)).cwiseAbs().maxCoeff(), 2e-3);
+  EXPECT_LT(std::abs(outcome->after.psi_rad - options.truth.psi_rad), 0.2 * kDeg);
 }
 
 }  // namespace

@@ -29,11 +29,11 @@ struct Loaded {
 };
 
 Loaded load(const fs::path& file) {
-  SceneReadResult read = read_scene_file(file);
-  EXPECT_TRUE(read.ok()) << (read.diagnostics.empty() ? "" : read.diagnostics[0].to_string());
-  const RigBuildResult built = Rig::from_scene(*read.scene);
-  EXPECT_TRUE(built.ok()) << (built.errors.empty() ? "" : built.errors[0].to_string());
-  return {*read.scene, *built.rig};
+  Result<SceneDescription> read = read_scene_file(file);
+  EXPECT_TRUE(read.ok()) << (read.diagnostics().empty() ? "" : read.diagnostics()[0].to_string());
+  const Result<Rig, std::vector<RigError>> built = Rig::from_scene(*read);
+  EXPECT_TRUE(built.ok()) << built.error_text();
+  return {*read, *built};
 }
 
 std::string slurp(const fs::path& file) {

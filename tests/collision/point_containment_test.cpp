@@ -37,14 +37,14 @@ TEST(PointContainment, NextToAnEdgeOfTheDolphinAGrazingRayIsNotTrusted) {
   // Found by the pop-through stress (docs/reliability.md): this proxy, 1 um outside the
   // dolphin, was called inside: the first ray grazed triangle 2197 past its edge and the
   // skin-widened neighbour 2194 answered. The exact digits matter.
-  const SceneReadResult read = read_scene_file(std::string(MHD_SOURCE_DIR) + "/scenes/network/haptic_rig1.xml");
+  const Result<SceneDescription> read = read_scene_file(std::string(MHD_SOURCE_DIR) + "/scenes/network/haptic_rig1.xml");
   ASSERT_TRUE(read.ok());
   CompileOptions options;
   options.use_cache = false;
-  const CompileResult compiled = compile_scene(*read.scene, options);
+  const Result<std::unique_ptr<CompiledScene>> compiled = compile_scene(*read, options);
   ASSERT_TRUE(compiled.ok());
   const Eigen::Vector3d p_W(-0.43863547438094486, 0.79497675903579057, -0.64353865574691582);
-  EXPECT_FALSE(point_inside_surface(compiled.scene->world, p_W));
+  EXPECT_FALSE(point_inside_surface(compiled.value()->world, p_W));
 }
 
 }  // namespace

@@ -17,9 +17,9 @@ namespace fs = std::filesystem;
 Rig thesis_rig() {
   const auto read = read_scene_file(fs::path(MHD_SOURCE_DIR) / "scenes/rigs/pomhi.xml");
   if (!read.ok()) throw std::runtime_error("scenes/rigs/pomhi.xml does not read");
-  auto built = Rig::from_scene(*read.scene);
-  if (!built.ok()) throw std::runtime_error("scenes/rigs/pomhi.xml: " + built.errors.front().to_string());
-  return *built.rig;
+  auto built = Rig::from_scene(*read);
+  if (!built.ok()) throw std::runtime_error("scenes/rigs/pomhi.xml: " + built.error().front().to_string());
+  return *built;
 }
 
 Eigen::Vector3d hip_at(const Rig& rig, const BasePose& base) {
@@ -121,13 +121,13 @@ LoadedScene load_scene(const fs::path& file) { return load_scene(file, {}); }
 LoadedScene load_scene(const fs::path& file, const std::function<void(SceneDescription&)>& edit) {
   LoadedScene l;
   auto read = read_scene_file(file);
-  for (const auto& d : read.diagnostics) l.errors.push_back(d.to_string());
+  for (const auto& d : read.diagnostics()) l.errors.push_back(d.to_string());
   if (!read.ok()) return l;
-  l.description = *read.scene;
+  l.description = *read;
   if (edit) edit(*l.description);
   auto compiled = compile_scene(*l.description);
-  for (const auto& d : compiled.diagnostics) l.errors.push_back(d.to_string());
-  if (compiled.ok()) l.compiled = std::move(*compiled.scene);
+  for (const auto& d : compiled.diagnostics()) l.errors.push_back(d.to_string());
+  if (compiled.ok()) l.compiled = std::move(*compiled.value());
   return l;
 }
 

@@ -20,7 +20,9 @@ TEST(Result, AValueIsOkAndGivesItsValue) {
   EXPECT_TRUE(static_cast<bool>(r));
   EXPECT_EQ(r.value(), 3);
   EXPECT_EQ(*r, 3);
+  EXPECT_EQ(r.value_or(9), 3);
   EXPECT_EQ(r.error_text(), "");
+  EXPECT_TRUE(r.diagnostics().empty());
   EXPECT_THROW((void)r.error(), BadResultAccess);
 }
 
@@ -31,6 +33,8 @@ TEST(Result, AnErrorIsNotOkAndCarriesItsDiagnosticsWithFileAndLine) {
   ASSERT_EQ(r.error().size(), 1u);
   EXPECT_EQ(r.error().front().where.line, 7);
   EXPECT_EQ(r.error_text(), "scene.xml:7: error: must be > 0");
+  EXPECT_EQ(r.diagnostics().size(), 1u);
+  EXPECT_EQ(r.value_or(9), 9);
 }
 
 TEST(Result, ValueOfAnErrorThrowsNamingTheIgnoredError) {

@@ -54,24 +54,24 @@ fs::path temp_dir() {
 PressGeometry press_geometry(double depth_m) {
   const auto read = read_scene_file(std::string(MHD_SOURCE_DIR) + "/scenes/rigs/pomhi.xml");
   if (!read.ok()) throw std::runtime_error("cannot read scenes/rigs/pomhi.xml");
-  const RigBuildResult rig = Rig::from_scene(*read.scene);
-  if (!rig.rig) throw std::runtime_error("scenes/rigs/pomhi.xml has no complete rig");
-  const Pose X_W_robot = rig.rig->X_W_robot_from_base(BasePose{});
+  const Result<Rig, std::vector<RigError>> rig = Rig::from_scene(*read);
+  if (!rig.ok()) throw std::runtime_error("scenes/rigs/pomhi.xml has no complete rig");
+  const Pose X_W_robot = rig->X_W_robot_from_base(BasePose{});
   PressGeometry g;
   g.q_free_rad = Eigen::Vector3d(0.0, 0.3, 0.2);
-  g.hip_free_W_m = rig.rig->p_W_hip(X_W_robot, g.q_free_rad);
+  g.hip_free_W_m = rig->p_W_hip(X_W_robot, g.q_free_rad);
   // Lowering the upper arm (theta2) lowers the tool: find the angle that puts the HIP
   // 1.5 cm lower, then the block top depth_m above it.
   g.q_press_rad = g.q_free_rad;
   for (int i = 0; i < 200; ++i) {
     g.q_press_rad.y() -= 0.002;
-    g.hip_press_W_m = rig.rig->p_W_hip(X_W_robot, g.q_press_rad);
+    g.hip_press_W_m = rig->p_W_hip(X_W_robot, g.q_press_rad);
     if (g.hip_free_W_m.y() - g.hip_press_W_m.y() >= 0.015) break;
   }
   g.block_top_y_m = g.hip_press_W_m.y() + depth_m;
   // What a Cartesian device reports for those angles (ABI 3): the tool in its frame P.
-  g.p_free_P_m = phantom_tool_position(rig.rig->device().geometry, g.q_free_rad);
-  g.p_press_P_m = phantom_tool_position(rig.rig->device().geometry, g.q_press_rad);
+  g.p_free_P_m = phantom_tool_position(rig->device().geometry, g.q_free_rad);
+  g.p_press_P_m = phantom_tool_position(rig->device().geometry, g.q_press_rad);
   return g;
 }
 
@@ -112,12 +112,12 @@ std::string fi_device_xml(const PressGeometry& g, const fs::path& log, double pr
 Loaded load(const fs::path& file) {
   Loaded l;
   auto read = read_scene_file(file);
-  for (const auto& d : read.diagnostics) ADD_FAILURE() << d.to_string();
+  for (const auto& d : read.diagnostics()) ADD_FAILURE() << d.to_string();
   if (!read.ok()) return l;
-  l.description = *read.scene;
+  l.description = *read;
   auto compiled = compile_scene(*l.description);
-  for (const auto& d : compiled.diagnostics) ADD_FAILURE() << d.to_string();
-  if (compiled.ok()) l.scene = std::move(*compiled.scene);
+  for (const auto& d : compiled.diagnostics()) ADD_FAILURE() << d.to_string();
+  if (compiled.ok()) l.scene = std::move(*compiled.value());
   return l;
 }
 
@@ -168,9 +168,9 @@ std::vector<LogRow> read_log(const fs::path& file) {
 }
 
 std::vector<RecordingRow> read_rows(const fs::path& file) {
-  RecordingReadResult r = read_recording(file);
-  for (const auto& d : r.diagnostics) ADD_FAILURE() << d.to_string();
-  return std::move(r.rows);
+  Result<std::vector<RecordingRow>> r = read_recording(file);
+  for (const auto& d : r.diagnostics()) ADD_FAILURE() << d.to_string();
+  return std::move(r).value();
 }
 
 double force_N(const RecordingRow& r) { return std::hypot(r.force_W_N[0], r.force_W_N[1], r.force_W_N[2]); }

@@ -732,16 +732,16 @@ TEST(ProcessFaults, KilledServerLeavesARecordingReadableUpToAtMost100msBeforeThe
     const std::size_t complete_lines = static_cast<std::size_t>(std::count(content.begin(), content.end(), '\n'));
     const std::size_t torn_bytes = content.size() - (content.rfind('\n') + 1);
 
-    const RecordingReadResult read = read_recording(recording);
-    ASSERT_TRUE(read.ok()) << read.diagnostics.front().to_string();
-    ASSERT_GT(read.rows.size(), 500u);
-    EXPECT_EQ(read.rows.size(), complete_lines - 1);  // every complete line but the header; the torn one skipped
-    for (std::size_t i = 1; i < read.rows.size(); ++i) ASSERT_GT(read.rows[i].t_s, read.rows[i - 1].t_s);
-    const double age_s = kill_s - read.rows.back().t_s;
+    const Result<std::vector<RecordingRow>> read = read_recording(recording);
+    ASSERT_TRUE(read.ok()) << read.diagnostics().front().to_string();
+    ASSERT_GT(read.value().size(), 500u);
+    EXPECT_EQ(read.value().size(), complete_lines - 1);  // every complete line but the header; the torn one skipped
+    for (std::size_t i = 1; i < read.value().size(); ++i) ASSERT_GT(read.value()[i].t_s, read.value()[i - 1].t_s);
+    const double age_s = kill_s - read.value().back().t_s;
     EXPECT_LE(age_s, 0.1);
     EXPECT_GT(age_s, -0.005);  // the clocks agree: no row from after the kill
     figure(fmt::format("kill -9: {} rows readable, last row {:.1f} ms before the kill, torn last line {} bytes",
-                       read.rows.size(), 1e3 * age_s, torn_bytes));
+                       read.value().size(), 1e3 * age_s, torn_bytes));
   }
 }
 #endif

@@ -35,28 +35,28 @@ struct DesktopRun {
 
 DesktopRun run_scene(const std::string& name, double duration_s) {
   DesktopRun out;
-  const SceneReadResult read = read_scene_file(std::string(MHD_SOURCE_DIR) + "/scenes/" + name + ".xml");
-  for (const auto& d : read.diagnostics) ADD_FAILURE() << d.to_string();
+  const Result<SceneDescription> read = read_scene_file(std::string(MHD_SOURCE_DIR) + "/scenes/" + name + ".xml");
+  for (const auto& d : read.diagnostics()) ADD_FAILURE() << d.to_string();
   if (!read.ok()) return out;
-  EXPECT_EQ(read.scene->rig_kind.kind, RigKind::Desktop);
-  CompileResult compiled = compile_scene(*read.scene);
-  for (const auto& d : compiled.diagnostics) ADD_FAILURE() << d.to_string();
+  EXPECT_EQ(read->rig_kind.kind, RigKind::Desktop);
+  Result<std::unique_ptr<CompiledScene>> compiled = compile_scene(*read);
+  for (const auto& d : compiled.diagnostics()) ADD_FAILURE() << d.to_string();
   if (!compiled.ok()) return out;
-  out.scene = std::move(*compiled.scene);
-  out.description = *read.scene;
+  out.scene = std::move(*compiled.value());
+  out.description = *read;
 
   const fs::path dir = fs::path(::testing::TempDir()) / "desktop_scene_test";
   fs::create_directories(dir);
   ServerOptions o;
   o.duration_s = duration_s;
   o.recording = dir / (name + ".csv");
-  auto build = HapticServer::open(*read.scene, *out.scene, o);
+  auto build = HapticServer::open(*read, *out.scene, o);
   for (const auto& d : build.diagnostics) ADD_FAILURE() << d.to_string();
   if (!build.server) return out;
   out.report = build.server->run();
-  const RecordingReadResult recording = read_recording(o.recording);
+  const Result<std::vector<RecordingRow>> recording = read_recording(o.recording);
   EXPECT_TRUE(recording.ok());
-  out.rows = recording.rows;
+  out.rows = recording.value();
   return out;
 }
 
@@ -65,10 +65,10 @@ DesktopRun run_scene(const std::string& name, double duration_s) {
 /// first tick the proxy ran (before it, a hand that starts inside an object has it wait).
 verify::TickRecord proxy_path(const DesktopRun& run) {
   verify::TickRecord record;
-  const RigBuildResult rig = Rig::from_scene(*run.description);
+  const Result<Rig, std::vector<RigError>> rig = Rig::from_scene(*run.description);
   EXPECT_TRUE(rig.ok());
   if (!rig.ok()) return record;
-  HapticTick tick(*run.scene, *rig.rig, HapticTickSettings{});
+  HapticTick tick(*run.scene, *rig, HapticTickSettings{});
   for (const RecordingRow& row : run.rows) {
     const HapticTickOutput out = tick.render(row.t_s, row.dt_s, vec(row.p_D_tool_m), BasePose{}, HapticTick::kNoTracker);
     EXPECT_EQ(out.proxy_W_m, vec(row.proxy_W_m)) << "replayed at t = " << row.t_s;

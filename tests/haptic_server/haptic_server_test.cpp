@@ -39,12 +39,12 @@ struct Loaded {
 Loaded load(const fs::path& file) {
   Loaded l;
   auto read = read_scene_file(file);
-  for (const auto& d : read.diagnostics) ADD_FAILURE() << d.to_string();
+  for (const auto& d : read.diagnostics()) ADD_FAILURE() << d.to_string();
   if (!read.ok()) return l;
-  l.description = *read.scene;
+  l.description = *read;
   auto compiled = compile_scene(*l.description);
-  for (const auto& d : compiled.diagnostics) ADD_FAILURE() << d.to_string();
-  if (compiled.ok()) l.scene = std::move(*compiled.scene);
+  for (const auto& d : compiled.diagnostics()) ADD_FAILURE() << d.to_string();
+  if (compiled.ok()) l.scene = std::move(*compiled.value());
   return l;
 }
 
@@ -310,7 +310,7 @@ TEST(HapticServer, SilentTrackerFadesForceOutAndStopsTheBase) {
   const fs::path dir = temp_dir();
   // A replay log with the base sensor at its nominal pose for 0.4 s, then nothing.
   const auto rig_read = read_scene_file(std::string(MHD_SOURCE_DIR) + "/scenes/rigs/pomhi.xml");
-  const Rig rig = *Rig::from_scene(*rig_read.scene).rig;
+  const Rig rig = Rig::from_scene(*rig_read).value();
   const Pose X = rig.X_is900_base_sensor_from_base({});
   const Eigen::Quaterniond q(X.rotation());
   const fs::path replay = dir / "tracker.csv";
@@ -375,7 +375,7 @@ TEST(HapticServer, SilentTrackerFadesForceOutAndStopsTheBase) {
 /// fault_tracker's pose param: the base sensor where the rig puts it with the base at the origin.
 std::string nominal_base_sensor_pose() {
   const auto rig_read = read_scene_file(std::string(MHD_SOURCE_DIR) + "/scenes/rigs/pomhi.xml");
-  const Rig rig = *Rig::from_scene(*rig_read.scene).rig;
+  const Rig rig = Rig::from_scene(*rig_read).value();
   const Pose X = rig.X_is900_base_sensor_from_base({});
   const Eigen::Quaterniond q(X.rotation());
   return fmt::format("{:.12f} {:.12f} {:.12f} {:.15f} {:.15f} {:.15f} {:.15f}", X.translation().x(),

@@ -114,15 +114,15 @@ TEST(HapticThreadHygiene, TheServerOnSimulatedHardwareNeverLocksAllocatesOrWrite
 </scene>
 )", MHD_SOURCE_DIR, dir.string());
   auto read = read_scene_file(file);
-  for (const auto& d : read.diagnostics) ADD_FAILURE() << d.to_string();
+  for (const auto& d : read.diagnostics()) ADD_FAILURE() << d.to_string();
   ASSERT_TRUE(read.ok());
-  auto compiled = compile_scene(*read.scene);
-  for (const auto& d : compiled.diagnostics) ADD_FAILURE() << d.to_string();
+  auto compiled = compile_scene(*read);
+  for (const auto& d : compiled.diagnostics()) ADD_FAILURE() << d.to_string();
   ASSERT_TRUE(compiled.ok());
   ServerOptions o;
   o.duration_s = 2.5;
   o.recording = dir / "run.csv";
-  auto build = HapticServer::open(*read.scene, *compiled.scene, o);
+  auto build = HapticServer::open(*read, *compiled.value(), o);
   for (const auto& d : build.diagnostics) ADD_FAILURE() << d.to_string();
   ASSERT_TRUE(build.server);
   ServerReport r;

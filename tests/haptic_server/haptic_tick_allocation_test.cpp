@@ -16,12 +16,12 @@ using namespace mhd;
 TEST(HapticTickAllocation, TicksInAndOutOfContactAllocateNothing) {
   auto read = read_scene_file(std::string(MHD_SOURCE_DIR) + "/scenes/dolphin.xml");
   ASSERT_TRUE(read.ok());
-  auto compiled = compile_scene(*read.scene);
+  auto compiled = compile_scene(*read);
   ASSERT_TRUE(compiled.ok());
-  const Rig rig = *Rig::from_scene(*read.scene).rig;
+  const Rig rig = Rig::from_scene(*read).value();
   // What a Cartesian PHANToM reports for joint angles q (ABI 3): its tool in the device frame.
   const auto tool = [&rig](const Eigen::Vector3d& q_rad) { return phantom_tool_position(rig.device().geometry, q_rad); };
-  HapticTick tick(*compiled.scene, rig, HapticTickSettings{});
+  HapticTick tick(*compiled.value(), rig, HapticTickSettings{});
   const BasePose base{0.0, -0.926, 0.0};  // as the dolphin scene places it
   const Pose sensor = rig.X_is900_base_sensor_from_base(base);
   double t = 0.0;

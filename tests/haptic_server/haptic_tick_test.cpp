@@ -36,7 +36,7 @@ struct Fixture {
 Fixture make_fixture(double gap_m, const std::string& motion = "") {
   Fixture f;
   const auto rig_read = read_scene_file(std::string(MHD_SOURCE_DIR) + "/scenes/rigs/pomhi.xml");
-  f.rig = Rig::from_scene(*rig_read.scene).rig;
+  f.rig = Rig::from_scene(*rig_read).value();
   const Eigen::Vector3d hip = f.rig->p_W_hip(f.rig->X_W_robot_from_base({}), kQ);
   const auto dir = std::filesystem::path(::testing::TempDir()) / "haptic_tick_test";
   std::filesystem::create_directories(dir);
@@ -58,7 +58,7 @@ Fixture make_fixture(double gap_m, const std::string& motion = "") {
     ADD_FAILURE() << "cannot read " << file;
     std::abort();  // every test needs the scene
   }
-  f.description = *read.scene;
+  f.description = *read;
   CompileOptions options;
   options.use_cache = false;
   auto compiled = compile_scene(*f.description, options);
@@ -66,7 +66,7 @@ Fixture make_fixture(double gap_m, const std::string& motion = "") {
     ADD_FAILURE() << "cannot compile " << file;
     std::abort();
   }
-  f.scene = std::move(*compiled.scene);
+  f.scene = std::move(*compiled.value());
   return f;
 }
 

@@ -31,7 +31,7 @@ double quantile(std::vector<double> v, double q) {
 TEST(ImpedanceHandDemo, StrokesTheDolphinWellBelowTheClampWithMillimetrePenetrations) {
   auto read = read_scene_file(std::string(MHD_SOURCE_DIR) + "/scenes/dolphin.xml");
   ASSERT_TRUE(read.ok());
-  SceneDescription description = *read.scene;
+  SceneDescription description = *read;
   for (PluginDescription& p : description.plugins) {
     if (p.name == "sim_phantom") {
       EXPECT_EQ(p.params["hand_model"], "impedance");  // the demo as shipped
@@ -48,7 +48,7 @@ TEST(ImpedanceHandDemo, StrokesTheDolphinWellBelowTheClampWithMillimetrePenetrat
   ServerOptions o;
   o.duration_s = 4.0;
   o.recording = dir / "dolphin.csv";
-  auto build = HapticServer::open(description, *compiled.scene, o);
+  auto build = HapticServer::open(description, *compiled.value(), o);
   for (const auto& d : build.diagnostics) ADD_FAILURE() << d.to_string();
   ASSERT_TRUE(build.server);
   const ServerReport r = build.server->run();
@@ -56,10 +56,10 @@ TEST(ImpedanceHandDemo, StrokesTheDolphinWellBelowTheClampWithMillimetrePenetrat
   EXPECT_EQ(r.clamped_ticks, 0u);
   EXPECT_EQ(r.fault_ticks, 0u);
 
-  const RecordingReadResult recording = read_recording(o.recording);
+  const Result<std::vector<RecordingRow>> recording = read_recording(o.recording);
   ASSERT_TRUE(recording.ok());
   std::vector<double> force_N, penetration_m;
-  for (const RecordingRow& row : recording.rows) {
+  for (const RecordingRow& row : recording.value()) {
     if (row.contact == 0) continue;
     force_N.push_back(norm(row.force_W_N));
     penetration_m.push_back(norm({row.proxy_W_m[0] - row.p_W_hip[0], row.proxy_W_m[1] - row.p_W_hip[1],

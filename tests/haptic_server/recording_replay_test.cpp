@@ -31,10 +31,10 @@ class RecordingReplay : public ::testing::Test {
   static void SetUpTestSuite() {
     auto read = read_scene_file(std::string(MHD_SOURCE_DIR) + "/tests/data/server/touch_box.xml");
     ASSERT_TRUE(read.ok());
-    description_ = new SceneDescription(*read.scene);
+    description_ = new SceneDescription(*read);
     auto compiled = compile_scene(*description_);
     ASSERT_TRUE(compiled.ok());
-    scene_ = new CompiledScene(std::move(*compiled.scene));
+    scene_ = new CompiledScene(std::move(*compiled.value()));
     // ctest runs each case as its own process, perhaps at once: one file per process.
     recording_ = new fs::path(temp_file("touch_box_" + std::to_string(::getpid()) + ".csv"));
     ServerOptions options;
@@ -51,9 +51,9 @@ class RecordingReplay : public ::testing::Test {
     delete description_;
   }
 
-  static ReplayResult replay(const std::vector<RecordingRow>& rows) {
-    const Rig rig = *Rig::from_scene(*description_).rig;
-    return replay_recording(*scene_, rig, server_settings_from(*description_).settings->tick, rows);
+  static ReplayComparison replay(const std::vector<RecordingRow>& rows) {
+    const Rig rig = Rig::from_scene(*description_).value();
+    return replay_recording(*scene_, rig, server_settings_from(*description_)->tick, rows);
   }
 
   static inline SceneDescription* description_ = nullptr;
@@ -65,15 +65,15 @@ class RecordingReplay : public ::testing::Test {
 TEST_F(RecordingReplay, TheSameInputsGiveTheSameForcesBitForBit) {
   ASSERT_FALSE(report_->error) << *report_->error;
   ASSERT_EQ(report_->recording_dropped, 0u);
-  const RecordingReadResult read = read_recording(*recording_);
+  const Result<std::vector<RecordingRow>> read = read_recording(*recording_);
   ASSERT_TRUE(read.ok());
-  ASSERT_EQ(read.rows.size(), report_->recording_rows);
+  ASSERT_EQ(read.value().size(), report_->recording_rows);
   std::size_t contact = 0;
-  for (const auto& r : read.rows) contact += r.contact;
+  for (const auto& r : read.value()) contact += r.contact;
   ASSERT_GT(contact, 50u) << "the hand should stroke the box";
 
-  const ReplayResult r = replay(read.rows);
-  EXPECT_EQ(r.rows, read.rows.size());
+  const ReplayComparison r = replay(read.value());
+  EXPECT_EQ(r.rows, read.value().size());
   EXPECT_EQ(r.differing_rows, 0u);
   EXPECT_EQ(r.max_force_difference_N, 0.0);
   EXPECT_EQ(r.max_proxy_difference_m, 0.0);
@@ -81,19 +81,19 @@ TEST_F(RecordingReplay, TheSameInputsGiveTheSameForcesBitForBit) {
 }
 
 TEST_F(RecordingReplay, AChangedInputIsFoundAtItsRow) {
-  RecordingReadResult read = read_recording(*recording_);
+  Result<std::vector<RecordingRow>> read = read_recording(*recording_);
   ASSERT_TRUE(read.ok());
   // Move the tool 0.1 mm in the middle of a contact stretch.
   std::size_t k = 0;
-  for (std::size_t i = read.rows.size() / 3; i < read.rows.size(); ++i) {
-    if (read.rows[i].contact != 0) {
+  for (std::size_t i = read.value().size() / 3; i < read.value().size(); ++i) {
+    if (read.value()[i].contact != 0) {
       k = i;
       break;
     }
   }
   ASSERT_GT(k, 0u);
-  read.rows[k].p_D_tool_m[1] += 1e-4;
-  const ReplayResult r = replay(read.rows);
+  read.value()[k].p_D_tool_m[1] += 1e-4;
+  const ReplayComparison r = replay(read.value());
   EXPECT_GT(r.differing_rows, 0u);
   EXPECT_EQ(r.first_differing_row, k);
   EXPECT_GT(r.max_force_difference_N, 0.0);
@@ -104,12 +104,12 @@ TEST(RecordingReader, RefusesAMissingColumnAndABadNumberAtTheirLines) {
   std::ofstream(missing) << "t_s,dt_s\n0,0.001\n";
   const auto a = read_recording(missing);
   ASSERT_FALSE(a.ok());
-  EXPECT_EQ(a.diagnostics.front().to_string(), missing.string() + ":1: error: missing column 'tool_D_x_m'");
+  EXPECT_EQ(a.diagnostics().front().to_string(), missing.string() + ":1: error: missing column 'tool_D_x_m'");
 
   // A good recording with one number spoiled on its third data line (file line 4).
-  const RecordingReadResult good = read_recording(std::string(MHD_SOURCE_DIR) + "/tests/data/server/recording_head.csv");
+  const Result<std::vector<RecordingRow>> good = read_recording(std::string(MHD_SOURCE_DIR) + "/tests/data/server/recording_head.csv");
   ASSERT_TRUE(good.ok());
-  ASSERT_GE(good.rows.size(), 3u);
+  ASSERT_GE(good.value().size(), 3u);
   std::ifstream in(std::string(MHD_SOURCE_DIR) + "/tests/data/server/recording_head.csv");
   std::string text, line;
   for (int n = 1; std::getline(in, line); ++n) {
@@ -120,8 +120,8 @@ TEST(RecordingReader, RefusesAMissingColumnAndABadNumberAtTheirLines) {
   std::ofstream(bad) << text;
   const auto b = read_recording(bad);
   ASSERT_FALSE(b.ok());
-  EXPECT_EQ(b.diagnostics.front().to_string().rfind(bad.string() + ":4: error: column 'dt_s' is not a number: 'x", 0), 0u)
-      << b.diagnostics.front().to_string();
+  EXPECT_EQ(b.diagnostics().front().to_string().rfind(bad.string() + ":4: error: column 'dt_s' is not a number: 'x", 0), 0u)
+      << b.diagnostics().front().to_string();
 }
 
 TEST(RecordingReader, ALineCutShortByACrashIsLeftOutAndTheRestIsRead) {
@@ -134,7 +134,7 @@ TEST(RecordingReader, ALineCutShortByACrashIsLeftOutAndTheRestIsRead) {
   const auto r = read_recording(cut);
   ASSERT_TRUE(r.ok());
   const auto full = read_recording(std::string(MHD_SOURCE_DIR) + "/tests/data/server/recording_head.csv");
-  EXPECT_EQ(r.rows.size(), full.rows.size());
+  EXPECT_EQ(r.value().size(), full.value().size());
 }
 
 }  // namespace

@@ -27,43 +27,43 @@ SceneDescription scene_with_server(std::map<std::string, std::string> params) {
 }
 
 TEST(ServerSettings, TickOnTrackerSampleAndTheWatchdogHaveDefaults) {
-  const ServerSettingsResult r = server_settings_from(SceneDescription{});
-  ASSERT_TRUE(r.settings);
-  EXPECT_TRUE(r.settings->tick_on_tracker_sample);
-  EXPECT_DOUBLE_EQ(r.settings->min_tick_interval_s, 0.0002);
-  EXPECT_DOUBLE_EQ(r.settings->plugin_call_timeout_s, 0.1);
+  const Result<ServerSettings> r = server_settings_from(SceneDescription{});
+  ASSERT_TRUE(r.ok());
+  EXPECT_TRUE(r->tick_on_tracker_sample);
+  EXPECT_DOUBLE_EQ(r->min_tick_interval_s, 0.0002);
+  EXPECT_DOUBLE_EQ(r->plugin_call_timeout_s, 0.1);
 }
 
 TEST(ServerSettings, TickOnTrackerSampleAndTheWatchdogAreRead) {
-  const ServerSettingsResult r = server_settings_from(scene_with_server(
+  const Result<ServerSettings> r = server_settings_from(scene_with_server(
       {{"tick_on_tracker_sample", "false"}, {"min_tick_interval_s", "0.0003"}, {"plugin_call_timeout_s", "0.25"}}));
-  ASSERT_TRUE(r.settings);
-  EXPECT_FALSE(r.settings->tick_on_tracker_sample);
-  EXPECT_DOUBLE_EQ(r.settings->min_tick_interval_s, 0.0003);
-  EXPECT_DOUBLE_EQ(r.settings->plugin_call_timeout_s, 0.25);
+  ASSERT_TRUE(r.ok());
+  EXPECT_FALSE(r->tick_on_tracker_sample);
+  EXPECT_DOUBLE_EQ(r->min_tick_interval_s, 0.0003);
+  EXPECT_DOUBLE_EQ(r->plugin_call_timeout_s, 0.25);
 }
 
 TEST(ServerSettings, AMinimumTickIntervalLongerThanThePeriodIsRefusedAtItsLine) {
-  const ServerSettingsResult r = server_settings_from(scene_with_server({{"min_tick_interval_s", "0.002"}}));
-  EXPECT_FALSE(r.settings);
-  ASSERT_EQ(r.diagnostics.size(), 1u);
-  EXPECT_EQ(r.diagnostics[0].where.line, 7);
-  EXPECT_THAT(r.diagnostics[0].message, HasSubstr("'min_tick_interval_s' in <server> must not exceed the haptic period"));
+  const Result<ServerSettings> r = server_settings_from(scene_with_server({{"min_tick_interval_s", "0.002"}}));
+  EXPECT_FALSE(r.ok());
+  ASSERT_EQ(r.diagnostics().size(), 1u);
+  EXPECT_EQ(r.diagnostics()[0].where.line, 7);
+  EXPECT_THAT(r.diagnostics()[0].message, HasSubstr("'min_tick_interval_s' in <server> must not exceed the haptic period"));
 }
 
 TEST(ServerSettings, AZeroWatchdogTimeoutIsRefused) {
-  const ServerSettingsResult r = server_settings_from(scene_with_server({{"plugin_call_timeout_s", "0"}}));
-  EXPECT_FALSE(r.settings);
-  ASSERT_EQ(r.diagnostics.size(), 1u);
-  EXPECT_THAT(r.diagnostics[0].message, HasSubstr("plugin_call_timeout_s"));
+  const Result<ServerSettings> r = server_settings_from(scene_with_server({{"plugin_call_timeout_s", "0"}}));
+  EXPECT_FALSE(r.ok());
+  ASSERT_EQ(r.diagnostics().size(), 1u);
+  EXPECT_THAT(r.diagnostics()[0].message, HasSubstr("plugin_call_timeout_s"));
 }
 
 TEST(ServerSettings, AbsurdRatesAndTrackingRangeAreRefusedAtTheirLines) {
-  const ServerSettingsResult r = server_settings_from(scene_with_server(
+  const Result<ServerSettings> r = server_settings_from(scene_with_server(
       {{"io_rate_hz", "1e-308"}, {"base_rate_hz", "1e9"}, {"display_rate_hz", "0.5"}, {"tracking_range_m", "1e9"}}));
-  EXPECT_FALSE(r.settings);
+  EXPECT_FALSE(r.ok());
   std::vector<std::string> lines;
-  for (const Diagnostic& d : r.diagnostics) lines.push_back(d.to_string());
+  for (const Diagnostic& d : r.diagnostics()) lines.push_back(d.to_string());
   EXPECT_EQ(lines, (std::vector<std::string>{
                        "scene.xml:7: error: param 'io_rate_hz' in <server> must be within [10, 20000], got 1e-308",
                        "scene.xml:7: error: param 'base_rate_hz' in <server> must be within [1, 1000], got 1e+09",
@@ -72,10 +72,10 @@ TEST(ServerSettings, AbsurdRatesAndTrackingRangeAreRefusedAtTheirLines) {
 }
 
 TEST(ServerSettings, TheTrackingRangeHasADefaultAndIsRead) {
-  EXPECT_DOUBLE_EQ(server_settings_from(SceneDescription{}).settings->tracking_range_m, 50.0);
-  const ServerSettingsResult r = server_settings_from(scene_with_server({{"tracking_range_m", "20"}}));
-  ASSERT_TRUE(r.settings);
-  EXPECT_DOUBLE_EQ(r.settings->tracking_range_m, 20.0);
+  EXPECT_DOUBLE_EQ(server_settings_from(SceneDescription{})->tracking_range_m, 50.0);
+  const Result<ServerSettings> r = server_settings_from(scene_with_server({{"tracking_range_m", "20"}}));
+  ASSERT_TRUE(r.ok());
+  EXPECT_DOUBLE_EQ(r->tracking_range_m, 20.0);
 }
 
 TEST(PluginCounters, OnlyNonZeroDropsAreShownWithoutTheirPrefix) {

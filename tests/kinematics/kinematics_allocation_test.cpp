@@ -16,11 +16,11 @@ namespace mhd {
 namespace {
 
 TEST(KinematicsAllocation, PerTickRigFunctionsAllocateNothing) {
-  const SceneReadResult read = read_scene_file(std::filesystem::path(MHD_SOURCE_DIR) / "scenes/rigs/pomhi.xml");
+  const Result<SceneDescription> read = read_scene_file(std::filesystem::path(MHD_SOURCE_DIR) / "scenes/rigs/pomhi.xml");
   ASSERT_TRUE(read.ok());
-  const RigBuildResult built = Rig::from_scene(*read.scene);
+  const Result<Rig, std::vector<RigError>> built = Rig::from_scene(*read);
   ASSERT_TRUE(built.ok());
-  const Rig& rig = *built.rig;
+  const Rig& rig = *built;
 
   test::AllocationCounter allocations;
   double sum = 0;
@@ -35,7 +35,7 @@ TEST(KinematicsAllocation, PerTickRigFunctionsAllocateNothing) {
     const Pose X_W_tool = rig.X_W_tool(X_W_robot, q);
     const Eigen::Vector3d tau = rig.joint_torques_Nm(X_W_robot, q, Eigen::Vector3d(0, -1, 0.5));
     const Rig::HipJacobian J = rig.hip_jacobian(base, q);
-    const PhantomIkResult ik = phantom_inverse_kinematics(rig.device(), rig.p_P_from_W(X_W_robot, p_W));
+    const PhantomIkSolution ik = phantom_inverse_kinematics(rig.device(), rig.p_P_from_W(X_W_robot, p_W));
     sum += p_W.sum() + X_W_tool.translation().sum() + tau.sum() + J.sum() + ik.q_rad.sum();
   }
   allocations.stop();

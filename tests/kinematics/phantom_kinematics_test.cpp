@@ -148,7 +148,7 @@ TEST(PhantomKinematics, InverseKinematicsInvertsForwardKinematicsWithinLimits) {
   std::mt19937_64 rng(6);
   for (int i = 0; i < 2000; ++i) {
     const Eigen::Vector3d q = random_angles_within_limits(rng);
-    const PhantomIkResult ik = phantom_inverse_kinematics(kModel, phantom_tool_position(kGeometry, q));
+    const PhantomIkSolution ik = phantom_inverse_kinematics(kModel, phantom_tool_position(kGeometry, q));
     ASSERT_TRUE(ik.ok()) << to_string(ik.status) << " at " << q.transpose();
     EXPECT_LT((ik.q_rad - q).norm(), 1e-9) << q.transpose();
   }
@@ -164,11 +164,11 @@ TEST(PhantomKinematics, InverseKinematicsReportsTargetsItCannotReach) {
   EXPECT_EQ(phantom_inverse_kinematics(kModel, {std::nan(""), 0, 0}).status, PhantomIkStatus::OutOfReach);
   // Behind the device: reachable by the linkage but theta1 = 180 deg is past its limit.
   const Eigen::Vector3d behind(0.0, 0.0, -2 * l);
-  const PhantomIkResult ik = phantom_inverse_kinematics(kModel, behind);
+  const PhantomIkSolution ik = phantom_inverse_kinematics(kModel, behind);
   EXPECT_EQ(ik.status, PhantomIkStatus::OutsideJointLimits);
   EXPECT_LT((phantom_tool_position(kGeometry, ik.q_rad) - behind).norm(), 1e-12);
   // Fully stretched: the edge of the reach is still solved.
-  const PhantomIkResult stretched = phantom_inverse_kinematics(kModel, {0, l, -l + 2 * l});
+  const PhantomIkSolution stretched = phantom_inverse_kinematics(kModel, {0, l, -l + 2 * l});
   EXPECT_EQ(stretched.status, PhantomIkStatus::OutsideJointLimits);  // links aligned: past 70 deg
   EXPECT_NEAR(stretched.q_rad.z() - stretched.q_rad.y(), kPi / 2, 1e-6);
   EXPECT_EQ(to_string(PhantomIkStatus::OnBaseAxis), "on the base axis");
@@ -188,7 +188,7 @@ TEST(PhantomKinematics, PremiumWorkspaceBoxIsReachableWithinTheJointLimits) {
       for (int k = 0; k <= n; ++k) {
         const Eigen::Vector3d f(double(i) / n, double(j) / n, double(k) / n);
         const Eigen::Vector3d p = box.min_P_m + f.cwiseProduct(box.size_m());
-        const PhantomIkResult ik = phantom_inverse_kinematics(kModel, p);
+        const PhantomIkSolution ik = phantom_inverse_kinematics(kModel, p);
         ASSERT_TRUE(ik.ok()) << to_string(ik.status) << " at " << p.transpose() << " (q "
                              << ik.q_rad.transpose() / kDeg << " deg)";
         EXPECT_LT((phantom_tool_position(kGeometry, ik.q_rad) - p).norm(), 1e-12);

@@ -38,11 +38,11 @@ Eigen::Matrix3d Rx(double a) { return Eigen::AngleAxisd(a, Eigen::Vector3d::Unit
 Pose sensor_reading(double phi, const Eigen::Vector3d& S_mm) { return homogeneous_mm(Rz(phi) * Rx(kPi), S_mm); }
 
 Rig pomhi_rig() {
-  const SceneReadResult read = read_scene_file(kPomhi);
+  const Result<SceneDescription> read = read_scene_file(kPomhi);
   EXPECT_TRUE(read.ok());
-  RigBuildResult built = Rig::from_scene(read.scene.value_or(SceneDescription{}));
+  Result<Rig, std::vector<RigError>> built = Rig::from_scene(read.value_or(SceneDescription{}));
   EXPECT_TRUE(built.ok());
-  return *built.rig;
+  return *built;
 }
 
 FrameDescription frame(std::string name, std::string parent, const Eigen::Vector3d& p_mm,
@@ -101,11 +101,11 @@ const Eigen::Vector3d kCalibratedSR(203.1, 1.8, -387.6);
 const Eigen::Vector3d kCalibratedRP(-2.1, -232.8, 41.6);
 
 TEST(Rig, PomhiSceneHasRigFramesOnly) {
-  const SceneReadResult read = read_scene_file(kPomhi);
-  ASSERT_TRUE(read.ok()) << (read.diagnostics.empty() ? "" : read.diagnostics.front().to_string());
-  EXPECT_TRUE(read.scene->objects.empty());
-  EXPECT_EQ(read.scene->rig_frames.size(), 5u);
-  EXPECT_TRUE(Rig::from_scene(*read.scene).ok());
+  const Result<SceneDescription> read = read_scene_file(kPomhi);
+  ASSERT_TRUE(read.ok()) << (read.diagnostics().empty() ? "" : read.diagnostics().front().to_string());
+  EXPECT_TRUE(read->objects.empty());
+  EXPECT_EQ(read->rig_frames.size(), 5u);
+  EXPECT_TRUE(Rig::from_scene(*read).ok());
 }
 
 TEST(Rig, FixedFramesReproduceTheThesisMatrices) {
@@ -184,13 +184,13 @@ TEST(Rig, ToolRotationMatchesTheRederivedClosedForm) {
 }
 
 TEST(Rig, CalibratedOffsetsMatchChapter44) {
-  const RigBuildResult built = Rig::from_frames(rig_frames(kCalibratedSR, kCalibratedRP));
+  const Result<Rig, std::vector<RigError>> built = Rig::from_frames(rig_frames(kCalibratedSR, kCalibratedRP));
   ASSERT_TRUE(built.ok());
   std::mt19937_64 rng(4);
   for (int i = 0; i < 500; ++i) {
     const ThesisInput in = random_input(rng);
     const Eigen::Vector3d p_W =
-        built.rig->p_W_hip(built.rig->X_W_robot_from_sensor(sensor_reading(in.phi, in.S_mm)), in.q);
+        built->p_W_hip(built->X_W_robot_from_sensor(sensor_reading(in.phi, in.S_mm)), in.q);
     EXPECT_LT((p_W - thesis_hip_mm(in, kCalibratedSR, kCalibratedRP) / 1000.0).norm(), 1e-12);
   }
 }
@@ -256,7 +256,7 @@ TEST(Rig, HipJacobianMatchesCentralDifferencesOfTheChain) {
 
 TEST(Rig, HipJacobianMatchesEquation52) {
   // Eq. 5.2 (calibrated rig), in mm, columns Rx, Rz, phi, theta1..3; phi = pi - heading.
-  const RigBuildResult built = Rig::from_frames(rig_frames(kCalibratedSR, kCalibratedRP));
+  const Result<Rig, std::vector<RigError>> built = Rig::from_frames(rig_frames(kCalibratedSR, kCalibratedRP));
   ASSERT_TRUE(built.ok());
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> position(-3, 3), angle(-kPi, kPi);
@@ -264,7 +264,7 @@ TEST(Rig, HipJacobianMatchesEquation52) {
   for (int i = 0; i < 300; ++i) {
     const double phi = angle(rng), t1 = angle(rng), t2 = angle(rng), t3 = angle(rng);
     const BasePose base{position(rng), position(rng), kPi - phi};
-    const Rig::HipJacobian J = built.rig->hip_jacobian(base, {t1, t2, t3});
+    const Rig::HipJacobian J = built->hip_jacobian(base, {t1, t2, t3});
     using std::cos, std::sin;
     Eigen::Matrix<double, 3, 6> thesis;
     const double J14 = -H * cos(-t2 - phi + t1) - H * cos(t2 - phi + t1) - H * sin(t3 - phi + t1) +
@@ -299,18 +299,19 @@ TEST(Rig, WorldTorquesDoTheSameVirtualWorkAsTheForce) {
   }
 }
 
-std::vector<std::string> messages(const RigBuildResult& result) {
+std::vector<std::string> messages(const Result<Rig, std::vector<RigError>>& result) {
   std::vector<std::string> out;
-  for (const RigError& e : result.errors) out.push_back(e.to_string());
+  if (result.ok()) return out;
+  for (const RigError& e : result.error()) out.push_back(e.to_string());
   return out;
 }
 
 TEST(Rig, ReportsEveryMissingFrame) {
-  const RigBuildResult result = Rig::from_frames({frame("head", "is900", {0, 0, 0}, {0, 0, 0})});
+  const Result<Rig, std::vector<RigError>> result = Rig::from_frames({frame("head", "is900", {0, 0, 0}, {0, 0, 0})});
   EXPECT_FALSE(result.ok());
-  ASSERT_EQ(result.errors.size(), 5u);
-  for (const RigError& e : result.errors) EXPECT_EQ(e.kind, RigErrorKind::MissingFrame);
-  EXPECT_EQ(result.errors[2].to_string(),
+  ASSERT_EQ(result.error().size(), 5u);
+  for (const RigError& e : result.error()) EXPECT_EQ(e.kind, RigErrorKind::MissingFrame);
+  EXPECT_EQ(result.error()[2].to_string(),
             "error: rig has no frame 'robot' (expected <frame name=\"robot\" parent=\"base_sensor\" .../>)");
 }
 
@@ -318,31 +319,31 @@ TEST(Rig, ReportsAWrongParentWhereTheFrameIsDefined) {
   std::vector<FrameDescription> frames = rig_frames(kRulerSR, kRulerRP);
   frames[2].parent = "is900";
   frames[2].where.line = 17;
-  const RigBuildResult result = Rig::from_frames(frames);
+  const Result<Rig, std::vector<RigError>> result = Rig::from_frames(frames);
   EXPECT_EQ(messages(result),
             std::vector<std::string>{"scene.xml:17: error: rig frame 'robot' must have parent 'base_sensor', not 'is900'"});
-  EXPECT_EQ(result.errors[0].kind, RigErrorKind::WrongParent);
+  EXPECT_EQ(result.error()[0].kind, RigErrorKind::WrongParent);
 }
 
 TEST(Rig, ReportsABaseThatIsNotLevelOrNotOnTheFloor) {
   std::vector<FrameDescription> frames = rig_frames(kRulerSR, kRulerRP);
   frames[4] = frame("base", "robot", {0, 0, -800}, {0, 0, 0}, 30);  // robot axes, 10.8 mm up
-  const RigBuildResult result = Rig::from_frames(frames);
+  const Result<Rig, std::vector<RigError>> result = Rig::from_frames(frames);
   EXPECT_EQ(messages(result),
             (std::vector<std::string>{
                 "scene.xml:30: error: rig frame 'base' is not level: with base_sensor at its nominal pose, its y "
                 "axis is 90 degrees from world up",
                 "scene.xml:30: error: rig frame 'base' is not on the floor: with base_sensor at its nominal pose, it "
                 "is at y = 0.0108 m"}));
-  EXPECT_EQ(result.errors[0].kind, RigErrorKind::BaseNotLevel);
-  EXPECT_EQ(result.errors[1].kind, RigErrorKind::BaseNotOnFloor);
+  EXPECT_EQ(result.error()[0].kind, RigErrorKind::BaseNotLevel);
+  EXPECT_EQ(result.error()[1].kind, RigErrorKind::BaseNotOnFloor);
 }
 
 TEST(Rig, ReportsADuplicateFrame) {
   std::vector<FrameDescription> frames = rig_frames(kRulerSR, kRulerRP);
   frames.push_back(frame("phantom", "robot", {0, 0, 0}, {0, 0, 0}, 40));
   frames[3].where.line = 12;
-  const RigBuildResult result = Rig::from_frames(frames);
+  const Result<Rig, std::vector<RigError>> result = Rig::from_frames(frames);
   EXPECT_EQ(messages(result), std::vector<std::string>{
                                   "scene.xml:40: error: rig frame 'phantom' is defined twice (first at scene.xml:12)"});
 }
@@ -352,9 +353,9 @@ TEST(Rig, ADesktopRigPutsTheDeviceFrameAtItsPoseInTheWorldForEver) {
   SceneDescription scene;
   scene.rig_kind = {RigKind::Desktop, SourceLocation{"desk.xml", 3}};
   scene.rig_frames.push_back({"device", "world", X_WD, {"desk.xml", 4}});
-  const RigBuildResult built = Rig::from_scene(scene);
+  const Result<Rig, std::vector<RigError>> built = Rig::from_scene(scene);
   ASSERT_TRUE(built.ok());
-  const Rig& rig = *built.rig;
+  const Rig& rig = *built;
   EXPECT_EQ(rig.kind(), RigKind::Desktop);
   const Pose X_W_robot = rig.X_W_robot_from_base(BasePose{});
   const Eigen::Vector3d p_D(0.01, 0.12, -0.03);
@@ -364,10 +365,10 @@ TEST(Rig, ADesktopRigPutsTheDeviceFrameAtItsPoseInTheWorldForEver) {
 
   // Without its frame it is an error at the rig, not a rig somewhere.
   scene.rig_frames.clear();
-  const RigBuildResult missing = Rig::from_scene(scene);
+  const Result<Rig, std::vector<RigError>> missing = Rig::from_scene(scene);
   ASSERT_FALSE(missing.ok());
-  ASSERT_EQ(missing.errors.size(), 1u);
-  EXPECT_EQ(missing.errors[0].to_string(),
+  ASSERT_EQ(missing.error().size(), 1u);
+  EXPECT_EQ(missing.error()[0].to_string(),
             "desk.xml:3: error: desktop rig has no frame 'device' (expected <frame name=\"device\" parent=\"world\" .../>)");
 }
 

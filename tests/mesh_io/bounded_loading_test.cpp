@@ -21,7 +21,7 @@ constexpr std::string_view kHugePly =
     "ply\nformat ascii 1.0\nelement vertex 100000000\nproperty float x\nproperty float y\nproperty float z\n"
     "element face 100000000\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n";
 
-std::string reason_of(const MeshLoadResult& r) { return r.error ? r.error->reason : std::string("(loaded)"); }
+std::string reason_of(const Result<LoadedMesh, MeshLoadError>& r) { return r.ok() ? std::string("(loaded)") : r.error().reason; }
 
 const std::string kTriangleObj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
 
@@ -29,11 +29,11 @@ TEST(BoundedLoading, PlyClaimingHundredMillionElementsIsRefusedAtOnce) {
   TempDir dir;
   test::write_text(dir / "huge.ply", kHugePly);
   ASSERT_EQ(fs::file_size(dir / "huge.ply"), 176u);
-  const MeshLoadResult r = load_mesh_file(dir / "huge.ply", Eigen::Vector3d::Ones());
+  const Result<LoadedMesh, MeshLoadError> r = load_mesh_file(dir / "huge.ply", Eigen::Vector3d::Ones());
   EXPECT_EQ(reason_of(r),
             "PLY header claims 100000000 vertex and 100000000 face elements, at least 800000000 bytes of ASCII data, "
             "but only 6 bytes follow the header");
-  EXPECT_EQ(r.error->message(), "mesh file '" + (dir / "huge.ply").string() + "': " + reason_of(r));
+  EXPECT_EQ(r.error().message(), "mesh file '" + (dir / "huge.ply").string() + "': " + reason_of(r));
 }
 
 TEST(BoundedLoading, BinaryStlWithALyingCountIsRefused) {
@@ -100,9 +100,9 @@ TEST(BoundedLoading, MissingSideFilesAreNotAnError) {
   TempDir dir;
   test::write_text(dir / "lost.mtl", "newmtl skin\nmap_Kd no_such_texture.png\n");
   test::write_text(dir / "lost.obj", "mtllib no_such.mtl\nmtllib lost.mtl\nusemtl skin\n" + kTriangleObj);
-  const MeshLoadResult r = load_mesh_file(dir / "lost.obj", Eigen::Vector3d::Ones());
-  ASSERT_TRUE(r.ok()) << r.error->message();
-  EXPECT_EQ(r.mesh->triangle_count(), 1u);
+  const Result<LoadedMesh, MeshLoadError> r = load_mesh_file(dir / "lost.obj", Eigen::Vector3d::Ones());
+  ASSERT_TRUE(r.ok()) << r.error_text();
+  EXPECT_EQ(r->mesh.triangle_count(), 1u);
 }
 
 TEST(BoundedLoading, MeshFileThatIsASymlinkLoopIsNamedAsOne) {
@@ -132,9 +132,9 @@ TEST(BoundedLoading, FaceIndexPastTheVerticesIsRefusedNotACrash) {
 /// Good input is never refused: the repository's assets, and Debian's bunny when present.
 void expect_loads(const fs::path& file) {
   SCOPED_TRACE(file.string());
-  const MeshLoadResult r = load_mesh_file(file, Eigen::Vector3d::Ones(), {}, TriangleBudget{50'000'000});
-  ASSERT_TRUE(r.ok()) << r.error->message();
-  EXPECT_GT(r.mesh->triangle_count(), 0u);
+  const Result<LoadedMesh, MeshLoadError> r = load_mesh_file(file, Eigen::Vector3d::Ones(), {}, TriangleBudget{50'000'000});
+  ASSERT_TRUE(r.ok()) << r.error_text();
+  EXPECT_GT(r->mesh.triangle_count(), 0u);
 }
 
 TEST(BoundedLoading, RepositoryAssetsStillLoad) {

@@ -67,12 +67,12 @@ TEST(MeshLoader, ObjQuadsAreTriangulatedIntoAClosedOutwardBox) {
   TempDir dir;
   const Eigen::Vector3d lo(-0.1, -0.2, 0.0), hi(0.3, 0.2, 0.25);
   test::write_box_obj(dir / "box.obj", lo, hi);
-  const MeshLoadResult r = load_mesh_file(dir / "box.obj", Eigen::Vector3d::Ones());
-  ASSERT_TRUE(r.ok()) << r.error->message();
-  const TriangleMesh& m = *r.mesh;
+  const Result<LoadedMesh, MeshLoadError> r = load_mesh_file(dir / "box.obj", Eigen::Vector3d::Ones());
+  ASSERT_TRUE(r.ok()) << r.error_text();
+  const TriangleMesh& m = r->mesh;
   EXPECT_EQ(m.triangle_count(), 12u);
   EXPECT_EQ(m.vertices_m.size(), 8u);
-  EXPECT_EQ(r.dropped_triangles, 0u);
+  EXPECT_EQ(r->dropped_triangles, 0u);
   EXPECT_TRUE(is_closed_and_consistent(m));
   EXPECT_NEAR(signed_volume(m), (hi - lo).prod(), 1e-7);  // float precision in assimp
   const auto box = mesh_bounds(m);
@@ -84,18 +84,18 @@ TEST(MeshLoader, ObjQuadsAreTriangulatedIntoAClosedOutwardBox) {
 TEST(MeshLoader, MillimetreScaleGivesMetres) {
   TempDir dir;
   test::write_box_obj(dir / "box_mm.obj", Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(100, 50, 20));
-  const MeshLoadResult r = load_mesh_file(dir / "box_mm.obj", Eigen::Vector3d::Constant(0.001));
-  ASSERT_TRUE(r.ok()) << r.error->message();
-  const auto box = mesh_bounds(*r.mesh);
+  const Result<LoadedMesh, MeshLoadError> r = load_mesh_file(dir / "box_mm.obj", Eigen::Vector3d::Constant(0.001));
+  ASSERT_TRUE(r.ok()) << r.error_text();
+  const auto box = mesh_bounds(r->mesh);
   EXPECT_NEAR(box.max().x(), 0.1, 1e-12);
   EXPECT_NEAR(box.max().y(), 0.05, 1e-12);
   EXPECT_NEAR(box.max().z(), 0.02, 1e-12);
-  EXPECT_NEAR(signed_volume(*r.mesh), 0.1 * 0.05 * 0.02, 1e-12);
+  EXPECT_NEAR(signed_volume(r->mesh), 0.1 * 0.05 * 0.02, 1e-12);
 
   // Per-axis scale.
-  const MeshLoadResult s = load_mesh_file(dir / "box_mm.obj", Eigen::Vector3d(0.001, 0.002, 0.01));
+  const Result<LoadedMesh, MeshLoadError> s = load_mesh_file(dir / "box_mm.obj", Eigen::Vector3d(0.001, 0.002, 0.01));
   ASSERT_TRUE(s.ok());
-  const auto sbox = mesh_bounds(*s.mesh);
+  const auto sbox = mesh_bounds(s->mesh);
   EXPECT_NEAR(sbox.max().x(), 0.1, 1e-12);
   EXPECT_NEAR(sbox.max().y(), 0.1, 1e-12);
   EXPECT_NEAR(sbox.max().z(), 0.2, 1e-12);
@@ -107,11 +107,11 @@ TEST(MeshLoader, MirroringScaleKeepsTheMeshFacingOutwards) {
   for (const Eigen::Vector3d& scale : {Eigen::Vector3d(-1, 1, 1), Eigen::Vector3d(1, -1, 1), Eigen::Vector3d(-1, -1, -1),
                                       Eigen::Vector3d(-1, -1, 1)}) {
     SCOPED_TRACE(::testing::Message() << scale.transpose());
-    const MeshLoadResult r = load_mesh_file(dir / "box.obj", scale);
+    const Result<LoadedMesh, MeshLoadError> r = load_mesh_file(dir / "box.obj", scale);
     ASSERT_TRUE(r.ok());
-    EXPECT_NEAR(signed_volume(*r.mesh), 6.0, 1e-9);
-    EXPECT_TRUE(is_closed_and_consistent(*r.mesh));
-    const auto box = mesh_bounds(*r.mesh);
+    EXPECT_NEAR(signed_volume(r->mesh), 6.0, 1e-9);
+    EXPECT_TRUE(is_closed_and_consistent(r->mesh));
+    const auto box = mesh_bounds(r->mesh);
     EXPECT_NEAR(box.min().x(), scale.x() < 0 ? -1.0 : 0.0, 1e-12);
   }
 }
@@ -120,9 +120,9 @@ TEST(MeshLoader, BinaryPlyRoundTripsTheMesh) {
   TempDir dir;
   const TriangleMesh sphere = make_sphere_mesh(0.5, 3);
   test::write_binary_ply(dir / "sphere.ply", sphere);
-  const MeshLoadResult r = load_mesh_file(dir / "sphere.ply", Eigen::Vector3d::Ones());
-  ASSERT_TRUE(r.ok()) << r.error->message();
-  const TriangleMesh& m = *r.mesh;
+  const Result<LoadedMesh, MeshLoadError> r = load_mesh_file(dir / "sphere.ply", Eigen::Vector3d::Ones());
+  ASSERT_TRUE(r.ok()) << r.error_text();
+  const TriangleMesh& m = r->mesh;
   EXPECT_EQ(m.triangle_count(), sphere.triangle_count());
   EXPECT_EQ(m.vertices_m.size(), sphere.vertices_m.size());  // shared vertices stay shared
   EXPECT_TRUE(is_closed_and_consistent(m));
@@ -153,14 +153,14 @@ TEST(MeshLoader, DegenerateTrianglesAndUnusedVerticesAreDropped) {
                    "element face 4\nproperty list uchar int vertex_indices\nend_header\n"
                    "0 0 0\n1 0 0\n0 1 0\n1 1 0\n2 0 0\n9 9 9\n3 0 0\n"
                    "3 0 1 2\n3 1 3 2\n3 0 1 1\n3 0 1 4\n");
-  const MeshLoadResult r = load_mesh_file(dir / "mixed.ply", Eigen::Vector3d::Ones());
-  ASSERT_TRUE(r.ok()) << r.error->message();
-  EXPECT_EQ(r.mesh->triangle_count(), 2u);
-  EXPECT_EQ(r.dropped_triangles, 2u);
-  EXPECT_EQ(r.mesh->vertices_m.size(), 4u);  // 2 0 0, 9 9 9 and 3 0 0 are unused
-  const auto box = mesh_bounds(*r.mesh);
+  const Result<LoadedMesh, MeshLoadError> r = load_mesh_file(dir / "mixed.ply", Eigen::Vector3d::Ones());
+  ASSERT_TRUE(r.ok()) << r.error_text();
+  EXPECT_EQ(r->mesh.triangle_count(), 2u);
+  EXPECT_EQ(r->dropped_triangles, 2u);
+  EXPECT_EQ(r->mesh.vertices_m.size(), 4u);  // 2 0 0, 9 9 9 and 3 0 0 are unused
+  const auto box = mesh_bounds(r->mesh);
   EXPECT_EQ(box.max(), Eigen::Vector3d(1, 1, 0));
-  expect_unit_normals(*r.mesh);
+  expect_unit_normals(r->mesh);
 }
 
 TEST(MeshLoader, MeshesOfOneFileAreMergedAndWelded) {
@@ -169,37 +169,37 @@ TEST(MeshLoader, MeshesOfOneFileAreMergedAndWelded) {
   test::write_text(dir / "two.obj",
                    "o a\nv 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n"
                    "o b\nv 0 0 0\nv 1 1 0\nv 0 1 0\nf 4 5 6\n");
-  const MeshLoadResult r = load_mesh_file(dir / "two.obj", Eigen::Vector3d::Ones());
-  ASSERT_TRUE(r.ok()) << r.error->message();
-  EXPECT_EQ(r.mesh->triangle_count(), 2u);
-  EXPECT_EQ(r.mesh->vertices_m.size(), 4u);
-  for (const auto& n : r.mesh->vertex_normals) EXPECT_NEAR(n.z(), 1.0, 1e-12);
+  const Result<LoadedMesh, MeshLoadError> r = load_mesh_file(dir / "two.obj", Eigen::Vector3d::Ones());
+  ASSERT_TRUE(r.ok()) << r.error_text();
+  EXPECT_EQ(r->mesh.triangle_count(), 2u);
+  EXPECT_EQ(r->mesh.vertices_m.size(), 4u);
+  for (const auto& n : r->mesh.vertex_normals) EXPECT_NEAR(n.z(), 1.0, 1e-12);
 }
 
 TEST(MeshLoader, MissingFileIsReportedWithItsName) {
   TempDir dir;
   const auto file = dir / "nope.obj";
-  const MeshLoadResult r = load_mesh_file(file, Eigen::Vector3d::Ones());
+  const Result<LoadedMesh, MeshLoadError> r = load_mesh_file(file, Eigen::Vector3d::Ones());
   ASSERT_FALSE(r.ok());
-  ASSERT_TRUE(r.error);
-  EXPECT_EQ(r.error->reason, "file not found");
-  EXPECT_NE(r.error->message().find(file.string()), std::string::npos) << r.error->message();
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().reason, "file not found");
+  EXPECT_NE(r.error().message().find(file.string()), std::string::npos) << r.error().message();
 }
 
 TEST(MeshLoader, FolderIsNotAMeshFile) {
   TempDir dir;
-  const MeshLoadResult r = load_mesh_file(dir.path(), Eigen::Vector3d::Ones());
+  const Result<LoadedMesh, MeshLoadError> r = load_mesh_file(dir.path(), Eigen::Vector3d::Ones());
   ASSERT_FALSE(r.ok());
-  EXPECT_EQ(r.error->reason, "is a directory, not a regular file");
+  EXPECT_EQ(r.error().reason, "is a directory, not a regular file");
 }
 
 TEST(MeshLoader, PointsAndLinesOnlyMeansNoTriangles) {
   TempDir dir;
   test::write_text(dir / "lines.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\nl 2 3\np 1\n");
-  const MeshLoadResult r = load_mesh_file(dir / "lines.obj", Eigen::Vector3d::Ones());
+  const Result<LoadedMesh, MeshLoadError> r = load_mesh_file(dir / "lines.obj", Eigen::Vector3d::Ones());
   ASSERT_FALSE(r.ok());
-  EXPECT_NE(r.error->reason.find("no triangles"), std::string::npos) << r.error->message();
-  EXPECT_NE(r.error->message().find("lines.obj"), std::string::npos);
+  EXPECT_NE(r.error().reason.find("no triangles"), std::string::npos) << r.error().message();
+  EXPECT_NE(r.error().message().find("lines.obj"), std::string::npos);
 }
 
 TEST(MeshLoader, GarbageIsAnAssimpError) {
@@ -210,28 +210,28 @@ TEST(MeshLoader, GarbageIsAnAssimpError) {
   for (const char* name : {"junk.ply", "junk.stl", "junk.bin"}) {
     SCOPED_TRACE(name);
     test::write_text(dir / name, junk);
-    const MeshLoadResult r = load_mesh_file(dir / name, Eigen::Vector3d::Ones());
+    const Result<LoadedMesh, MeshLoadError> r = load_mesh_file(dir / name, Eigen::Vector3d::Ones());
     ASSERT_FALSE(r.ok());
-    EXPECT_NE(r.error->message().find(name), std::string::npos) << r.error->message();
-    EXPECT_FALSE(r.error->reason.empty());
+    EXPECT_NE(r.error().message().find(name), std::string::npos) << r.error().message();
+    EXPECT_FALSE(r.error().reason.empty());
   }
 }
 
 TEST(MeshLoader, EmptyFile) {
   TempDir dir;
   test::write_text(dir / "empty.obj", "");
-  const MeshLoadResult r = load_mesh_file(dir / "empty.obj", Eigen::Vector3d::Ones());
+  const Result<LoadedMesh, MeshLoadError> r = load_mesh_file(dir / "empty.obj", Eigen::Vector3d::Ones());
   ASSERT_FALSE(r.ok());
-  EXPECT_EQ(r.error->reason, "file is empty");
+  EXPECT_EQ(r.error().reason, "file is empty");
 }
 
 TEST(MeshLoader, NonFiniteCoordinatesAreRejected) {
   TempDir dir;
   test::write_box_obj(dir / "box.obj", Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(10, 10, 10));
   // 10 * 1e308 overflows to infinity.
-  const MeshLoadResult r = load_mesh_file(dir / "box.obj", Eigen::Vector3d(1e308, 1, 1));
+  const Result<LoadedMesh, MeshLoadError> r = load_mesh_file(dir / "box.obj", Eigen::Vector3d(1e308, 1, 1));
   ASSERT_FALSE(r.ok());
-  EXPECT_NE(r.error->reason.find("non-finite"), std::string::npos) << r.error->message();
+  EXPECT_NE(r.error().reason.find("non-finite"), std::string::npos) << r.error().message();
 }
 
 TEST(MeshLoader, InvalidScaleIsRejected) {
@@ -245,7 +245,7 @@ TEST(MeshLoader, ProgressIsForwarded) {
   TempDir dir;
   test::write_binary_ply(dir / "sphere.ply", make_sphere_mesh(1.0, 2));
   std::vector<double> fractions;
-  const MeshLoadResult r = load_mesh_file(dir / "sphere.ply", Eigen::Vector3d::Ones(),
+  const Result<LoadedMesh, MeshLoadError> r = load_mesh_file(dir / "sphere.ply", Eigen::Vector3d::Ones(),
                                           [&](std::string_view, double f) { fractions.push_back(f); });
   ASSERT_TRUE(r.ok());
   ASSERT_FALSE(fractions.empty());

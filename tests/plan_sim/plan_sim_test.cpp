@@ -14,7 +14,7 @@ namespace {
 constexpr double kDeg = std::numbers::pi / 180.0;
 
 TEST(PlanSim, StandingStillIsFollowedAtOnce) {
-  const CaseResult r = simulate_case(PlannerKind::Seed, PlannerSettings{}, MapSpec{}, {0.0, 0.0});
+  const CaseFigures r = simulate_case(PlannerKind::Seed, PlannerSettings{}, MapSpec{}, {0.0, 0.0});
   EXPECT_TRUE(r.followed);
   EXPECT_EQ(r.time_s, 0.0);
 }
@@ -25,8 +25,8 @@ TEST(PlanSim, StepBackOfTenCentimetres) {
   // Seed: 0.1 m from the target, 0.5 * 0.1 / 0.2 = 0.25 m/s: 0.025 m in the first tick;
   // then 0.075 m away, 0.1875 m/s: 0.0087 m more in 0.046 s -> checks every 10 ms: 0.15 s.
   // Predictive: 0.5 m/s: 0.0337 / 0.5 = 0.067 s -> 0.07 s.
-  const CaseResult seed = simulate_case(PlannerKind::Seed, PlannerSettings{}, MapSpec{}, {-0.1, 0.0});
-  const CaseResult pred = simulate_case(PlannerKind::Predictive, PlannerSettings{}, MapSpec{}, {-0.1, 0.0});
+  const CaseFigures seed = simulate_case(PlannerKind::Seed, PlannerSettings{}, MapSpec{}, {-0.1, 0.0});
+  const CaseFigures pred = simulate_case(PlannerKind::Predictive, PlannerSettings{}, MapSpec{}, {-0.1, 0.0});
   ASSERT_TRUE(seed.followed);
   ASSERT_TRUE(pred.followed);
   EXPECT_NEAR(seed.time_s, 0.15, 1e-9);

@@ -68,11 +68,11 @@ TEST(PlannerSettings, PlannerKindNames) {
 TEST(PlannerSettings, DefaultUsableBoxIsPomhisProjection) {
   // PHANToM frame at (-1.6, 870, 235.8) mm in B with B's axes; usable box in P:
   // x +-160.5, z -75.5..55.5 mm: in B x -162.1..158.9, z 160.3..291.3 mm.
-  const SceneReadResult read = read_scene_file(std::filesystem::path(MHD_SOURCE_DIR) / "scenes/rigs/pomhi.xml");
+  const Result<SceneDescription> read = read_scene_file(std::filesystem::path(MHD_SOURCE_DIR) / "scenes/rigs/pomhi.xml");
   ASSERT_TRUE(read.ok());
-  const RigBuildResult rig = Rig::from_scene(*read.scene);
+  const Result<Rig, std::vector<RigError>> rig = Rig::from_scene(*read);
   ASSERT_TRUE(rig.ok());
-  const PlanarBox box = usable_box_in_base(*rig.rig);
+  const PlanarBox box = usable_box_in_base(*rig);
   const PlanarBox def = PlannerSettings{}.usable_B;
   EXPECT_NEAR(box.x_min_m, -0.1621, 1e-6);
   EXPECT_NEAR(box.x_max_m, 0.1589, 1e-6);

@@ -41,10 +41,10 @@ const std::vector<RecordedTick>& recorded_ticks() {
 TEST(ProxyConstraintStore, ATickThatOutgrowsItsStoreDropsPlanesItHasLeftAndGoesOn) {
   const std::string file = std::string(MHD_SOURCE_DIR) + "/scenes/benchmarks/scan_bunny.xml";
   const auto read = read_scene_file(file);
-  ASSERT_TRUE(read.scene) << file;
-  const auto compiled = compile_scene(*read.scene);
+  ASSERT_TRUE(read.ok()) << file;
+  const auto compiled = compile_scene(*read);
   ASSERT_TRUE(compiled.ok()) << file;
-  const CompiledScene& scene = *compiled.scene;
+  const CompiledScene& scene = *compiled.value();
   const verify::SurfaceCrossingOracle oracle(scene.world);
   int reached = 0;
   for (std::size_t i = 0; i < recorded_ticks().size(); ++i) {

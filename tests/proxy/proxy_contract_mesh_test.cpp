@@ -110,12 +110,12 @@ std::vector<V> scan_tour(const verify::SurfaceCrossingOracle& oracle, const Surf
 
 TEST(ProxyContractOnAScan, TheBunnyAlongAContinuousPathNeverCrossedNeverStuck) {
   if (!std::filesystem::exists(kBunny)) GTEST_SKIP() << kBunny << " missing (package glmark2-data)";
-  const MeshLoadResult loaded = load_mesh_file(kBunny, V::Constant(0.15));
+  const Result<LoadedMesh, MeshLoadError> loaded = load_mesh_file(kBunny, V::Constant(0.15));
   ASSERT_TRUE(loaded.ok());
-  const Surface surface = surface_of(*loaded.mesh);
-  const Eigen::AlignedBox3d box = mesh_bounds(*loaded.mesh);
+  const Surface surface = surface_of(loaded->mesh);
+  const Eigen::AlignedBox3d box = mesh_bounds(loaded->mesh);
   CollisionWorld world;
-  world.add_object(std::make_shared<MeshBvh>(std::make_shared<TriangleMesh>(*loaded.mesh)), Pose::Identity());
+  world.add_object(std::make_shared<MeshBvh>(std::make_shared<TriangleMesh>(loaded->mesh)), Pose::Identity());
   HapticMaterial mat;
   mat.stiffness_N_per_m = 1000.0;
   const std::vector<HapticMaterial> materials{mat};

@@ -17,23 +17,23 @@ namespace {
 using test::TempDir;
 
 std::vector<std::string> compile_errors(const std::filesystem::path& scene_file) {
-  const SceneReadResult read = read_scene_file(scene_file);
+  const Result<SceneDescription> read = read_scene_file(scene_file);
   std::vector<std::string> lines;
-  for (const auto& d : read.diagnostics) lines.push_back(d.to_string());
+  for (const auto& d : read.diagnostics()) lines.push_back(d.to_string());
   if (!read.ok()) return lines;
   CompileOptions options;
   options.use_cache = false;
-  const CompileResult compiled = compile_scene(*read.scene, options);
-  for (const auto& d : compiled.diagnostics) lines.push_back(d.to_string());
+  const Result<std::unique_ptr<CompiledScene>> compiled = compile_scene(*read, options);
+  for (const auto& d : compiled.diagnostics()) lines.push_back(d.to_string());
   return lines;
 }
 
 using Lines = std::vector<std::string>;
 
 TEST(MaxTriangles, DefaultIsFiftyMillion) {
-  const SceneReadResult r = read_scene_string("<scene version=\"1\"/>", "x.xml");
+  const Result<SceneDescription> r = read_scene_string("<scene version=\"1\"/>", "x.xml");
   ASSERT_TRUE(r.ok());
-  EXPECT_EQ(r.scene->max_triangles, 50'000'000u);
+  EXPECT_EQ(r->max_triangles, 50'000'000u);
 }
 
 TEST(MaxTriangles, HeaderAboveTheLimitIsRefusedBeforeLoading) {
@@ -94,9 +94,9 @@ TEST(MaxTriangles, OutOfRangeOrMalformedValuesAreRefused) {
            {"5e7", "x.xml:1: error: invalid integer '5e7' for attribute 'max_triangles' on <scene>"},
            {"2000000000", "x.xml:1: error: attribute 'max_triangles' on <scene> must be in [1, 1000000000], got "
                           "2000000000"}}) {
-    const SceneReadResult r = read_scene_string("<scene version=\"1\" max_triangles=\"" + value + "\"/>", "x.xml");
-    ASSERT_EQ(r.diagnostics.size(), 1u) << value;
-    EXPECT_EQ(r.diagnostics[0].to_string(), message);
+    const Result<SceneDescription> r = read_scene_string("<scene version=\"1\" max_triangles=\"" + value + "\"/>", "x.xml");
+    ASSERT_EQ(r.diagnostics().size(), 1u) << value;
+    EXPECT_EQ(r.diagnostics()[0].to_string(), message);
   }
 }
 
@@ -104,9 +104,9 @@ TEST(MaxTriangles, IncludedFilesDoNotChangeTheRootsLimit) {
   TempDir dir;
   test::write_text(dir / "inner.xml", "<scene version=\"1\" max_triangles=\"5\"/>\n");
   test::write_text(dir / "root.xml", "<scene version=\"1\" max_triangles=\"7\">\n  <include file=\"inner.xml\"/>\n</scene>\n");
-  const SceneReadResult r = read_scene_file(dir / "root.xml");
+  const Result<SceneDescription> r = read_scene_file(dir / "root.xml");
   ASSERT_TRUE(r.ok());
-  EXPECT_EQ(r.scene->max_triangles, 7u);
+  EXPECT_EQ(r->max_triangles, 7u);
 }
 
 }  // namespace

@@ -58,10 +58,10 @@ TEST_F(SceneCompilerTest, CompilesAMeshAndEveryPrimitive) {
   d.objects.push_back(make_object("can", CylinderSource{0.03, 0.1, 24}, 14, 500.0));
   d.objects[2].X_WO = pose_from_xyz_rpy(Eigen::Vector3d(0.1, 0.2, 0.3), Eigen::Vector3d(0.1, 0.2, 0.3));
 
-  const CompileResult r = compile_scene(d, options_);
-  ASSERT_TRUE(r.ok()) << (r.diagnostics.empty() ? "" : r.diagnostics.front().to_string());
-  EXPECT_TRUE(r.diagnostics.empty());
-  const CompiledScene& s = *r.scene;
+  const Result<std::unique_ptr<CompiledScene>> r = compile_scene(d, options_);
+  ASSERT_TRUE(r.ok()) << (r.diagnostics().empty() ? "" : r.diagnostics().front().to_string());
+  EXPECT_TRUE(r.diagnostics().empty());
+  const CompiledScene& s = *r.value();
   EXPECT_EQ(s.name, "everything");
   EXPECT_EQ(s.proxy.max_force_N, 3.25);
   ASSERT_EQ(s.world.object_count(), 5);
@@ -119,9 +119,9 @@ TEST_F(SceneCompilerTest, IdenticalSourcesAreLoadedOnceAndShared) {
   for (const bool use_cache : {true, false}) {
     SCOPED_TRACE(use_cache);
     options_.use_cache = use_cache;
-    const CompileResult r = compile_scene(d, options_);
+    const Result<std::unique_ptr<CompiledScene>> r = compile_scene(d, options_);
     ASSERT_TRUE(r.ok());
-    const CollisionWorld& w = r.scene->world;
+    const CollisionWorld& w = r.value()->world;
     EXPECT_EQ(&w.shape(0), &w.shape(1));
     EXPECT_EQ(&w.shape(0), &w.shape(3));
     EXPECT_NE(&w.shape(0), &w.shape(2));
@@ -129,7 +129,7 @@ TEST_F(SceneCompilerTest, IdenticalSourcesAreLoadedOnceAndShared) {
     EXPECT_NE(&w.shape(4), &w.shape(6));
     EXPECT_NEAR(w.shape(2).bounds().max().z(), 0.02, 1e-9);
     EXPECT_TRUE(w.pose(1).translation().isApprox(Eigen::Vector3d(1, 0, 0)));
-    EXPECT_EQ(r.scene->triangle_count, 4 * 12 + 3 * 320u);
+    EXPECT_EQ(r.value()->triangle_count, 4 * 12 + 3 * 320u);
   }
   // One cache entry per distinct (file, scale).
   EXPECT_EQ(count_cache_files(dir_ / "cache"), 2u);
@@ -143,13 +143,13 @@ TEST_F(SceneCompilerTest, CacheIsOptional) {
   EXPECT_EQ(count_cache_files(dir_ / "cache"), 0u);
 
   options_.use_cache = true;
-  const CompileResult first = compile_scene(d, options_);
+  const Result<std::unique_ptr<CompiledScene>> first = compile_scene(d, options_);
   ASSERT_TRUE(first.ok());
   EXPECT_EQ(count_cache_files(dir_ / "cache"), 1u);
-  const CompileResult second = compile_scene(d, options_);  // from the cache
+  const Result<std::unique_ptr<CompiledScene>> second = compile_scene(d, options_);  // from the cache
   ASSERT_TRUE(second.ok());
-  EXPECT_EQ(second.scene->world.shape(0).mesh().vertices_m, first.scene->world.shape(0).mesh().vertices_m);
-  EXPECT_EQ(second.scene->world.shape(0).mesh().triangles, first.scene->world.shape(0).mesh().triangles);
+  EXPECT_EQ(second.value()->world.shape(0).mesh().vertices_m, first.value()->world.shape(0).mesh().vertices_m);
+  EXPECT_EQ(second.value()->world.shape(0).mesh().triangles, first.value()->world.shape(0).mesh().triangles);
 }
 
 TEST_F(SceneCompilerTest, MeshErrorsNameTheObjectTheFileAndTheReason) {
@@ -163,22 +163,21 @@ TEST_F(SceneCompilerTest, MeshErrorsNameTheObjectTheFileAndTheReason) {
   d.objects.push_back(make_object("junk", MeshSource{dir_ / "junk.ply", Eigen::Vector3d::Ones()}, 11));
   d.objects.push_back(make_object("ghost2", MeshSource{missing, Eigen::Vector3d::Ones()}, 13));
 
-  const CompileResult r = compile_scene(d, options_);
+  const Result<std::unique_ptr<CompiledScene>> r = compile_scene(d, options_);
   EXPECT_FALSE(r.ok());
-  EXPECT_EQ(r.scene, nullptr);
-  ASSERT_EQ(r.diagnostics.size(), 4u);
-  EXPECT_EQ(r.diagnostics[0].where.file, "scene.xml");
-  EXPECT_EQ(r.diagnostics[0].where.line, 7);
-  EXPECT_EQ(r.diagnostics[0].message, "object 'ghost': mesh file '" + missing.string() + "': file not found");
-  EXPECT_EQ(r.diagnostics[1].where.line, 9);
-  EXPECT_TRUE(r.diagnostics[1].message.starts_with("object 'wire': mesh file '")) << r.diagnostics[1].message;
-  EXPECT_NE(r.diagnostics[1].message.find("no triangles"), std::string::npos) << r.diagnostics[1].message;
-  EXPECT_EQ(r.diagnostics[2].where.line, 11);
-  EXPECT_NE(r.diagnostics[2].message.find("junk.ply"), std::string::npos) << r.diagnostics[2].message;
+  ASSERT_EQ(r.diagnostics().size(), 4u);
+  EXPECT_EQ(r.diagnostics()[0].where.file, "scene.xml");
+  EXPECT_EQ(r.diagnostics()[0].where.line, 7);
+  EXPECT_EQ(r.diagnostics()[0].message, "object 'ghost': mesh file '" + missing.string() + "': file not found");
+  EXPECT_EQ(r.diagnostics()[1].where.line, 9);
+  EXPECT_TRUE(r.diagnostics()[1].message.starts_with("object 'wire': mesh file '")) << r.diagnostics()[1].message;
+  EXPECT_NE(r.diagnostics()[1].message.find("no triangles"), std::string::npos) << r.diagnostics()[1].message;
+  EXPECT_EQ(r.diagnostics()[2].where.line, 11);
+  EXPECT_NE(r.diagnostics()[2].message.find("junk.ply"), std::string::npos) << r.diagnostics()[2].message;
   // A shared failing source is reported for every object that names it.
-  EXPECT_EQ(r.diagnostics[3].where.line, 13);
-  EXPECT_EQ(r.diagnostics[3].message, "object 'ghost2': mesh file '" + missing.string() + "': file not found");
-  EXPECT_NE(r.diagnostics[0].to_string().find("scene.xml:7"), std::string::npos);
+  EXPECT_EQ(r.diagnostics()[3].where.line, 13);
+  EXPECT_EQ(r.diagnostics()[3].message, "object 'ghost2': mesh file '" + missing.string() + "': file not found");
+  EXPECT_NE(r.diagnostics()[0].to_string().find("scene.xml:7"), std::string::npos);
 }
 
 TEST_F(SceneCompilerTest, InvalidPrimitivesAndPosesAreDiagnosed) {
@@ -195,18 +194,18 @@ TEST_F(SceneCompilerTest, InvalidPrimitivesAndPosesAreDiagnosed) {
   d.objects.push_back(make_object("sheared", BoxSource{Eigen::Vector3d(1, 1, 1)}, 8));
   d.objects.back().X_WO.linear()(0, 1) = 0.5;
 
-  const CompileResult r = compile_scene(d, options_);
+  const Result<std::unique_ptr<CompiledScene>> r = compile_scene(d, options_);
   EXPECT_FALSE(r.ok());
-  ASSERT_EQ(r.diagnostics.size(), 7u);
+  ASSERT_EQ(r.diagnostics().size(), 7u);
   const std::vector<int> lines = {1, 2, 3, 4, 5, 7, 8};
   const std::vector<std::string> names = {"flat", "ball", "dot", "brick", "can", "lost", "sheared"};
   for (std::size_t i = 0; i < lines.size(); ++i) {
-    EXPECT_EQ(r.diagnostics[i].where.line, lines[i]);
-    EXPECT_TRUE(r.diagnostics[i].message.starts_with("object '" + names[i] + "': ")) << r.diagnostics[i].message;
+    EXPECT_EQ(r.diagnostics()[i].where.line, lines[i]);
+    EXPECT_TRUE(r.diagnostics()[i].message.starts_with("object '" + names[i] + "': ")) << r.diagnostics()[i].message;
   }
-  EXPECT_NE(r.diagnostics[1].message.find("subdivisions"), std::string::npos);
-  EXPECT_NE(r.diagnostics[4].message.find("segments"), std::string::npos);
-  EXPECT_NE(r.diagnostics[5].message.find("pose"), std::string::npos);
+  EXPECT_NE(r.diagnostics()[1].message.find("subdivisions"), std::string::npos);
+  EXPECT_NE(r.diagnostics()[4].message.find("segments"), std::string::npos);
+  EXPECT_NE(r.diagnostics()[5].message.find("pose"), std::string::npos);
 }
 
 TEST_F(SceneCompilerTest, ShadedObjectsGetCornerNormalsWithTheirMaterialsCreaseAngle) {
@@ -217,14 +216,14 @@ TEST_F(SceneCompilerTest, ShadedObjectsGetCornerNormalsWithTheirMaterialsCreaseA
   d.objects.push_back(make_object("round", BoxSource{Eigen::Vector3d(0.1, 0.1, 0.1)}, 4));
   for (std::size_t i = 1; i < 4; ++i) d.objects[i].material.force_shading = true;
   d.objects[3].material.force_shading_crease_rad = 2.0;  // above the box's right angles
-  const CompileResult r = compile_scene(d, options_);
+  const Result<std::unique_ptr<CompiledScene>> r = compile_scene(d, options_);
   ASSERT_TRUE(r.ok());
-  const CollisionWorld& world = r.scene->world;
+  const CollisionWorld& world = r.value()->world;
   EXPECT_EQ(world.shading_normals(0), nullptr);  // unshaded: nothing computed
   ASSERT_NE(world.shading_normals(1), nullptr);
   ASSERT_NE(world.shading_normals(3), nullptr);
   EXPECT_EQ(world.shading_normals(1), world.shading_normals(2));  // same shape, same crease: shared
-  EXPECT_DOUBLE_EQ(world.shading_normals(1)->crease_angle_rad, r.scene->materials[1].force_shading_crease_rad);
+  EXPECT_DOUBLE_EQ(world.shading_normals(1)->crease_angle_rad, r.value()->materials[1].force_shading_crease_rad);
   EXPECT_DOUBLE_EQ(world.shading_normals(3)->crease_angle_rad, 2.0);
   // At a box corner the sharp box keeps the face normal, the round one blends three faces.
   const TriangleRef face{1, 0};
@@ -242,20 +241,20 @@ TEST_F(SceneCompilerTest, AShadingCreaseAngleOutsideZeroToPiIsDiagnosed) {
   d.objects[0].material.force_shading_crease_rad = std::numeric_limits<double>::quiet_NaN();
   d.objects.push_back(make_object("cube", BoxSource{Eigen::Vector3d(1, 1, 1)}, 8));
   d.objects[1].material.force_shading_crease_rad = -0.1;
-  const CompileResult r = compile_scene(d, options_);
-  ASSERT_EQ(r.diagnostics.size(), 2u);
-  EXPECT_EQ(r.diagnostics[0].where.line, 7);
-  EXPECT_EQ(r.diagnostics[0].message, "object 'ball': force shading crease angle must be within [0, pi] rad (got nan rad)");
-  EXPECT_EQ(r.diagnostics[1].where.line, 8);
+  const Result<std::unique_ptr<CompiledScene>> r = compile_scene(d, options_);
+  ASSERT_EQ(r.diagnostics().size(), 2u);
+  EXPECT_EQ(r.diagnostics()[0].where.line, 7);
+  EXPECT_EQ(r.diagnostics()[0].message, "object 'ball': force shading crease angle must be within [0, pi] rad (got nan rad)");
+  EXPECT_EQ(r.diagnostics()[1].where.line, 8);
 }
 
 TEST_F(SceneCompilerTest, EmptySceneCompiles) {
   SceneDescription d;
   d.name = "empty";
-  const CompileResult r = compile_scene(d, options_);
+  const Result<std::unique_ptr<CompiledScene>> r = compile_scene(d, options_);
   ASSERT_TRUE(r.ok());
-  EXPECT_EQ(r.scene->world.object_count(), 0);
-  EXPECT_EQ(r.scene->triangle_count, 0u);
+  EXPECT_EQ(r.value()->world.object_count(), 0);
+  EXPECT_EQ(r.value()->triangle_count, 0u);
 }
 
 TEST_F(SceneCompilerTest, LargeShapesReportProgress) {
@@ -264,7 +263,7 @@ TEST_F(SceneCompilerTest, LargeShapesReportProgress) {
   d.objects.push_back(make_object("big", SphereSource{0.1, 7}, 2));  // 327680 triangles
   std::vector<std::pair<std::string, double>> calls;
   options_.progress = [&](std::string_view what, double f) { calls.emplace_back(std::string(what), f); };
-  const CompileResult r = compile_scene(d, options_);
+  const Result<std::unique_ptr<CompiledScene>> r = compile_scene(d, options_);
   ASSERT_TRUE(r.ok());
   ASSERT_EQ(calls.size(), 2u);
   EXPECT_TRUE(calls[0].first.starts_with("object 'big': building BVH")) << calls[0].first;
@@ -296,9 +295,9 @@ TEST(SceneCompilerExact, AnExactPrimitiveGetsItsShapeAndATessellatedOneDoesNot) 
   object("can", CylinderSource{0.03, 0.1, 24, true});
   object("rod", CapsuleSource{0.02, 0.1, 16, true});
   CompileOptions options;
-  const CompileResult r = compile_scene(d, options);
-  ASSERT_TRUE(r.ok()) << (r.diagnostics.empty() ? "" : r.diagnostics.front().to_string());
-  const CollisionWorld& w = r.scene->world;
+  const Result<std::unique_ptr<CompiledScene>> r = compile_scene(d, options);
+  ASSERT_TRUE(r.ok()) << (r.diagnostics().empty() ? "" : r.diagnostics().front().to_string());
+  const CollisionWorld& w = r.value()->world;
   ASSERT_NE(w.exact_shape(0), nullptr);
   EXPECT_EQ(w.exact_shape(0)->kind, ExactKind::HalfSpace);
   ASSERT_NE(w.exact_shape(1), nullptr);

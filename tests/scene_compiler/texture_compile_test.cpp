@@ -75,9 +75,9 @@ TEST(GreyPng, AFileThatIsNoPngIsRefusedAndTheImageKept) {
 }
 
 TEST(TextureCompile, AHeightMapSamplesItsImage) {
-  const CompileResult r = compile_scene(plate_with(image_spec("four_by_two.png")), no_cache());
+  const Result<std::unique_ptr<CompiledScene>> r = compile_scene(plate_with(image_spec("four_by_two.png")), no_cache());
   ASSERT_TRUE(r.ok());
-  const auto& texture = r.scene->materials[0].texture;
+  const auto& texture = r.value()->materials[0].texture;
   ASSERT_NE(texture, nullptr);
   // Texel (3, 0) is white: the real surface; texel (0, 0) black: 1 mm down.
   EXPECT_NEAR(texture->sample({7e-3, 1e-3}).height_m, 0.0, 1e-15);
@@ -90,19 +90,19 @@ TEST(TextureCompile, ObjectsOfOneNamedMaterialShareOneTexture) {
   spec.depth_m = 1e-4;
   spec.period_m = 1e-3;
   spec.max_period_m = 4e-3;
-  const CompileResult r = compile_scene(plate_with(spec, 2), no_cache());
+  const Result<std::unique_ptr<CompiledScene>> r = compile_scene(plate_with(spec, 2), no_cache());
   ASSERT_TRUE(r.ok());
-  ASSERT_NE(r.scene->materials[0].texture, nullptr);
-  EXPECT_EQ(r.scene->materials[0].texture, r.scene->materials[1].texture);
+  ASSERT_NE(r.value()->materials[0].texture, nullptr);
+  EXPECT_EQ(r.value()->materials[0].texture, r.value()->materials[1].texture);
 }
 
 TEST(TextureCompile, AnUnreadableImageIsRefusedAtTheObjectsLine) {
-  const CompileResult r = compile_scene(plate_with(image_spec("not_a_png.png")), no_cache());
+  const Result<std::unique_ptr<CompiledScene>> r = compile_scene(plate_with(image_spec("not_a_png.png")), no_cache());
   ASSERT_FALSE(r.ok());
-  ASSERT_EQ(r.diagnostics.size(), 1U);
+  ASSERT_EQ(r.diagnostics().size(), 1U);
   const std::string prefix = "scene.xml:7: error: object 'plate0': texture: cannot read PNG '" +
                              data("not_a_png.png").string() + "': ";
-  EXPECT_EQ(r.diagnostics[0].to_string().rfind(prefix, 0), 0U) << r.diagnostics[0].to_string();
+  EXPECT_EQ(r.diagnostics()[0].to_string().rfind(prefix, 0), 0U) << r.diagnostics()[0].to_string();
 }
 
 TEST(TextureCompile, ValuesOutsideTheReadersBoundsAreRefused) {
@@ -110,25 +110,25 @@ TEST(TextureCompile, ValuesOutsideTheReadersBoundsAreRefused) {
   spec.kind = TextureKind::Grating;
   spec.depth_m = 1e-4;
   spec.period_m = 0.0;
-  const CompileResult r = compile_scene(plate_with(spec), no_cache());
-  ASSERT_EQ(r.diagnostics.size(), 1U);
-  EXPECT_EQ(r.diagnostics[0].to_string(),
+  const Result<std::unique_ptr<CompiledScene>> r = compile_scene(plate_with(spec), no_cache());
+  ASSERT_EQ(r.diagnostics().size(), 1U);
+  EXPECT_EQ(r.diagnostics()[0].to_string(),
             "scene.xml:7: error: object 'plate0': texture: period must be within [0.0001, 1] m (got 0)");
 }
 
 TEST(TextureCompile, TheShippedTexturedPlateSceneGetsItsThreeTextures) {
   std::filesystem::current_path(kSource);
-  const SceneReadResult read = read_scene_file("scenes/textured_plate.xml");
+  const Result<SceneDescription> read = read_scene_file("scenes/textured_plate.xml");
   ASSERT_TRUE(read.ok());
-  const CompileResult r = compile_scene(*read.scene, no_cache());
+  const Result<std::unique_ptr<CompiledScene>> r = compile_scene(*read, no_cache());
   ASSERT_TRUE(r.ok());
   int textured = 0;
-  for (std::size_t i = 0; i < r.scene->materials.size(); ++i) {
-    const bool has = r.scene->materials[i].texture != nullptr;
+  for (std::size_t i = 0; i < r.value()->materials.size(); ++i) {
+    const bool has = r.value()->materials[i].texture != nullptr;
     textured += has ? 1 : 0;
-    EXPECT_EQ(has, r.scene->object_names[i].find("_plate") != std::string::npos &&
-                       r.scene->object_names[i] != "smooth_plate")
-        << r.scene->object_names[i];
+    EXPECT_EQ(has, r.value()->object_names[i].find("_plate") != std::string::npos &&
+                       r.value()->object_names[i] != "smooth_plate")
+        << r.value()->object_names[i];
   }
   EXPECT_EQ(textured, 3);
 }

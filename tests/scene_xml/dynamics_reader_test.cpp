@@ -31,27 +31,27 @@ std::string scene_with(const std::string& children) {
 std::string at(int line, const std::string& message) { return kFile + ":" + std::to_string(line) + ": error: " + message; }
 
 Lines errors_of(const std::string& children) {
-  const SceneReadResult r = read_scene_string(scene_with(children), kFile);
+  const Result<SceneDescription> r = read_scene_string(scene_with(children), kFile);
   EXPECT_FALSE(r.ok());
-  return to_strings(r.diagnostics);
+  return to_strings(r.diagnostics());
 }
 
 TEST(DynamicsReader, MassAndFrictionAreRead) {
-  const SceneReadResult r = read_scene_string(scene_with("    <dynamics mass_kg=\"0.6\" friction=\"0.4\"/>\n"), kFile);
-  ASSERT_TRUE(r.ok()) << testing::PrintToString(to_strings(r.diagnostics));
-  ASSERT_TRUE(r.scene->objects[0].dynamics);
-  EXPECT_DOUBLE_EQ(r.scene->objects[0].dynamics->mass_kg, 0.6);
-  EXPECT_DOUBLE_EQ(r.scene->objects[0].dynamics->friction, 0.4);
+  const Result<SceneDescription> r = read_scene_string(scene_with("    <dynamics mass_kg=\"0.6\" friction=\"0.4\"/>\n"), kFile);
+  ASSERT_TRUE(r.ok()) << testing::PrintToString(to_strings(r.diagnostics()));
+  ASSERT_TRUE(r->objects[0].dynamics);
+  EXPECT_DOUBLE_EQ(r->objects[0].dynamics->mass_kg, 0.6);
+  EXPECT_DOUBLE_EQ(r->objects[0].dynamics->friction, 0.4);
 }
 
 TEST(DynamicsReader, FrictionDefaultsAndZeroFrictionIsAccepted) {
-  const SceneReadResult d = read_scene_string(scene_with("    <dynamics mass_kg=\"2\"/>\n"), kFile);
+  const Result<SceneDescription> d = read_scene_string(scene_with("    <dynamics mass_kg=\"2\"/>\n"), kFile);
   ASSERT_TRUE(d.ok());
-  EXPECT_DOUBLE_EQ(d.scene->objects[0].dynamics->friction, scene_xml::kDefaultBodyFriction);
-  const SceneReadResult ice = read_scene_string(scene_with("    <dynamics mass_kg=\"2\" friction=\"0\"/>\n"), kFile);
+  EXPECT_DOUBLE_EQ(d->objects[0].dynamics->friction, scene_xml::kDefaultBodyFriction);
+  const Result<SceneDescription> ice = read_scene_string(scene_with("    <dynamics mass_kg=\"2\" friction=\"0\"/>\n"), kFile);
   ASSERT_TRUE(ice.ok());
-  EXPECT_DOUBLE_EQ(ice.scene->objects[0].dynamics->friction, 0.0);
-  EXPECT_FALSE(read_scene_string(scene_with(""), kFile).scene->objects[0].dynamics);  // still objects stay still
+  EXPECT_DOUBLE_EQ(ice->objects[0].dynamics->friction, 0.0);
+  EXPECT_FALSE(read_scene_string(scene_with(""), kFile)->objects[0].dynamics);  // still objects stay still
 }
 
 TEST(DynamicsReader, BadDynamicsAreRefusedAtTheirLine) {

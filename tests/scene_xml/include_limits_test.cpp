@@ -17,9 +17,9 @@ namespace {
 namespace fs = std::filesystem;
 using test::TempDir;
 
-std::vector<std::string> messages(const SceneReadResult& r) {
+std::vector<std::string> messages(const Result<SceneDescription>& r) {
   std::vector<std::string> lines;
-  for (const auto& d : r.diagnostics) lines.push_back(d.to_string());
+  for (const auto& d : r.diagnostics()) lines.push_back(d.to_string());
   return lines;
 }
 
@@ -60,7 +60,7 @@ TEST(IncludeLimits, SixtyFourLevelsAreAllowed) {
     test::write_text(dir / level(i), including(level(i + 1)));
   }
   test::write_text(dir / level(64), "<scene version=\"1\"/>\n");
-  const SceneReadResult r = read_scene_file(dir / level(0));
+  const Result<SceneDescription> r = read_scene_file(dir / level(0));
   EXPECT_TRUE(r.ok()) << messages(r).front();
 }
 

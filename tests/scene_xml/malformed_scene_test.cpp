@@ -23,10 +23,10 @@ class SceneXmlMalformed : public test::FromSourceRoot {
  protected:
   /// Reads kDir + name and returns its diagnostics; the scene must be refused.
   static Lines errors_of(const std::string& name) {
-    const SceneReadResult result = read_scene_file(kDir + name);
+    const Result<SceneDescription> result = read_scene_file(kDir + name);
     EXPECT_FALSE(result.ok()) << name << " was accepted";
-    EXPECT_FALSE(result.scene.has_value());
-    return to_strings(result.diagnostics);
+    EXPECT_FALSE(result.ok());
+    return to_strings(result.diagnostics());
   }
   static std::string at(const std::string& name, int line, const std::string& message) {
     return kDir + name + ":" + std::to_string(line) + ": error: " + message;

@@ -31,20 +31,20 @@ std::string scene_with(const std::string& children, const std::string& unit = "m
 std::string at(int line, const std::string& message) { return kFile + ":" + std::to_string(line) + ": error: " + message; }
 
 Lines errors_of(const std::string& children) {
-  const SceneReadResult r = read_scene_string(scene_with(children), kFile);
+  const Result<SceneDescription> r = read_scene_string(scene_with(children), kFile);
   EXPECT_FALSE(r.ok());
-  return to_strings(r.diagnostics);
+  return to_strings(r.diagnostics());
 }
 
 TEST(MotionReader, KeyframesInTheScenesUnitStartTheObjectAtTheFirstKey) {
-  const SceneReadResult r = read_scene_string(scene_with("    <motion repeat=\"pingpong\">\n"
+  const Result<SceneDescription> r = read_scene_string(scene_with("    <motion repeat=\"pingpong\">\n"
                                                          "      <key t_s=\"0\" position=\"0 1000 0\"/>\n"
                                                          "      <key t_s=\"2\" position=\"400 1000 0\" rpy_deg=\"0 90 0\"/>\n"
                                                          "    </motion>\n",
                                                          "mm"),
                                               kFile);
-  ASSERT_TRUE(r.ok()) << ::testing::PrintToString(to_strings(r.diagnostics));
-  const ObjectDescription& o = r.scene->objects[0];
+  ASSERT_TRUE(r.ok()) << ::testing::PrintToString(to_strings(r.diagnostics()));
+  const ObjectDescription& o = r->objects[0];
   ASSERT_TRUE(o.motion);
   EXPECT_LT((o.X_WO.translation() - Eigen::Vector3d(0, 1, 0)).norm(), 1e-12);
   EXPECT_NEAR(o.motion->max_speed_mps(), 0.2, 1e-12);
@@ -54,17 +54,17 @@ TEST(MotionReader, KeyframesInTheScenesUnitStartTheObjectAtTheFirstKey) {
 }
 
 TEST(MotionReader, ATwistStartsFromThePose) {
-  const SceneReadResult r = read_scene_string(
+  const Result<SceneDescription> r = read_scene_string(
       scene_with("    <pose position=\"0 900 0\"/>\n"
                  "    <motion velocity=\"100 0 0\" angular_velocity_deg_s=\"0 180 0\"/>\n",
                  "mm"),
       kFile);
-  ASSERT_TRUE(r.ok()) << ::testing::PrintToString(to_strings(r.diagnostics));
-  const ObjectDescription& o = r.scene->objects[0];
+  ASSERT_TRUE(r.ok()) << ::testing::PrintToString(to_strings(r.diagnostics()));
+  const ObjectDescription& o = r->objects[0];
   ASSERT_TRUE(o.motion);
   EXPECT_LT((o.motion->X_WO_at(1.0).translation() - Eigen::Vector3d(0.1, 0.9, 0)).norm(), 1e-12);
   EXPECT_NEAR(o.motion->max_rate_radps(), std::numbers::pi, 1e-12);
-  EXPECT_FALSE(read_scene_string(scene_with(""), kFile).scene->objects[0].motion);  // still objects stay still
+  EXPECT_FALSE(read_scene_string(scene_with(""), kFile)->objects[0].motion);  // still objects stay still
 }
 
 TEST(MotionReader, BadMotionsAreRefusedAtTheirLine) {

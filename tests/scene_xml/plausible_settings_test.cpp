@@ -22,9 +22,9 @@ const std::string kDir = "tests/data/scenes/malformed/";
 class PlausibleSettings : public test::FromSourceRoot {
  protected:
   static Lines errors_of(const std::string& name) {
-    const SceneReadResult result = read_scene_file(kDir + name);
+    const Result<SceneDescription> result = read_scene_file(kDir + name);
     EXPECT_FALSE(result.ok()) << name << " was accepted";
-    return to_strings(result.diagnostics);
+    return to_strings(result.diagnostics());
   }
   static std::string at(const std::string& name, int line, const std::string& message) {
     return kDir + name + ":" + std::to_string(line) + ": error: " + message;
@@ -64,11 +64,11 @@ TEST_F(PlausibleSettings, TheStiffnessBoundScalesWithTheRate) {
   EXPECT_DOUBLE_EQ(max_stable_stiffness_N_per_m(1000.0), 3500.0);
   EXPECT_DOUBLE_EQ(max_stable_stiffness_N_per_m(2000.0), 7000.0);
   EXPECT_DOUBLE_EQ(max_stable_stiffness_N_per_m(500.0), 1750.0);
-  const SceneReadResult ok = read_scene_string(R"(<scene version="1">
+  const Result<SceneDescription> ok = read_scene_string(R"(<scene version="1">
   <haptics update_rate_Hz="2000"/>
   <object name="ball"><sphere radius="0.1"/><material stiffness_N_per_m="6000"/></object>
 </scene>)", "rate_2k.xml");
-  EXPECT_TRUE(ok.ok()) << (ok.diagnostics.empty() ? "" : ok.diagnostics.front().to_string());
+  EXPECT_TRUE(ok.ok()) << (ok.diagnostics().empty() ? "" : ok.diagnostics().front().to_string());
 }
 
 TEST_F(PlausibleSettings, DampingAndFrictionBeyondTheirBoundsAreRefusedButNotAForceLimit) {
@@ -109,8 +109,8 @@ TEST_F(PlausibleSettings, EveryShippedSceneIsPlausible) {
   }
   ASSERT_GT(files.size(), 10u);
   for (const fs::path& file : files) {
-    const SceneReadResult result = read_scene_file(file);
-    EXPECT_TRUE(result.ok()) << file << ": " << (result.ok() ? "" : result.diagnostics.front().to_string());
+    const Result<SceneDescription> result = read_scene_file(file);
+    EXPECT_TRUE(result.ok()) << file << ": " << (result.ok() ? "" : result.diagnostics().front().to_string());
   }
 }
 

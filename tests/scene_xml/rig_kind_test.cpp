@@ -15,9 +15,9 @@ namespace {
 using ::testing::ElementsAre;
 using ::testing::IsEmpty;
 
-std::vector<std::string> messages(const SceneReadResult& r) {
+std::vector<std::string> messages(const Result<SceneDescription>& r) {
   std::vector<std::string> out;
-  for (const Diagnostic& d : r.diagnostics) out.push_back(d.to_string());
+  for (const Diagnostic& d : r.diagnostics()) out.push_back(d.to_string());
   return out;
 }
 
@@ -32,28 +32,28 @@ constexpr const char* kDesktopRig = R"(  <rig kind="desktop">
   </rig>)";
 
 TEST(RigKind, ADesktopRigWithADeviceIsAccepted) {
-  const SceneReadResult r = read_scene_string(
+  const Result<SceneDescription> r = read_scene_string(
       scene(std::string(kDesktopRig) + R"(
   <plugins><plugin kind="device" name="sim_phantom"/></plugins>)"),
       "mem/desk.xml");
   ASSERT_TRUE(r.ok()) << testing::PrintToString(messages(r));
-  EXPECT_EQ(r.scene->rig_kind.kind, RigKind::Desktop);
-  ASSERT_TRUE(r.scene->rig_kind.where);
-  EXPECT_EQ(r.scene->rig_kind.where->line, 3);
-  EXPECT_THAT(check_rig_plugins_for_run(*r.scene), IsEmpty());
+  EXPECT_EQ(r->rig_kind.kind, RigKind::Desktop);
+  ASSERT_TRUE(r->rig_kind.where);
+  EXPECT_EQ(r->rig_kind.where->line, 3);
+  EXPECT_THAT(check_rig_plugins_for_run(*r), IsEmpty());
 }
 
 TEST(RigKind, MobileIsTheDefaultAndMayBeSaid) {
   for (const std::string rig : {"", "  <rig kind=\"mobile\"/>"}) {
-    const SceneReadResult r = read_scene_string(scene(rig), "mem/mobile.xml");
+    const Result<SceneDescription> r = read_scene_string(scene(rig), "mem/mobile.xml");
     ASSERT_TRUE(r.ok()) << rig << testing::PrintToString(messages(r));
-    EXPECT_EQ(r.scene->rig_kind.kind, RigKind::Mobile);
-    EXPECT_EQ(r.scene->rig_kind.where.has_value(), !rig.empty());
+    EXPECT_EQ(r->rig_kind.kind, RigKind::Mobile);
+    EXPECT_EQ(r->rig_kind.where.has_value(), !rig.empty());
   }
 }
 
 TEST(RigKind, ADesktopRigRefusesATrackerABaseAndAPlannerEachAtItsLine) {
-  const SceneReadResult r = read_scene_string(scene(std::string(kDesktopRig) + R"(
+  const Result<SceneDescription> r = read_scene_string(scene(std::string(kDesktopRig) + R"(
   <plugins>
     <plugin kind="device" name="sim_phantom"/>
     <plugin kind="tracker" name="sim_is900"/>
@@ -74,10 +74,10 @@ TEST(RigKind, ADesktopRigRefusesATrackerABaseAndAPlannerEachAtItsLine) {
 }
 
 TEST(RigKind, ADesktopRigNeedsItsDeviceFrameOnTheWorldAndNoOther) {
-  const SceneReadResult missing = read_scene_string(scene("  <rig kind=\"desktop\"/>"), "mem/desk.xml");
+  const Result<SceneDescription> missing = read_scene_string(scene("  <rig kind=\"desktop\"/>"), "mem/desk.xml");
   EXPECT_THAT(messages(missing), ElementsAre("mem/desk.xml:3: error: a desktop rig needs the device's pose: <frame "
                                              "name=\"device\" parent=\"world\" .../>"));
-  const SceneReadResult other = read_scene_string(scene(R"(  <rig kind="desktop">
+  const Result<SceneDescription> other = read_scene_string(scene(R"(  <rig kind="desktop">
     <frame name="table" parent="world"/>
     <frame name="device" parent="table"/>
   </rig>)"),
@@ -99,14 +99,14 @@ TEST(RigKind, AnUnknownOrContradictingKindIsAnError) {
 }
 
 TEST(RigKind, AMobileSceneToRunNeedsATrackerAtItsPluginsLine) {
-  const SceneReadResult r = read_scene_string(scene(R"(  <rig kind="mobile"/>
+  const Result<SceneDescription> r = read_scene_string(scene(R"(  <rig kind="mobile"/>
   <plugins>
     <plugin kind="device" name="sim_phantom"/>
   </plugins>)"),
                                               "mem/mobile.xml");
   ASSERT_TRUE(r.ok()) << testing::PrintToString(messages(r));  // valid as a file: the rig may come later
   std::vector<std::string> run;
-  for (const Diagnostic& d : check_rig_plugins_for_run(*r.scene)) run.push_back(d.to_string());
+  for (const Diagnostic& d : check_rig_plugins_for_run(*r)) run.push_back(d.to_string());
   EXPECT_THAT(run, ElementsAre("mem/mobile.xml:4: error: the scene names no tracker plugin (<plugin "
                                "kind=\"tracker\">), which a mobile rig needs (a desk with the device alone: <rig "
                                "kind=\"desktop\">, docs/desktop.md)"));

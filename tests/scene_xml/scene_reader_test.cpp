@@ -44,16 +44,16 @@ void expect_rotation(const Pose& X, const Eigen::Matrix3d& expected) {
 class SceneXmlReader : public test::FromSourceRoot {
  protected:
   static SceneDescription read_ok(const fs::path& file) {
-    SceneReadResult result = read_scene_file(file);
-    EXPECT_EQ(to_strings(result.diagnostics), Lines{});
+    Result<SceneDescription> result = read_scene_file(file);
+    EXPECT_EQ(to_strings(result.diagnostics()), Lines{});
     EXPECT_TRUE(result.ok());
-    return result.scene.value_or(SceneDescription{});
+    return result.value_or(SceneDescription{});
   }
   /// Diagnostics of an in-memory scene named "mem/scene.xml".
   static Lines errors_of(std::string_view xml) {
-    const SceneReadResult result = read_scene_string(xml, "mem/scene.xml");
+    const Result<SceneDescription> result = read_scene_string(xml, "mem/scene.xml");
     EXPECT_FALSE(result.ok());
-    return to_strings(result.diagnostics);
+    return to_strings(result.diagnostics());
   }
   static std::string at(int line, const std::string& message) {
     return "mem/scene.xml:" + std::to_string(line) + ": error: " + message;
@@ -188,34 +188,34 @@ TEST_F(SceneXmlReader, PluginsWithParams) {
 }
 
 TEST_F(SceneXmlReader, RotationMatchesPoseFromXyzRpy) {
-  const SceneReadResult r = read_scene_string(R"(<scene version="1">
+  const Result<SceneDescription> r = read_scene_string(R"(<scene version="1">
     <object name="o"><material stiffness_N_per_m="1"/><sphere radius="1"/>
       <pose position="1 2 3" rpy_deg="10 20 30"/></object></scene>)", "x.xml");
-  ASSERT_TRUE(r.ok()) << to_strings(r.diagnostics).front();
+  ASSERT_TRUE(r.ok()) << to_strings(r.diagnostics()).front();
   const double d = 3.14159265358979323846 / 180.0;
   const Pose expected = pose_from_xyz_rpy({1, 2, 3}, {10 * d, 20 * d, 30 * d});
-  EXPECT_TRUE(r.scene->objects[0].X_WO.isApprox(expected, 1e-12));
+  EXPECT_TRUE(r->objects[0].X_WO.isApprox(expected, 1e-12));
 }
 
 TEST_F(SceneXmlReader, LinesEndedByALoneCarriageReturnAreCountedAsLines) {
   // XML 1.0 2.11: CR, LF and CR LF all end a line. tinyxml2 counts only LF, so a file
   // with CR line ends put every error on line 1 (found by fuzzing).
-  const SceneReadResult r = read_scene_string(
+  const Result<SceneDescription> r = read_scene_string(
       "<scene version=\"1\">\r<object name=\"a\"><material stiffness_N_per_m=\"-1\"/><sphere radius=\"1\"/></object>\r"
       "<object name=\"b\"><material stiffness_N_per_m=\"1\"/><sphere radius=\"-1\"/></object>\r</scene>\r",
       "cr.xml");
-  ASSERT_EQ(r.diagnostics.size(), 2u);
-  EXPECT_EQ(r.diagnostics[0].where.line, 2);
-  EXPECT_EQ(r.diagnostics[1].where.line, 3);
+  ASSERT_EQ(r.diagnostics().size(), 2u);
+  EXPECT_EQ(r.diagnostics()[0].where.line, 2);
+  EXPECT_EQ(r.diagnostics()[1].where.line, 3);
 }
 
 TEST_F(SceneXmlReader, PrimitiveDimensionsOutsideOneMicrometreToTenKilometresAreRefused) {
-  const SceneReadResult r = read_scene_string(R"(<scene version="1">
+  const Result<SceneDescription> r = read_scene_string(R"(<scene version="1">
     <object name="a"><material stiffness_N_per_m="1"/><box size="1e300 1 1"/></object>
     <object name="b"><material stiffness_N_per_m="1"/><sphere radius="1e-300"/></object>
     <object name="c"><material stiffness_N_per_m="1"/><cylinder radius="0.1" height="2e4"/></object>
     <object name="d"><material stiffness_N_per_m="1"/><plane size="1e4 1e-6"/></object></scene>)", "x.xml");
-  const std::vector<std::string> errors = to_strings(r.diagnostics);
+  const std::vector<std::string> errors = to_strings(r.diagnostics());
   ASSERT_EQ(errors.size(), 3u);
   EXPECT_EQ(errors[0], "x.xml:2: error: attribute 'size' on <box> must be between 1e-6 m and 1e4 m (is 1e+300 m)");
   EXPECT_EQ(errors[1], "x.xml:3: error: attribute 'radius' on <sphere> must be between 1e-6 m and 1e4 m (is 1e-300 m)");
@@ -223,24 +223,24 @@ TEST_F(SceneXmlReader, PrimitiveDimensionsOutsideOneMicrometreToTenKilometresAre
 }
 
 TEST_F(SceneXmlReader, AQuaternionOfTinyComponentsIsNotAllZeros) {
-  const SceneReadResult r = read_scene_string(R"(<scene version="1">
+  const Result<SceneDescription> r = read_scene_string(R"(<scene version="1">
     <object name="o"><material stiffness_N_per_m="1"/><sphere radius="1"/>
       <pose quaternion_wxyz="1e-170 1e-170 0 0"/></object></scene>)", "x.xml");
-  ASSERT_TRUE(r.ok()) << to_strings(r.diagnostics).front();
-  const Eigen::Matrix3d R = r.scene->objects[0].X_WO.linear();
+  ASSERT_TRUE(r.ok()) << to_strings(r.diagnostics()).front();
+  const Eigen::Matrix3d R = r->objects[0].X_WO.linear();
   EXPECT_TRUE((R.transpose() * R).isApprox(Eigen::Matrix3d::Identity(), 1e-12));
   EXPECT_TRUE((R * Eigen::Vector3d::UnitY()).isApprox(Eigen::Vector3d::UnitZ(), 1e-12));
 }
 
 TEST_F(SceneXmlReader, StringDefaultsAndSceneNameFromStem) {
-  const SceneReadResult r = read_scene_string(R"(<?xml version="1.0"?>
+  const Result<SceneDescription> r = read_scene_string(R"(<?xml version="1.0"?>
 <!-- comments are fine -->
 <scene version="1">
   <object name="ball"><material stiffness_N_per_m="1000"/><sphere radius="0.1"/></object>
 </scene>
 )", "somewhere/my_scene.xml");
   ASSERT_TRUE(r.ok());
-  const SceneDescription& s = *r.scene;
+  const SceneDescription& s = *r;
   EXPECT_EQ(s.name, "my_scene");
   EXPECT_EQ(s.file, fs::path("somewhere/my_scene.xml"));
   EXPECT_DOUBLE_EQ(s.haptics.max_force_N, HapticsSettings{}.max_force_N);
@@ -260,12 +260,12 @@ TEST_F(SceneXmlReader, StringDefaultsAndSceneNameFromStem) {
 }
 
 TEST_F(SceneXmlReader, StringResolvesPathsAgainstTheGivenFile) {
-  const SceneReadResult r = read_scene_string(R"(<scene version="1" unit="mm">
+  const Result<SceneDescription> r = read_scene_string(R"(<scene version="1" unit="mm">
   <include file="common/materials.xml"/>
   <object name="t" material="skin"><mesh file="assets/tetrahedron.ply"/></object>
 </scene>)", "tests/data/scenes/valid/not_on_disk.xml");
-  ASSERT_TRUE(r.ok()) << to_strings(r.diagnostics).front();
-  const auto& mesh = std::get<MeshSource>(r.scene->objects[0].shape);
+  ASSERT_TRUE(r.ok()) << to_strings(r.diagnostics()).front();
+  const auto& mesh = std::get<MeshSource>(r->objects[0].shape);
   EXPECT_EQ(mesh.file, (test::kSourceDir / "tests/data/scenes/valid/assets/tetrahedron.ply").lexically_normal());
   expect_vec(mesh.scale_to_m, {0.001, 0.001, 0.001});
 }
@@ -273,26 +273,26 @@ TEST_F(SceneXmlReader, StringResolvesPathsAgainstTheGivenFile) {
 TEST_F(SceneXmlReader, AbsoluteIncludePath) {
   const std::string materials =
       (test::kSourceDir / "tests/data/scenes/valid/common/materials.xml").string();
-  const SceneReadResult r = read_scene_string(
+  const Result<SceneDescription> r = read_scene_string(
       "<scene version=\"1\"><include file=\"" + materials + "\"/></scene>", "/tmp/x.xml");
-  ASSERT_TRUE(r.ok()) << to_strings(r.diagnostics).front();
-  EXPECT_EQ(r.scene->materials.size(), 2u);
+  ASSERT_TRUE(r.ok()) << to_strings(r.diagnostics()).front();
+  EXPECT_EQ(r->materials.size(), 2u);
 }
 
 TEST_F(SceneXmlReader, LenientNumberSyntaxThatXmlSchemaAlsoAccepts) {
-  const SceneReadResult r = read_scene_string(R"(<scene version=" 1 " unit=" mm ">
+  const Result<SceneDescription> r = read_scene_string(R"(<scene version=" 1 " unit=" mm ">
   <object name="c"><material stiffness_N_per_m=" +1e3 " force_shading=" false "/>
     <cylinder radius=".5" height="2." segments="+8"/>
     <pose position="
       1   2
       3"/></object></scene>)", "x.xml");
-  ASSERT_TRUE(r.ok()) << to_strings(r.diagnostics).front();
-  const auto& c = std::get<CylinderSource>(r.scene->objects[0].shape);
+  ASSERT_TRUE(r.ok()) << to_strings(r.diagnostics()).front();
+  const auto& c = std::get<CylinderSource>(r->objects[0].shape);
   EXPECT_DOUBLE_EQ(c.radius_m, 0.0005);
   EXPECT_DOUBLE_EQ(c.height_m, 0.002);
   EXPECT_EQ(c.segments, 8);
-  EXPECT_DOUBLE_EQ(r.scene->objects[0].material.stiffness_N_per_m, 1000.0);
-  expect_vec(r.scene->objects[0].X_WO.translation(), {0.001, 0.002, 0.003});
+  EXPECT_DOUBLE_EQ(r->objects[0].material.stiffness_N_per_m, 1000.0);
+  expect_vec(r->objects[0].X_WO.translation(), {0.001, 0.002, 0.003});
 }
 
 // --- errors that need no file of their own ------------------------------------------
@@ -369,17 +369,17 @@ TEST_F(SceneXmlReader, StringAttributeValueErrors) {
 }
 
 TEST_F(SceneXmlReader, ShadingCreaseAngleIsReadInDegreesAndDefaultsToSixty) {
-  const SceneReadResult r = read_scene_string(R"(<scene version="1">
+  const Result<SceneDescription> r = read_scene_string(R"(<scene version="1">
   <material name="m" stiffness_N_per_m="1" force_shading="true" shading_crease_deg="45"/>
   <object name="a" material="m"><sphere radius="1"/></object>
   <object name="b"><material stiffness_N_per_m="1" force_shading="true"/><sphere radius="1"/></object>
   <object name="c"><material stiffness_N_per_m="1" shading_crease_deg=" 180 "/><sphere radius="1"/></object>
 </scene>)", "x.xml");
-  ASSERT_TRUE(r.ok()) << to_strings(r.diagnostics).front();
+  ASSERT_TRUE(r.ok()) << to_strings(r.diagnostics()).front();
   const double deg = 3.14159265358979323846 / 180.0;
-  EXPECT_DOUBLE_EQ(r.scene->objects[0].material.force_shading_crease_rad, 45 * deg);
-  EXPECT_DOUBLE_EQ(r.scene->objects[1].material.force_shading_crease_rad, 60 * deg);
-  EXPECT_DOUBLE_EQ(r.scene->objects[2].material.force_shading_crease_rad, 180 * deg);
+  EXPECT_DOUBLE_EQ(r->objects[0].material.force_shading_crease_rad, 45 * deg);
+  EXPECT_DOUBLE_EQ(r->objects[1].material.force_shading_crease_rad, 60 * deg);
+  EXPECT_DOUBLE_EQ(r->objects[2].material.force_shading_crease_rad, 180 * deg);
 }
 
 TEST_F(SceneXmlReader, ShadingCreaseAngleOutsideZeroToHundredEightyDegreesIsRefused) {
@@ -414,7 +414,7 @@ TEST_F(SceneXmlReader, StringIncludeRigAndPluginErrors) {
 }
 
 TEST_F(SceneXmlReader, ParamBlocksForTheUserThePlannerAndTheServer) {
-  const SceneReadResult r = read_scene_string(R"(<scene version="1">
+  const Result<SceneDescription> r = read_scene_string(R"(<scene version="1">
   <simulated_user>
     <param name="seed" value="7"/>
   </simulated_user>
@@ -424,8 +424,8 @@ TEST_F(SceneXmlReader, ParamBlocksForTheUserThePlannerAndTheServer) {
   </planner>
   <server/>
 </scene>)", "mem/scene.xml");
-  ASSERT_TRUE(r.ok()) << ::testing::PrintToString(to_strings(r.diagnostics));
-  const SceneDescription& s = *r.scene;
+  ASSERT_TRUE(r.ok()) << ::testing::PrintToString(to_strings(r.diagnostics()));
+  const SceneDescription& s = *r;
   ASSERT_TRUE(s.simulated_user);
   EXPECT_EQ(s.simulated_user->params, (std::map<std::string, std::string>{{"seed", "7"}}));
   EXPECT_EQ(s.simulated_user->param_where.at("seed").line, 3);
@@ -467,12 +467,12 @@ TEST_F(SceneXmlReader, ParamBlockErrors) {
 }
 
 TEST_F(SceneXmlReader, MissingRootFile) {
-  const SceneReadResult r = read_scene_file("tests/data/scenes/no_such_scene.xml");
+  const Result<SceneDescription> r = read_scene_file("tests/data/scenes/no_such_scene.xml");
   EXPECT_FALSE(r.ok());
-  EXPECT_EQ(to_strings(r.diagnostics),
+  EXPECT_EQ(to_strings(r.diagnostics()),
             (Lines{"tests/data/scenes/no_such_scene.xml: error: scene file not found"}));
-  const SceneReadResult dir = read_scene_file("tests/data/scenes");
-  EXPECT_EQ(to_strings(dir.diagnostics),
+  const Result<SceneDescription> dir = read_scene_file("tests/data/scenes");
+  EXPECT_EQ(to_strings(dir.diagnostics()),
             (Lines{"tests/data/scenes: error: scene file is not a regular file"}));
 }
 
@@ -485,7 +485,7 @@ namespace {
 // --- exact primitives ------------------------------------------------------------------
 
 TEST(SceneXmlExactPrimitives, ExactIsReadOnEveryPrimitiveAndTheCapsuleIsExactByDefault) {
-  const SceneReadResult r = read_scene_string(R"(<scene version="1" unit="mm"><material name="m" stiffness_N_per_m="1000"/>
+  const Result<SceneDescription> r = read_scene_string(R"(<scene version="1" unit="mm"><material name="m" stiffness_N_per_m="1000"/>
   <object material="m" name="p"><plane size="100 200" exact="true"/></object>
   <object material="m" name="s"><sphere radius="10" exact="true"/></object>
   <object material="m" name="s2"><sphere radius="10"/></object>
@@ -493,8 +493,8 @@ TEST(SceneXmlExactPrimitives, ExactIsReadOnEveryPrimitiveAndTheCapsuleIsExactByD
   <object material="m" name="c"><cylinder radius="5" height="8" exact="true"/></object>
   <object material="m" name="k"><capsule radius="5" length="40" segments="16"/></object>
   <object material="m" name="k2"><capsule radius="5" length="40" exact="false"/></object></scene>)", "x.xml");
-  ASSERT_TRUE(r.ok()) << test::to_strings(r.diagnostics).front();
-  const auto& o = r.scene->objects;
+  ASSERT_TRUE(r.ok()) << test::to_strings(r.diagnostics()).front();
+  const auto& o = r->objects;
   EXPECT_TRUE(std::get<PlaneSource>(o[0].shape).exact);
   EXPECT_TRUE(std::get<SphereSource>(o[1].shape).exact);
   EXPECT_FALSE(std::get<SphereSource>(o[2].shape).exact);

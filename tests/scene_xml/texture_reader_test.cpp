@@ -31,16 +31,16 @@ std::string scene_with(const std::string& texture_line) {
 class TextureReader : public test::FromSourceRoot {
  protected:
   static HapticTextureSpec spec_of(const std::string& texture_line) {
-    const SceneReadResult r = read_scene_string(scene_with(texture_line), kFile);
-    EXPECT_TRUE(r.ok()) << ::testing::PrintToString(to_strings(r.diagnostics));
-    if (!r.ok() || !r.scene->objects[0].material.texture_spec) return {};
-    EXPECT_EQ(r.scene->materials.at("m").texture_spec.has_value(), true);
-    return *r.scene->objects[0].material.texture_spec;
+    const Result<SceneDescription> r = read_scene_string(scene_with(texture_line), kFile);
+    EXPECT_TRUE(r.ok()) << ::testing::PrintToString(to_strings(r.diagnostics()));
+    if (!r.ok() || !r->objects[0].material.texture_spec) return {};
+    EXPECT_EQ(r->materials.at("m").texture_spec.has_value(), true);
+    return *r->objects[0].material.texture_spec;
   }
   static Lines errors_of(const std::string& texture_line) {
-    const SceneReadResult r = read_scene_string(scene_with(texture_line), kFile);
+    const Result<SceneDescription> r = read_scene_string(scene_with(texture_line), kFile);
     EXPECT_FALSE(r.ok());
-    return to_strings(r.diagnostics);
+    return to_strings(r.diagnostics());
   }
   static std::string at(int line, const std::string& message) {
     return kFile + ":" + std::to_string(line) + ": error: " + message;
@@ -85,10 +85,10 @@ TEST_F(TextureReader, AnInlineMaterialTakesATextureToo) {
       "    <material stiffness_N_per_m=\"1000\"><texture kind=\"grating\" depth_m=\"0.0001\" period_m=\"0.003\"/></material>\n"
       "  </object>\n"
       "</scene>\n";
-  const SceneReadResult r = read_scene_string(xml, kFile);
-  ASSERT_TRUE(r.ok()) << ::testing::PrintToString(to_strings(r.diagnostics));
-  ASSERT_TRUE(r.scene->objects[0].material.texture_spec.has_value());
-  EXPECT_EQ(r.scene->objects[0].material.texture_spec->period_m, 0.003);
+  const Result<SceneDescription> r = read_scene_string(xml, kFile);
+  ASSERT_TRUE(r.ok()) << ::testing::PrintToString(to_strings(r.diagnostics()));
+  ASSERT_TRUE(r->objects[0].material.texture_spec.has_value());
+  EXPECT_EQ(r->objects[0].material.texture_spec->period_m, 0.003);
 }
 
 TEST_F(TextureReader, BadValuesAreRefusedAtTheirLine) {

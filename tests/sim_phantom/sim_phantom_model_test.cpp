@@ -199,11 +199,11 @@ TEST(SimPhantomModel, TorqueLimitsGive8Point5NewtonsAtTheNominalConfiguration) {
 }
 
 TEST(SimPhantomModel, TheDeviceFrameMatchesThePomhiRig) {
-  const SceneReadResult read = read_scene_file(std::filesystem::path(MHD_SOURCE_DIR) / "scenes/rigs/pomhi.xml");
+  const Result<SceneDescription> read = read_scene_file(std::filesystem::path(MHD_SOURCE_DIR) / "scenes/rigs/pomhi.xml");
   ASSERT_TRUE(read.ok());
-  const RigBuildResult built = Rig::from_scene(*read.scene);
+  const Result<Rig, std::vector<RigError>> built = Rig::from_scene(*read);
   ASSERT_TRUE(built.ok());
-  const Rig& rig = *built.rig;
+  const Rig& rig = *built;
   const PhantomSimModel m(PhantomSimConfig{});
   for (const BasePose base : {BasePose{0.0, 0.0, 0.0}, BasePose{1.2, -0.7, 0.9}, BasePose{-3.0, 2.0, -2.5}}) {
     const Pose expected = rig.X_W_phantom(rig.X_W_robot_from_base(base));

@@ -27,11 +27,11 @@ mhd_device_command force_command(double t_s, const Eigen::Vector3d& F_P_N) {
 }
 
 Rig pomhi_rig() {
-  const SceneReadResult read = read_scene_file(std::filesystem::path(MHD_SOURCE_DIR) / "scenes/rigs/pomhi.xml");
+  const Result<SceneDescription> read = read_scene_file(std::filesystem::path(MHD_SOURCE_DIR) / "scenes/rigs/pomhi.xml");
   EXPECT_TRUE(read.ok());
-  RigBuildResult built = Rig::from_scene(read.scene.value_or(SceneDescription{}));
+  Result<Rig, std::vector<RigError>> built = Rig::from_scene(read.value_or(SceneDescription{}));
   EXPECT_TRUE(built.ok());
-  return *built.rig;
+  return *built;
 }
 
 TEST(SimPhantomPlugin, TheTableIdentifiesADevice) {

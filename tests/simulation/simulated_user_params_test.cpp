@@ -23,8 +23,8 @@ TEST(SimulatedUserParams, FillsTheConfiguration) {
   const auto r = simulated_user_config_from(block({{"path", "0 1 0.5; 2 1 0.5"}, {"loop_path", "true"}, {"seed", "9"},
                                                    {"start_heading_deg", "90"}, {"hand_height_m", "0.95"},
                                                    {"gaze_target_m", "1 1.5 -2"}}));
-  ASSERT_TRUE(r.config) << (r.diagnostics.empty() ? "" : r.diagnostics.front().to_string());
-  const SimulatedUserConfig& c = *r.config;
+  ASSERT_TRUE(r.ok()) << r.error_text();
+  const SimulatedUserConfig& c = *r;
   ASSERT_EQ(c.path.size(), 2u);
   EXPECT_DOUBLE_EQ(c.path[1].x_m, 2.0);
   EXPECT_TRUE(c.loop_path);
@@ -37,9 +37,9 @@ TEST(SimulatedUserParams, FillsTheConfiguration) {
 
 TEST(SimulatedUserParams, NamesEachBadParamAtItsLine) {
   const auto r = simulated_user_config_from(block({{"path", "0 1"}, {"hand_reach_m", "-1"}, {"walk_speed", "1"}}));
-  EXPECT_FALSE(r.config);
+  EXPECT_FALSE(r.ok());
   std::vector<std::string> messages;
-  for (const auto& d : r.diagnostics) messages.push_back(d.to_string());
+  for (const auto& d : r.error()) messages.push_back(d.to_string());
   EXPECT_EQ(messages, (std::vector<std::string>{
                           "u.xml:6: error: param 'path' in <simulated_user>: waypoint 1: expected 'x z speed_mps', got '0 1'",
                           "u.xml:7: error: param 'hand_reach_m' in <simulated_user> must be a non-negative number, got '-1'",
@@ -52,10 +52,10 @@ TEST(SimulatedUserParams, NamesEachBadParamAtItsLine) {
 TEST(SimulatedUserParams, AConfigurationTheUserRefusesIsAnErrorAtTheBlock) {
   // Each value is fine alone; a path faster than the maximum speed is not.
   const auto r = simulated_user_config_from(block({{"path", "0 0 1; 1 0 2"}, {"max_speed_mps", "1.5"}}));
-  EXPECT_FALSE(r.config);
-  ASSERT_EQ(r.diagnostics.size(), 1u);
-  EXPECT_EQ(r.diagnostics[0].where.line, 5);
-  EXPECT_NE(r.diagnostics[0].message.find("<simulated_user>: "), std::string::npos);
+  EXPECT_FALSE(r.ok());
+  ASSERT_EQ(r.error().size(), 1u);
+  EXPECT_EQ(r.error()[0].where.line, 5);
+  EXPECT_NE(r.error()[0].message.find("<simulated_user>: "), std::string::npos);
 }
 
 }  // namespace

@@ -37,19 +37,19 @@ void SceneFixture::load(const std::string& scene_path_relative_to_repo) {
   scene_.reset();
   oracle_.reset();
   const std::filesystem::path file = source_path(scene_path_relative_to_repo);
-  SceneReadResult read = read_scene_file(file);
-  ASSERT_TRUE(read.ok() && read.diagnostics.empty())
-      << "reading " << file.string() << " failed:" << join(read.diagnostics);
+  Result<SceneDescription> read = read_scene_file(file);
+  ASSERT_TRUE(read.ok() && read.diagnostics().empty())
+      << "reading " << file.string() << " failed:" << join(read.diagnostics());
 
   std::error_code ignored;
   std::filesystem::create_directories(bvh_cache_dir(), ignored);
   CompileOptions options;
   options.cache_dir = bvh_cache_dir();
-  CompileResult compiled = compile_scene(*read.scene, options);
-  ASSERT_TRUE(compiled.ok() && compiled.diagnostics.empty())
-      << "compiling " << file.string() << " failed:" << join(compiled.diagnostics);
+  Result<std::unique_ptr<CompiledScene>> compiled = compile_scene(*read, options);
+  ASSERT_TRUE(compiled.ok() && compiled.diagnostics().empty())
+      << "compiling " << file.string() << " failed:" << join(compiled.diagnostics());
 
-  scene_ = std::move(compiled.scene);
+  scene_ = std::move(compiled).value();
   rebuild_oracle();
 }
 

@@ -48,9 +48,9 @@ class TryByHand : public ::testing::Test {
     scene_ = *loaded.scene;
     CompileOptions compile;
     compile.use_cache = false;
-    CompileResult compiled = compile_scene(scene_.scene, compile);
+    Result<std::unique_ptr<CompiledScene>> compiled = compile_scene(scene_.scene, compile);
     ASSERT_TRUE(compiled.ok());
-    compiled_ = std::move(compiled.scene);
+    compiled_ = std::move(compiled).value();
 
     HandSessionOptions o;
     o.view.offscreen = true;

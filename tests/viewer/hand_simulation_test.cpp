@@ -20,14 +20,14 @@ constexpr double kFrame_s = 1.0 / 60.0;
 constexpr double kFace_z_m = -0.3;
 
 std::unique_ptr<CompiledScene> compiled_scene(const char* file) {
-  const SceneReadResult read = read_scene_file(std::filesystem::path(MHD_SOURCE_DIR) / file);
+  const Result<SceneDescription> read = read_scene_file(std::filesystem::path(MHD_SOURCE_DIR) / file);
   EXPECT_TRUE(read.ok());
   if (!read.ok()) return nullptr;
   CompileOptions options;
   options.use_cache = false;
-  CompileResult compiled = compile_scene(*read.scene, options);
+  Result<std::unique_ptr<CompiledScene>> compiled = compile_scene(*read, options);
   EXPECT_TRUE(compiled.ok());
-  return std::move(compiled.scene);
+  return std::move(compiled).value();
 }
 
 std::unique_ptr<CompiledScene> cube_wall() { return compiled_scene("scenes/cube_wall.xml"); }

@@ -48,9 +48,9 @@ class Render : public ::testing::Test {
 };
 
 ViewerScene scene_from(std::string_view xml) {
-  SceneReadResult read = read_scene_string(xml, kSource / "scenes/test_scene.xml");
-  EXPECT_TRUE(read.ok()) << (read.diagnostics.empty() ? "" : read.diagnostics.front().to_string());
-  return ViewerScene{read.ok() ? *read.scene : SceneDescription{}, std::nullopt};
+  Result<SceneDescription> read = read_scene_string(xml, kSource / "scenes/test_scene.xml");
+  EXPECT_TRUE(read.ok()) << (read.diagnostics().empty() ? "" : read.diagnostics().front().to_string());
+  return ViewerScene{read.ok() ? *read : SceneDescription{}, std::nullopt};
 }
 
 /// Pixels of `a` that differ from `b` (any channel by more than 24), per half.

@@ -64,9 +64,9 @@ TEST(ViewerScene, MissingFileAndRigFileWithoutFramesAreErrors) {
 }
 
 TEST(SceneGraph, DolphinSceneHasBothObjectsAndBoundsWithoutTheFloor) {
-  const SceneReadResult read = read_scene_file(kSource / "scenes/dolphin.xml");
+  const Result<SceneDescription> read = read_scene_file(kSource / "scenes/dolphin.xml");
   ASSERT_TRUE(read.ok());
-  const SceneGraphResult g = build_scene_graph(*read.scene);
+  const SceneGraphResult g = build_scene_graph(*read);
   ASSERT_TRUE(g.ok()) << g.errors.front();
   EXPECT_EQ(g.root->getNumChildren(), 2u);
   // The 2 m dolphin around (0, 0.9, -0.7); the 6 m floor is left out of the bounds.
@@ -78,12 +78,12 @@ TEST(SceneGraph, DolphinSceneHasBothObjectsAndBoundsWithoutTheFloor) {
 TEST(SceneGraph, AMeshThatCannotBeLoadedIsNamed) {
   const std::filesystem::path dir = scratch_dir();
   std::ofstream(dir / "garbage.ply") << "ply\nthis is not a mesh\n";
-  const SceneReadResult read = read_scene_string(
+  const Result<SceneDescription> read = read_scene_string(
       R"(<scene version="1"><object name="bad"><material stiffness_N_per_m="500"/><mesh file="garbage.ply"/></object>
          <object name="ball"><material stiffness_N_per_m="500"/><sphere radius="0.1"/></object></scene>)",
       dir / "bad.xml");
-  ASSERT_TRUE(read.ok()) << read.diagnostics.front().to_string();
-  const SceneGraphResult g = build_scene_graph(*read.scene);
+  ASSERT_TRUE(read.ok()) << read.diagnostics().front().to_string();
+  const SceneGraphResult g = build_scene_graph(*read);
   ASSERT_EQ(g.errors.size(), 1u);
   EXPECT_EQ(g.errors[0].rfind("object 'bad': mesh file '", 0), 0u) << g.errors[0];
   EXPECT_EQ(g.root->getNumChildren(), 1u) << "the good object is still there";

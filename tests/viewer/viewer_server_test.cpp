@@ -28,10 +28,10 @@ struct ServerRun {
 /// Runs scenes/dolphin.xml for `duration_s`, with osg_stereo added when `screenshot` is set.
 ServerRun run_dolphin(double duration_s, const fs::path& screenshot) {
   ServerRun run;
-  SceneReadResult read = read_scene_file(fs::path(MHD_SOURCE_DIR) / "scenes/dolphin.xml");
+  Result<SceneDescription> read = read_scene_file(fs::path(MHD_SOURCE_DIR) / "scenes/dolphin.xml");
   EXPECT_TRUE(read.ok());
   if (!read.ok()) return run;
-  SceneDescription scene = *read.scene;
+  SceneDescription scene = *read;
   if (!screenshot.empty()) {
     PluginDescription display;
     display.kind = PluginKind::Display;
@@ -40,13 +40,13 @@ ServerRun run_dolphin(double duration_s, const fs::path& screenshot) {
                       {"frames", "40"},      {"screenshot", screenshot.string()}};
     scene.plugins.push_back(display);
   }
-  CompileResult compiled = compile_scene(scene);
+  Result<std::unique_ptr<CompiledScene>> compiled = compile_scene(scene);
   EXPECT_TRUE(compiled.ok());
   if (!compiled.ok()) return run;
   ServerOptions options;
   options.duration_s = duration_s;
   options.plugin_path = {MHD_PLUGIN_BUILD_DIR};
-  HapticServerBuild build = HapticServer::open(scene, *compiled.scene, options);
+  HapticServerBuild build = HapticServer::open(scene, *compiled.value(), options);
   for (const Diagnostic& d : build.diagnostics) ADD_FAILURE() << d.to_string();
   if (!build.server) return run;
   run.report = build.server->run();

@@ -57,12 +57,12 @@ TEST(DdsRender, TheHipIsDrawnWhereThePublishedStatePutsItAndStaysAfterThePublish
   }  // the publisher is gone before the viewer draws
   ASSERT_TRUE(source->status().has_state) << "no state arrived in 5 s";
 
-  SceneReadResult read = read_scene_string(
+  Result<SceneDescription> read = read_scene_string(
       "<scene version=\"1\"><include file=\"common/materials.xml\"/><object name=\"far\" material=\"smooth\">"
       "<sphere radius=\"0.01\"/><pose position=\"0 -50 0\"/></object></scene>",
       kSource / "scenes/test_scene.xml");
   ASSERT_TRUE(read.ok());
-  const ViewerScene scene{*read.scene, std::nullopt};
+  const ViewerScene scene{*read, std::nullopt};
   ViewerOptions view;
   view.offscreen = true;
   view.width = 640;

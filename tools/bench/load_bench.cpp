@@ -23,9 +23,9 @@ double load_seconds(const std::string& file, const std::filesystem::path& cache_
   if (!read.ok()) return -1.0;
   mhd::CompileOptions options;
   options.cache_dir = cache_dir;
-  const auto compiled = mhd::compile_scene(*read.scene, options);
+  const auto compiled = mhd::compile_scene(*read, options);
   if (!compiled.ok()) {
-    for (const auto& d : compiled.diagnostics) fmt::print(stderr, "{}\n", d.to_string());
+    for (const auto& d : compiled.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
     return -1.0;
   }
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

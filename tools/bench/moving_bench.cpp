@@ -91,14 +91,18 @@ int main(int argc, char** argv) {
   int status = 0;
   for (const auto& file : scenes) {
     const auto read = mhd::read_scene_file(file);
-    const auto compiled = read.ok() ? mhd::compile_scene(*read.scene) : mhd::CompileResult{};
-    if (!read.ok() || !compiled.ok()) {
-      for (const auto& d : read.diagnostics) fmt::print(stderr, "{}\n", d.to_string());
-      for (const auto& d : compiled.diagnostics) fmt::print(stderr, "{}\n", d.to_string());
+    if (!read.ok()) {
+      fmt::print(stderr, "{}\n", read.error_text());
       status = 1;
       continue;
     }
-    const mhd::CompiledScene& scene = *compiled.scene;
+    const auto compiled = mhd::compile_scene(*read);
+    if (!compiled.ok()) {
+      fmt::print(stderr, "{}\n", compiled.error_text());
+      status = 1;
+      continue;
+    }
+    const mhd::CompiledScene& scene = *compiled.value();
     const std::vector<V> path = hand_path(scene, V(0.0, 1.0, 0.0), visits, wait_s, reach_m, seed, rate);
 
     // Timed pass: what the haptic tick does, nothing else.

@@ -159,21 +159,21 @@ int main(int argc, char** argv) {
   for (const auto& file : scenes) {
     const auto read = mhd::read_scene_file(file);
     if (!read.ok()) {
-      for (const auto& d : read.diagnostics) fmt::print(stderr, "{}\n", d.to_string());
+      for (const auto& d : read.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
       status = 1;
       continue;
     }
-    mhd::SceneDescription description = *read.scene;
+    mhd::SceneDescription description = *read;
     if (shade_all) {
       for (auto& object : description.objects) object.material.force_shading = true;
     }
     const auto compiled = mhd::compile_scene(description);
     if (!compiled.ok()) {
-      for (const auto& d : compiled.diagnostics) fmt::print(stderr, "{}\n", d.to_string());
+      for (const auto& d : compiled.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
       status = 1;
       continue;
     }
-    const auto& scene = *compiled.scene;
+    const auto& scene = *compiled.value();
     const mhd::verify::SurfaceCrossingOracle oracle(scene.world);
     mhd::verify::AnchorStrokeParams params;
     params.speed_m_per_s = speed;

@@ -43,17 +43,19 @@ struct Loaded {
 Loaded load(const std::string& file) {
   Loaded l;
   auto read = read_scene_file(file);
-  for (const auto& d : read.diagnostics) fmt::print(stderr, "{}\n", d.to_string());
+  for (const auto& d : read.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
   if (!read.ok()) return l;
-  auto compiled = compile_scene(*read.scene);
-  for (const auto& d : compiled.diagnostics) fmt::print(stderr, "{}\n", d.to_string());
+  auto compiled = compile_scene(*read);
+  for (const auto& d : compiled.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
   if (!compiled.ok()) return l;
-  auto rig = Rig::from_scene(*read.scene);
-  for (const auto& e : rig.errors) fmt::print(stderr, "{}\n", e.to_string());
-  if (!rig.ok()) return l;
-  l.description = *read.scene;
-  l.scene = std::move(*compiled.scene);
-  l.rig = *rig.rig;
+  auto rig = Rig::from_scene(*read);
+  if (!rig.ok()) {
+    fmt::print(stderr, "{}\n", rig.error_text());
+    return l;
+  }
+  l.description = *read;
+  l.scene = std::move(*compiled.value());
+  l.rig = *rig;
   return l;
 }
 
@@ -93,7 +95,7 @@ int run_tick(const std::string& scene_file, double seconds, bool realtime, doubl
     const double z = centre_W.z() + 0.05 * std::sin(1.7 * t + 0.5);
     const double height = 0.01 - (0.01 + depth_m) * (0.5 - 0.5 * std::cos(3.3 * t));  // starts above
     const Eigen::Vector3d p(x, surface_y(x, z) + height, z);
-    const PhantomIkResult ik = phantom_inverse_kinematics(rig.device(), rig.p_P_from_W(X_W_robot, p));
+    const PhantomIkSolution ik = phantom_inverse_kinematics(rig.device(), rig.p_P_from_W(X_W_robot, p));
     if (ik.status == PhantomIkStatus::Ok || ik.status == PhantomIkStatus::OutsideJointLimits) last_q = ik.q_rad;
     q[i] = last_q;
   }
@@ -129,14 +131,14 @@ int run_tick(const std::string& scene_file, double seconds, bool realtime, doubl
   return 0;
 }
 
-struct LeapResult {
+struct LeapFigures {
   double max_at_arrival_mm = 0.0;
   double max_any_mm = 0.0;
   double rms_mm = 0.0;
   double max_error_mm = 0.0;
 };
 
-LeapResult run_leap(const Loaded& l, bool predict, double noise_m, std::uint64_t seed, double seconds) {
+LeapFigures run_leap(const Loaded& l, bool predict, double noise_m, std::uint64_t seed, double seconds) {
   const Rig& rig = *l.rig;
   HapticTickSettings settings;
   settings.predict_base_pose = predict;
@@ -157,7 +159,7 @@ LeapResult run_leap(const Loaded& l, bool predict, double noise_m, std::uint64_t
   const auto truth = [&](double t) { return integrate_twist(start, twist, t); };
   const auto hip_true = [&](double t) { return rig.p_W_hip(rig.X_W_robot_from_base(truth(t)), q); };
 
-  LeapResult r;
+  LeapFigures r;
   double sum_sq = 0.0;
   std::size_t scored = 0;
   Eigen::Vector3d previous_hip = Eigen::Vector3d::Zero(), previous_true = Eigen::Vector3d::Zero();
@@ -214,9 +216,9 @@ int run_leaps(const std::string& scene_file, double seconds, int seeds) {
   fmt::print("|---|---|---|---|---|---|\n");
   for (const double noise : {0.0, 0.0025}) {
     for (const bool predict : {true, false}) {
-      LeapResult worst;
+      LeapFigures worst;
       for (int s = 1; s <= seeds; ++s) {
-        const LeapResult r = run_leap(l, predict, noise, static_cast<std::uint64_t>(s), seconds);
+        const LeapFigures r = run_leap(l, predict, noise, static_cast<std::uint64_t>(s), seconds);
         worst.max_at_arrival_mm = std::max(worst.max_at_arrival_mm, r.max_at_arrival_mm);
         worst.max_any_mm = std::max(worst.max_any_mm, r.max_any_mm);
         worst.rms_mm = std::max(worst.rms_mm, r.rms_mm);

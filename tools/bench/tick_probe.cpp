@@ -45,12 +45,12 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
 
   const auto read = mhd::read_scene_file(scene_file);
-  for (const auto& d : read.diagnostics) fmt::print(stderr, "{}\n", d.to_string());
+  for (const auto& d : read.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
   if (!read.ok()) return 1;
-  const auto compiled = mhd::compile_scene(*read.scene);
-  for (const auto& d : compiled.diagnostics) fmt::print(stderr, "{}\n", d.to_string());
+  const auto compiled = mhd::compile_scene(*read);
+  for (const auto& d : compiled.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
   if (!compiled.ok()) return 1;
-  const auto& scene = *compiled.scene;
+  const auto& scene = *compiled.value();
 
   mhd::HipPathCsvReader reader{std::filesystem::path(hip_csv)};
   std::vector<Eigen::Vector3d> hips_W;

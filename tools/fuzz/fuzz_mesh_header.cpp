@@ -109,19 +109,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return v != nullptr && std::string_view(v) == "1";
   }();
   if (!load) return 0;
-  const mhd::MeshLoadResult loaded =
+  const mhd::Result<mhd::LoadedMesh, mhd::MeshLoadError> loaded =
       mhd::load_mesh_file(file, Eigen::Vector3d::Ones(), {}, mhd::TriangleBudget{kBudget});
-  if (loaded.mesh.has_value() == loaded.error.has_value()) violated("a mesh and an error, or neither");
-  if (loaded.error) {
-    if (loaded.error->reason.empty()) violated("an error without a reason");
-    if (loaded.error->message().find(file.string()) == std::string::npos) violated("an error without the file");
-    if (!header.ok() && loaded.error->reason != header.error && !bytes.empty()) {
-      violated("the loader refused a bad header differently: " + loaded.error->reason);
+  if (!loaded.ok()) {
+    const mhd::MeshLoadError& error = loaded.error();
+    if (error.reason.empty()) violated("an error without a reason");
+    if (error.message().find(file.string()) == std::string::npos) violated("an error without the file");
+    if (!header.ok() && error.reason != header.error && !bytes.empty()) {
+      violated("the loader refused a bad header differently: " + error.reason);
     }
     return 0;
   }
   if (!header.ok()) violated("the loader accepted a refused header: " + header.error);
-  const mhd::TriangleMesh& mesh = *loaded.mesh;
+  const mhd::TriangleMesh& mesh = loaded->mesh;
   if (mesh.triangles.empty() || mesh.triangles.size() > kBudget) violated("triangle count out of range");
   for (const auto& t : mesh.triangles) {
     for (const auto i : t) {

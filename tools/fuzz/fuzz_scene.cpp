@@ -203,17 +203,17 @@ bool check_scene(const mhd::SceneDescription& scene, bool& bad_mesh) {
 void compile_and_check(const mhd::SceneDescription& scene, bool bad_mesh, std::string_view input) {
   mhd::CompileOptions options;
   options.use_cache = false;  // nothing written; every mesh comes from its file
-  const mhd::CompileResult compiled = mhd::compile_scene(scene, options);
+  const mhd::Result<std::unique_ptr<mhd::CompiledScene>> compiled = mhd::compile_scene(scene, options);
   if (!compiled.ok()) {
-    if (compiled.diagnostics.empty()) violated("compile: refused without a diagnostic");
-    check_diagnostics(compiled.diagnostics, input, "compile");
+    if (compiled.diagnostics().empty()) violated("compile: refused without a diagnostic");
+    check_diagnostics(compiled.diagnostics(), input, "compile");
     if (!bad_mesh) {
-      violated("compile: refused a scene the reader accepted: " + compiled.diagnostics.front().to_string());
+      violated("compile: refused a scene the reader accepted: " + compiled.diagnostics().front().to_string());
     }
     return;
   }
-  if (!compiled.diagnostics.empty()) violated("compile: a compiled scene with diagnostics");
-  const mhd::CompiledScene& c = *compiled.scene;
+  if (!compiled.diagnostics().empty()) violated("compile: a compiled scene with diagnostics");
+  const mhd::CompiledScene& c = *compiled.value();
   if (static_cast<std::size_t>(c.world.object_count()) != scene.objects.size() ||
       c.materials.size() != scene.objects.size() || c.object_names.size() != scene.objects.size()) {
     violated("compile: object counts differ from the description");
@@ -234,14 +234,14 @@ extern "C" int LLVMFuzzerInitialize(int* /*argc*/, char*** /*argv*/) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   g_sandbox->write_input(data, size);
   const std::string_view input(reinterpret_cast<const char*>(data), size);
-  const mhd::SceneReadResult result = mhd::read_scene_file(g_sandbox->input_file());
+  const mhd::Result<mhd::SceneDescription> result = mhd::read_scene_file(g_sandbox->input_file());
   if (!result.ok()) {
-    if (result.diagnostics.empty()) violated("read: rejected without a diagnostic");
-    check_diagnostics(result.diagnostics, input, "read");
+    if (result.diagnostics().empty()) violated("read: rejected without a diagnostic");
+    check_diagnostics(result.diagnostics(), input, "read");
     return 0;
   }
-  if (!result.diagnostics.empty()) violated("read: accepted with diagnostics");
+  if (!result.diagnostics().empty()) violated("read: accepted with diagnostics");
   bool bad_mesh = false;
-  if (check_scene(*result.scene, bad_mesh)) compile_and_check(*result.scene, bad_mesh, input);
+  if (check_scene(*result, bad_mesh)) compile_and_check(*result, bad_mesh, input);
   return 0;
 }

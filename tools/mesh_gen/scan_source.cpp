@@ -53,9 +53,9 @@ TriangleMesh load_scan_source(const std::string& source, const ScanSourceOptions
   if (!(unit_m > 0.0) || !std::isfinite(unit_m)) {
     throw std::invalid_argument("scan source '" + source + "': the file unit must be a finite length > 0 m");
   }
-  MeshLoadResult loaded = load_mesh_file(file, Eigen::Vector3d::Constant(unit_m));
-  if (!loaded.ok()) throw std::runtime_error(loaded.error->message());
-  return std::move(*loaded.mesh);
+  Result<LoadedMesh, MeshLoadError> loaded = load_mesh_file(file, Eigen::Vector3d::Constant(unit_m));
+  if (!loaded.ok()) throw std::runtime_error(loaded.error().message());
+  return std::move(loaded->mesh);
 }
 
 }  // namespace mhd::mesh_gen

@@ -64,17 +64,17 @@ struct LoadedRig {
 };
 
 std::optional<LoadedRig> load_rig(const std::string& file) {
-  mhd::SceneReadResult read = mhd::read_scene_file(file);
+  mhd::Result<mhd::SceneDescription> read = mhd::read_scene_file(file);
   if (!read.ok()) {
-    print_diagnostics(read.diagnostics);
+    print_diagnostics(read.diagnostics());
     return std::nullopt;
   }
-  const mhd::RigBuildResult built = mhd::Rig::from_scene(*read.scene);
+  const mhd::Result<mhd::Rig, std::vector<mhd::RigError>> built = mhd::Rig::from_scene(*read);
   if (!built.ok()) {
-    for (const mhd::RigError& e : built.errors) print_error(e.where.file.empty() ? file : e.where.file, e.where.line, e.message);
+    for (const mhd::RigError& e : built.error()) print_error(e.where.file.empty() ? file : e.where.file, e.where.line, e.message);
     return std::nullopt;
   }
-  return LoadedRig{std::move(*read.scene), *built.rig};
+  return LoadedRig{std::move(*read), *built};
 }
 
 bool write_text(const std::string& file, const std::string& text) {
@@ -112,24 +112,24 @@ std::string default_output(const std::string& rig) {
 }
 
 int calibrate(const CalibrateOptions& o, const LoadedRig& loaded) {
-  const mhd::SampleReadResult read = mhd::read_calibration_samples(o.samples);
+  const mhd::Result<std::vector<mhd::CalibrationSample>> read = mhd::read_calibration_samples(o.samples);
   if (!read.ok()) {
-    print_diagnostics(read.errors);
+    print_diagnostics(read.error());
     return 1;
   }
   mhd::CalibrationOptions options;
   options.split = *mhd::offset_split_from_string(o.split);
   options.estimate_psi = !o.no_psi;
-  const mhd::CalibrationOutcome outcome = mhd::calibrate_rig(loaded.rig, read.samples, options);
+  const mhd::Result<mhd::CalibrationFit, mhd::CalibrationError> outcome = mhd::calibrate_rig(loaded.rig, read.value(), options);
   if (!outcome.ok()) {
-    print_error(o.samples, 0, outcome.error->message + "; no rig written");
+    print_error(o.samples, 0, outcome.error().message + "; no rig written");
     return 1;
   }
-  const mhd::CalibrationResult& result = *outcome.result;
-  fmt::print("{} samples from {}, rig {}\n", read.samples.size(), o.samples, o.rig);
+  const mhd::CalibrationFit& result = *outcome;
+  fmt::print("{} samples from {}, rig {}\n", read.value().size(), o.samples, o.rig);
   fmt::print("{}", mhd::format_calibration_report(result, options.split));
   if (!o.residuals.empty()) {
-    if (!write_text(o.residuals, mhd::format_residuals_csv(loaded.rig, read.samples, result))) return 1;
+    if (!write_text(o.residuals, mhd::format_residuals_csv(loaded.rig, read.value(), result))) return 1;
     fmt::print("wrote residuals to {}\n", o.residuals);
   }
   const std::string output = o.output.empty() ? default_output(o.rig) : o.output;

@@ -88,15 +88,15 @@ int proxy_replay(const ProxyReplayOptions& opt) {
     return 1;
   }
 
-  const mhd::SceneReadResult read = mhd::read_scene_file(opt.scene);
-  for (const auto& d : read.diagnostics) fmt::print(stderr, "{}\n", d.to_string());
+  const mhd::Result<mhd::SceneDescription> read = mhd::read_scene_file(opt.scene);
+  for (const auto& d : read.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
   if (!read.ok()) return 1;
   mhd::CompileOptions compile_options;
   compile_options.use_cache = !opt.no_cache;
-  const mhd::CompileResult compiled = mhd::compile_scene(*read.scene, compile_options);
-  for (const auto& d : compiled.diagnostics) fmt::print(stderr, "{}\n", d.to_string());
+  const mhd::Result<std::unique_ptr<mhd::CompiledScene>> compiled = mhd::compile_scene(*read, compile_options);
+  for (const auto& d : compiled.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
   if (!compiled.ok()) return 1;
-  const mhd::CompiledScene& scene = *compiled.scene;
+  const mhd::CompiledScene& scene = *compiled.value();
 
   mhd::MovingWorld moving(scene.world, scene.motions, scene.dynamics);
   moving.place(0.0);

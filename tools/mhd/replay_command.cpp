@@ -45,24 +45,24 @@ int replay(const ReplayOptions& opt) {
                opt.recording);
     return 1;
   }
-  const mhd::RecordingReadResult recording = mhd::read_recording(opt.recording);
-  for (const auto& d : recording.diagnostics) fmt::print(stderr, "mhd replay: error: {}\n", d.to_string());
+  const mhd::Result<std::vector<mhd::RecordingRow>> recording = mhd::read_recording(opt.recording);
+  for (const auto& d : recording.diagnostics()) fmt::print(stderr, "mhd replay: error: {}\n", d.to_string());
   if (!recording.ok()) return 1;
 
-  const mhd::SceneReadResult read = mhd::read_scene_file(scene_file);
-  for (const auto& d : read.diagnostics) fmt::print(stderr, "{}\n", d.to_string());
+  const mhd::Result<mhd::SceneDescription> read = mhd::read_scene_file(scene_file);
+  for (const auto& d : read.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
   if (!read.ok()) return 1;
-  const mhd::CompileResult compiled = mhd::compile_scene(*read.scene);
-  for (const auto& d : compiled.diagnostics) fmt::print(stderr, "{}\n", d.to_string());
+  const mhd::Result<std::unique_ptr<mhd::CompiledScene>> compiled = mhd::compile_scene(*read);
+  for (const auto& d : compiled.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
   if (!compiled.ok()) return 1;
-  const mhd::RigBuildResult rig = mhd::Rig::from_scene(*read.scene);
-  for (const auto& e : rig.errors) fmt::print(stderr, "{}\n", e.to_string());
-  const mhd::ServerSettingsResult settings = mhd::server_settings_from(*read.scene);
-  for (const auto& d : settings.diagnostics) fmt::print(stderr, "{}\n", d.to_string());
-  if (!rig.ok() || !settings.settings) return 1;
+  const mhd::Result<mhd::Rig, std::vector<mhd::RigError>> rig = mhd::Rig::from_scene(*read);
+  if (!rig.ok()) fmt::print(stderr, "{}\n", rig.error_text());
+  const mhd::Result<mhd::ServerSettings> settings = mhd::server_settings_from(*read);
+  for (const auto& d : settings.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
+  if (!rig.ok() || !settings.ok()) return 1;
 
-  const mhd::ReplayResult r =
-      mhd::replay_recording(*compiled.scene, *rig.rig, settings.settings->tick, recording.rows);
+  const mhd::ReplayComparison r =
+      mhd::replay_recording(*compiled.value(), *rig, settings->tick, recording.value());
   fmt::print("replayed {} rows of {} on {}\n", r.rows, opt.recording, scene_file);
   fmt::print("max difference: force {:.3g} N, proxy {:.3g} m, device force {:.3g} N; {} rows differ\n",
              r.max_force_difference_N, r.max_proxy_difference_m, r.max_device_force_difference_N, r.differing_rows);

@@ -93,16 +93,16 @@ int run(const RunOptions& opt) {
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();
   mhd::cli::install_run_signal_handlers();
-  const mhd::SceneReadResult read = mhd::read_scene_file(opt.scene);
-  for (const auto& d : read.diagnostics) fmt::print(stderr, "{}\n", d.to_string());
+  const mhd::Result<mhd::SceneDescription> read = mhd::read_scene_file(opt.scene);
+  for (const auto& d : read.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
   if (!read.ok()) return 1;
 
   mhd::CompileOptions compile_options;
   compile_options.use_cache = !opt.no_cache;
-  const mhd::CompileResult compiled = mhd::compile_scene(*read.scene, compile_options);
-  for (const auto& d : compiled.diagnostics) fmt::print(stderr, "{}\n", d.to_string());
+  const mhd::Result<std::unique_ptr<mhd::CompiledScene>> compiled = mhd::compile_scene(*read, compile_options);
+  for (const auto& d : compiled.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
   if (!compiled.ok()) return 1;
-  const mhd::CompiledScene& scene = *compiled.scene;
+  const mhd::CompiledScene& scene = *compiled.value();
 
   mhd::ServerOptions options;
   options.duration_s = opt.duration_s;
@@ -114,7 +114,7 @@ int run(const RunOptions& opt) {
     options.status_interval_s = tty ? 0.2 : 1.0;
   }
 
-  mhd::HapticServerBuild build = mhd::HapticServer::open(*read.scene, scene, std::move(options));
+  mhd::HapticServerBuild build = mhd::HapticServer::open(*read, scene, std::move(options));
   for (const auto& d : build.diagnostics) fmt::print(stderr, "{}\n", d.to_string());
   for (const auto& w : build.warnings) {
     fmt::print(stderr, "{}{}: warning: {}\n", w.where.file, w.where.line > 0 ? fmt::format(":{}", w.where.line) : "",

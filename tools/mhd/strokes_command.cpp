@@ -57,8 +57,8 @@ mhd::verify::StrokeSet strokes_on_object(const mhd::CompiledScene& scene, int ob
 int run(const RunOptions& opt) {
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();
-  const mhd::SceneReadResult read = mhd::read_scene_file(opt.scene);
-  for (const auto& d : read.diagnostics) fmt::print(stderr, "{}\n", d.to_string());
+  const mhd::Result<mhd::SceneDescription> read = mhd::read_scene_file(opt.scene);
+  for (const auto& d : read.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
   if (!read.ok()) return 1;
 
   mhd::CompileOptions compile_options;
@@ -67,11 +67,11 @@ int run(const RunOptions& opt) {
     fmt::print(stderr, "\r{} {:3.0f} %", what, 100.0 * fraction);
     if (fraction >= 1.0) fmt::print(stderr, "\n");
   };
-  const mhd::CompileResult compiled = mhd::compile_scene(*read.scene, compile_options);
-  for (const auto& d : compiled.diagnostics) fmt::print(stderr, "{}\n", d.to_string());
+  const mhd::Result<std::unique_ptr<mhd::CompiledScene>> compiled = mhd::compile_scene(*read, compile_options);
+  for (const auto& d : compiled.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
   if (!compiled.ok()) return 1;
   const double load_s = std::chrono::duration<double>(Clock::now() - t0).count();
-  const mhd::CompiledScene& scene = *compiled.scene;
+  const mhd::CompiledScene& scene = *compiled.value();
   fmt::print("scene {}: {} objects, {} triangles, touchable after {:.3f} s\n", opt.scene,
              scene.world.object_count(), scene.triangle_count, load_s);
 

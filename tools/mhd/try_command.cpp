@@ -48,8 +48,8 @@ int run_try(TryOptions& o) {
   v::ViewerScene scene{loaded.scene->scene, std::nullopt};
   mhd::CompileOptions compile_options;
   compile_options.use_cache = !o.no_cache;
-  const mhd::CompileResult compiled = mhd::compile_scene(scene.scene, compile_options);
-  for (const auto& d : compiled.diagnostics) fmt::print(stderr, "mhd try: {}\n", d.to_string());
+  const mhd::Result<std::unique_ptr<mhd::CompiledScene>> compiled = mhd::compile_scene(scene.scene, compile_options);
+  for (const auto& d : compiled.diagnostics()) fmt::print(stderr, "mhd try: {}\n", d.to_string());
   if (!compiled.ok()) return 1;
 
   v::HandSessionOptions& options = o.session;
@@ -64,7 +64,7 @@ int run_try(TryOptions& o) {
     // A scripted screenshot depends on frame numbers only, not on how fast they come.
     view.max_frame_rate_Hz = 0.0;
   }
-  v::HandSession::OpenResult opened = v::HandSession::open(scene, *compiled.scene, options);
+  v::HandSession::OpenResult opened = v::HandSession::open(scene, *compiled.value(), options);
   if (!opened.session) {
     fmt::print(stderr, "mhd try: error: {}\n", opened.error);
     return 1;

@@ -34,7 +34,7 @@ bool check_plugins(const mhd::SceneDescription& scene, const ValidateOptions& op
   const mhd::PluginSearchPath search = mhd::PluginSearchPath::standard(command_line);
   bool good = true;
   for (const mhd::PluginDescription& plugin : scene.plugins) {
-    if (const mhd::PluginStatus s = mhd::check_scene_plugin(search, plugin); !s) {
+    if (const mhd::Status<mhd::PluginError> s = mhd::check_scene_plugin(search, plugin); !s) {
       fmt::print(stderr, "{}\n", mhd::Diagnostic{plugin.where, s.error().to_string()}.to_string());
       good = false;
     }
@@ -54,12 +54,12 @@ bool compile_and_report(const std::string& file, const mhd::SceneDescription& sc
   compile_options.progress = [&file](std::string_view what, double fraction) {
     spdlog::debug("{}: loading {} ({:.0f}%)", file, what, fraction * 100.0);
   };
-  const mhd::CompileResult compiled = mhd::compile_scene(scene, compile_options);
-  print_diagnostics(compiled.diagnostics);
+  const mhd::Result<std::unique_ptr<mhd::CompiledScene>> compiled = mhd::compile_scene(scene, compile_options);
+  print_diagnostics(compiled.diagnostics());
   if (!compiled.ok()) return false;
   fmt::print("{}: ok ({} objects, {} triangles)\n", file, scene.objects.size(),
-             compiled.scene->triangle_count);
-  const mhd::cli::WorldSize size = mhd::cli::check_world_size(scene, *compiled.scene);
+             compiled.value()->triangle_count);
+  const mhd::cli::WorldSize size = mhd::cli::check_world_size(scene, *compiled.value());
   for (const mhd::cli::ObjectExtents& o : size.objects) {
     fmt::print("  {}: {:.4g} x {:.4g} x {:.4g} m (x, y, z in its own frame)\n", o.name, o.size_m.x(), o.size_m.y(),
                o.size_m.z());
@@ -75,16 +75,16 @@ bool compile_and_report(const std::string& file, const mhd::SceneDescription& sc
 
 bool validate_file(const std::string& file, const ValidateOptions& options) {
   spdlog::debug("validating {}", file);
-  const mhd::SceneReadResult read = mhd::read_scene_file(file);
-  print_diagnostics(read.diagnostics);
+  const mhd::Result<mhd::SceneDescription> read = mhd::read_scene_file(file);
+  print_diagnostics(read.diagnostics());
   if (!read.ok()) return false;
-  if (!check_plugins(*read.scene, options)) return false;
+  if (!check_plugins(*read, options)) return false;
   if (options.no_meshes) {
-    fmt::print("{}: ok ({} objects, meshes not loaded)\n", file, read.scene->objects.size());
+    fmt::print("{}: ok ({} objects, meshes not loaded)\n", file, read->objects.size());
     return true;
   }
   try {
-    return compile_and_report(file, *read.scene, options);
+    return compile_and_report(file, *read, options);
   } catch (const std::exception& e) {
     fmt::print(stderr, "{}: error: {}\n", file, e.what());
     return false;

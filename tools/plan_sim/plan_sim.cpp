@@ -25,7 +25,7 @@ Eigen::Vector3d hand_of(const Eigen::Vector2d& user, double heading, double reac
 
 }  // namespace
 
-CaseResult simulate_case(PlannerKind kind, const PlannerSettings& settings, const MapSpec& spec,
+CaseFigures simulate_case(PlannerKind kind, const PlannerSettings& settings, const MapSpec& spec,
                          const Eigen::Vector2d& next_user_W) {
   const std::unique_ptr<Planner> planner = make_planner(kind, settings);
   const double reach = settings.arm_length_m;
@@ -41,7 +41,7 @@ CaseResult simulate_case(PlannerKind kind, const PlannerSettings& settings, cons
     return settings.usable_B.contains(p.x(), p.y());
   };
 
-  CaseResult result;
+  CaseFigures result;
   if (hip_inside(base)) {
     result.followed = true;
     return result;
@@ -88,7 +88,7 @@ FollowMap simulate_map(PlannerKind kind, const PlannerSettings& settings, const 
   map.follow_time_s.assign(cells, 0.0);
   for (int iz = 0; iz < map.cells_per_side; ++iz) {
     for (int ix = 0; ix < map.cells_per_side; ++ix) {
-      const CaseResult r = simulate_case(kind, settings, spec, map.cell_center(ix, iz));
+      const CaseFigures r = simulate_case(kind, settings, spec, map.cell_center(ix, iz));
       if (r.followed) {
         map.followed[static_cast<std::size_t>(iz * map.cells_per_side + ix)] = 1;
         map.follow_time_s[static_cast<std::size_t>(iz * map.cells_per_side + ix)] = r.time_s;

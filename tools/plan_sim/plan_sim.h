@@ -29,14 +29,14 @@ struct MapSpec {
   int substeps = 10;                ///< success checks per command period
 };
 
-struct CaseResult {
+struct CaseFigures {
   bool followed = false;
   double time_s = 0.0;        ///< when the HIP was first back inside (if followed)
   bool base_entered = false;  ///< the base moved into (or deeper into) the user's cylinder
 };
 
 /// One next user position (world x, z) with the spec's facing change.
-[[nodiscard]] CaseResult simulate_case(PlannerKind kind, const PlannerSettings& settings, const MapSpec& spec,
+[[nodiscard]] CaseFigures simulate_case(PlannerKind kind, const PlannerSettings& settings, const MapSpec& spec,
                                        const Eigen::Vector2d& next_user_W);
 
 struct FollowMap {

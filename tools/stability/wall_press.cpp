@@ -37,7 +37,7 @@ struct Window {
 
 }  // namespace
 
-WallPressResult press_wall(const WallPressSettings& s) {
+WallPressFigures press_wall(const WallPressSettings& s) {
   sim_phantom::PhantomSimConfig config;
   config.hand_model = sim_phantom::HandModel::Impedance;
   config.hand_impedance = s.hand;
@@ -70,7 +70,7 @@ WallPressResult press_wall(const WallPressSettings& s) {
   device.start(0.0);
   device.simulate_until(0.0, base, intended_W(0.0));
   reset_proxy(proxy, X_W_P * device.p_P_hip_m());
-  WallPressResult result;
+  WallPressFigures result;
   Window previous, last;
   for (long k = 0; k <= ticks; ++k) {
     const double t_s = static_cast<double>(k) * T;

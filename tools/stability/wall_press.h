@@ -24,7 +24,7 @@ struct WallPressSettings {
   double window_s = 1.0;        ///< the last two windows of this length are compared
 };
 
-struct WallPressResult {
+struct WallPressFigures {
   /// The force's peak-to-peak along the wall normal in the last two windows.
   double force_ptp_previous_N = 0.0;
   double force_ptp_last_N = 0.0;
@@ -37,7 +37,7 @@ struct WallPressResult {
   bool stable = false;
 };
 
-[[nodiscard]] WallPressResult press_wall(const WallPressSettings& settings);
+[[nodiscard]] WallPressFigures press_wall(const WallPressSettings& settings);
 
 /// Colgate and Schenkel (1997): a virtual wall K, B sampled with period T on a device of
 /// physical damping b is passive when b > K T / 2 + |B|, i.e. K < 2 (b - |B|) / T.

@@ -101,18 +101,18 @@ std::optional<mhd::SceneDescription> describe(const Source& src, const Options& 
     d.objects.push_back(o);  // benchmark material: k = 1000 N/m, no friction, no shading
     return d;
   }
-  mhd::SceneReadResult read = mhd::read_scene_file(src.file);
+  mhd::Result<mhd::SceneDescription> read = mhd::read_scene_file(src.file);
   if (!read.ok()) {
-    for (const auto& diag : read.diagnostics) fmt::print(stderr, "{}\n", diag.to_string());
+    for (const auto& diag : read.diagnostics()) fmt::print(stderr, "{}\n", diag.to_string());
     fmt::print(stderr, "mhd-popthrough-stress: error: {}: scene does not load\n", src.file);
     error = true;
     return std::nullopt;
   }
-  if (read.scene->objects.empty()) {
+  if (read->objects.empty()) {
     fmt::print(stderr, "mhd-popthrough-stress: skipping {}: no objects (an include, not a full scene)\n", src.file);
     return std::nullopt;
   }
-  return std::move(read.scene);
+  return std::move(read).value();
 }
 
 std::string reproducer(const Source& src, const Options& opt, const std::string& object, std::size_t stroke) {
@@ -250,14 +250,14 @@ int run(const Options& opt) {
     if (selected.empty()) continue;
     mhd::CompileOptions compile_options;
     compile_options.use_cache = !opt.no_cache;
-    const mhd::CompileResult compiled = mhd::compile_scene(*desc, compile_options);
+    const mhd::Result<std::unique_ptr<mhd::CompiledScene>> compiled = mhd::compile_scene(*desc, compile_options);
     if (!compiled.ok()) {
-      for (const auto& d : compiled.diagnostics) fmt::print(stderr, "{}\n", d.to_string());
+      for (const auto& d : compiled.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
       fmt::print(stderr, "mhd-popthrough-stress: error: {}: does not compile\n", src.file);
       input_error = true;
       continue;
     }
-    const mhd::CompiledScene& scene = *compiled.scene;
+    const mhd::CompiledScene& scene = *compiled.value();
     const mhd::verify::SurfaceCrossingOracle oracle(scene.world);
     // The engine's containment test sweeps a 1000 m ray whose bounding box covers much
     // of a mesh: on large meshes it costs up to milliseconds, so "auto" asks it on every

@@ -23,16 +23,16 @@ namespace mhd::dds {
 namespace {
 
 SceneDescription read_scene(const std::filesystem::path& file) {
-  SceneReadResult read = read_scene_file(file);
+  Result<SceneDescription> read = read_scene_file(file);
   if (!read.ok()) {
     std::string message;
-    for (const Diagnostic& d : read.diagnostics) {
+    for (const Diagnostic& d : read.diagnostics()) {
       if (!message.empty()) message += '\n';
       message += d.to_string();
     }
     throw TrackerServerSceneError(message);
   }
-  return std::move(*read.scene);
+  return std::move(*read);
 }
 
 PluginDescription tracker_of(const SceneDescription& scene, const std::filesystem::path& file,
@@ -75,8 +75,8 @@ TrackerServerReport run_tracker_server(const TrackerServerOptions& options, cons
     user_config.seed = options.user_seed;
     if (scene.simulated_user) {
       auto parsed = simulation::simulated_user_config_from(*scene.simulated_user);
-      if (!parsed.config) throw TrackerServerError(parsed.diagnostics.front().to_string());
-      user_config = std::move(*parsed.config);
+      if (!parsed.ok()) throw TrackerServerError(parsed.error().front().to_string());
+      user_config = std::move(parsed).value();
     }
     user.emplace(user_config);
   }
@@ -85,7 +85,7 @@ TrackerServerReport run_tracker_server(const TrackerServerOptions& options, cons
   if (user) user->update(host.now_s(), world);
 
   const PluginSearchPath search = PluginSearchPath::standard(options.plugin_paths);
-  PluginResult<PluginInstance> opened = open_plugin(search, description, host.abi());
+  Result<PluginInstance, PluginError> opened = open_plugin(search, description, host.abi());
   if (!opened) fail(opened.error());
   PluginInstance& tracker = opened.value();
 
@@ -104,14 +104,14 @@ TrackerServerReport run_tracker_server(const TrackerServerOptions& options, cons
           (options.duration_s && host.now_s() - t0_s >= *options.duration_s)) {
         report.elapsed_s = host.now_s() - t0_s;
         report.world_states_rejected = shared->rejected();
-        if (PluginStatus closed = tracker.close(); !closed) fail(closed.error());
+        if (Status<PluginError> closed = tracker.close(); !closed) fail(closed.error());
         return report;
       }
       (void)shared->wait(DDS_MSECS(50));
     }
   }
 
-  if (PluginStatus started = tracker.start(); !started) fail(started.error());
+  if (Status<PluginError> started = tracker.start(); !started) fail(started.error());
   if (on_started) {
     on_started(fmt::format("tracker '{}' publishing rig {} on DDS (partition {}, ownership strength {}, {}){}",
                            tracker.name(), options.rig_id, rig_partition(options.rig_id), options.ownership_strength,
@@ -156,7 +156,7 @@ TrackerServerReport run_tracker_server(const TrackerServerOptions& options, cons
     report.world_states = shared->applied();
     report.world_states_rejected = shared->rejected();
   }
-  if (PluginStatus stopped = tracker.close(); !stopped) fail(stopped.error());
+  if (Status<PluginError> stopped = tracker.close(); !stopped) fail(stopped.error());
   return report;
 }
 

@@ -47,7 +47,7 @@ PhantomSimModel::PhantomSimModel(const PhantomSimConfig& config) : config_(confi
   require_positive(g.l2_m, "l2_m");
   X_base_phantom_ = config.X_robot_base.inverse(Eigen::Isometry) * config.X_robot_phantom;
   angle_step_rad_ = config.position_resolution_m / (g.l1_m + g.l2_m);
-  const PhantomIkResult nominal = phantom_inverse_kinematics(config.device, config.device.workspace.center_P_m());
+  const PhantomIkSolution nominal = phantom_inverse_kinematics(config.device, config.device.workspace.center_P_m());
   if (!nominal.ok()) throw std::invalid_argument("the workspace centre is not reachable");
   q_nominal_ = nominal.q_rad;
   q_reachable_ = q_nominal_;
@@ -88,7 +88,7 @@ Eigen::Vector3d PhantomSimModel::clamp(const Eigen::Vector3d& p_P, bool& clamped
 }
 
 Eigen::Vector3d PhantomSimModel::solve(const Eigen::Vector3d& p_P, bool& failed) const {
-  const PhantomIkResult ik = phantom_inverse_kinematics(config_.device, p_P);
+  const PhantomIkSolution ik = phantom_inverse_kinematics(config_.device, p_P);
   if (ik.ok()) return ik.q_rad;
   failed = true;
   return q_reachable_;

@@ -9,12 +9,12 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: scene_summary <scene.xml>\n");
     return 2;
   }
-  const mhd::SceneReadResult read = mhd::read_scene_file(argv[1]);
+  const mhd::Result<mhd::SceneDescription> read = mhd::read_scene_file(argv[1]);
   if (!read.ok()) {
-    std::fprintf(stderr, "%s: %zu problems\n", argv[1], read.diagnostics.size());
+    std::fprintf(stderr, "%s\n", read.error_text().c_str());
     return 1;
   }
-  std::printf("%s: %zu objects, %zu plugins\n", read.scene->name.c_str(), read.scene->objects.size(),
-              read.scene->plugins.size());
+  std::printf("%s: %zu objects, %zu plugins\n", read->name.c_str(), read->objects.size(),
+              read->plugins.size());
   return 0;
 }

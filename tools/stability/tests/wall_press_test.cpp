@@ -20,11 +20,11 @@ TEST_P(WallPressAtRate, SettlesInsideThePassivityBoundAndOscillatesWellBeyondIt)
   s.rate_hz = GetParam();
   const double bound = passivity_bound_N_per_m(s.hand.damping_Ns_per_m, 0.0, 1.0 / s.rate_hz);
   s.wall_stiffness_N_per_m = 0.5 * bound;
-  const WallPressResult inside = press_wall(s);
+  const WallPressFigures inside = press_wall(s);
   EXPECT_TRUE(inside.stable) << inside.force_ptp_previous_N << " then " << inside.force_ptp_last_N;
   EXPECT_LT(inside.force_ptp_last_N, 0.1 * inside.force_ptp_previous_N + 1e-3);  // decays quickly
   s.wall_stiffness_N_per_m = 3.0 * bound;
-  const WallPressResult beyond = press_wall(s);
+  const WallPressFigures beyond = press_wall(s);
   EXPECT_FALSE(beyond.stable) << beyond.force_ptp_previous_N << " then " << beyond.force_ptp_last_N;
   EXPECT_GT(beyond.force_ptp_last_N, 1.0);
 }
@@ -34,7 +34,7 @@ INSTANTIATE_TEST_SUITE_P(Rates, WallPressAtRate, ::testing::Values(1000.0, 10000
 TEST(WallPress, ASoftWallSharesThePressWithTheHandsSpring) {
   WallPressSettings s;
   s.wall_stiffness_N_per_m = 600.0;  // the dolphin's skin
-  const WallPressResult r = press_wall(s);
+  const WallPressFigures r = press_wall(s);
   ASSERT_TRUE(r.stable);
   // Springs in series: F = k_hand K / (k_hand + K) x depth.
   const double k = s.hand.stiffness_N_per_m;

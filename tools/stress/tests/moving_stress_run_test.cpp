@@ -24,9 +24,9 @@ using Eigen::Vector3d;
 std::unique_ptr<CompiledScene> compile(SceneDescription d) {
   CompileOptions options;
   options.use_cache = false;
-  CompileResult r = compile_scene(d, options);
+  Result<std::unique_ptr<CompiledScene>> r = compile_scene(d, options);
   EXPECT_TRUE(r.ok());
-  return std::move(r.scene);
+  return std::move(r).value();
 }
 
 ObjectDescription box(const std::string& name, const Vector3d& size_m, const Vector3d& p_W_m) {

@@ -27,9 +27,9 @@ std::unique_ptr<CompiledScene> floating_cube() {
   d.objects.push_back(o);
   CompileOptions options;
   options.use_cache = false;
-  CompileResult r = compile_scene(d, options);
+  Result<std::unique_ptr<CompiledScene>> r = compile_scene(d, options);
   EXPECT_TRUE(r.ok());
-  return std::move(r.scene);
+  return std::move(r).value();
 }
 
 constexpr double kDt_s = 1e-3;

@@ -23,9 +23,9 @@ using Eigen::Vector3d;
 std::unique_ptr<CompiledScene> compile(SceneDescription d) {
   CompileOptions options;
   options.use_cache = false;
-  CompileResult r = compile_scene(d, options);
+  Result<std::unique_ptr<CompiledScene>> r = compile_scene(d, options);
   EXPECT_TRUE(r.ok());
-  return std::move(r.scene);
+  return std::move(r).value();
 }
 
 ObjectDescription object(const std::string& name, ShapeSource shape, const Vector3d& p_W_m) {

@@ -45,9 +45,9 @@ std::unique_ptr<CompiledScene> box_and_sheet() {
   d.objects.push_back(sheet);
   CompileOptions options;
   options.use_cache = false;
-  CompileResult r = compile_scene(d, options);
+  Result<std::unique_ptr<CompiledScene>> r = compile_scene(d, options);
   EXPECT_TRUE(r.ok());
-  return std::move(r.scene);
+  return std::move(r).value();
 }
 
 // Breaks the proxy on purpose: puts it at proxy_W (no planes, a one-point path) with the
