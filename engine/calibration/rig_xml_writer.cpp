@@ -154,12 +154,6 @@ bool close(const Pose& a, const Pose& b) {
          Eigen::AngleAxisd(a.linear().transpose() * b.linear()).angle() <= kReadBackTolerance_rad;
 }
 
-RigWriteResult failure(std::string message) {
-  RigWriteResult r;
-  r.error = std::move(message);
-  return r;
-}
-
 }  // namespace
 
 Pose calibrated_X_robot_base(const Rig& rig, const RigOffsets& offsets) noexcept {
@@ -169,17 +163,17 @@ Pose calibrated_X_robot_base(const Rig& rig, const RigOffsets& offsets) noexcept
   return X_W_robot.inverse(Eigen::Isometry) * X_W_base;
 }
 
-RigWriteResult write_calibrated_rig(const SceneDescription& scene, const Rig& rig, const RigOffsets& offsets,
+Result<WrittenRig, std::string> write_calibrated_rig(const SceneDescription& scene, const Rig& rig, const RigOffsets& offsets,
                                     const fs::path& output, const std::vector<std::string>& note_lines) {
   const FrameDescription* robot = find_frame(scene, rig_frame::kRobot);
   const FrameDescription* phantom = find_frame(scene, rig_frame::kPhantom);
   const FrameDescription* base = find_frame(scene, rig_frame::kBase);
   if (robot == nullptr || phantom == nullptr || base == nullptr) {
-    return failure(concat(scene.file.string(), ": the scene has no complete rig (robot, phantom and base frames)"));
+    return std::string(concat(scene.file.string(), ": the scene has no complete rig (robot, phantom and base frames)"));
   }
   const std::string& file = robot->where.file;
   if (phantom->where.file != file || base->where.file != file) {
-    return failure(concat(file, ": the rig frames robot, phantom and base must be defined in one file to be rewritten "
+    return std::string(concat(file, ": the rig frames robot, phantom and base must be defined in one file to be rewritten "
                                 "(phantom is in ",
                           phantom->where.file, ", base in ", base->where.file, ")"));
   }
@@ -187,12 +181,12 @@ RigWriteResult write_calibrated_rig(const SceneDescription& scene, const Rig& ri
   std::ifstream in(file, std::ios::binary);
   std::ostringstream bytes;
   bytes << in.rdbuf();
-  if (!in) return failure(concat(file, ": cannot read the rig file again"));
+  if (!in) return std::string(concat(file, ": cannot read the rig file again"));
   std::string file_text = bytes.str();
 
   tinyxml2::XMLDocument document;
   if (document.Parse(file_text.data(), file_text.size()) != tinyxml2::XML_SUCCESS || document.RootElement() == nullptr) {
-    return failure(concat(file, ": cannot read the rig file again: ", document.ErrorStr()));
+    return std::string(concat(file, ": cannot read the rig file again: ", document.ErrorStr()));
   }
   const char* unit = document.RootElement()->Attribute("unit");
   const double unit_to_m = (unit != nullptr && std::string_view(unit) == "mm") ? 1e-3 : 1.0;
@@ -210,7 +204,7 @@ RigWriteResult write_calibrated_rig(const SceneDescription& scene, const Rig& ri
   for (Edit& e : edits) {
     const auto span = locate_frame(file_text, e.frame->where.line, e.frame->name);
     if (!span) {
-      return failure(concat(file, ":", std::to_string(e.frame->where.line), ": rig frame '", e.frame->name,
+      return std::string(concat(file, ":", std::to_string(e.frame->where.line), ": rig frame '", e.frame->name,
                             "' is not where the scene reader found it"));
     }
     e.begin = span->first;
@@ -250,7 +244,7 @@ RigWriteResult write_calibrated_rig(const SceneDescription& scene, const Rig& ri
     out.close();
     if (!out) {
       discard();
-      return failure(concat(output.string(), ": cannot write"));
+      return std::string(concat(output.string(), ": cannot write"));
     }
   }
 
@@ -260,29 +254,26 @@ RigWriteResult write_calibrated_rig(const SceneDescription& scene, const Rig& ri
     discard();
     std::string message = concat(output.string(), ": the written rig does not read back:");
     for (const Diagnostic& d : read.diagnostics()) message += concat("\n  ", d.to_string());
-    return failure(message);
+    return std::string(message);
   }
   const Result<Rig, std::vector<RigError>> built = Rig::from_scene(*read, rig.device());
   if (!built.ok()) {
     discard();
     std::string message = concat(output.string(), ": the written rig is not a valid rig:");
     for (const RigError& e : built.error()) message += concat("\n  ", e.to_string());
-    return failure(message);
+    return std::string(message);
   }
   if (!close(built->X_base_sensor_robot(), X_S_robot) || !close(built->X_robot_phantom(), X_R_phantom) ||
       !close(built->X_robot_base(), X_R_base)) {
     discard();
-    return failure(concat(output.string(), ": the written rig reads back with other offsets than calibrated"));
+    return std::string(concat(output.string(), ": the written rig reads back with other offsets than calibrated"));
   }
   fs::rename(temporary, output, ec);
   if (ec) {
     discard();
-    return failure(concat(output.string(), ": cannot write: ", ec.message()));
+    return std::string(concat(output.string(), ": cannot write: ", ec.message()));
   }
-  RigWriteResult ok;
-  ok.ok = true;
-  ok.frames_file = file;
-  return ok;
+  return WrittenRig{file};
 }
 
 }  // namespace mhd

@@ -11,6 +11,7 @@
 // (the rig's BaseNotOnFloor check) as SR's vertical part changes.
 
 #include "calibration/rig_calibration.h"
+#include "diagnostics/result.h"
 #include "kinematics/rig.h"
 #include "scene/scene_description.h"
 
@@ -23,16 +24,16 @@ namespace mhd {
 /// robot -> base with `offsets`: the rig's rotation, the height that keeps base on the floor.
 [[nodiscard]] Pose calibrated_X_robot_base(const Rig& rig, const RigOffsets& offsets) noexcept;
 
-struct RigWriteResult {
-  bool ok = false;
-  std::string error;                    ///< "file:line: ..." or "file: ..." when !ok
-  std::filesystem::path frames_file;    ///< the file whose copy was written (it may be an include)
+struct WrittenRig {
+  std::filesystem::path frames_file;  ///< the file whose copy was written (it may be an include)
 };
 
 /// `scene` must be the one `rig` was built from (it locates the frames' file and lines).
-/// `note_lines` go into the comment above the robot frame.
-[[nodiscard]] RigWriteResult write_calibrated_rig(const SceneDescription& scene, const Rig& rig,
-                                                  const RigOffsets& offsets, const std::filesystem::path& output,
-                                                  const std::vector<std::string>& note_lines);
+/// `note_lines` go into the comment above the robot frame. The error says what went
+/// wrong, "file:line: ..." or "file: ...", and no file is left at `output`.
+[[nodiscard]] Result<WrittenRig, std::string> write_calibrated_rig(const SceneDescription& scene, const Rig& rig,
+                                                                  const RigOffsets& offsets,
+                                                                  const std::filesystem::path& output,
+                                                                  const std::vector<std::string>& note_lines);
 
 }  // namespace mhd

@@ -27,7 +27,9 @@ namespace result_detail {
 [[nodiscard]] inline std::string describe(const Diagnostics& d) { return to_string(d); }
 template <class E>
 [[nodiscard]] std::string describe(const E& e) {
-  if constexpr (requires { e.to_string(); }) {
+  if constexpr (std::is_convertible_v<const E&, std::string>) {
+    return std::string(e);
+  } else if constexpr (requires { e.to_string(); }) {
     return e.to_string();
   } else if constexpr (requires { e.begin()->to_string(); }) {
     std::string out;

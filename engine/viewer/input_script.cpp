@@ -47,8 +47,8 @@ std::string parse_event(std::istringstream& in, InputEvent& e) {
 
 }  // namespace
 
-InputScriptResult parse_input_script(const std::string& text, const std::string& file_name) {
-  InputScriptResult result;
+Result<std::vector<ScriptedEvent>> parse_input_script(const std::string& text, const std::string& file_name) {
+  std::vector<ScriptedEvent> events;
   std::istringstream lines(text);
   std::string line;
   int line_number = 0;
@@ -67,24 +67,20 @@ InputScriptResult parse_input_script(const std::string& text, const std::string&
       used = 0;
     }
     if (used != first.size() || s.frame < 0) why = fmt::format("'{}' is not a frame number (0 or more)", first);
-    else if (!result.events.empty() && s.frame < result.events.back().frame) {
-      why = fmt::format("frame {} comes before the previous event's frame {}", s.frame, result.events.back().frame);
+    else if (!events.empty() && s.frame < events.back().frame) {
+      why = fmt::format("frame {} comes before the previous event's frame {}", s.frame, events.back().frame);
     } else {
       why = parse_event(in, s.event);
     }
-    if (!why.empty()) {
-      result.events.clear();
-      result.error = fmt::format("{}:{}: {}", file_name, line_number, why);
-      return result;
-    }
-    result.events.push_back(s);
+    if (!why.empty()) return Diagnostic{{file_name, line_number}, why};
+    events.push_back(s);
   }
-  return result;
+  return events;
 }
 
-InputScriptResult read_input_script(const std::filesystem::path& file) {
+Result<std::vector<ScriptedEvent>> read_input_script(const std::filesystem::path& file) {
   std::ifstream in(file);
-  if (!in) return {{}, fmt::format("cannot read the input script '{}'", file.string())};
+  if (!in) return Diagnostic{{file.string(), 0}, "cannot read the input script"};
   std::ostringstream text;
   text << in.rdbuf();
   return parse_input_script(text.str(), file.string());

@@ -12,6 +12,7 @@
 // Frames count from 0 and never decrease; an event at frame F is handled while frame F
 // is drawn, and its effect is seen from frame F + 1 on.
 
+#include "diagnostics/result.h"
 #include "viewer/input_event.h"
 
 #include <filesystem>
@@ -25,12 +26,8 @@ struct ScriptedEvent {
   InputEvent event;
 };
 
-struct InputScriptResult {
-  std::vector<ScriptedEvent> events;
-  std::string error;  ///< "FILE:LINE: <what is wrong>", empty on success
-};
-
-[[nodiscard]] InputScriptResult parse_input_script(const std::string& text, const std::string& file_name);
-[[nodiscard]] InputScriptResult read_input_script(const std::filesystem::path& file);
+/// The events, or the first mistake at its file:line.
+[[nodiscard]] Result<std::vector<ScriptedEvent>> parse_input_script(const std::string& text, const std::string& file_name);
+[[nodiscard]] Result<std::vector<ScriptedEvent>> read_input_script(const std::filesystem::path& file);
 
 }  // namespace mhd::viewer

@@ -25,23 +25,16 @@ void put(double (&out)[3], const Eigen::Vector3d& v) {
 
 }  // namespace
 
-RigStateResult rig_state_from_frame(const mhd_display_frame& f) {
-  RigStateResult result;
+Result<RigState, std::string> rig_state_from_frame(const mhd_display_frame& f) {
   const double scalars[] = {f.timestamp_s, f.base_x_m, f.base_z_m, f.base_heading_rad};
   for (const std::string& e : {check_finite(scalars, 4, "timestamp_s/base"), check_finite(f.p_W_hip_m, 3, "p_W_hip_m"),
                                check_finite(f.p_W_proxy_m, 3, "p_W_proxy_m"), check_finite(f.force_W_N, 3, "force_W_N"),
                                check_finite(f.p_W_head_m, 3, "p_W_head_m"),
                                check_finite(f.q_W_head_wxyz, 4, "q_W_head_wxyz")}) {
-    if (!e.empty()) {
-      result.error = e;
-      return result;
-    }
+    if (!e.empty()) return e;
   }
   const Eigen::Quaterniond q(f.q_W_head_wxyz[0], f.q_W_head_wxyz[1], f.q_W_head_wxyz[2], f.q_W_head_wxyz[3]);
-  if (!(q.norm() > 1e-9)) {
-    result.error = "display frame: q_W_head_wxyz has zero norm";
-    return result;
-  }
+  if (!(q.norm() > 1e-9)) return std::string("display frame: q_W_head_wxyz has zero norm");
   RigState s;
   s.timestamp_s = f.timestamp_s;
   s.p_W_hip_m = vec3(f.p_W_hip_m);
@@ -50,8 +43,7 @@ RigStateResult rig_state_from_frame(const mhd_display_frame& f) {
   s.in_contact = f.in_contact != 0;
   s.base = BasePose{f.base_x_m, f.base_z_m, f.base_heading_rad};
   s.X_W_head = pose_from_xyz_quaternion(vec3(f.p_W_head_m), q);
-  result.state = s;
-  return result;
+  return s;
 }
 
 mhd_display_frame display_frame_from_rig_state(const RigState& s) {

@@ -5,6 +5,7 @@
 // The head frame H follows the simulated user's: x forward (the gaze), y up, z to the
 // right (right-handed), so a head with heading h about +y looks along (cos h, 0, -sin h).
 
+#include "diagnostics/result.h"
 #include "geometry/pose.h"
 #include "kinematics/base_pose.h"
 
@@ -29,11 +30,7 @@ struct RigState {
 
 /// The state a display frame describes, or an error ("display frame: p_W_hip_m[1] is not
 /// finite", "display frame: q_W_head_wxyz has zero norm") for a frame that cannot be drawn.
-struct RigStateResult {
-  std::optional<RigState> state;
-  std::string error;
-};
-[[nodiscard]] RigStateResult rig_state_from_frame(const mhd_display_frame& frame);
+[[nodiscard]] Result<RigState, std::string> rig_state_from_frame(const mhd_display_frame& frame);
 
 /// The inverse, for tests and for publishing a state over a frame-based channel.
 [[nodiscard]] mhd_display_frame display_frame_from_rig_state(const RigState& state);

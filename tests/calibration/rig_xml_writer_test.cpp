@@ -75,10 +75,10 @@ TEST_F(RigXmlWriter, CalibratedPomhiReadsBackAndPredictsTheSameHip) {
   const Loaded original = load(input);
   const RigOffsets offsets = some_offsets();
   const fs::path output = dir_ / "pomhi.calibrated.xml";
-  const RigWriteResult written =
+  const Result<WrittenRig, std::string> written =
       write_calibrated_rig(original.scene, original.rig, offsets, output, {"from test samples", "psi = 1.234 deg"});
-  ASSERT_TRUE(written.ok) << written.error;
-  EXPECT_EQ(written.frames_file, input.string());
+  ASSERT_TRUE(written.ok()) << written.error_text();
+  EXPECT_EQ(written->frames_file, input.string());
   EXPECT_EQ(slurp(input), before) << "the input is never touched";
   EXPECT_FALSE(fs::exists(output.string() + ".tmp"));
 
@@ -108,8 +108,8 @@ TEST_F(RigXmlWriter, KeepsTheFilesUnitAndQuaternionForm) {
   const Loaded original = load(kSource / "tests/data/calibration/rig_in_metres.xml");
   const RigOffsets offsets = some_offsets();
   const fs::path output = dir_ / "metres.xml";
-  const RigWriteResult written = write_calibrated_rig(original.scene, original.rig, offsets, output, {});
-  ASSERT_TRUE(written.ok) << written.error;
+  const Result<WrittenRig, std::string> written = write_calibrated_rig(original.scene, original.rig, offsets, output, {});
+  ASSERT_TRUE(written.ok()) << written.error_text();
   const Loaded calibrated = load(output);
   expect_same_hips(calibrated.rig, original.rig, offsets);
   const std::string text = slurp(output);
@@ -122,9 +122,9 @@ TEST_F(RigXmlWriter, RigFromAnIncludeIsWrittenAsACopyOfThatFile) {
   const Loaded original = load(kSource / "tests/data/calibration/scene_with_rig.xml");
   const RigOffsets offsets = some_offsets();
   const fs::path output = dir_ / "rig.xml";
-  const RigWriteResult written = write_calibrated_rig(original.scene, original.rig, offsets, output, {});
-  ASSERT_TRUE(written.ok) << written.error;
-  EXPECT_EQ(fs::path(written.frames_file).filename(), "pomhi.xml");
+  const Result<WrittenRig, std::string> written = write_calibrated_rig(original.scene, original.rig, offsets, output, {});
+  ASSERT_TRUE(written.ok()) << written.error_text();
+  EXPECT_EQ(fs::path(written->frames_file).filename(), "pomhi.xml");
   expect_same_hips(load(output).rig, original.rig, offsets);
 }
 
@@ -132,18 +132,18 @@ TEST_F(RigXmlWriter, FramesSplitOverFilesAreRefused) {
   const fs::path input = kSource / "tests/data/calibration/split_rig/main.xml";
   const Loaded original = load(input);
   const fs::path output = dir_ / "split.xml";
-  const RigWriteResult written = write_calibrated_rig(original.scene, original.rig, some_offsets(), output, {});
-  EXPECT_FALSE(written.ok);
-  EXPECT_NE(written.error.find("must be defined in one file"), std::string::npos) << written.error;
+  const Result<WrittenRig, std::string> written = write_calibrated_rig(original.scene, original.rig, some_offsets(), output, {});
+  ASSERT_FALSE(written.ok());
+  EXPECT_NE(written.error().find("must be defined in one file"), std::string::npos) << written.error();
   EXPECT_FALSE(fs::exists(output));
 }
 
 TEST_F(RigXmlWriter, UnwritableOutputLeavesNoFile) {
   const Loaded original = load(kSource / "scenes/rigs/pomhi.xml");
   const fs::path output = dir_ / "no_such_dir" / "rig.xml";
-  const RigWriteResult written = write_calibrated_rig(original.scene, original.rig, some_offsets(), output, {});
-  EXPECT_FALSE(written.ok);
-  EXPECT_NE(written.error.find("cannot write"), std::string::npos) << written.error;
+  const Result<WrittenRig, std::string> written = write_calibrated_rig(original.scene, original.rig, some_offsets(), output, {});
+  ASSERT_FALSE(written.ok());
+  EXPECT_NE(written.error().find("cannot write"), std::string::npos) << written.error();
   EXPECT_FALSE(fs::exists(output));
   EXPECT_FALSE(fs::exists(output.string() + ".tmp"));
 }
@@ -151,9 +151,9 @@ TEST_F(RigXmlWriter, UnwritableOutputLeavesNoFile) {
 TEST_F(RigXmlWriter, CommentTextCannotBreakTheXml) {
   const Loaded original = load(kSource / "scenes/rigs/pomhi.xml");
   const fs::path output = dir_ / "comment.xml";
-  const RigWriteResult written =
+  const Result<WrittenRig, std::string> written =
       write_calibrated_rig(original.scene, original.rig, some_offsets(), output, {"samples from a--b.csv -->"});
-  ASSERT_TRUE(written.ok) << written.error;
+  ASSERT_TRUE(written.ok()) << written.error_text();
   load(output);
 }
 

@@ -29,9 +29,9 @@ mhd_display_frame sample_frame() {
 }
 
 TEST(RigState, FromDisplayFrameAndBack) {
-  const RigStateResult r = rig_state_from_frame(sample_frame());
-  ASSERT_TRUE(r.state) << r.error;
-  const RigState& s = *r.state;
+  const Result<RigState, std::string> r = rig_state_from_frame(sample_frame());
+  ASSERT_TRUE(r.ok()) << r.error_text();
+  const RigState& s = *r;
   EXPECT_EQ(s.p_W_hip_m, Eigen::Vector3d(0.1, 1.0, -0.5));
   EXPECT_TRUE(s.in_contact);
   EXPECT_DOUBLE_EQ(s.base.heading_rad, 0.3);
@@ -47,12 +47,12 @@ TEST(RigState, FromDisplayFrameAndBack) {
 TEST(RigState, NonFiniteOrZeroQuaternionIsRefusedWithTheField) {
   mhd_display_frame f = sample_frame();
   f.force_W_N[2] = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_EQ(rig_state_from_frame(f).error, "display frame: force_W_N[2] is not finite");
+  EXPECT_EQ(rig_state_from_frame(f).error(), "display frame: force_W_N[2] is not finite");
   f = sample_frame();
   for (double& q : f.q_W_head_wxyz) q = 0.0;
-  const RigStateResult r = rig_state_from_frame(f);
-  EXPECT_FALSE(r.state);
-  EXPECT_EQ(r.error, "display frame: q_W_head_wxyz has zero norm");
+  const Result<RigState, std::string> r = rig_state_from_frame(f);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error(), "display frame: q_W_head_wxyz has zero norm");
 }
 
 TEST(RigState, HeadLookingAtIsRightHandedXForwardYUp) {

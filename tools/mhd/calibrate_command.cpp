@@ -133,13 +133,13 @@ int calibrate(const CalibrateOptions& o, const LoadedRig& loaded) {
     fmt::print("wrote residuals to {}\n", o.residuals);
   }
   const std::string output = o.output.empty() ? default_output(o.rig) : o.output;
-  const mhd::RigWriteResult written = mhd::write_calibrated_rig(
+  const mhd::Result<mhd::WrittenRig, std::string> written = mhd::write_calibrated_rig(
       loaded.scene, loaded.rig, result.after, output, mhd::calibration_note_lines(result, o.samples, options.split));
-  if (!written.ok) {
-    print_error("", 0, written.error);
+  if (!written.ok()) {
+    print_error("", 0, written.error());
     return 1;
   }
-  fmt::print("wrote {} (calibrated copy of {})\n", output, written.frames_file.string());
+  fmt::print("wrote {} (calibrated copy of {})\n", output, written->frames_file.string());
   return 0;
 }
 

@@ -34,12 +34,12 @@ int run_try(TryOptions& o) {
   namespace v = mhd::viewer;
   std::vector<v::ScriptedEvent> script;
   if (!o.script.empty()) {
-    v::InputScriptResult read = v::read_input_script(o.script);
-    if (!read.error.empty()) {
-      fmt::print(stderr, "mhd try: error: {}\n", read.error);
+    mhd::Result<std::vector<v::ScriptedEvent>> read = v::read_input_script(o.script);
+    if (!read.ok()) {
+      fmt::print(stderr, "mhd try: {}\n", read.error_text());
       return 1;
     }
-    script = std::move(read.events);
+    script = std::move(read).value();
   }
   // The scene's objects and materials only: its plugins and rig frames are never opened.
   const v::ViewerSceneResult loaded = v::load_viewer_scene(o.scene);

@@ -60,13 +60,13 @@ std::optional<RigState> DdsStateSource::poll(double now_s) {
       ++s.status.other_rigs;
       continue;
     }
-    RigStateResult converted = rig_state_from_frame(dds::from_dds(sample, now_s));
-    if (!converted.state) {
+    Result<RigState, std::string> converted = rig_state_from_frame(dds::from_dds(sample, now_s));
+    if (!converted.ok()) {
       ++s.status.dropped_invalid;
-      s.status.last_error = std::move(converted.error);
+      s.status.last_error = converted.error();
       continue;
     }
-    s.state = *converted.state;
+    s.state = *converted;
     ++s.status.received;
     arrived = true;
   }

@@ -74,9 +74,9 @@ class OsgStereoPlugin {
 
   // The haptic side's call: no lock, no allocation, no waiting.
   void display_write(const mhd_display_frame& frame) {
-    viewer::RigStateResult state = viewer::rig_state_from_frame(frame);
-    if (!state.state) throw std::invalid_argument(state.error);
-    slot_->publish(*state.state);
+    const Result<viewer::RigState, std::string> state = viewer::rig_state_from_frame(frame);
+    if (!state.ok()) throw std::invalid_argument(state.error());
+    slot_->publish(*state);
   }
 
  private:
