@@ -17,24 +17,13 @@ namespace {
 using test::to_strings;
 using Lines = std::vector<std::string>;
 
-const std::string kFile = "scene.xml";
+const std::string& kFile = test::kOneBoxFile;
 
-/// A scene with one box whose children (from line 3 on) are `children`.
-std::string scene_with(const std::string& children) {
-  return "<scene version=\"1\" unit=\"m\">\n"
-         "  <object name=\"o\"><box size=\"0.1 0.1 0.1\"/><material stiffness_N_per_m=\"1000\"/>\n" +
-         children +
-         "  </object>\n"
-         "</scene>\n";
+std::string scene_with(const std::string& children, const std::string& unit = "m") {
+  return test::one_box_scene(children, unit);
 }
-
-std::string at(int line, const std::string& message) { return kFile + ":" + std::to_string(line) + ": error: " + message; }
-
-Lines errors_of(const std::string& children) {
-  const Result<SceneDescription> r = read_scene_string(scene_with(children), kFile);
-  EXPECT_FALSE(r.ok());
-  return to_strings(r.diagnostics());
-}
+std::string at(int line, const std::string& message) { return test::one_box_error(line, message); }
+Lines errors_of(const std::string& children) { return test::one_box_errors(children); }
 
 TEST(DynamicsReader, MassAndFrictionAreRead) {
   const Result<SceneDescription> r = read_scene_string(scene_with("    <dynamics mass_kg=\"0.6\" friction=\"0.4\"/>\n"), kFile);

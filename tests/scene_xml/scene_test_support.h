@@ -3,6 +3,7 @@
 // reader are relative, as a user would type them) and flatten diagnostics to strings.
 
 #include "diagnostics/diagnostic.h"
+#include "scene_xml/scene_reader.h"
 
 #include <gtest/gtest.h>
 
@@ -25,6 +26,30 @@ inline std::vector<std::string> to_strings(const Diagnostics& diagnostics) {
   out.reserve(diagnostics.size());
   for (const Diagnostic& d : diagnostics) out.push_back(d.to_string());
   return out;
+}
+
+/// The file name the one-box scenes below are read as.
+inline const std::string kOneBoxFile = "scene.xml";
+
+/// A scene in `unit` with one box whose children (from line 3 on) are `children`.
+inline std::string one_box_scene(const std::string& children, const std::string& unit = "m") {
+  return "<scene version=\"1\" unit=\"" + unit + "\">\n"
+         "  <object name=\"o\"><box size=\"0.1 0.1 0.1\"/><material stiffness_N_per_m=\"1000\"/>\n" +
+         children +
+         "  </object>\n"
+         "</scene>\n";
+}
+
+/// "scene.xml:LINE: error: MESSAGE", as the reader reports a one-box scene's problem.
+inline std::string one_box_error(int line, const std::string& message) {
+  return kOneBoxFile + ":" + std::to_string(line) + ": error: " + message;
+}
+
+/// The errors of a one-box scene with `children`, which must be refused.
+inline std::vector<std::string> one_box_errors(const std::string& children) {
+  const Result<SceneDescription> r = read_scene_string(one_box_scene(children), kOneBoxFile);
+  EXPECT_FALSE(r.ok());
+  return to_strings(r.diagnostics());
 }
 
 }  // namespace mhd::test

@@ -7,7 +7,7 @@
 
 #include "stress/moving_stress_run.h"
 
-#include "scene_compiler/scene_compiler.h"
+#include "stress_test_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -19,26 +19,12 @@
 namespace mhd::stress {
 namespace {
 
+using test::compile_uncached;
+
 using Eigen::Vector3d;
 
-std::unique_ptr<CompiledScene> compile(SceneDescription d) {
-  CompileOptions options;
-  options.use_cache = false;
-  Result<std::unique_ptr<CompiledScene>> r = compile_scene(d, options);
-  EXPECT_TRUE(r.ok());
-  return std::move(r).value();
-}
-
 ObjectDescription box(const std::string& name, const Vector3d& size_m, const Vector3d& p_W_m) {
-  ObjectDescription o;
-  o.name = name;
-  o.shape = BoxSource{size_m};
-  o.X_WO.translation() = p_W_m;
-  o.material.stiffness_N_per_m = 2000.0;
-  o.material.damping_Ns_per_m = 1.0;
-  o.material.static_friction = 0.2;
-  o.material.dynamic_friction = 0.15;
-  return o;
+  return test::firm_object(name, BoxSource{size_m}, p_W_m);
 }
 
 // A 100 mm box (object 0) at hand height with a still 40 mm wall 100 mm beside it.
@@ -47,7 +33,7 @@ std::unique_ptr<CompiledScene> box_and_wall() {
   d.name = "moving_stress_test";
   d.objects.push_back(box("box", Vector3d::Constant(0.1), Vector3d(0.0, 1.0, -0.5)));
   d.objects.push_back(box("wall", Vector3d(0.04, 0.3, 0.3), Vector3d(0.17, 1.0, -0.5)));
-  return compile(d);
+  return compile_uncached(d);
 }
 
 // A 120 mm cube alone.
@@ -55,7 +41,7 @@ std::unique_ptr<CompiledScene> cube() {
   SceneDescription d;
   d.name = "turning_cube_test";
   d.objects.push_back(box("cube", Vector3d::Constant(0.12), Vector3d(0.0, 1.0, -0.5)));
-  return compile(d);
+  return compile_uncached(d);
 }
 
 MovingStressSettings box_run() {

@@ -5,7 +5,7 @@
 
 #include "stress/pushed_mover.h"
 
-#include "scene_compiler/scene_compiler.h"
+#include "stress_test_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -25,11 +25,7 @@ std::unique_ptr<CompiledScene> floating_cube() {
   o.shape = BoxSource{Vector3d::Constant(0.1)};
   o.X_WO.translation() = Vector3d(0.0, 1.0, -0.5);
   d.objects.push_back(o);
-  CompileOptions options;
-  options.use_cache = false;
-  Result<std::unique_ptr<CompiledScene>> r = compile_scene(d, options);
-  EXPECT_TRUE(r.ok());
-  return std::move(r).value();
+  return test::compile_uncached(d);
 }
 
 constexpr double kDt_s = 1e-3;

@@ -7,7 +7,7 @@
 
 #include "stress/moving_stress_run.h"
 
-#include "scene_compiler/scene_compiler.h"
+#include "stress_test_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -18,47 +18,30 @@
 namespace mhd::stress {
 namespace {
 
+using test::compile_uncached;
+using test::firm_object;
+
 using Eigen::Vector3d;
-
-std::unique_ptr<CompiledScene> compile(SceneDescription d) {
-  CompileOptions options;
-  options.use_cache = false;
-  Result<std::unique_ptr<CompiledScene>> r = compile_scene(d, options);
-  EXPECT_TRUE(r.ok());
-  return std::move(r).value();
-}
-
-ObjectDescription object(const std::string& name, ShapeSource shape, const Vector3d& p_W_m) {
-  ObjectDescription o;
-  o.name = name;
-  o.shape = std::move(shape);
-  o.X_WO.translation() = p_W_m;
-  o.material.stiffness_N_per_m = 2000.0;
-  o.material.damping_Ns_per_m = 1.0;
-  o.material.static_friction = 0.2;
-  o.material.dynamic_friction = 0.15;
-  return o;
-}
 
 // A 150 mm, 0.6 kg box resting on a y-up floor (as scenes/pushable_box.xml): gravity acts.
 std::unique_ptr<CompiledScene> box_on_floor() {
   SceneDescription d;
   d.name = "pushed_stress_test";
-  ObjectDescription box = object("box", BoxSource{Vector3d::Constant(0.15)}, Vector3d(0.0, 0.075, -0.5));
+  ObjectDescription box = firm_object("box", BoxSource{Vector3d::Constant(0.15)}, Vector3d(0.0, 0.075, -0.5));
   box.dynamics = ObjectDynamics{0.6, 0.4};
   d.objects.push_back(box);
-  ObjectDescription floor = object("floor", PlaneSource{6.0, 6.0}, Vector3d::Zero());
+  ObjectDescription floor = firm_object("floor", PlaneSource{6.0, 6.0}, Vector3d::Zero());
   floor.X_WO.linear() = Eigen::AngleAxisd(-std::numbers::pi / 2, Vector3d::UnitX()).toRotationMatrix();
   d.objects.push_back(floor);
-  return compile(d);
+  return compile_uncached(d);
 }
 
 // A 120 mm cube alone, not pushable in its scene: it floats (no gravity), 1 kg.
 std::unique_ptr<CompiledScene> floating_cube() {
   SceneDescription d;
   d.name = "floating_cube_test";
-  d.objects.push_back(object("cube", BoxSource{Vector3d::Constant(0.12)}, Vector3d(0.0, 1.0, -0.5)));
-  return compile(d);
+  d.objects.push_back(firm_object("cube", BoxSource{Vector3d::Constant(0.12)}, Vector3d(0.0, 1.0, -0.5)));
+  return compile_uncached(d);
 }
 
 MovingStressSettings pushed_run() {

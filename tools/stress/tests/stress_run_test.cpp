@@ -9,7 +9,7 @@
 #include "stress/stress_run.h"
 
 #include "collision/mesh_bvh.h"
-#include "scene_compiler/scene_compiler.h"
+#include "stress_test_scenes.h"
 
 #include <gtest/gtest.h>
 
@@ -29,25 +29,13 @@ using Eigen::Vector3d;
 std::unique_ptr<CompiledScene> box_and_sheet() {
   SceneDescription d;
   d.name = "stress_test";
-  ObjectDescription box;
-  box.name = "box";
-  box.shape = BoxSource{Vector3d(0.2, 0.2, 0.2)};
-  box.X_WO.translation() = Vector3d(0.0, 1.0, -0.5);
-  box.material.stiffness_N_per_m = 2000.0;
-  box.material.damping_Ns_per_m = 1.0;
-  box.material.static_friction = 0.2;
-  box.material.dynamic_friction = 0.15;
-  d.objects.push_back(box);
+  d.objects.push_back(test::firm_object("box", BoxSource{Vector3d(0.2, 0.2, 0.2)}, Vector3d(0.0, 1.0, -0.5)));
   ObjectDescription sheet;
   sheet.name = "sheet";
   sheet.shape = PlaneSource{0.3, 0.3};
   sheet.X_WO.translation() = Vector3d(0.4, 1.0, -0.5);
   d.objects.push_back(sheet);
-  CompileOptions options;
-  options.use_cache = false;
-  Result<std::unique_ptr<CompiledScene>> r = compile_scene(d, options);
-  EXPECT_TRUE(r.ok());
-  return std::move(r).value();
+  return test::compile_uncached(d);
 }
 
 // Breaks the proxy on purpose: puts it at proxy_W (no planes, a one-point path) with the
