@@ -31,6 +31,13 @@ template <class E>
     return std::string(e);
   } else if constexpr (requires { e.to_string(); }) {
     return e.to_string();
+  } else if constexpr (requires { std::string(*e.begin()); }) {
+    std::string out;
+    for (const auto& item : e) {
+      if (!out.empty()) out += '\n';
+      out.append(item);
+    }
+    return out;
   } else if constexpr (requires { e.begin()->to_string(); }) {
     std::string out;
     for (const auto& item : e) {

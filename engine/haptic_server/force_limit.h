@@ -15,11 +15,12 @@ struct ForceLimit {
   std::optional<std::string> warning;  ///< set when the scene asked for more than the device allows
 };
 
-/// The smaller of device_max_force_N (the device's reported limit, > 0) and
-/// scene_max_force_N. A scene asking for more than the device allows gets the device's
-/// limit and a warning naming both values and `device_name`; a run is not refused for it,
-/// since the device's limit holds either way.
-[[nodiscard]] ForceLimit force_limit_for(double scene_max_force_N, double device_max_force_N,
+/// device_max_force_N (the device's reported limit, > 0), lowered to scene_max_force_N
+/// when the scene gives a smaller one; a scene that gives none gets the device's. A scene
+/// asking for more than the device allows gets the device's limit and a warning naming
+/// both values and `device_name`; a run is not refused for it, since the device's limit
+/// holds either way.
+[[nodiscard]] ForceLimit force_limit_for(const std::optional<double>& scene_max_force_N, double device_max_force_N,
                                          std::string_view device_name);
 
 }  // namespace mhd

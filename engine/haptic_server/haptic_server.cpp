@@ -44,17 +44,17 @@ HapticServer::~HapticServer() {
 
 const ServerSettings& HapticServer::settings() const noexcept { return impl_->settings; }
 
-HapticServerBuild HapticServer::open(const SceneDescription& scene, const CompiledScene& compiled,
-                                     ServerOptions options) {
-  HapticServerBuild out;
+Result<OpenedServer> HapticServer::open(const SceneDescription& scene, const CompiledScene& compiled,
+                                        ServerOptions options) {
+  Diagnostics errors;
   const SourceLocation scene_where{scene.file.string(), 0};
 
   Result<ServerSettings> settings = server_settings_from(scene);
-  out.diagnostics.insert(out.diagnostics.end(), settings.diagnostics().begin(), settings.diagnostics().end());
+  errors.insert(errors.end(), settings.diagnostics().begin(), settings.diagnostics().end());
 
   Result<Rig, std::vector<RigError>> rig = Rig::from_scene(scene);
   if (!rig.ok()) {
-    for (const RigError& e : rig.error()) out.diagnostics.push_back({e.where.file.empty() ? scene_where : e.where, e.message});
+    for (const RigError& e : rig.error()) errors.push_back({e.where.file.empty() ? scene_where : e.where, e.message});
   }
 
   std::optional<simulation::SimulatedUserConfig> user_config;
@@ -63,7 +63,7 @@ HapticServerBuild HapticServer::open(const SceneDescription& scene, const Compil
     if (u.ok()) {
       user_config = std::move(u).value();
     } else {
-      out.diagnostics.insert(out.diagnostics.end(), u.error().begin(), u.error().end());
+      errors.insert(errors.end(), u.error().begin(), u.error().end());
     }
   }
 
@@ -80,7 +80,7 @@ HapticServerBuild HapticServer::open(const SceneDescription& scene, const Compil
     if (slot == nullptr) {
       displays.push_back(&p);
     } else if (*slot != nullptr) {
-      out.diagnostics.push_back({p.where, "a second " + std::string(to_string(p.kind)) + " plugin '" + p.name +
+      errors.push_back({p.where, "a second " + std::string(to_string(p.kind)) + " plugin '" + p.name +
                                               "' (the server drives one; the first is at line " +
                                               std::to_string((*slot)->where.line) + ")"});
     } else {
@@ -90,7 +90,7 @@ HapticServerBuild HapticServer::open(const SceneDescription& scene, const Compil
   const bool desktop = scene.rig_kind.kind == RigKind::Desktop;
   // The reader checked a file's rig kind; a description built in code is checked here.
   for (const Diagnostics& d : {check_rig_kind(scene), check_rig_plugins_for_run(scene)}) {
-    out.diagnostics.insert(out.diagnostics.end(), d.begin(), d.end());
+    errors.insert(errors.end(), d.begin(), d.end());
   }
   ScenePlanner planner;
   if (rig.ok() && !desktop && !options.plan_base) {
@@ -98,10 +98,10 @@ HapticServerBuild HapticServer::open(const SceneDescription& scene, const Compil
     if (made.ok()) {
       planner = std::move(made).value();
     } else {
-      out.diagnostics.insert(out.diagnostics.end(), made.error().begin(), made.error().end());
+      errors.insert(errors.end(), made.error().begin(), made.error().end());
     }
   }
-  if (!out.diagnostics.empty()) return out;
+  if (!errors.empty()) return errors;
 
   if (planner.plan) {
     options.plan_base = std::move(planner.plan);
@@ -123,18 +123,19 @@ HapticServerBuild HapticServer::open(const SceneDescription& scene, const Compil
   for (const PluginDescription* d : order) {
     auto opened = open_plugin(search, *d, impl->host.abi());
     if (!opened.ok()) {
-      out.diagnostics.push_back({d->where, opened.error().to_string()});
+      errors.push_back({d->where, opened.error().to_string()});
       continue;
     }
     impl->plugins.push_back({*d, std::move(opened).value()});
   }
-  if (!out.diagnostics.empty()) return out;  // the opened ones close with impl
+  if (!errors.empty()) return errors;  // the opened ones close with impl
 
+  OpenedServer out;
   impl->device = &impl->plugins[0];
   // One source for the force limit: the device's, lowered by the scene's when smaller.
   if (auto info = impl->device->instance.device_info(); info.ok()) {
     double& max_force_N = impl->settings.tick.safety.max_force_N;
-    ForceLimit limit = force_limit_for(max_force_N, info.value().max_force_N, device->name);
+    ForceLimit limit = force_limit_for(scene.haptics.max_force_N, info.value().max_force_N, device->name);
     max_force_N = limit.max_force_N;
     if (limit.warning) out.warnings.push_back({device->where, std::move(*limit.warning)});
   }

@@ -24,7 +24,7 @@
 #include "haptic_server/server_settings.h"
 #include "haptic_server/server_status.h"
 #include "kinematics/base_pose.h"
-#include "diagnostics/diagnostic.h"
+#include "diagnostics/result.h"
 #include "scene/scene_description.h"
 #include "scene_compiler/compiled_scene.h"
 
@@ -104,9 +104,9 @@ struct ServerReport {
 
 class HapticServer;
 
-struct HapticServerBuild {
-  std::unique_ptr<HapticServer> server;  ///< null when diagnostics has errors
-  Diagnostics diagnostics;
+/// A server ready to run, and what its opening warned of.
+struct OpenedServer {
+  std::unique_ptr<HapticServer> server;  ///< never null
   Diagnostics warnings;  ///< the run goes on, but the user should know (a scene force limit the device lowers)
 };
 
@@ -115,8 +115,8 @@ class HapticServer {
   /// Checks the scene (rig, <server>, <simulated_user>, one device; a mobile rig one tracker and
   /// at most one base, a desktop rig neither) and opens its plugins; every problem is a diagnostic at its scene line.
   /// `compiled` must outlive the server.
-  [[nodiscard]] static HapticServerBuild open(const SceneDescription& scene, const CompiledScene& compiled,
-                                              ServerOptions options);
+  [[nodiscard]] static Result<OpenedServer> open(const SceneDescription& scene, const CompiledScene& compiled,
+                                                 ServerOptions options);
   ~HapticServer();
   HapticServer(const HapticServer&) = delete;
   HapticServer& operator=(const HapticServer&) = delete;

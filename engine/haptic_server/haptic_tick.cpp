@@ -9,11 +9,15 @@ namespace mhd {
 
 HapticTick::HapticTick(const CompiledScene& scene, const Rig& rig, const HapticTickSettings& settings)
     : scene_(scene),
+      proxy_settings_(scene.proxy),
       rig_(rig),
       settings_(settings),
       predictor_(settings.prediction),
       safety_(settings.safety),
-      moving_(scene.world, scene.motions, scene.dynamics) {}
+      moving_(scene.world, scene.motions, scene.dynamics) {
+  // One force limit: the safety stage's, which the server set from the device.
+  proxy_settings_.max_force_N = settings.safety.max_force_N;
+}
 
 BaseSampleStatus HapticTick::add_base_sensor_sample(double t_s, const Pose& X_is900_base_sensor) noexcept {
   const BasePose pose = rig_.base_from_sensor(X_is900_base_sensor);
@@ -56,7 +60,7 @@ HapticTickOutput HapticTick::render(double t_s, double dt_s, const Eigen::Vector
   // a proxy being rendered is carried by what moved.
   if (!t0_s_) t0_s_ = t_s;
   if (moving_.moves() && std::isfinite(t_s)) {
-    if (moving_.advance(t_s - *t0_s_, proxy_, scene_.proxy.skin_m).squeezed) ++squeeze_ticks_;
+    if (moving_.advance(t_s - *t0_s_, proxy_, proxy_settings_.skin_m).squeezed) ++squeeze_ticks_;
   }
 
   const bool can_render = base.has_value() && p_D_tool_m.allFinite();
@@ -78,7 +82,7 @@ HapticTickOutput HapticTick::render(double t_s, double dt_s, const Eigen::Vector
       reset_proxy(proxy_, out.p_W_hip);
     }
     const ProxyOutput p =
-        step_proxy(moving_.world(), scene_.materials, scene_.proxy, proxy_, out.p_W_hip, dt_s, moving_.twists());
+        step_proxy(moving_.world(), scene_.materials, proxy_settings_, proxy_, out.p_W_hip, dt_s, moving_.twists());
     out.proxy_W_m = p.proxy_W;
     out.proxy_force_W_N = p.force_W;
     out.in_contact = p.in_contact;

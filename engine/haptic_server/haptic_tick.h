@@ -91,6 +91,7 @@ class HapticTick {
 
  private:
   const CompiledScene& scene_;
+  ProxySettings proxy_settings_;  // the scene's, clamped to the run's force limit
   Rig rig_;
   HapticTickSettings settings_;
   BasePosePredictor predictor_;

@@ -17,8 +17,8 @@ Result<ScenePlanner> scene_planner(const SceneDescription& scene, const Rig& rig
   }
   PlannerSettings defaults;
   defaults.usable_B = usable_box_in_base(rig);
-  const PlannerSettingsParse parsed = planner_settings_from_map(block.params, defaults);
-  for (const std::string& e : parsed.errors) {
+  const Result<PlannerSettings, std::vector<std::string>> parsed = planner_settings_from_map(block.params, defaults);
+  for (const std::string& e : parsed.ok() ? std::vector<std::string>{} : parsed.error()) {
     // The message names the setting; point at its line when it has one.
     SourceLocation where = block.where;
     for (const auto& [name, line] : block.param_where) {
@@ -28,9 +28,9 @@ Result<ScenePlanner> scene_planner(const SceneDescription& scene, const Rig& rig
   }
   if (!errors.empty()) return errors;
 
-  std::shared_ptr<Planner> planner = make_planner(kind, parsed.settings);
+  std::shared_ptr<Planner> planner = make_planner(kind, *parsed);
   ScenePlanner out;
-  out.collision_radius_m = parsed.settings.collision_radius_m();
+  out.collision_radius_m = parsed->collision_radius_m();
   out.plan = [planner](const BasePlanInput& in) {
     if (!in.hip_valid || !in.user_known || !in.fresh()) return BaseTwist{};  // nothing fresh to follow: hold still
     PlannerInput p;

@@ -15,7 +15,8 @@ Result<ServerSettings> server_settings_from(const SceneDescription& scene) {
   ServerSettings s;
   s.base_guard.keep_out_m = 0.475;  // robot radius 0.225 + human radius 0.25 (docs/planner.md)
   s.haptic_rate_hz = scene.haptics.update_rate_Hz;
-  s.tick.safety.max_force_N = scene.haptics.max_force_N;
+  // Until open() asks the device: then the device's limit, lowered by the scene's.
+  s.tick.safety.max_force_N = scene.haptics.max_force_N.value_or(kNoDeviceMaxForce_N);
 
   ParamBlockReader r(scene.server ? &*scene.server : nullptr, "<server>");
   s.tick.safety.tracker_timeout_s = r.positive("tracker_timeout_s", s.tick.safety.tracker_timeout_s);

@@ -337,8 +337,8 @@ std::filesystem::path MeshCache::file_for(const MeshCacheKey& key) const {
   return dir_.value_or(std::filesystem::path()) / (key.hex() + kExtension);
 }
 
-CachedMesh MeshCache::load(const std::filesystem::path& file, const Eigen::Vector3d& scale_to_m,
-                           const MeshProgress& progress, std::optional<TriangleBudget> budget) {
+Result<CachedMesh, MeshLoadError> MeshCache::load(const std::filesystem::path& file, const Eigen::Vector3d& scale_to_m,
+                                                  const MeshProgress& progress, std::optional<TriangleBudget> budget) {
   CachedMesh result;
   const std::string name = short_name(file);
   std::optional<MeshCacheKey> key;
@@ -351,8 +351,7 @@ CachedMesh MeshCache::load(const std::filesystem::path& file, const Eigen::Vecto
     auto bvh = read_cache_file(result.cache_file, *key, name, progress, why);
     if (bvh && budget) {
       if (std::string refused = budget->refusal("", bvh->mesh().triangle_count(), "triangles"); !refused.empty()) {
-        result.error = MeshLoadError{file, std::move(refused)};
-        return result;
+        return MeshLoadError{file, std::move(refused)};
       }
     }
     if (bvh) {
@@ -385,10 +384,7 @@ CachedMesh MeshCache::load(const std::filesystem::path& file, const Eigen::Vecto
   // errs towards reporting.
   if (progress && !ec && file_bytes >= kProgressMinTriangles * 16) read_progress = progress;
   Result<LoadedMesh, MeshLoadError> loaded = load_mesh_file(file, scale_to_m, read_progress, budget);
-  if (!loaded.ok()) {
-    result.error = loaded.error();
-    return result;
-  }
+  if (!loaded.ok()) return loaded.error();
   result.dropped_triangles = loaded->dropped_triangles;
   auto mesh = std::make_shared<const TriangleMesh>(std::move(loaded->mesh));
   const bool big = mesh->triangle_count() >= kProgressMinTriangles;

@@ -57,15 +57,14 @@ enum class CacheOutcome {
   Rejected,  ///< a cache file existed but failed validation: rebuilt and overwritten
 };
 
+/// A mesh with its BVH, and how the cache served it.
 struct CachedMesh {
-  std::shared_ptr<const MeshBvh> bvh;  ///< null on error; bvh->mesh_ptr() is the mesh
-  std::optional<MeshLoadError> error;
+  std::shared_ptr<const MeshBvh> bvh;  ///< never null; bvh->mesh_ptr() is the mesh
   CacheOutcome outcome = CacheOutcome::Disabled;
   bool written = false;         ///< a new cache file was written
   std::string rejected_reason;  ///< why the existing cache file was rejected
   std::filesystem::path cache_file;
   std::size_t dropped_triangles = 0;  ///< by the loader (0 on a hit)
-  [[nodiscard]] bool ok() const { return bvh != nullptr; }
   [[nodiscard]] const TriangleMesh& mesh() const { return bvh->mesh(); }
 };
 
@@ -85,8 +84,8 @@ class MeshCache {
   /// if a valid entry exists, else from the file, then stores it.
   /// `progress` is called for meshes of kProgressMinTriangles or more (for the read
   /// step, estimated from the file size). `budget` as for load_mesh_file(), and applied
-  /// to a cache hit too.
-  [[nodiscard]] CachedMesh load(const std::filesystem::path& file, const Eigen::Vector3d& scale_to_m,
+  /// to a cache hit too. The error is the loader's, or the budget's refusal of a hit.
+  [[nodiscard]] Result<CachedMesh, MeshLoadError> load(const std::filesystem::path& file, const Eigen::Vector3d& scale_to_m,
                                 const MeshProgress& progress = {},
                                 std::optional<TriangleBudget> budget = std::nullopt);
 

@@ -14,7 +14,7 @@ MeshHeaderCheck check_mesh_header(std::string_view head, std::uint64_t file_size
   std::string ext(extension);
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (ext == ".stl") return check_stl_header(head, file_size);
-  return {};
+  return MeshHeaderClaims{};
 }
 
 }  // namespace mhd

@@ -3,6 +3,8 @@
 // allocated: a PLY's element counts, a binary STL's triangle count. OBJ and ASCII STL
 // carry no counts (their size bounds what they can hold).
 
+#include "diagnostics/result.h"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -14,13 +16,15 @@ namespace mhd {
 /// within them).
 inline constexpr std::size_t kMeshHeaderBytes = 65536;
 
-struct MeshHeaderCheck {
-  std::string error;  ///< empty when the header fits the file
+/// What a header that fits its file claims.
+struct MeshHeaderClaims {
   /// Faces the header claims (PLY 'face' elements, binary STL triangles); each is at
   /// least one triangle. nullopt when the format carries no count.
   std::optional<std::uint64_t> claimed_faces;
-  [[nodiscard]] bool ok() const { return error.empty(); }
 };
+
+/// The header's claims, or why it does not fit the file ("PLY header claims ...").
+using MeshHeaderCheck = Result<MeshHeaderClaims, std::string>;
 
 /// Checks a header: `head` is the file's first min(file_size, kMeshHeaderBytes) bytes,
 /// `extension` the file's (".stl", any case; binary STL has no magic number).

@@ -161,9 +161,9 @@ Result<LoadedMesh, MeshLoadError> load_mesh_file(const std::filesystem::path& fi
     const std::optional<std::string> head = read_head(opened.fd(), std::min<unsigned long long>(opened.size_bytes(), kMeshHeaderBytes));
     if (!head) return fail(file, fmt::format("cannot read file: {}", std::strerror(errno)));
     const MeshHeaderCheck header = check_mesh_header(*head, opened.size_bytes(), file.extension().string());
-    if (!header.ok()) return fail(file, header.error);
-    if (budget && header.claimed_faces) {
-      if (std::string refused = budget->refusal("the header claims", *header.claimed_faces, "faces"); !refused.empty()) {
+    if (!header.ok()) return fail(file, header.error());
+    if (budget && header->claimed_faces) {
+      if (std::string refused = budget->refusal("the header claims", *header->claimed_faces, "faces"); !refused.empty()) {
         return fail(file, std::move(refused));
       }
     }

@@ -49,11 +49,7 @@ std::vector<std::string_view> split_words(std::string_view line) {
 std::uint64_t saturating_add(std::uint64_t a, std::uint64_t b) { return a > kMax - b ? kMax : a + b; }
 std::uint64_t saturating_mul(std::uint64_t a, std::uint64_t b) { return b != 0 && a > kMax / b ? kMax : a * b; }
 
-MeshHeaderCheck failure(std::string message) {
-  MeshHeaderCheck check;
-  check.error = std::move(message);
-  return check;
-}
+MeshHeaderCheck failure(std::string message) { return message; }
 
 /// "100000000 vertex and 100000000 face" (every element with a non-zero count).
 std::string describe_counts(const std::vector<Element>& elements) {
@@ -132,7 +128,7 @@ MeshHeaderCheck check_ply_header(std::string_view head, std::uint64_t file_size)
                        : std::string("PLY header: no end_header"));
   }
   std::uint64_t needed = 0;
-  MeshHeaderCheck check;
+  MeshHeaderClaims check;
   for (const Element& e : elements) {
     if (e.name != "vertex") continue;
     for (const char* axis : {"x", "y", "z"}) {

@@ -27,7 +27,7 @@ bool looks_ascii(std::string_view head) {
 }  // namespace
 
 MeshHeaderCheck check_stl_header(std::string_view head, std::uint64_t file_size) {
-  MeshHeaderCheck check;
+  MeshHeaderClaims check;
   if (head.size() >= kHeaderBytes) {
     std::uint32_t count = 0;  // little-endian
     for (int i = 3; i >= 0; --i) count = (count << 8) | static_cast<unsigned char>(head[80 + static_cast<std::size_t>(i)]);
@@ -37,13 +37,11 @@ MeshHeaderCheck check_stl_header(std::string_view head, std::uint64_t file_size)
       return check;
     }
     if (looks_ascii(head)) return check;
-    check.error = fmt::format("binary STL header claims {} triangle{} ({} bytes), but the file has {} bytes", count,
-                              count == 1 ? "" : "s", expected, file_size);
-    return check;
+    return fmt::format("binary STL header claims {} triangle{} ({} bytes), but the file has {} bytes", count,
+                       count == 1 ? "" : "s", expected, file_size);
   }
   if (looks_ascii(head)) return check;
-  check.error = fmt::format("binary STL is {} bytes, shorter than its {}-byte header", file_size, kHeaderBytes);
-  return check;
+  return fmt::format("binary STL is {} bytes, shorter than its {}-byte header", file_size, kHeaderBytes);
 }
 
 }  // namespace mhd

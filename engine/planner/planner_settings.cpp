@@ -156,9 +156,10 @@ std::vector<std::string> validate(const PlannerSettings& s) {
   return errors;
 }
 
-PlannerSettingsParse planner_settings_from_map(const std::map<std::string, std::string>& values,
-                                               const PlannerSettings& defaults) {
-  PlannerSettingsParse result{defaults, {}};
+Result<PlannerSettings, std::vector<std::string>> planner_settings_from_map(
+    const std::map<std::string, std::string>& values, const PlannerSettings& defaults) {
+  PlannerSettings settings = defaults;
+  std::vector<std::string> errors;
   for (const auto& [name, text] : values) {
     const Field* field = nullptr;
     double scale = 1.0;
@@ -172,18 +173,19 @@ PlannerSettingsParse planner_settings_from_map(const std::map<std::string, std::
       }
     }
     if (field == nullptr) {
-      result.errors.push_back("unknown planner setting '" + name + "' (known: " + known_names() + ")");
+      errors.push_back("unknown planner setting '" + name + "' (known: " + known_names() + ")");
       continue;
     }
     double value = 0.0;
     if (!parse_double(text, value)) {
-      result.errors.push_back("planner setting '" + name + "': '" + text + "' is not a number");
+      errors.push_back("planner setting '" + name + "': '" + text + "' is not a number");
       continue;
     }
-    field->ref(result.settings) = value * scale;
+    field->ref(settings) = value * scale;
   }
-  if (result.errors.empty()) result.errors = validate(result.settings);
-  return result;
+  if (errors.empty()) errors = validate(settings);
+  if (!errors.empty()) return errors;
+  return settings;
 }
 
 PlanarBox usable_box_in_base(const Rig& rig) noexcept {

@@ -5,6 +5,8 @@
 // of two units: "<name>_m" or "<name>_mm", "<name>_rad" or "<name>_deg",
 // "<name>_radps" or "<name>_degps". docs/planner.md explains each parameter.
 
+#include "diagnostics/result.h"
+
 #include <map>
 #include <string>
 #include <string_view>
@@ -79,19 +81,13 @@ struct PlannerSettings {
 /// Every problem with a settings value, e.g. "step_angle_deg must be in (0, 90], got 120".
 [[nodiscard]] std::vector<std::string> validate(const PlannerSettings& settings);
 
-struct PlannerSettingsParse {
-  PlannerSettings settings;
-  std::vector<std::string> errors;  ///< empty on success; one message per bad entry
-  [[nodiscard]] bool ok() const noexcept { return errors.empty(); }
-};
-
 /// Starts from `defaults`, applies each name -> value (names as in PlannerSettings with a
 /// unit suffix: "max_linear_speed_mps", "step_angle_deg", "usable_x_min_mm", ...), then
-/// validates. Unknown names, unparsable numbers and invalid results are all reported, e.g.
+/// validates. The error is one message per bad entry. Unknown names, unparsable numbers and invalid results are all reported, e.g.
 /// "unknown planner setting 'max_speed' (known: arm_length_m|mm, ...)" or
 /// "planner setting 'stop_interval_m': 'abc' is not a number".
-[[nodiscard]] PlannerSettingsParse planner_settings_from_map(const std::map<std::string, std::string>& values,
-                                                             const PlannerSettings& defaults = {});
+[[nodiscard]] Result<PlannerSettings, std::vector<std::string>> planner_settings_from_map(
+    const std::map<std::string, std::string>& values, const PlannerSettings& defaults = {});
 
 /// The device's usable workspace projected on the floor in B, from a rig: the bounding
 /// rectangle of the usable box's corners (exact when P's axes are B's, as in pomhi.xml).

@@ -93,9 +93,16 @@ struct ParamBlock {
 };
 
 struct HapticsSettings {
-  double max_force_N = 8.5;   ///< force clamp (PHANToM Premium 1.5 peak)
+  /// <haptics max_force_N>: a clamp that may only lower the device's own limit. Absent:
+  /// the device's limit, the one source of it (docs/haptic_server.md, "Force limit").
+  std::optional<double> max_force_N;
   double update_rate_Hz = 1000.0;
 };
+
+/// The clamp of tools that run the proxy with no device open (proxy-replay, strokes, the
+/// stress tools, `mhd try`) when the scene gives no <haptics max_force_N>: the peak of a
+/// PHANToM Premium 1.5, the thesis's arm. A run with a device never uses it.
+inline constexpr double kNoDeviceMaxForce_N = 8.5;
 
 /// Default of <scene max_triangles>: the most triangles a scene may load.
 inline constexpr std::uint64_t kDefaultMaxTriangles = 50'000'000;

@@ -84,11 +84,11 @@ class Compiler {
     std::vector<std::shared_ptr<const MeshBvh>> shapes(objects.size());
     std::vector<std::shared_ptr<const HapticTexture>> textures(objects.size());
 
-    if (!positive_finite(description_.haptics.max_force_N)) {
-      errors.push_back(
-          make_diagnostic(file_location(description_.file),
-                          fmt::format("haptics: max force must be positive and finite (got {} N)",
-                                      description_.haptics.max_force_N)));
+    const std::optional<double>& max_force_N = description_.haptics.max_force_N;
+    if (max_force_N && !positive_finite(*max_force_N)) {
+      errors.push_back(make_diagnostic(
+          file_location(description_.file),
+          fmt::format("haptics: max force must be positive and finite (got {} N)", *max_force_N)));
     }
     for (std::size_t i = 0; i < objects.size(); ++i) {
       const ObjectDescription& object = objects[i];
@@ -120,7 +120,9 @@ class Compiler {
 
     auto scene = std::make_unique<CompiledScene>();
     scene->name = description_.name;
-    scene->proxy.max_force_N = description_.haptics.max_force_N;
+    // With no device open, the scene's clamp or the thesis arm's; a run replaces it by
+    // the device's (HapticTick).
+    scene->proxy.max_force_N = description_.haptics.max_force_N.value_or(kNoDeviceMaxForce_N);
     scene->materials.reserve(objects.size());
     scene->object_names.reserve(objects.size());
     scene->motions.reserve(objects.size());
@@ -268,17 +270,17 @@ class Compiler {
     if (const auto it = meshes_.find(key); it != meshes_.end()) return it->second;
     SharedShape shape;
     const TriangleBudget budget{description_.max_triangles, loaded_triangles_};
-    const CachedMesh loaded = cache_.load(source.file, source.scale_to_m, progress_for(object), budget);
+    const Result<CachedMesh, MeshLoadError> loaded =
+        cache_.load(source.file, source.scale_to_m, progress_for(object), budget);
     if (loaded.ok()) {
-      shape.bvh = loaded.bvh;
-      loaded_triangles_ += loaded.mesh().triangle_count();
-      if (loaded.dropped_triangles > 0) {
+      shape.bvh = loaded->bvh;
+      loaded_triangles_ += loaded->mesh().triangle_count();
+      if (loaded->dropped_triangles > 0) {
         spdlog::info("{}: mesh file '{}': dropped {} degenerate triangles", object.name, source.file.string(),
-                     loaded.dropped_triangles);
+                     loaded->dropped_triangles);
       }
     } else {
-      shape.error = loaded.error ? loaded.error->message()
-                                 : fmt::format("mesh file '{}': could not be loaded", source.file.string());
+      shape.error = loaded.error().message();
     }
     return meshes_.emplace(key, std::move(shape)).first->second;
   }

@@ -336,7 +336,7 @@ class SceneReader {
     }
     haptics_where_ = ctx.sink.at(e.GetLineNum());
     HapticsSettings& h = scene_.haptics;
-    h.max_force_N = a.number("max_force_N", Presence::Optional, Bound::Positive).value_or(h.max_force_N);
+    h.max_force_N = a.number("max_force_N", Presence::Optional, Bound::Positive);
     h.update_rate_Hz =
         a.number("update_rate_Hz", Presence::Optional, Bound::Positive).value_or(h.update_rate_Hz);
     if (h.update_rate_Hz < kMinHapticRate_Hz || h.update_rate_Hz > kMaxHapticRate_Hz) {

@@ -91,13 +91,12 @@ class HandStateSource final : public StateSource {
 HandSession::HandSession(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 HandSession::~HandSession() = default;
 
-HandSession::OpenResult HandSession::open(const ViewerScene& scene, const CompiledScene& compiled,
-                                          HandSessionOptions options) {
-  OpenResult result;
+Result<std::unique_ptr<HandSession>, std::string> HandSession::open(const ViewerScene& scene,
+                                                                    const CompiledScene& compiled,
+                                                                    HandSessionOptions options) {
   if (!(options.frame_period_s > 0.0) || !(options.depth_step_m > 0.0)) {
-    result.error = fmt::format("frame period and depth step must be > 0, got {} s and {} m", options.frame_period_s,
-                               options.depth_step_m);
-    return result;
+    return fmt::format("frame period and depth step must be > 0, got {} s and {} m", options.frame_period_s,
+                       options.depth_step_m);
   }
   ViewerOptions& view = options.view;
   view.stereo = false;
@@ -108,34 +107,27 @@ HandSession::OpenResult HandSession::open(const ViewerScene& scene, const Compil
   // A given start is refused before any window opens.
   if (options.p_W_start_m) {
     if (const auto why = HandSimulation::start_blocked(compiled, *options.p_W_start_m)) {
-      result.error = start_error(*options.p_W_start_m, *why);
-      return result;
+      return start_error(*options.p_W_start_m, *why);
     }
   }
   auto impl = std::make_unique<Impl>();
   impl->options = options;
   impl->compiled = &compiled;
-  StereoViewer::OpenResult opened = StereoViewer::open(scene, view, std::make_shared<HandStateSource>(*impl));
-  if (!opened.viewer) {
-    result.error = opened.error;
-    return result;
-  }
-  impl->viewer = std::move(opened.viewer);
+  Result<std::unique_ptr<StereoViewer>, std::string> opened =
+      StereoViewer::open(scene, view, std::make_shared<HandStateSource>(*impl));
+  if (!opened.ok()) return opened.error();
+  impl->viewer = std::move(opened).value();
   const ViewGeometry geometry{view.ipd_m, view.fov_deg, view.near_m, view.far_m, view.width, view.height, false};
   impl->view = eye_views(impl->viewer->default_head(), geometry).front();
   impl->camera = HandCamera{impl->view.X_W_camera, view.fov_deg, view.height};
 
   const Eigen::Vector3d p_W_start_m = options.p_W_start_m ? *options.p_W_start_m : pick_start(compiled, impl->camera);
-  if (const auto why = HandSimulation::start_blocked(compiled, p_W_start_m)) {
-    result.error = start_error(p_W_start_m, *why);
-    return result;
-  }
+  if (const auto why = HandSimulation::start_blocked(compiled, p_W_start_m)) return start_error(p_W_start_m, *why);
   impl->control.emplace(p_W_start_m, options.depth_step_m);
   impl->simulation.emplace(compiled, p_W_start_m);
   Impl* raw = impl.get();
   impl->viewer->set_input_handler([raw](const InputEvent& e) { raw->control->apply(e, raw->camera); });
-  result.session.reset(new HandSession(std::move(impl)));
-  return result;
+  return std::unique_ptr<HandSession>(new HandSession(std::move(impl)));
 }
 
 void HandSession::inject(const InputEvent& event) { impl_->viewer->inject(event); }

@@ -30,13 +30,11 @@ struct HandSessionOptions {
 
 class HandSession {
  public:
-  struct OpenResult {
-    std::unique_ptr<HandSession> session;
-    std::string error;  ///< a blocked start point, bad options, no display, ...
-  };
-  /// `compiled` is `scene` compiled; both must outlive the session.
-  [[nodiscard]] static OpenResult open(const ViewerScene& scene, const CompiledScene& compiled,
-                                       HandSessionOptions options);
+  /// `compiled` is `scene` compiled; both must outlive the session. The error says why
+  /// there is no session: a blocked start point, bad options, no display, ...
+  [[nodiscard]] static Result<std::unique_ptr<HandSession>, std::string> open(const ViewerScene& scene,
+                                                                              const CompiledScene& compiled,
+                                                                              HandSessionOptions options);
   ~HandSession();
   HandSession(const HandSession&) = delete;
   HandSession& operator=(const HandSession&) = delete;

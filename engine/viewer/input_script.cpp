@@ -72,7 +72,7 @@ Result<std::vector<ScriptedEvent>> parse_input_script(const std::string& text, c
     } else {
       why = parse_event(in, s.event);
     }
-    if (!why.empty()) return Diagnostic{{file_name, line_number}, why};
+    if (!why.empty()) return Diagnostic{SourceLocation{file_name, line_number}, why};
     events.push_back(s);
   }
   return events;
@@ -80,7 +80,7 @@ Result<std::vector<ScriptedEvent>> parse_input_script(const std::string& text, c
 
 Result<std::vector<ScriptedEvent>> read_input_script(const std::filesystem::path& file) {
   std::ifstream in(file);
-  if (!in) return Diagnostic{{file.string(), 0}, "cannot read the input script"};
+  if (!in) return Diagnostic{SourceLocation{file.string(), 0}, "cannot read the input script"};
   std::ostringstream text;
   text << in.rdbuf();
   return parse_input_script(text.str(), file.string());

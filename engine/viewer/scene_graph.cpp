@@ -104,8 +104,9 @@ osg::ref_ptr<osg::Geometry> mesh_geometry(const TriangleMesh& mesh, const Eigen:
   return geometry;
 }
 
-SceneGraphResult build_scene_graph(const SceneDescription& scene) {
-  SceneGraphResult result;
+Result<SceneGraph, std::vector<std::string>> build_scene_graph(const SceneDescription& scene) {
+  SceneGraph result;
+  std::vector<std::string> errors;
   result.root = make_ref<osg::Group>();
   osg::StateSet* state = result.root->getOrCreateStateSet();
   // Planes and open meshes are seen from both sides; vertex colours drive the material.
@@ -125,7 +126,7 @@ SceneGraphResult build_scene_graph(const SceneDescription& scene) {
     std::string error;
     const std::optional<TriangleMesh> mesh = shape_mesh(object.shape, error);
     if (!mesh) {
-      result.errors.push_back(fmt::format("object '{}': {}", object.name, error));
+      errors.push_back(fmt::format("object '{}': {}", object.name, error));
       result.object_transforms.emplace_back();
       continue;
     }
@@ -133,7 +134,7 @@ SceneGraphResult build_scene_graph(const SceneDescription& scene) {
     const osg::ref_ptr<osg::Geometry> geometry =
         mesh_geometry(*mesh, material_colour(object.material_name, object.name), reason);
     if (!geometry) {
-      result.errors.push_back(fmt::format("object '{}': OSG cannot draw its mesh: {}", object.name, reason));
+      errors.push_back(fmt::format("object '{}': OSG cannot draw its mesh: {}", object.name, reason));
       result.object_transforms.emplace_back();
       continue;
     }
@@ -149,6 +150,7 @@ SceneGraphResult build_scene_graph(const SceneDescription& scene) {
     result.root->addChild(transform.get());
     result.object_transforms.push_back(transform);
   }
+  if (!errors.empty()) return errors;
   return result;
 }
 

@@ -3,6 +3,7 @@
 // floor grid. Meshes load through engine/mesh_io, primitives tessellate through
 // engine/geometry, exactly as the haptic side sees them.
 
+#include "diagnostics/result.h"
 #include "geometry/triangle_mesh.h"
 #include "scene/scene_description.h"
 
@@ -17,18 +18,18 @@
 
 namespace mhd::viewer {
 
-struct SceneGraphResult {
+struct SceneGraph {
   osg::ref_ptr<osg::Group> root;
-  std::vector<std::string> errors;  ///< "object 'x': mesh file '...': file not found"
   /// Bounds of the non-plane objects in the world (empty when there are none).
   Eigen::AlignedBox3d objects_bounds_W;
   /// Each object's transform, indexed like SceneDescription::objects (null where the
   /// object could not be drawn): a moving object is moved by setting its matrix.
   std::vector<osg::ref_ptr<osg::MatrixTransform>> object_transforms;
-  [[nodiscard]] bool ok() const { return errors.empty(); }
 };
 
-[[nodiscard]] SceneGraphResult build_scene_graph(const SceneDescription& scene);
+/// The scene's objects as OSG nodes, or one error per object that cannot be drawn
+/// ("object 'x': mesh file '...': file not found").
+[[nodiscard]] Result<SceneGraph, std::vector<std::string>> build_scene_graph(const SceneDescription& scene);
 
 /// A triangle mesh as OSG geometry in one colour; empty reason on success, else why OSG
 /// cannot draw it ("it has no triangles", "vertex 12 is not finite", ...).

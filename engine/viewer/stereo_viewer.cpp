@@ -55,39 +55,38 @@ Pose pick_default_head(const Eigen::AlignedBox3d& bounds, const ViewerOptions& o
 
 }  // namespace
 
-ViewerSceneResult load_viewer_scene(const std::filesystem::path& scene_file,
-                                    const std::optional<std::filesystem::path>& rig_file) {
-  ViewerSceneResult result;
+Result<ViewerScene, std::vector<std::string>> load_viewer_scene(const std::filesystem::path& scene_file,
+                                                              const std::optional<std::filesystem::path>& rig_file) {
+  std::vector<std::string> errors;
   Result<SceneDescription> read = read_scene_file(scene_file);
-  for (const Diagnostic& d : read.diagnostics()) result.errors.push_back(d.to_string());
-  if (!read.ok()) return result;
-  ViewerScene viewer_scene{std::move(*read), std::nullopt};
+  for (const Diagnostic& d : read.diagnostics()) errors.push_back(d.to_string());
+  if (!read.ok()) return errors;
+  ViewerScene viewer_scene{std::move(*read), std::nullopt, {}};
 
   std::vector<FrameDescription> frames = viewer_scene.scene.rig_frames;
   if (rig_file) {
     Result<SceneDescription> rig_read = read_scene_file(*rig_file);
-    for (const Diagnostic& d : rig_read.diagnostics()) result.errors.push_back(d.to_string());
-    if (!rig_read.ok()) return result;
+    for (const Diagnostic& d : rig_read.diagnostics()) errors.push_back(d.to_string());
+    if (!rig_read.ok()) return errors;
     frames = rig_read->rig_frames;
     if (frames.empty()) {
-      result.errors.push_back(fmt::format("{}: error: the rig file defines no rig frames", rig_file->string()));
-      return result;
+      errors.push_back(fmt::format("{}: error: the rig file defines no rig frames", rig_file->string()));
+      return errors;
     }
   }
   if (frames.empty()) {
-    result.notes.push_back("the scene has no rig frames: the device is drawn on top of the base and its "
+    viewer_scene.notes.push_back("the scene has no rig frames: the device is drawn on top of the base and its "
                            "workspace is not drawn (give a rig file, e.g. scenes/rigs/pomhi.xml)");
   } else {
     // The scene's own rig may be a desktop one (a device frame alone); a rig file is mobile.
     Result<Rig, std::vector<RigError>> rig = rig_file ? Rig::from_frames(frames) : Rig::from_scene(viewer_scene.scene);
     if (!rig.ok()) {
-      for (const RigError& e : rig.error()) result.errors.push_back(e.to_string());
-      return result;
+      for (const RigError& e : rig.error()) errors.push_back(e.to_string());
+      return errors;
     }
     viewer_scene.rig = std::move(rig).value();
   }
-  result.scene = std::move(viewer_scene);
-  return result;
+  return viewer_scene;
 }
 
 struct StereoViewer::Impl {
@@ -125,22 +124,14 @@ struct StereoViewer::Impl {
 StereoViewer::StereoViewer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 StereoViewer::~StereoViewer() = default;
 
-StereoViewer::OpenResult StereoViewer::open(const ViewerScene& scene, const ViewerOptions& options,
-                                            std::shared_ptr<StateSource> source) {
-  OpenResult result;
-  if (std::string e = options.check(); !e.empty()) {
-    result.error = e;
-    return result;
-  }
-  if (std::string e = check_display(); !e.empty()) {
-    result.error = e;
-    return result;
-  }
-  SceneGraphResult graph = build_scene_graph(scene.scene);
-  if (!graph.ok()) {
-    result.error = fmt::format("{}: {}", scene.scene.file.string(), fmt::join(graph.errors, "; "));
-    return result;
-  }
+Result<std::unique_ptr<StereoViewer>, std::string> StereoViewer::open(const ViewerScene& scene,
+                                                                     const ViewerOptions& options,
+                                                                     std::shared_ptr<StateSource> source) {
+  if (std::string e = options.check(); !e.empty()) return e;
+  if (std::string e = check_display(); !e.empty()) return e;
+  Result<SceneGraph, std::vector<std::string>> built = build_scene_graph(scene.scene);
+  if (!built.ok()) return fmt::format("{}: {}", scene.scene.file.string(), fmt::join(built.error(), "; "));
+  SceneGraph& graph = *built;
 
   auto impl = std::make_unique<Impl>();
   impl->options = options;
@@ -176,10 +167,9 @@ StereoViewer::OpenResult StereoViewer::open(const ViewerScene& scene, const View
     gc = osg::GraphicsContext::createGraphicsContext(traits.get());
   }
   if (!gc || !gc->valid()) {
-    result.error = fmt::format("cannot create an OpenGL {} of {}x{} on display '{}' (does the X server offer GLX{}?)",
-                               options.offscreen ? "pbuffer" : "window", options.width, options.height,
-                               traits->displayName(), options.offscreen ? " 1.3 pbuffers" : "");
-    return result;
+    return fmt::format("cannot create an OpenGL {} of {}x{} on display '{}' (does the X server offer GLX{}?)",
+                       options.offscreen ? "pbuffer" : "window", options.width, options.height, traits->displayName(),
+                       options.offscreen ? " 1.3 pbuffers" : "");
   }
 
   impl->viewer = make_ref<osgViewer::Viewer>();
@@ -217,12 +207,10 @@ StereoViewer::OpenResult StereoViewer::open(const ViewerScene& scene, const View
   viewer.realize();
   quiet_mit_shm_errors();
   if (!viewer.isRealized()) {
-    result.error = fmt::format("cannot realize the OpenGL {} on display '{}'", options.offscreen ? "pbuffer" : "window",
-                               traits->displayName());
-    return result;
+    return fmt::format("cannot realize the OpenGL {} on display '{}'", options.offscreen ? "pbuffer" : "window",
+                       traits->displayName());
   }
-  result.viewer.reset(new StereoViewer(std::move(impl)));
-  return result;
+  return std::unique_ptr<StereoViewer>(new StereoViewer(std::move(impl)));
 }
 
 bool StereoViewer::frame() {

@@ -10,6 +10,7 @@
 //
 // The state comes from a StateSource (state_source.h), asked once per frame.
 
+#include "diagnostics/result.h"
 #include "kinematics/rig.h"
 #include "scene/scene_description.h"
 #include "viewer/input_event.h"
@@ -34,28 +35,20 @@ namespace mhd::viewer {
 struct ViewerScene {
   SceneDescription scene;
   std::optional<Rig> rig;
-};
-
-struct ViewerSceneResult {
-  std::optional<ViewerScene> scene;
-  std::vector<std::string> errors;  ///< "file:line: error: ..." as the reader gives them
-  std::vector<std::string> notes;   ///< e.g. "scene has no rig frames: the workspace box is not drawn"
+  std::vector<std::string> notes;  ///< e.g. "scene has no rig frames: the workspace box is not drawn"
 };
 
 /// Reads `scene_file`; rig frames come from `rig_file` when given, else from the scene.
-/// A scene without rig frames is fine (no workspace box); incomplete ones are errors.
-[[nodiscard]] ViewerSceneResult load_viewer_scene(const std::filesystem::path& scene_file,
+/// A scene without rig frames is fine (no workspace box); incomplete ones are errors,
+/// each "file:line: error: ..." as the reader gives them.
+[[nodiscard]] Result<ViewerScene, std::vector<std::string>> load_viewer_scene(const std::filesystem::path& scene_file,
                                                   const std::optional<std::filesystem::path>& rig_file = std::nullopt);
 
 class StereoViewer {
  public:
-  struct OpenResult {
-    std::unique_ptr<StereoViewer> viewer;
-    std::string error;  ///< why there is no viewer: bad options, no display, a mesh, no GL context
-  };
-
-  /// `source` may be null (nothing but the scene is drawn).
-  [[nodiscard]] static OpenResult open(const ViewerScene& scene, const ViewerOptions& options,
+  /// `source` may be null (nothing but the scene is drawn). The error says why there is
+  /// no viewer: bad options, no display, a mesh, no GL context.
+  [[nodiscard]] static Result<std::unique_ptr<StereoViewer>, std::string> open(const ViewerScene& scene, const ViewerOptions& options,
                                        std::shared_ptr<StateSource> source);
   ~StereoViewer();
   StereoViewer(const StereoViewer&) = delete;

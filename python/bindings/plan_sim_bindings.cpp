@@ -33,13 +33,9 @@ PlannerSettings planner_settings(const py::dict& values) {
   for (const auto& [name, value] : values) {
     text[py::cast<std::string>(py::str(name))] = py::cast<std::string>(py::str(value));
   }
-  const PlannerSettingsParse parsed = planner_settings_from_map(text);
-  if (!parsed.ok()) {
-    std::string message;
-    for (const std::string& e : parsed.errors) message += (message.empty() ? "" : "\n") + e;
-    throw py::value_error(message);
-  }
-  return parsed.settings;
+  const Result<PlannerSettings, std::vector<std::string>> parsed = planner_settings_from_map(text);
+  if (!parsed.ok()) throw py::value_error(parsed.error_text());
+  return *parsed;
 }
 
 plan_sim::MapSpec map_spec(double facing_change_rad, double horizon_s, int substeps) {

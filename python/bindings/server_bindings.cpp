@@ -64,21 +64,21 @@ ServerReport run_server(const CompiledSceneHandle& scene, double duration_s,
   };
   options.status_interval_s = kSignalPoll_s;
 
-  HapticServerBuild build;
+  Diagnostics errors;
   ServerReport report;
-  bool opened = false;
   {
     py::gil_scoped_release unlocked;
-    build = HapticServer::open(*scene.description, *scene.compiled, std::move(options));
-    if (build.server) {
-      opened = true;
-      running = build.server.get();
-      report = build.server->run();
+    Result<OpenedServer> build = HapticServer::open(*scene.description, *scene.compiled, std::move(options));
+    if (build.ok()) {
+      running = build->server.get();
+      report = build->server->run();
       running = nullptr;
-      build.server.reset();  // closes the plugins before Python sees the report
+      build->server.reset();  // closes the plugins before Python sees the report
+    } else {
+      errors = build.error();
     }
   }
-  if (!opened) throw EngineError(std::move(build.diagnostics));
+  if (!errors.empty()) throw EngineError(std::move(errors));
   if (signal_type) {
     PyErr_Restore(signal_type.release().ptr(), signal_value.release().ptr(), signal_traceback.release().ptr());
     throw py::error_already_set();

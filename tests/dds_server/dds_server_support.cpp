@@ -144,8 +144,8 @@ ServerThread::ServerThread(const LoadedScene& scene, ServerOptions options) {
     return;
   }
   auto build = HapticServer::open(*scene.description, *scene.compiled, std::move(options));
-  for (const auto& d : build.diagnostics) errors_.push_back(d.to_string());
-  server_ = std::move(build.server);
+  for (const auto& d : build.diagnostics()) errors_.push_back(d.to_string());
+  if (build.ok()) server_ = std::move(build->server);
   if (server_) thread_ = std::thread([this] { report_ = server_->run(); });
 }
 

@@ -164,7 +164,8 @@ TEST(Ros2Interop, PlainCycloneSubscriberWithRos2NamesReceivesTheRigsPosesWrenchA
     }
   }
   // Never more than the clamp; torque zero; in the wall k * depth pushing the hand back (-x).
-  const double clamp_N = scene.description->haptics.max_force_N;
+  // The scene's clamp, or sim_phantom's own limit (the same as the no-device one) when it gives none.
+  const double clamp_N = scene.description->haptics.max_force_N.value_or(kNoDeviceMaxForce_N);
   for (const Received& r : force) {
     EXPECT_LE(norm(r), clamp_N + 1e-9);
     EXPECT_EQ(r.values[3], 0.0);

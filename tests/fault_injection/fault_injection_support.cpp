@@ -76,7 +76,7 @@ PressGeometry press_geometry(double depth_m) {
 }
 
 fs::path write_scene(const fs::path& dir, const PressGeometry& g, const std::string& plugins,
-                     const std::string& server_params) {
+                     const std::string& server_params, const std::string& scene_elements) {
   const fs::path file = dir / "scene.xml";
   std::ofstream(file) << fmt::format(R"(<?xml version="1.0"?>
 <scene version="1" unit="m">
@@ -86,6 +86,7 @@ fs::path write_scene(const fs::path& dir, const PressGeometry& g, const std::str
     <box size="1.6 0.2 1.6"/>
     <pose position="{:.6f} {:.6f} {:.6f}"/>
   </object>
+{}
   <plugins>
 {}
   </plugins>
@@ -94,7 +95,8 @@ fs::path write_scene(const fs::path& dir, const PressGeometry& g, const std::str
 {}
   </server>
 </scene>
-)", MHD_SOURCE_DIR, g.hip_press_W_m.x(), g.block_top_y_m - 0.1, g.hip_press_W_m.z(), plugins, server_params);
+)", MHD_SOURCE_DIR, g.hip_press_W_m.x(), g.block_top_y_m - 0.1, g.hip_press_W_m.z(), scene_elements, plugins,
+                                     server_params);
   return file;
 }
 
@@ -130,12 +132,12 @@ RunResult run_server(const Loaded& scene, double duration_s, const fs::path& rec
   o.plugin_path = {MHD_FAULT_INJECTION_PLUGIN_DIR};
   o.plan_base = plan;
   auto build = HapticServer::open(*scene.description, *scene.scene, o);
-  for (const auto& d : build.diagnostics) ADD_FAILURE() << d.to_string();
-  if (!build.server) return out;
+  for (const auto& d : build.diagnostics()) ADD_FAILURE() << d.to_string();
+  if (!build.ok()) return out;
   out.opened = true;
-  out.warnings = build.warnings;
-  out.settings = build.server->settings();
-  out.report = build.server->run();
+  out.warnings = build->warnings;
+  out.settings = build->server->settings();
+  out.report = build->server->run();
   return out;
 }
 

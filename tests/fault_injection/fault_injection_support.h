@@ -40,9 +40,10 @@ struct PressGeometry {
 PressGeometry press_geometry(double depth_m);
 
 /// Writes `dir`/scene.xml: the rig, a 1.6 m x 0.2 m x 1.6 m block (stiffness 1000 N/m)
-/// under the pressing HIP, the given <plugins> content and <server> params.
+/// under the pressing HIP, the given <plugins> content and <server> params, and
+/// `scene_elements` (e.g. a <haptics/>) at the scene's level.
 fs::path write_scene(const fs::path& dir, const PressGeometry& g, const std::string& plugins,
-                     const std::string& server_params);
+                     const std::string& server_params, const std::string& scene_elements = "");
 
 /// The fi_device <plugin> element: presses from press_at_s over 0.05 s; `extra` is
 /// more <param> lines (faults).

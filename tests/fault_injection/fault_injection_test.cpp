@@ -620,22 +620,26 @@ TEST(DeviceFaults, DeviceWriteErrorWhilePushingStillSendsZeroTorque) {
 
 // ---- the device's force limit, seen from the device -------------------------------------
 
-/// The probe device pressing 4 mm into the block (4 N at full gain) while it reports
-/// `max_force_N` as its limit; the scene keeps its default <haptics max_force_N> (8.5 N).
+/// The probe device pressing `depth_m` into the block (1 N per mm at full gain) while it
+/// reports `max_force_N` as its limit; the scene gives <haptics max_force_N> only when
+/// `scene_max_force_N` is set.
 struct LimitRun {
   RunResult run;
   std::vector<LogRow> device;      ///< what the device received, from its side
   std::vector<RecordingRow> rows;  ///< what the server computed and sent
 };
 
-LimitRun press_with_device_limit(const std::string& max_force_N) {
+LimitRun press_with_device_limit(const std::string& max_force_N,
+                                 const std::optional<std::string>& scene_max_force_N = std::nullopt,
+                                 double depth_m = 0.004) {
   const fs::path dir = temp_dir();
-  const PressGeometry g = press_geometry(0.004);
+  const PressGeometry g = press_geometry(depth_m);
   const fs::path device_log = dir / "device.log";
-  const fs::path file = write_scene(dir, g,
-                                    fi_device_xml(g, device_log, kPressAt_s, param("max_force_N", max_force_N)) +
-                                        fi_tracker_xml(dir / "tracker.log", "") + fi_base_xml(dir / "base.log"),
-                                    "");
+  const fs::path file = write_scene(
+      dir, g,
+      fi_device_xml(g, device_log, kPressAt_s, param("max_force_N", max_force_N)) +
+          fi_tracker_xml(dir / "tracker.log", "") + fi_base_xml(dir / "base.log"),
+      "", scene_max_force_N ? "  <haptics max_force_N=\"" + *scene_max_force_N + "\"/>" : std::string());
   LimitRun out;
   out.run = run_server(load(file), 0.8, dir / "run.csv", kMovingBase);
   out.device = without_markers(read_log(device_log));
@@ -645,6 +649,9 @@ LimitRun press_with_device_limit(const std::string& max_force_N) {
 
 double norm(const LogRow& c) { return std::sqrt(c.a * c.a + c.b * c.b + c.c * c.c); }
 double norm(const std::array<double, 3>& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+double distance(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+  return norm(std::array<double, 3>{a[0] - b[0], a[1] - b[1], a[2] - b[2]});
+}
 
 /// The recording's row of the tick that sent `c` (the log keeps the time to 1 ns), or null.
 const RecordingRow* row_of(const std::vector<RecordingRow>& rows, const LogRow& c) {
@@ -657,19 +664,53 @@ TEST(DeviceForceLimit, AForceAboveTheDevicesLimitReachesTheDeviceClampedToExactl
   const LimitRun l = press_with_device_limit("2");
   ASSERT_TRUE(l.run.opened);
   EXPECT_EQ(l.run.settings.tick.safety.max_force_N, 2.0);
-  ASSERT_EQ(l.run.warnings.size(), 1u);
-  EXPECT_THAT(l.run.warnings[0].message,
-              HasSubstr("<haptics max_force_N> is 8.5 N, more than device 'fi_device' allows (2 N, its device_info)"));
+  EXPECT_TRUE(l.run.warnings.empty()) << "the scene asked for nothing";
   std::size_t at_limit = 0, asked_more = 0;
   for (const LogRow& c : l.device) {
     EXPECT_LE(norm(c), 2.0 * (1.0 + 1e-12)) << "at t = " << c.t_s;
     const RecordingRow* r = row_of(l.rows, c);
-    if (r == nullptr || r->safety_gain != 1.0 || norm(r->cmd_force_W_N) <= 2.5) continue;
-    ++asked_more;  // the proxy asked for more than the limit, at full gain
+    // The spring (1000 N/m) stretched more than 2.5 mm: without the limit, more than 2.5 N.
+    if (r == nullptr || r->safety_gain != 1.0 || 1000.0 * distance(r->proxy_W_m, r->p_W_hip) <= 2.5) continue;
+    ++asked_more;  // the spring asked for more than the limit, at full gain
     if (std::abs(norm(c) - 2.0) <= 2.0 * 1e-12) ++at_limit;
   }
   EXPECT_GT(asked_more, 100u) << "the press never asked for more than the limit";
   EXPECT_EQ(at_limit, asked_more);
+}
+
+TEST(DeviceForceLimit, ASceneAskingForMoreThanTheDeviceAllowsIsWarnedAndGetsTheDevicesLimit) {
+  const LimitRun l = press_with_device_limit("2", "8.5");
+  ASSERT_TRUE(l.run.opened);
+  EXPECT_EQ(l.run.settings.tick.safety.max_force_N, 2.0);
+  ASSERT_EQ(l.run.warnings.size(), 1u);
+  EXPECT_THAT(l.run.warnings[0].message,
+              HasSubstr("<haptics max_force_N> is 8.5 N, more than device 'fi_device' allows (2 N, its device_info)"));
+  double most_N = 0.0;
+  for (const LogRow& c : l.device) most_N = std::max(most_N, norm(c));
+  EXPECT_NEAR(most_N, 2.0, 2.0 * 1e-12) << "4 N asked, 2 N allowed";
+}
+
+// One source for the limit: a scene that gives none gets the device's whole limit, not
+// the thesis arm's 8.5 N on top of it.
+TEST(DeviceForceLimit, ASceneThatGivesNoLimitGetsTheDevicesWholeLimit) {
+  const LimitRun l = press_with_device_limit("12", std::nullopt, 0.011);  // 11 N asked
+  ASSERT_TRUE(l.run.opened);
+  EXPECT_EQ(l.run.settings.tick.safety.max_force_N, 12.0);
+  EXPECT_TRUE(l.run.warnings.empty());
+  double most_N = 0.0;
+  for (const LogRow& c : l.device) most_N = std::max(most_N, norm(c));
+  EXPECT_GT(most_N, 10.0) << "the device got no more than " << most_N << " N";
+  EXPECT_LE(most_N, 12.0);
+}
+
+TEST(DeviceForceLimit, ASceneLimitBelowTheDevicesLowersIt) {
+  const LimitRun l = press_with_device_limit("12", "3", 0.011);
+  ASSERT_TRUE(l.run.opened);
+  EXPECT_EQ(l.run.settings.tick.safety.max_force_N, 3.0);
+  EXPECT_TRUE(l.run.warnings.empty());
+  double most_N = 0.0;
+  for (const LogRow& c : l.device) most_N = std::max(most_N, norm(c));
+  EXPECT_NEAR(most_N, 3.0, 3.0 * 1e-9);
 }
 
 TEST(DeviceForceLimit, AForceBelowTheLimitReachesTheDeviceUnchanged) {

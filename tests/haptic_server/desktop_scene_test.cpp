@@ -51,9 +51,9 @@ DesktopRun run_scene(const std::string& name, double duration_s) {
   o.duration_s = duration_s;
   o.recording = dir / (name + ".csv");
   auto build = HapticServer::open(*read, *out.scene, o);
-  for (const auto& d : build.diagnostics) ADD_FAILURE() << d.to_string();
-  if (!build.server) return out;
-  out.report = build.server->run();
+  for (const auto& d : build.diagnostics()) ADD_FAILURE() << d.to_string();
+  if (!build.ok()) return out;
+  out.report = build->server->run();
   const Result<std::vector<RecordingRow>> recording = read_recording(o.recording);
   EXPECT_TRUE(recording.ok());
   out.rows = recording.value();

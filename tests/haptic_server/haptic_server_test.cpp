@@ -104,9 +104,9 @@ TEST(HapticServer, RunsTheDolphinSceneOnSimulatedHardwareAndRecordsEveryTick) {
   ServerOptions o = options_for(1.5);
   o.recording = dir / "dolphin.csv";
   auto build = HapticServer::open(*l.description, *l.scene, o);
-  for (const auto& d : build.diagnostics) ADD_FAILURE() << d.to_string();
-  ASSERT_TRUE(build.server);
-  const ServerReport r = build.server->run();
+  for (const auto& d : build.diagnostics()) ADD_FAILURE() << d.to_string();
+  ASSERT_TRUE(build.ok());
+  const ServerReport r = build->server->run();
   EXPECT_FALSE(r.error) << *r.error;
   EXPECT_EQ(r.ended_by, RunEnd::Duration);
   EXPECT_GT(r.status.ticks, 100u);
@@ -136,9 +136,9 @@ TEST(HapticServer, CountsTheTicksWhoseProxyRanOutOfItsWorkBudget) {
   ASSERT_TRUE(l.scene);
   l.scene->proxy.max_sweeps_per_tick = 1;
   auto build = HapticServer::open(*l.description, *l.scene, options_for(1.5));
-  for (const auto& d : build.diagnostics) ADD_FAILURE() << d.to_string();
-  ASSERT_TRUE(build.server);
-  const ServerReport r = build.server->run();
+  for (const auto& d : build.diagnostics()) ADD_FAILURE() << d.to_string();
+  ASSERT_TRUE(build.ok());
+  const ServerReport r = build->server->run();
   EXPECT_FALSE(r.error) << *r.error;
   EXPECT_GT(r.proxy_budget_exhausted_ticks, 0u);
   EXPECT_LE(r.proxy_budget_exhausted_ticks, r.status.ticks);
@@ -192,11 +192,11 @@ DeviceFaultRun run_device_fault(const std::string& fault) {
     return run;
   }
   auto build = HapticServer::open(*l.description, *l.scene, options_for(30.0));
-  if (!build.server) {
+  if (!build.ok()) {
     ADD_FAILURE() << "server did not open";
     return run;
   }
-  run.report = build.server->run();
+  run.report = build->server->run();
   return run;
 }
 
@@ -235,8 +235,8 @@ TEST(HapticServer, ABaseTracked1e9MetresAwayIsAFaultNamingTheTracker) {
   Loaded l = load(file);
   ASSERT_TRUE(l.scene);
   auto build = HapticServer::open(*l.description, *l.scene, options_for(30.0));
-  ASSERT_TRUE(build.server);
-  const ServerReport r = build.server->run();
+  ASSERT_TRUE(build.ok());
+  const ServerReport r = build->server->run();
   ASSERT_TRUE(r.error);
   EXPECT_EQ(*r.error, fmt::format("{}:{}: error: plugin 'fault_tracker': tracker_read returned sensor 0 at 1e+09 m "
                                   "from the tracker, beyond its tracking range of 50 m",
@@ -259,8 +259,8 @@ TEST(HapticServer, DeviceErrorAndDeactivateEndTheRunNamingThePlugin) {
     Loaded l = load(file);
     ASSERT_TRUE(l.scene);
     auto build = HapticServer::open(*l.description, *l.scene, options_for(30.0));
-    ASSERT_TRUE(build.server);
-    const ServerReport r = build.server->run();
+    ASSERT_TRUE(build.ok());
+    const ServerReport r = build->server->run();
     ASSERT_TRUE(r.error) << fault;
     const std::string where = fmt::format("{}:{}: error: plugin 'fault_device'", file.string(),
                                           scene_line_of(file, "name=\"fault_device\""));
@@ -291,8 +291,8 @@ TEST(HapticServer, BaseFailingMidRunStopsTheBaseAndZeroesTheForce) {
   Loaded l = load(file);
   ASSERT_TRUE(l.scene);
   auto build = HapticServer::open(*l.description, *l.scene, options_for(30.0));
-  ASSERT_TRUE(build.server);
-  const ServerReport r = build.server->run();
+  ASSERT_TRUE(build.ok());
+  const ServerReport r = build->server->run();
   ASSERT_TRUE(r.error);
   EXPECT_THAT(*r.error, HasSubstr(fmt::format("{}:{}: error: plugin 'fault_base': ", file.string(),
                                               scene_line_of(file, "name=\"fault_base\""))));
@@ -340,8 +340,8 @@ TEST(HapticServer, SilentTrackerFadesForceOutAndStopsTheBase) {
   o.recording = dir / "run.csv";
   o.plan_base = [](const BasePlanInput&) { return BaseTwist{0.1, 0.0, 0.0}; };  // keeps asking to move
   auto build = HapticServer::open(*l.description, *l.scene, o);
-  ASSERT_TRUE(build.server);
-  const ServerReport r = build.server->run();
+  ASSERT_TRUE(build.ok());
+  const ServerReport r = build->server->run();
   EXPECT_FALSE(r.error) << *r.error;
   EXPECT_GT(r.stale_ticks, 0u);
   EXPECT_GT(r.base_stops, 0u);
@@ -401,8 +401,8 @@ TEST(HapticServer, ADeviceCallThatBlocksTooLongEndsTheRunAndStopsTheBase) {
   ServerOptions o = options_for(30.0);
   o.plan_base = [](const BasePlanInput&) { return BaseTwist{0.1, 0.0, 0.0}; };  // keeps asking to move
   auto build = HapticServer::open(*l.description, *l.scene, o);
-  ASSERT_TRUE(build.server);
-  const ServerReport r = build.server->run();
+  ASSERT_TRUE(build.ok());
+  const ServerReport r = build->server->run();
   ASSERT_TRUE(r.error);
   EXPECT_EQ(r.ended_by, RunEnd::Fault);
   EXPECT_THAT(*r.error, HasSubstr(fmt::format("{}:{}: error: plugin 'fault_device': device_read has not returned after ",
@@ -441,8 +441,8 @@ TEST(HapticServer, ATrackerStuckInACallEndsTheRunWithTheBaseStopped) {
   ServerOptions o = options_for(30.0);
   o.plan_base = [](const BasePlanInput&) { return BaseTwist{0.1, 0.0, 0.0}; };
   auto build = HapticServer::open(*l.description, *l.scene, o);
-  ASSERT_TRUE(build.server);
-  const ServerReport r = build.server->run();
+  ASSERT_TRUE(build.ok());
+  const ServerReport r = build->server->run();
   ASSERT_TRUE(r.error);
   EXPECT_THAT(*r.error, HasSubstr(fmt::format("{}:{}: error: plugin 'fault_tracker': tracker_read has not returned after ",
                                               file.string(), scene_line_of(file, "name=\"fault_tracker\""))));
@@ -465,9 +465,9 @@ TEST(HapticServer, OpenReportsEveryProblemAtItsSceneLine) {
   Loaded l = load(file);
   ASSERT_TRUE(l.scene);
   auto build = HapticServer::open(*l.description, *l.scene, options_for(1.0));
-  EXPECT_FALSE(build.server);
+  EXPECT_FALSE(build.ok());
   std::vector<std::string> messages;
-  for (const auto& d : build.diagnostics) messages.push_back(d.to_string());
+  for (const auto& d : build.diagnostics()) messages.push_back(d.to_string());
   const std::string f = file.string();
   EXPECT_THAT(messages, ::testing::Contains(HasSubstr(fmt::format(
                             "{}:{}: error: unknown param 'tracker_timeout_ms' in <server>", f,
@@ -489,9 +489,9 @@ TEST(HapticServer, AMissingPluginIsAnErrorAtItsLineAndNothingRuns) {
   Loaded l = load(file);
   ASSERT_TRUE(l.scene);
   auto build = HapticServer::open(*l.description, *l.scene, options_for(1.0));
-  EXPECT_FALSE(build.server);
-  ASSERT_EQ(build.diagnostics.size(), 1u);
-  EXPECT_THAT(build.diagnostics[0].to_string(),
+  EXPECT_FALSE(build.ok());
+  ASSERT_EQ(build.diagnostics().size(), 1u);
+  EXPECT_THAT(build.diagnostics()[0].to_string(),
               HasSubstr(fmt::format("{}:{}: error: plugin 'no_such_device'", file.string(),
                                     scene_line_of(file, "no_such_device"))));
 }

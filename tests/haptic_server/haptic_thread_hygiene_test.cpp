@@ -123,10 +123,10 @@ TEST(HapticThreadHygiene, TheServerOnSimulatedHardwareNeverLocksAllocatesOrWrite
   o.duration_s = 2.5;
   o.recording = dir / "run.csv";
   auto build = HapticServer::open(*read, *compiled.value(), o);
-  for (const auto& d : build.diagnostics) ADD_FAILURE() << d.to_string();
-  ASSERT_TRUE(build.server);
+  for (const auto& d : build.diagnostics()) ADD_FAILURE() << d.to_string();
+  ASSERT_TRUE(build.ok());
   ServerReport r;
-  const HapticThreadCalls c = count_while(0.5, 2.2, [&] { r = build.server->run(); });
+  const HapticThreadCalls c = count_while(0.5, 2.2, [&] { r = build->server->run(); });
   EXPECT_FALSE(r.error) << *r.error;
   EXPECT_GT(r.status.ticks, 1000u);      // the haptic thread ran while counting
   EXPECT_GT(r.contact_ticks, 0u);        // and rendered contact

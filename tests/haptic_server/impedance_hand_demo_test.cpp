@@ -49,9 +49,9 @@ TEST(ImpedanceHandDemo, StrokesTheDolphinWellBelowTheClampWithMillimetrePenetrat
   o.duration_s = 4.0;
   o.recording = dir / "dolphin.csv";
   auto build = HapticServer::open(description, *compiled.value(), o);
-  for (const auto& d : build.diagnostics) ADD_FAILURE() << d.to_string();
-  ASSERT_TRUE(build.server);
-  const ServerReport r = build.server->run();
+  for (const auto& d : build.diagnostics()) ADD_FAILURE() << d.to_string();
+  ASSERT_TRUE(build.ok());
+  const ServerReport r = build->server->run();
   ASSERT_FALSE(r.error) << *r.error;
   EXPECT_EQ(r.clamped_ticks, 0u);
   EXPECT_EQ(r.fault_ticks, 0u);

@@ -41,8 +41,8 @@ class RecordingReplay : public ::testing::Test {
     options.duration_s = 2.5;
     options.recording = *recording_;
     auto build = HapticServer::open(*description_, *scene_, options);
-    ASSERT_TRUE(build.server);
-    report_ = new ServerReport(build.server->run());
+    ASSERT_TRUE(build.ok());
+    report_ = new ServerReport(build->server->run());
   }
   static void TearDownTestSuite() {
     delete report_;

@@ -78,38 +78,38 @@ class MeshCacheTest : public ::testing::Test {
 TEST_F(MeshCacheTest, SecondLoadHitsAndMatchesAFreshBuild) {
   MeshCache cache(cache_dir_);
   EXPECT_TRUE(cache.writable());
-  const CachedMesh cold = cache.load(mesh_file_, Eigen::Vector3d::Ones());
-  ASSERT_TRUE(cold.ok()) << cold.error->message();
-  EXPECT_EQ(cold.outcome, CacheOutcome::Miss);
-  EXPECT_TRUE(cold.written);
-  EXPECT_TRUE(std::filesystem::is_regular_file(cold.cache_file));
-  EXPECT_EQ(cold.cache_file.parent_path(), cache_dir_);
+  const Result<CachedMesh, MeshLoadError> cold = cache.load(mesh_file_, Eigen::Vector3d::Ones());
+  ASSERT_TRUE(cold.ok()) << cold.error_text();
+  EXPECT_EQ(cold->outcome, CacheOutcome::Miss);
+  EXPECT_TRUE(cold->written);
+  EXPECT_TRUE(std::filesystem::is_regular_file(cold->cache_file));
+  EXPECT_EQ(cold->cache_file.parent_path(), cache_dir_);
 
-  const CachedMesh warm = cache.load(mesh_file_, Eigen::Vector3d::Ones());
+  const Result<CachedMesh, MeshLoadError> warm = cache.load(mesh_file_, Eigen::Vector3d::Ones());
   ASSERT_TRUE(warm.ok());
-  EXPECT_EQ(warm.outcome, CacheOutcome::Hit);
-  EXPECT_FALSE(warm.written);
-  EXPECT_EQ(warm.cache_file, cold.cache_file);
+  EXPECT_EQ(warm->outcome, CacheOutcome::Hit);
+  EXPECT_FALSE(warm->written);
+  EXPECT_EQ(warm->cache_file, cold->cache_file);
   EXPECT_EQ(cache.stats().hits, 1u);
   EXPECT_EQ(cache.stats().misses, 1u);
   EXPECT_EQ(cache.stats().writes, 1u);
-  EXPECT_NE(&warm.mesh(), &cold.mesh());
+  EXPECT_NE(&warm->mesh(), &cold->mesh());
 
   // Bit-identical mesh data.
-  EXPECT_EQ(warm.mesh().vertices_m, cold.mesh().vertices_m);
-  EXPECT_EQ(warm.mesh().triangles, cold.mesh().triangles);
-  EXPECT_EQ(warm.mesh().vertex_normals, cold.mesh().vertex_normals);
-  EXPECT_EQ(warm.bvh->bounds().min(), cold.bvh->bounds().min());
-  EXPECT_EQ(warm.bvh->bounds().max(), cold.bvh->bounds().max());
+  EXPECT_EQ(warm->mesh().vertices_m, cold->mesh().vertices_m);
+  EXPECT_EQ(warm->mesh().triangles, cold->mesh().triangles);
+  EXPECT_EQ(warm->mesh().vertex_normals, cold->mesh().vertex_normals);
+  EXPECT_EQ(warm->bvh->bounds().min(), cold->bvh->bounds().min());
+  EXPECT_EQ(warm->bvh->bounds().max(), cold->bvh->bounds().max());
 
   // The cached BVH answers box queries exactly like a freshly built one.
-  const MeshBvh fresh(warm.bvh->mesh_ptr());
+  const MeshBvh fresh(warm->bvh->mesh_ptr());
   std::size_t reported = 0;
   for (const auto& box : random_boxes(fresh.bounds(), 300)) {
-    const auto from_cache = query(*warm.bvh, box);
+    const auto from_cache = query(*warm->bvh, box);
     EXPECT_EQ(from_cache, query(fresh, box));
-    EXPECT_EQ(from_cache, query(*cold.bvh, box));
-    const auto must = brute_force(warm.mesh(), box);
+    EXPECT_EQ(from_cache, query(*cold->bvh, box));
+    const auto must = brute_force(warm->mesh(), box);
     EXPECT_TRUE(std::includes(from_cache.begin(), from_cache.end(), must.begin(), must.end()));
     reported += from_cache.size();
   }
@@ -117,64 +117,64 @@ TEST_F(MeshCacheTest, SecondLoadHitsAndMatchesAFreshBuild) {
 
   // A second cache object (another process, say) finds the file too.
   MeshCache other(cache_dir_);
-  EXPECT_EQ(other.load(mesh_file_, Eigen::Vector3d::Ones()).outcome, CacheOutcome::Hit);
+  EXPECT_EQ(other.load(mesh_file_, Eigen::Vector3d::Ones())->outcome, CacheOutcome::Hit);
 }
 
 TEST_F(MeshCacheTest, TruncatedCacheFileIsRejectedAndRebuilt) {
   MeshCache cache(cache_dir_);
-  const CachedMesh cold = cache.load(mesh_file_, Eigen::Vector3d::Ones());
+  const Result<CachedMesh, MeshLoadError> cold = cache.load(mesh_file_, Eigen::Vector3d::Ones());
   ASSERT_TRUE(cold.ok());
-  const auto bytes = read_bytes(cold.cache_file);
+  const auto bytes = read_bytes(cold->cache_file);
   ASSERT_GT(bytes.size(), 200u);
   for (const std::size_t keep : {bytes.size() - 1, bytes.size() / 2, std::size_t{100}, std::size_t{0}}) {
     SCOPED_TRACE(keep);
-    write_bytes(cold.cache_file, std::vector<char>(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(keep)));
-    const CachedMesh again = cache.load(mesh_file_, Eigen::Vector3d::Ones());
+    write_bytes(cold->cache_file, std::vector<char>(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(keep)));
+    const Result<CachedMesh, MeshLoadError> again = cache.load(mesh_file_, Eigen::Vector3d::Ones());
     ASSERT_TRUE(again.ok());
-    EXPECT_EQ(again.outcome, CacheOutcome::Rejected);
-    EXPECT_FALSE(again.rejected_reason.empty());
-    EXPECT_TRUE(again.written);
-    EXPECT_EQ(again.mesh().triangles, cold.mesh().triangles);
+    EXPECT_EQ(again->outcome, CacheOutcome::Rejected);
+    EXPECT_FALSE(again->rejected_reason.empty());
+    EXPECT_TRUE(again->written);
+    EXPECT_EQ(again->mesh().triangles, cold->mesh().triangles);
     // Rebuilt: the same size (Bullet's in-place image holds pointer values, so the
     // bytes may differ) and valid.
-    EXPECT_EQ(std::filesystem::file_size(cold.cache_file), bytes.size());
-    EXPECT_EQ(cache.load(mesh_file_, Eigen::Vector3d::Ones()).outcome, CacheOutcome::Hit);
+    EXPECT_EQ(std::filesystem::file_size(cold->cache_file), bytes.size());
+    EXPECT_EQ(cache.load(mesh_file_, Eigen::Vector3d::Ones())->outcome, CacheOutcome::Hit);
   }
 }
 
 TEST_F(MeshCacheTest, FlippedBytesAreRejectedAndRebuilt) {
   MeshCache cache(cache_dir_);
-  const CachedMesh cold = cache.load(mesh_file_, Eigen::Vector3d::Ones());
+  const Result<CachedMesh, MeshLoadError> cold = cache.load(mesh_file_, Eigen::Vector3d::Ones());
   ASSERT_TRUE(cold.ok());
-  const auto bytes = read_bytes(cold.cache_file);
+  const auto bytes = read_bytes(cold->cache_file);
   // Header fields, vertices, triangles, normals and the BVH at the very end.
   for (const std::size_t at : {std::size_t{0}, std::size_t{20}, std::size_t{60}, std::size_t{127}, std::size_t{128},
                                bytes.size() / 4, bytes.size() / 2, bytes.size() * 3 / 4, bytes.size() - 1}) {
     SCOPED_TRACE(at);
     auto bad = bytes;
     bad[at] = static_cast<char>(bad[at] ^ 0x10);
-    write_bytes(cold.cache_file, bad);
-    const CachedMesh again = cache.load(mesh_file_, Eigen::Vector3d::Ones());
+    write_bytes(cold->cache_file, bad);
+    const Result<CachedMesh, MeshLoadError> again = cache.load(mesh_file_, Eigen::Vector3d::Ones());
     ASSERT_TRUE(again.ok());
-    EXPECT_EQ(again.outcome, CacheOutcome::Rejected);
-    EXPECT_EQ(again.mesh().vertices_m, cold.mesh().vertices_m);
-    EXPECT_TRUE(again.written);
-    EXPECT_EQ(std::filesystem::file_size(cold.cache_file), bytes.size());
+    EXPECT_EQ(again->outcome, CacheOutcome::Rejected);
+    EXPECT_EQ(again->mesh().vertices_m, cold->mesh().vertices_m);
+    EXPECT_TRUE(again->written);
+    EXPECT_EQ(std::filesystem::file_size(cold->cache_file), bytes.size());
   }
   EXPECT_EQ(cache.stats().rejected, 9u);
-  EXPECT_EQ(cache.load(mesh_file_, Eigen::Vector3d::Ones()).outcome, CacheOutcome::Hit);
+  EXPECT_EQ(cache.load(mesh_file_, Eigen::Vector3d::Ones())->outcome, CacheOutcome::Hit);
 }
 
 TEST_F(MeshCacheTest, CacheFileOfAnotherKeyIsRejected) {
   MeshCache cache(cache_dir_);
-  const CachedMesh a = cache.load(mesh_file_, Eigen::Vector3d::Ones());
-  const CachedMesh b = cache.load(mesh_file_, Eigen::Vector3d::Constant(2.0));
+  const Result<CachedMesh, MeshLoadError> a = cache.load(mesh_file_, Eigen::Vector3d::Ones());
+  const Result<CachedMesh, MeshLoadError> b = cache.load(mesh_file_, Eigen::Vector3d::Constant(2.0));
   ASSERT_TRUE(a.ok() && b.ok());
-  std::filesystem::copy_file(a.cache_file, b.cache_file, std::filesystem::copy_options::overwrite_existing);
-  const CachedMesh again = cache.load(mesh_file_, Eigen::Vector3d::Constant(2.0));
-  EXPECT_EQ(again.outcome, CacheOutcome::Rejected);
-  EXPECT_EQ(again.rejected_reason, "key mismatch");
-  EXPECT_NEAR(mesh_bounds(again.mesh()).max().x(), 0.08, 1e-6);
+  std::filesystem::copy_file(a->cache_file, b->cache_file, std::filesystem::copy_options::overwrite_existing);
+  const Result<CachedMesh, MeshLoadError> again = cache.load(mesh_file_, Eigen::Vector3d::Constant(2.0));
+  EXPECT_EQ(again->outcome, CacheOutcome::Rejected);
+  EXPECT_EQ(again->rejected_reason, "key mismatch");
+  EXPECT_NEAR(mesh_bounds(again->mesh()).max().x(), 0.08, 1e-6);
 }
 
 TEST_F(MeshCacheTest, ScaleAndContentChangeTheKey) {
@@ -190,32 +190,32 @@ TEST_F(MeshCacheTest, ScaleAndContentChangeTheKey) {
   EXPECT_EQ(k1->hex().find_first_not_of("0123456789abcdef"), std::string::npos);
 
   MeshCache cache(cache_dir_);
-  const CachedMesh m1 = cache.load(mesh_file_, Eigen::Vector3d::Ones());
-  const CachedMesh mm = cache.load(mesh_file_, Eigen::Vector3d::Constant(0.001));
-  EXPECT_EQ(m1.outcome, CacheOutcome::Miss);
-  EXPECT_EQ(mm.outcome, CacheOutcome::Miss);
-  EXPECT_NE(m1.cache_file, mm.cache_file);
-  EXPECT_EQ(m1.cache_file, cache.file_for(*k1));
-  EXPECT_EQ(mm.cache_file, cache.file_for(*k_mm));
-  EXPECT_NEAR(mesh_bounds(mm.mesh()).max().x(), 0.04e-3, 1e-9);
+  const Result<CachedMesh, MeshLoadError> m1 = cache.load(mesh_file_, Eigen::Vector3d::Ones());
+  const Result<CachedMesh, MeshLoadError> mm = cache.load(mesh_file_, Eigen::Vector3d::Constant(0.001));
+  EXPECT_EQ(m1->outcome, CacheOutcome::Miss);
+  EXPECT_EQ(mm->outcome, CacheOutcome::Miss);
+  EXPECT_NE(m1->cache_file, mm->cache_file);
+  EXPECT_EQ(m1->cache_file, cache.file_for(*k1));
+  EXPECT_EQ(mm->cache_file, cache.file_for(*k_mm));
+  EXPECT_NEAR(mesh_bounds(mm->mesh()).max().x(), 0.04e-3, 1e-9);
 
   // New content under the same name: a new key, never the old entry.
   test::write_binary_ply(mesh_file_, make_sphere_mesh(0.04, 3));
   const auto k2 = mesh_cache_key(mesh_file_, Eigen::Vector3d::Ones());
   ASSERT_TRUE(k2);
   EXPECT_NE(*k1, *k2);
-  const CachedMesh changed = cache.load(mesh_file_, Eigen::Vector3d::Ones());
-  EXPECT_EQ(changed.outcome, CacheOutcome::Miss);
-  EXPECT_EQ(changed.mesh().triangle_count(), 1280u);
+  const Result<CachedMesh, MeshLoadError> changed = cache.load(mesh_file_, Eigen::Vector3d::Ones());
+  EXPECT_EQ(changed->outcome, CacheOutcome::Miss);
+  EXPECT_EQ(changed->mesh().triangle_count(), 1280u);
 }
 
 TEST_F(MeshCacheTest, DisabledCacheStillLoads) {
   MeshCache cache(std::nullopt);
   EXPECT_FALSE(cache.writable());
-  const CachedMesh r = cache.load(mesh_file_, Eigen::Vector3d::Ones());
+  const Result<CachedMesh, MeshLoadError> r = cache.load(mesh_file_, Eigen::Vector3d::Ones());
   ASSERT_TRUE(r.ok());
-  EXPECT_EQ(r.outcome, CacheOutcome::Disabled);
-  EXPECT_EQ(r.mesh().triangle_count(), 5120u);
+  EXPECT_EQ(r->outcome, CacheOutcome::Disabled);
+  EXPECT_EQ(r->mesh().triangle_count(), 5120u);
   EXPECT_FALSE(std::filesystem::exists(cache_dir_));
 }
 
@@ -224,18 +224,17 @@ TEST_F(MeshCacheTest, UnusableCacheFolderFallsBackToLoading) {
   test::write_text(dir_ / "blocker", "x");
   MeshCache cache(dir_ / "blocker" / "cache");
   EXPECT_FALSE(cache.writable());
-  const CachedMesh r = cache.load(mesh_file_, Eigen::Vector3d::Ones());
+  const Result<CachedMesh, MeshLoadError> r = cache.load(mesh_file_, Eigen::Vector3d::Ones());
   ASSERT_TRUE(r.ok());
-  EXPECT_FALSE(r.written);
-  EXPECT_EQ(cache.load(mesh_file_, Eigen::Vector3d::Ones()).outcome, CacheOutcome::Miss);
+  EXPECT_FALSE(r->written);
+  EXPECT_EQ(cache.load(mesh_file_, Eigen::Vector3d::Ones())->outcome, CacheOutcome::Miss);
 }
 
 TEST_F(MeshCacheTest, LoadErrorsPassThrough) {
   MeshCache cache(cache_dir_);
-  const CachedMesh r = cache.load(dir_ / "missing.stl", Eigen::Vector3d::Ones());
+  const Result<CachedMesh, MeshLoadError> r = cache.load(dir_ / "missing.stl", Eigen::Vector3d::Ones());
   ASSERT_FALSE(r.ok());
-  ASSERT_TRUE(r.error);
-  EXPECT_EQ(r.error->reason, "file not found");
+  EXPECT_EQ(r.error().reason, "file not found");
   EXPECT_EQ(cache.stats().writes, 0u);
 }
 
@@ -247,9 +246,9 @@ TEST_F(MeshCacheTest, LargeMeshesReportProgress) {
   std::vector<std::pair<std::string, double>> calls;
   auto record = [&](std::string_view what, double f) { calls.emplace_back(std::string(what), f); };
 
-  const CachedMesh cold = cache.load(big_file, Eigen::Vector3d::Ones(), record);
+  const Result<CachedMesh, MeshLoadError> cold = cache.load(big_file, Eigen::Vector3d::Ones(), record);
   ASSERT_TRUE(cold.ok());
-  ASSERT_GE(cold.mesh().triangle_count(), kProgressMinTriangles);
+  ASSERT_GE(cold->mesh().triangle_count(), kProgressMinTriangles);
   auto saw = [&](std::string_view prefix, double f) {
     return std::any_of(calls.begin(), calls.end(), [&](const auto& c) { return c.first.starts_with(prefix) && c.second == f; });
   };
@@ -262,8 +261,8 @@ TEST_F(MeshCacheTest, LargeMeshesReportProgress) {
   }
 
   calls.clear();
-  const CachedMesh warm = cache.load(big_file, Eigen::Vector3d::Ones(), record);
-  EXPECT_EQ(warm.outcome, CacheOutcome::Hit);
+  const Result<CachedMesh, MeshLoadError> warm = cache.load(big_file, Eigen::Vector3d::Ones(), record);
+  EXPECT_EQ(warm->outcome, CacheOutcome::Hit);
   EXPECT_TRUE(saw("reading cached BVH of big.ply", 0.0));
   EXPECT_TRUE(saw("reading cached BVH of big.ply", 1.0));
 

@@ -20,41 +20,41 @@ TEST(PlannerSettings, DefaultsAreValid) {
 }
 
 TEST(PlannerSettings, ReadsEitherUnit) {
-  const PlannerSettingsParse p = planner_settings_from_map({{"max_linear_speed_mps", "0.2"},
+  const auto p = planner_settings_from_map({{"max_linear_speed_mps", "0.2"},
                                                             {"max_angular_speed_degps", "90"},
                                                             {"step_angle_deg", "45"},
                                                             {"stop_interval_mm", "20"},
                                                             {"arm_length_m", " 0.5 "},
                                                             {"command_period_ms", "50"}});
-  ASSERT_TRUE(p.ok()) << p.errors.front();
-  EXPECT_DOUBLE_EQ(p.settings.max_linear_speed_mps, 0.2);
-  EXPECT_DOUBLE_EQ(p.settings.max_angular_speed_radps, 90.0 * kDeg);
-  EXPECT_DOUBLE_EQ(p.settings.step_angle_rad, 45.0 * kDeg);
-  EXPECT_DOUBLE_EQ(p.settings.stop_interval_m, 0.02);
-  EXPECT_DOUBLE_EQ(p.settings.arm_length_m, 0.5);
-  EXPECT_DOUBLE_EQ(p.settings.command_period_s, 0.05);
+  ASSERT_TRUE(p.ok()) << p.error_text();
+  EXPECT_DOUBLE_EQ(p->max_linear_speed_mps, 0.2);
+  EXPECT_DOUBLE_EQ(p->max_angular_speed_radps, 90.0 * kDeg);
+  EXPECT_DOUBLE_EQ(p->step_angle_rad, 45.0 * kDeg);
+  EXPECT_DOUBLE_EQ(p->stop_interval_m, 0.02);
+  EXPECT_DOUBLE_EQ(p->arm_length_m, 0.5);
+  EXPECT_DOUBLE_EQ(p->command_period_s, 0.05);
 }
 
 TEST(PlannerSettings, ReportsEveryBadEntry) {
-  const PlannerSettingsParse p =
+  const auto p =
       planner_settings_from_map({{"max_speed", "1"}, {"stop_interval_m", "abc"}, {"arm_length_m", "0.5x"}});
-  ASSERT_EQ(p.errors.size(), 3u);
-  EXPECT_EQ(p.errors[0], "planner setting 'arm_length_m': '0.5x' is not a number");
-  EXPECT_TRUE(p.errors[1].starts_with("unknown planner setting 'max_speed' (known: arm_length_m|mm, "));
-  EXPECT_EQ(p.errors[2], "planner setting 'stop_interval_m': 'abc' is not a number");
+  ASSERT_EQ(p.error().size(), 3u);
+  EXPECT_EQ(p.error()[0], "planner setting 'arm_length_m': '0.5x' is not a number");
+  EXPECT_TRUE(p.error()[1].starts_with("unknown planner setting 'max_speed' (known: arm_length_m|mm, "));
+  EXPECT_EQ(p.error()[2], "planner setting 'stop_interval_m': 'abc' is not a number");
 }
 
 TEST(PlannerSettings, ValidationNamesTheSetting) {
-  const PlannerSettingsParse angle = planner_settings_from_map({{"step_angle_deg", "120"}});
-  ASSERT_EQ(angle.errors.size(), 1u);
-  EXPECT_EQ(angle.errors[0], "step_angle_deg must be in (0, 90], got 120.000000");
-  const PlannerSettingsParse speed = planner_settings_from_map({{"max_linear_speed_mps", "-1"}});
-  ASSERT_EQ(speed.errors.size(), 1u);
-  EXPECT_EQ(speed.errors[0], "max_linear_speed_mps must be > 0, got -1.000000");
+  const auto angle = planner_settings_from_map({{"step_angle_deg", "120"}});
+  ASSERT_EQ(angle.error().size(), 1u);
+  EXPECT_EQ(angle.error()[0], "step_angle_deg must be in (0, 90], got 120.000000");
+  const auto speed = planner_settings_from_map({{"max_linear_speed_mps", "-1"}});
+  ASSERT_EQ(speed.error().size(), 1u);
+  EXPECT_EQ(speed.error()[0], "max_linear_speed_mps must be > 0, got -1.000000");
   // Robot 0.225 + human 0.5 + margin 0.05 > d' = 0.675: the target would be in the cylinder.
-  const PlannerSettingsParse overlap = planner_settings_from_map({{"human_radius_m", "0.5"}});
-  ASSERT_EQ(overlap.errors.size(), 1u);
-  EXPECT_TRUE(overlap.errors[0].starts_with("robot_radius_m + human_radius_m + safety_margin_m"));
+  const auto overlap = planner_settings_from_map({{"human_radius_m", "0.5"}});
+  ASSERT_EQ(overlap.error().size(), 1u);
+  EXPECT_TRUE(overlap.error()[0].starts_with("robot_radius_m + human_radius_m + safety_margin_m"));
 }
 
 TEST(PlannerSettings, PlannerKindNames) {

@@ -54,7 +54,10 @@ def test_read_scene_string_resolves_against_the_given_file(tmp_path):
 <scene version="1" name="ball" unit="m">
   <object name="ball"><material stiffness_N_per_m="500"/><sphere radius="0.1"/></object>
 </scene>"""
-    compiled = mhd.compile_scene(mhd.read_scene_string(xml, os.path.join(tmp_path, "ball.xml")))
+    scene = mhd.read_scene_string(xml, os.path.join(tmp_path, "ball.xml"))
+    assert scene.max_force_N is None  # absent: the device's limit
+    compiled = mhd.compile_scene(scene)
+    assert compiled.max_force_N == 8.5  # no device here: the thesis arm's
     assert compiled.name == "ball"
     assert compiled.object_names == ["ball"]
     assert compiled.triangle_count > 100

@@ -43,9 +43,9 @@ class TryByHand : public ::testing::Test {
   void SetUp() override {
     if (const std::string e = check_display(); !e.empty()) GTEST_SKIP() << e << " (ctest runs this under xvfb-run)";
     const std::filesystem::path file = std::filesystem::path(MHD_SOURCE_DIR) / "scenes/cube_wall.xml";
-    const ViewerSceneResult loaded = load_viewer_scene(file);
-    ASSERT_TRUE(loaded.scene);
-    scene_ = *loaded.scene;
+    const Result<ViewerScene, std::vector<std::string>> loaded = load_viewer_scene(file);
+    ASSERT_TRUE(loaded.ok()) << loaded.error_text();
+    scene_ = *loaded;
     CompileOptions compile;
     compile.use_cache = false;
     Result<std::unique_ptr<CompiledScene>> compiled = compile_scene(scene_.scene, compile);
@@ -62,9 +62,9 @@ class TryByHand : public ::testing::Test {
     o.view.default_head_m = Eigen::Vector3d(0.0, 1.6, 0.3);
     o.view.look_at_m = Eigen::Vector3d(0.0, 1.2, -0.5);
     o.p_W_start_m = Eigen::Vector3d(0.0, 1.25, -0.5);  // 5 cm over the top face's centre
-    HandSession::OpenResult opened = HandSession::open(scene_, *compiled_, o);
-    ASSERT_TRUE(opened.session) << opened.error;
-    session_ = std::move(opened.session);
+    Result<std::unique_ptr<HandSession>, std::string> opened = HandSession::open(scene_, *compiled_, o);
+    ASSERT_TRUE(opened.ok()) << opened.error_text();
+    session_ = std::move(opened).value();
     session_->frame();
   }
 

@@ -37,12 +37,12 @@ class Render : public ::testing::Test {
 
   static RgbaImage render(const ViewerScene& scene, const ViewerOptions& options,
                           std::shared_ptr<StateSource> source = nullptr, std::vector<EyeView>* views = nullptr) {
-    StereoViewer::OpenResult r = StereoViewer::open(scene, options, std::move(source));
-    EXPECT_TRUE(r.viewer) << r.error;
-    if (!r.viewer) return {};
-    r.viewer->frame();
-    RgbaImage image = r.viewer->frame_and_capture();
-    if (views) *views = r.viewer->views();
+    Result<std::unique_ptr<StereoViewer>, std::string> r = StereoViewer::open(scene, options, std::move(source));
+    EXPECT_TRUE(r.ok()) << r.error_text();
+    if (!r.ok()) return {};
+    r.value()->frame();
+    RgbaImage image = r.value()->frame_and_capture();
+    if (views) *views = r.value()->views();
     return image;
   }
 };
@@ -50,7 +50,7 @@ class Render : public ::testing::Test {
 ViewerScene scene_from(std::string_view xml) {
   Result<SceneDescription> read = read_scene_string(xml, kSource / "scenes/test_scene.xml");
   EXPECT_TRUE(read.ok()) << (read.diagnostics().empty() ? "" : read.diagnostics().front().to_string());
-  return ViewerScene{read.ok() ? *read : SceneDescription{}, std::nullopt};
+  return ViewerScene{read.ok() ? *read : SceneDescription{}, std::nullopt, {}};
 }
 
 /// Pixels of `a` that differ from `b` (any channel by more than 24), per half.
@@ -81,16 +81,16 @@ Difference difference(const RgbaImage& a, const RgbaImage& b) {
 }
 
 TEST_F(Render, BothHalvesShowTheDolphin) {
-  const ViewerSceneResult loaded = load_viewer_scene(kSource / "scenes/dolphin.xml");
-  ASSERT_TRUE(loaded.scene);
-  ViewerScene without = *loaded.scene;
+  const Result<ViewerScene, std::vector<std::string>> loaded = load_viewer_scene(kSource / "scenes/dolphin.xml");
+  ASSERT_TRUE(loaded.ok()) << loaded.error_text();
+  ViewerScene without = *loaded;
   std::erase_if(without.scene.objects, [](const ObjectDescription& o) { return o.name == "dolphin"; });
   ASSERT_EQ(without.scene.objects.size(), 1u);
   ViewerOptions o = small_options();
   // The same head for both images (the default one depends on the objects' bounds).
   o.default_head_m = Eigen::Vector3d(0.0, 1.7, 1.0);
   o.look_at_m = Eigen::Vector3d(0.0, 0.8, -0.7);
-  const RgbaImage with_dolphin = render(*loaded.scene, o);
+  const RgbaImage with_dolphin = render(*loaded, o);
   const RgbaImage floor_only = render(without, o);
   ASSERT_EQ(with_dolphin.width, 640);
   const Difference d = difference(with_dolphin, floor_only);
@@ -110,14 +110,14 @@ void check_parallax(const ViewerOptions& o, double depth_m, double radius_m, dou
   const ViewerScene empty = scene_from("<scene version=\"1\">" + head +
                                        "<object name=\"far\" material=\"smooth\"><sphere radius=\"0.01\"/><pose position=\"0 -50 0\"/></object>"
                                        "</scene>");
-  StereoViewer::OpenResult r = StereoViewer::open(ball, o, nullptr);
-  ASSERT_TRUE(r.viewer) << r.error;
-  const RgbaImage with_ball = r.viewer->frame_and_capture();
-  const std::vector<EyeView> views = r.viewer->views();
-  r.viewer.reset();
-  StereoViewer::OpenResult e = StereoViewer::open(empty, o, nullptr);
-  ASSERT_TRUE(e.viewer) << e.error;
-  const RgbaImage background = e.viewer->frame_and_capture();
+  Result<std::unique_ptr<StereoViewer>, std::string> r = StereoViewer::open(ball, o, nullptr);
+  ASSERT_TRUE(r.ok()) << r.error_text();
+  const RgbaImage with_ball = r.value()->frame_and_capture();
+  const std::vector<EyeView> views = r.value()->views();
+  r.value().reset();
+  Result<std::unique_ptr<StereoViewer>, std::string> e = StereoViewer::open(empty, o, nullptr);
+  ASSERT_TRUE(e.ok()) << e.error_text();
+  const RgbaImage background = e.value()->frame_and_capture();
   const Difference d = difference(with_ball, background);
   ASSERT_GT(d.left, 50);
   ASSERT_GT(d.right, 50);
@@ -193,8 +193,8 @@ TEST_F(Render, RigIsDrawnWhereTheStateSaysAndTheHeadModelDoesNotBlockTheEyes) {
 }
 
 TEST_F(Render, MonoUsesTheWholeWidthAndRunWritesTheScreenshot) {
-  const ViewerSceneResult loaded = load_viewer_scene(kSource / "scenes/dolphin.xml");
-  ASSERT_TRUE(loaded.scene);
+  const Result<ViewerScene, std::vector<std::string>> loaded = load_viewer_scene(kSource / "scenes/dolphin.xml");
+  ASSERT_TRUE(loaded.ok()) << loaded.error_text();
   ViewerOptions o = small_options();
   o.stereo = false;
   o.frames = 3;
@@ -202,14 +202,14 @@ TEST_F(Render, MonoUsesTheWholeWidthAndRunWritesTheScreenshot) {
   std::filesystem::create_directories(out.parent_path());
   std::filesystem::remove(out);
   o.screenshot_png = out.string();
-  StereoViewer::OpenResult r = StereoViewer::open(*loaded.scene, o, nullptr);
-  ASSERT_TRUE(r.viewer) << r.error;
-  ASSERT_EQ(r.viewer->views().size(), 0u) << "no frame drawn yet";
+  Result<std::unique_ptr<StereoViewer>, std::string> r = StereoViewer::open(*loaded, o, nullptr);
+  ASSERT_TRUE(r.ok()) << r.error_text();
+  ASSERT_EQ(r.value()->views().size(), 0u) << "no frame drawn yet";
   const std::atomic<bool> stop{false};
-  EXPECT_EQ(r.viewer->run(stop), "");
-  EXPECT_EQ(r.viewer->frames_drawn(), 3u);
-  ASSERT_EQ(r.viewer->views().size(), 1u);
-  EXPECT_EQ(r.viewer->views()[0].width, 640);
+  EXPECT_EQ(r.value()->run(stop), "");
+  EXPECT_EQ(r.value()->frames_drawn(), 3u);
+  ASSERT_EQ(r.value()->views().size(), 1u);
+  EXPECT_EQ(r.value()->views()[0].width, 640);
   RgbaImage image;
   ASSERT_EQ(read_png(out, image), "");
   EXPECT_EQ(image.width, 640);

@@ -32,47 +32,47 @@ std::filesystem::path scratch_dir() {
 TEST(ViewerScene, SceneWithoutRigFramesLoadsWithANote) {
   const std::filesystem::path file = scratch_dir() / "no_rig.xml";
   std::ofstream(file) << R"(<scene version="1"><object name="ball"><material stiffness_N_per_m="500"/><sphere radius="0.1"/></object></scene>)";
-  const ViewerSceneResult r = load_viewer_scene(file);
-  ASSERT_TRUE(r.scene) << (r.errors.empty() ? "" : r.errors.front());
-  EXPECT_FALSE(r.scene->rig);
-  ASSERT_EQ(r.notes.size(), 1u);
-  EXPECT_NE(r.notes[0].find("no rig frames"), std::string::npos);
+  const Result<ViewerScene, std::vector<std::string>> r = load_viewer_scene(file);
+  ASSERT_TRUE(r.ok()) << r.error_text();
+  EXPECT_FALSE(r->rig);
+  ASSERT_EQ(r->notes.size(), 1u);
+  EXPECT_NE(r->notes[0].find("no rig frames"), std::string::npos);
 }
 
 TEST(ViewerScene, RigFramesComeFromTheSceneOrARigFile) {
-  const ViewerSceneResult own = load_viewer_scene(kSource / "scenes/dolphin.xml");  // includes rigs/pomhi.xml
-  ASSERT_TRUE(own.scene);
-  EXPECT_TRUE(own.scene->rig);
-  EXPECT_TRUE(own.notes.empty());
-  EXPECT_EQ(own.scene->scene.objects.size(), 2u);
+  const Result<ViewerScene, std::vector<std::string>> own = load_viewer_scene(kSource / "scenes/dolphin.xml");  // includes rigs/pomhi.xml
+  ASSERT_TRUE(own.ok()) << own.error_text();
+  EXPECT_TRUE(own->rig);
+  EXPECT_TRUE(own->notes.empty());
+  EXPECT_EQ(own->scene.objects.size(), 2u);
   const std::filesystem::path file = scratch_dir() / "no_rig.xml";
   std::ofstream(file) << R"(<scene version="1"><object name="ball"><material stiffness_N_per_m="500"/><sphere radius="0.1"/></object></scene>)";
-  const ViewerSceneResult given = load_viewer_scene(file, kSource / "scenes/rigs/pomhi.xml");
-  ASSERT_TRUE(given.scene);
-  EXPECT_TRUE(given.scene->rig);
+  const Result<ViewerScene, std::vector<std::string>> given = load_viewer_scene(file, kSource / "scenes/rigs/pomhi.xml");
+  ASSERT_TRUE(given.ok()) << given.error_text();
+  EXPECT_TRUE(given->rig);
 }
 
 TEST(ViewerScene, MissingFileAndRigFileWithoutFramesAreErrors) {
-  const ViewerSceneResult missing = load_viewer_scene(kSource / "scenes/no_such_scene.xml");
-  EXPECT_FALSE(missing.scene);
-  ASSERT_FALSE(missing.errors.empty());
-  EXPECT_NE(missing.errors[0].find("no_such_scene.xml"), std::string::npos);
-  const ViewerSceneResult no_frames = load_viewer_scene(kSource / "scenes/dolphin.xml", kSource / "scenes/bunny.xml");
-  EXPECT_FALSE(no_frames.scene);
-  ASSERT_EQ(no_frames.errors.size(), 1u);
-  EXPECT_NE(no_frames.errors[0].find("the rig file defines no rig frames"), std::string::npos);
+  const Result<ViewerScene, std::vector<std::string>> missing = load_viewer_scene(kSource / "scenes/no_such_scene.xml");
+  ASSERT_FALSE(missing.ok());
+  ASSERT_FALSE(missing.error().empty());
+  EXPECT_NE(missing.error()[0].find("no_such_scene.xml"), std::string::npos);
+  const Result<ViewerScene, std::vector<std::string>> no_frames = load_viewer_scene(kSource / "scenes/dolphin.xml", kSource / "scenes/bunny.xml");
+  ASSERT_FALSE(no_frames.ok());
+  ASSERT_EQ(no_frames.error().size(), 1u);
+  EXPECT_NE(no_frames.error()[0].find("the rig file defines no rig frames"), std::string::npos);
 }
 
 TEST(SceneGraph, DolphinSceneHasBothObjectsAndBoundsWithoutTheFloor) {
   const Result<SceneDescription> read = read_scene_file(kSource / "scenes/dolphin.xml");
   ASSERT_TRUE(read.ok());
-  const SceneGraphResult g = build_scene_graph(*read);
-  ASSERT_TRUE(g.ok()) << g.errors.front();
-  EXPECT_EQ(g.root->getNumChildren(), 2u);
+  const Result<SceneGraph, std::vector<std::string>> g = build_scene_graph(*read);
+  ASSERT_TRUE(g.ok()) << g.error_text();
+  EXPECT_EQ(g->root->getNumChildren(), 2u);
   // The 2 m dolphin around (0, 0.9, -0.7); the 6 m floor is left out of the bounds.
-  EXPECT_NEAR(g.objects_bounds_W.center().y(), 0.9, 0.05);
-  EXPECT_NEAR(g.objects_bounds_W.center().z(), -0.7, 0.05);
-  EXPECT_LT(g.objects_bounds_W.sizes().x(), 2.5);
+  EXPECT_NEAR(g->objects_bounds_W.center().y(), 0.9, 0.05);
+  EXPECT_NEAR(g->objects_bounds_W.center().z(), -0.7, 0.05);
+  EXPECT_LT(g->objects_bounds_W.sizes().x(), 2.5);
 }
 
 TEST(SceneGraph, AMeshThatCannotBeLoadedIsNamed) {
@@ -83,23 +83,22 @@ TEST(SceneGraph, AMeshThatCannotBeLoadedIsNamed) {
          <object name="ball"><material stiffness_N_per_m="500"/><sphere radius="0.1"/></object></scene>)",
       dir / "bad.xml");
   ASSERT_TRUE(read.ok()) << read.diagnostics().front().to_string();
-  const SceneGraphResult g = build_scene_graph(*read);
-  ASSERT_EQ(g.errors.size(), 1u);
-  EXPECT_EQ(g.errors[0].rfind("object 'bad': mesh file '", 0), 0u) << g.errors[0];
-  EXPECT_EQ(g.root->getNumChildren(), 1u) << "the good object is still there";
+  const Result<SceneGraph, std::vector<std::string>> g = build_scene_graph(*read);
+  ASSERT_EQ(g.error().size(), 1u);
+  EXPECT_EQ(g.error()[0].rfind("object 'bad': mesh file '", 0), 0u) << g.error()[0];
 }
 
 TEST(DemoState, DolphinBaseFromItsSimOmni3AndHipInFrontOfTheWorkspaceCentre) {
-  const ViewerSceneResult loaded = load_viewer_scene(kSource / "scenes/dolphin.xml");
-  ASSERT_TRUE(loaded.scene && loaded.scene->rig);
-  const RigState s = demo_rig_state(*loaded.scene);
-  const auto base = std::find_if(loaded.scene->scene.plugins.begin(), loaded.scene->scene.plugins.end(),
+  const Result<ViewerScene, std::vector<std::string>> loaded = load_viewer_scene(kSource / "scenes/dolphin.xml");
+  ASSERT_TRUE(loaded.ok() && loaded->rig);
+  const RigState s = demo_rig_state(*loaded);
+  const auto base = std::find_if(loaded->scene.plugins.begin(), loaded->scene.plugins.end(),
                                  [](const PluginDescription& p) { return p.name == "sim_omni3"; });
-  ASSERT_NE(base, loaded.scene->scene.plugins.end());
+  ASSERT_NE(base, loaded->scene.plugins.end());
   EXPECT_DOUBLE_EQ(s.base.x_m, std::stod(base->params.at("x_m")));
   EXPECT_DOUBLE_EQ(s.base.z_m, std::stod(base->params.at("z_m")));
   EXPECT_NEAR(s.base.heading_rad, std::stod(base->params.at("heading_deg")) * M_PI / 180.0, 1e-12);
-  const Rig& rig = *loaded.scene->rig;
+  const Rig& rig = *loaded->rig;
   const Eigen::Vector3d centre_W =
       rig.X_W_phantom(rig.X_W_robot_from_base(s.base)) * rig.device().usable_workspace().center_P_m();
   EXPECT_TRUE(s.p_W_hip_m.isApprox(centre_W + Eigen::Vector3d(0.0, 0.08, 0.15), 1e-12));
@@ -136,28 +135,28 @@ class NoDisplay : public ::testing::Test {
 };
 
 TEST_F(NoDisplay, OpenWithoutDisplaySaysSoAndReturnsNoViewer) {
-  const ViewerSceneResult scene = load_viewer_scene(kSource / "scenes/dolphin.xml");
-  ASSERT_TRUE(scene.scene);
+  const Result<ViewerScene, std::vector<std::string>> scene = load_viewer_scene(kSource / "scenes/dolphin.xml");
+  ASSERT_TRUE(scene.ok()) << scene.error_text();
   ViewerOptions options;
   options.offscreen = true;
   unsetenv("DISPLAY");
-  StereoViewer::OpenResult r = StereoViewer::open(*scene.scene, options, nullptr);
-  EXPECT_FALSE(r.viewer);
-  EXPECT_EQ(r.error.rfind("no display: DISPLAY is not set", 0), 0u) << r.error;
+  Result<std::unique_ptr<StereoViewer>, std::string> r = StereoViewer::open(*scene, options, nullptr);
+  EXPECT_FALSE(r.ok());
+  EXPECT_EQ(r.error().rfind("no display: DISPLAY is not set", 0), 0u) << r.error();
   setenv("DISPLAY", ":31999", 1);  // nothing listens there
-  r = StereoViewer::open(*scene.scene, options, nullptr);
-  EXPECT_FALSE(r.viewer);
-  EXPECT_EQ(r.error, "no display: cannot open X display ':31999' (is the X server or Xvfb running?)");
+  r = StereoViewer::open(*scene, options, nullptr);
+  EXPECT_FALSE(r.ok());
+  EXPECT_EQ(r.error(), "no display: cannot open X display ':31999' (is the X server or Xvfb running?)");
 }
 
 TEST(StereoViewerOpen, BadOptionsAreRefusedBeforeAnythingElse) {
-  const ViewerSceneResult scene = load_viewer_scene(kSource / "scenes/dolphin.xml");
-  ASSERT_TRUE(scene.scene);
+  const Result<ViewerScene, std::vector<std::string>> scene = load_viewer_scene(kSource / "scenes/dolphin.xml");
+  ASSERT_TRUE(scene.ok()) << scene.error_text();
   ViewerOptions options;
   options.ipd_m = -1.0;
-  const StereoViewer::OpenResult r = StereoViewer::open(*scene.scene, options, nullptr);
-  EXPECT_FALSE(r.viewer);
-  EXPECT_EQ(r.error, "ipd_m must be in [0, 0.2], got -1");
+  const Result<std::unique_ptr<StereoViewer>, std::string> r = StereoViewer::open(*scene, options, nullptr);
+  EXPECT_FALSE(r.ok());
+  EXPECT_EQ(r.error(), "ipd_m must be in [0, 0.2], got -1");
 }
 
 }  // namespace

@@ -46,10 +46,10 @@ ServerRun run_dolphin(double duration_s, const fs::path& screenshot) {
   ServerOptions options;
   options.duration_s = duration_s;
   options.plugin_path = {MHD_PLUGIN_BUILD_DIR};
-  HapticServerBuild build = HapticServer::open(scene, *compiled.value(), options);
-  for (const Diagnostic& d : build.diagnostics) ADD_FAILURE() << d.to_string();
-  if (!build.server) return run;
-  run.report = build.server->run();
+  Result<OpenedServer> build = HapticServer::open(scene, *compiled.value(), options);
+  for (const Diagnostic& d : build.diagnostics()) ADD_FAILURE() << d.to_string();
+  if (!build.ok()) return run;
+  run.report = build->server->run();
   run.ran = true;
   return run;
 }

@@ -62,19 +62,19 @@ TEST(DdsRender, TheHipIsDrawnWhereThePublishedStatePutsItAndStaysAfterThePublish
       "<sphere radius=\"0.01\"/><pose position=\"0 -50 0\"/></object></scene>",
       kSource / "scenes/test_scene.xml");
   ASSERT_TRUE(read.ok());
-  const ViewerScene scene{*read, std::nullopt};
+  const ViewerScene scene{*read, std::nullopt, {}};
   ViewerOptions view;
   view.offscreen = true;
   view.width = 640;
   view.height = 320;
   view.max_frame_rate_Hz = 0.0;
   view.show_grid = false;
-  StereoViewer::OpenResult r = StereoViewer::open(scene, view, source);
-  ASSERT_TRUE(r.viewer) << r.error;
-  r.viewer->frame();
-  const RgbaImage image = r.viewer->frame_and_capture();
-  ASSERT_EQ(r.viewer->views().size(), 2u);
-  for (const EyeView& v : r.viewer->views()) {
+  Result<std::unique_ptr<StereoViewer>, std::string> r = StereoViewer::open(scene, view, source);
+  ASSERT_TRUE(r.ok()) << r.error_text();
+  r.value()->frame();
+  const RgbaImage image = r.value()->frame_and_capture();
+  ASSERT_EQ(r.value()->views().size(), 2u);
+  for (const EyeView& v : r.value()->views()) {
     Eigen::Vector2d hip;
     ASSERT_TRUE(project_to_pixel(v, s.p_W_hip_m, hip));
     const std::uint8_t* h = image.pixel(static_cast<int>(hip.x()), static_cast<int>(hip.y()));

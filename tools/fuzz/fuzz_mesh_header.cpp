@@ -91,15 +91,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const mhd::MeshHeaderCheck header =
       mhd::check_mesh_header(bytes.substr(0, mhd::kMeshHeaderBytes), bytes.size(), file.extension().string());
   if (!header.ok()) {
-    if (header.claimed_faces) violated("a refused header claims faces");
-    if (!header.error.starts_with("PLY header") && !header.error.starts_with("binary STL")) {
-      violated("a header refusal without its format: " + header.error);
+    if (!header.error().starts_with("PLY header") && !header.error().starts_with("binary STL")) {
+      violated("a header refusal without its format: " + header.error());
     }
-  } else if (header.claimed_faces) {
+  } else if (header->claimed_faces) {
     // The PLY magic wins over the name, as in assimp.
     if (mhd::has_ply_magic(bytes)) {
-      if (*header.claimed_faces > bytes.size()) violated("a PLY accepted with more faces than bytes");
-    } else if (file.extension() != ".stl" || 84 + 50 * *header.claimed_faces != bytes.size()) {
+      if (*header->claimed_faces > bytes.size()) violated("a PLY accepted with more faces than bytes");
+    } else if (file.extension() != ".stl" || 84 + 50 * *header->claimed_faces != bytes.size()) {
       violated("a binary STL accepted with the wrong size, or a count from neither PLY nor STL");
     }
   }

@@ -143,7 +143,7 @@ std::size_t triangles_of(const mhd::ObjectDescription& object) {
 /// Checks an accepted scene; returns whether it is cheap and self-contained enough to
 /// compile, and (through `bad_mesh`) whether it names a sandbox mesh that cannot load.
 bool check_scene(const mhd::SceneDescription& scene, bool& bad_mesh) {
-  if (!positive_finite(scene.haptics.max_force_N) || !positive_finite(scene.haptics.update_rate_Hz)) {
+  if ((scene.haptics.max_force_N && !positive_finite(*scene.haptics.max_force_N)) || !positive_finite(scene.haptics.update_rate_Hz)) {
     violated("haptics values not positive and finite");
   }
   for (const auto& [name, material] : scene.materials) {

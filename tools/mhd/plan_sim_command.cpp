@@ -45,9 +45,9 @@ int run(const PlanSimOptions& o) {
     if (eq == std::string::npos || eq == 0) return fail("--set expects NAME=VALUE, got '" + s + "'");
     values[s.substr(0, eq)] = s.substr(eq + 1);
   }
-  const mhd::PlannerSettingsParse parsed = mhd::planner_settings_from_map(values);
+  const auto parsed = mhd::planner_settings_from_map(values);
   if (!parsed.ok()) {
-    for (const std::string& e : parsed.errors) fmt::print(stderr, "mhd plan-sim: error: {}\n", e);
+    for (const std::string& e : parsed.error()) fmt::print(stderr, "mhd plan-sim: error: {}\n", e);
     return 1;
   }
   std::vector<mhd::PlannerKind> kinds;
@@ -76,7 +76,7 @@ int run(const PlanSimOptions& o) {
     for (const double facing : o.facing_deg) {
       for (const double v : o.v_mps) {
         for (const double w : o.omega_degps) {
-          mhd::PlannerSettings settings = parsed.settings;
+          mhd::PlannerSettings settings = *parsed;
           settings.max_linear_speed_mps = v;
           settings.max_angular_speed_radps = w * kDeg;
           if (const auto errors = mhd::validate(settings); !errors.empty()) return fail(errors.front());

@@ -114,18 +114,18 @@ int run(const RunOptions& opt) {
     options.status_interval_s = tty ? 0.2 : 1.0;
   }
 
-  mhd::HapticServerBuild build = mhd::HapticServer::open(*read, scene, std::move(options));
-  for (const auto& d : build.diagnostics) fmt::print(stderr, "{}\n", d.to_string());
-  for (const auto& w : build.warnings) {
+  mhd::Result<mhd::OpenedServer> build = mhd::HapticServer::open(*read, scene, std::move(options));
+  for (const auto& d : build.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
+  if (!build.ok()) return 1;
+  for (const auto& w : build->warnings) {
     fmt::print(stderr, "{}{}: warning: {}\n", w.where.file, w.where.line > 0 ? fmt::format(":{}", w.where.line) : "",
                w.message);
   }
-  if (!build.server) return 1;
   const double load_s = std::chrono::duration<double>(Clock::now() - t0).count();
   try {
     fmt::print("scene {}: {} objects, {} triangles, plugins open after {:.3f} s; haptic loop at {:.0f} Hz{}\n",
                opt.scene, scene.world.object_count(), scene.triangle_count, load_s,
-               build.server->settings().haptic_rate_hz,
+               build->server->settings().haptic_rate_hz,
                opt.duration_s > 0.0 ? fmt::format(" for {} s", opt.duration_s) : std::string(" until Ctrl-C"));
     std::fflush(stdout);
   } catch (const std::exception&) {
@@ -137,10 +137,10 @@ int run(const RunOptions& opt) {
     std::ofstream meta(opt.record + ".meta");
     meta << "scene=" << std::filesystem::absolute(opt.scene).lexically_normal().string() << "\n";
   }
-  mhd::cli::guard_server(build.server.get());
+  mhd::cli::guard_server(build->server.get());
   const mhd::ServerReport r = [&] {
     try {
-      return build.server->run();
+      return build->server->run();
     } catch (...) {
       std::terminate();  // the last gasp, naming the exception (run_signals.h)
     }

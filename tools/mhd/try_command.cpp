@@ -42,10 +42,12 @@ int run_try(TryOptions& o) {
     script = std::move(read).value();
   }
   // The scene's objects and materials only: its plugins and rig frames are never opened.
-  const v::ViewerSceneResult loaded = v::load_viewer_scene(o.scene);
-  for (const std::string& e : loaded.errors) fmt::print(stderr, "mhd try: {}\n", e);
-  if (!loaded.scene) return 1;
-  v::ViewerScene scene{loaded.scene->scene, std::nullopt};
+  const mhd::Result<v::ViewerScene, std::vector<std::string>> loaded = v::load_viewer_scene(o.scene);
+  if (!loaded.ok()) {
+    for (const std::string& e : loaded.error()) fmt::print(stderr, "mhd try: {}\n", e);
+    return 1;
+  }
+  v::ViewerScene scene{loaded->scene, std::nullopt, {}};
   mhd::CompileOptions compile_options;
   compile_options.use_cache = !o.no_cache;
   const mhd::Result<std::unique_ptr<mhd::CompiledScene>> compiled = mhd::compile_scene(scene.scene, compile_options);
@@ -64,20 +66,22 @@ int run_try(TryOptions& o) {
     // A scripted screenshot depends on frame numbers only, not on how fast they come.
     view.max_frame_rate_Hz = 0.0;
   }
-  v::HandSession::OpenResult opened = v::HandSession::open(scene, *compiled.value(), options);
-  if (!opened.session) {
-    fmt::print(stderr, "mhd try: error: {}\n", opened.error);
+  mhd::Result<std::unique_ptr<v::HandSession>, std::string> opened =
+      v::HandSession::open(scene, *compiled.value(), options);
+  if (!opened.ok()) {
+    fmt::print(stderr, "mhd try: error: {}\n", opened.error());
     return 1;
   }
+  const std::unique_ptr<v::HandSession> session = std::move(opened).value();
   const std::atomic<bool> stop{false};
-  if (const std::string e = opened.session->run(script, stop); !e.empty()) {
+  if (const std::string e = session->run(script, stop); !e.empty()) {
     fmt::print(stderr, "mhd try: error: {}\n", e);
     return 1;
   }
-  const v::HandSample& s = opened.session->sample();
+  const v::HandSample& s = session->sample();
   fmt::print("{}: {} frames, {} ticks; HIP ({:.4f}, {:.4f}, {:.4f}) m, proxy ({:.4f}, {:.4f}, {:.4f}) m, "
              "force {:.3f} N, penetration {:.2f} mm, contact {}\n",
-             o.scene, opened.session->frames_drawn(), s.ticks, s.p_W_hip_m.x(), s.p_W_hip_m.y(), s.p_W_hip_m.z(),
+             o.scene, session->frames_drawn(), s.ticks, s.p_W_hip_m.x(), s.p_W_hip_m.y(), s.p_W_hip_m.z(),
              s.p_W_proxy_m.x(), s.p_W_proxy_m.y(), s.p_W_proxy_m.z(), s.force_W_N.norm(), 1e3 * s.penetration_m,
              s.in_contact ? "yes" : "no");
   if (!view.screenshot_png.empty()) {

@@ -46,11 +46,13 @@ std::optional<Eigen::Vector3d> vector3(const std::vector<double>& v) {
 
 void run_viewer(ViewerCommandOptions& o) {
   namespace v = mhd::viewer;
-  const v::ViewerSceneResult loaded =
+  const mhd::Result<v::ViewerScene, std::vector<std::string>> loaded =
       v::load_viewer_scene(o.scene, o.rig.empty() ? std::nullopt : std::optional<std::filesystem::path>(o.rig));
-  for (const std::string& e : loaded.errors) fmt::print(stderr, "mhd viewer: {}\n", e);
-  if (!loaded.scene) mhd::cli::exit_with(1);
-  for (const std::string& n : loaded.notes) spdlog::info("{}: {}", o.scene, n);
+  if (!loaded.ok()) {
+    for (const std::string& e : loaded.error()) fmt::print(stderr, "mhd viewer: {}\n", e);
+    mhd::cli::exit_with(1);
+  }
+  for (const std::string& n : loaded->notes) spdlog::info("{}: {}", o.scene, n);
 
   v::ViewerOptions& view = o.view;
   view.stereo = !o.mono;
@@ -88,21 +90,22 @@ void run_viewer(ViewerCommandOptions& o) {
   } else if (o.demo_state) {
     std::optional<mhd::BasePose> base;
     if (o.demo_base.size() == 3) base = mhd::BasePose{o.demo_base[0], o.demo_base[1], o.demo_base[2] * M_PI / 180.0};
-    source = std::make_shared<v::FixedStateSource>(v::demo_rig_state(*loaded.scene, base));
+    source = std::make_shared<v::FixedStateSource>(v::demo_rig_state(*loaded, base));
   }
 
-  v::StereoViewer::OpenResult opened = v::StereoViewer::open(*loaded.scene, view, source);
-  if (!opened.viewer) {
-    fmt::print(stderr, "mhd viewer: error: {}\n", opened.error);
+  mhd::Result<std::unique_ptr<v::StereoViewer>, std::string> opened = v::StereoViewer::open(*loaded, view, source);
+  if (!opened.ok()) {
+    fmt::print(stderr, "mhd viewer: error: {}\n", opened.error());
     mhd::cli::exit_with(1);
   }
+  const std::unique_ptr<v::StereoViewer> viewer = std::move(opened).value();
   const std::atomic<bool> stop{false};
-  if (const std::string e = opened.viewer->run(stop); !e.empty()) {
+  if (const std::string e = viewer->run(stop); !e.empty()) {
     fmt::print(stderr, "mhd viewer: error: {}\n", e);
     mhd::cli::exit_with(1);
   }
   if (!view.screenshot_png.empty()) {
-    fmt::print("{}: {} frames, {}x{} {} image written to {}\n", o.scene, opened.viewer->frames_drawn(), view.width,
+    fmt::print("{}: {} frames, {}x{} {} image written to {}\n", o.scene, viewer->frames_drawn(), view.width,
                view.height, view.stereo ? "stereo" : "mono", view.screenshot_png);
   }
 }

@@ -45,10 +45,10 @@ class OsgStereoPlugin {
       throw std::invalid_argument("the host gives no scene_file to draw");
     }
     const std::optional<std::string> rig_file = params.optional_text("rig_file");
-    viewer::ViewerSceneResult loaded = viewer::load_viewer_scene(
+    Result<viewer::ViewerScene, std::vector<std::string>> loaded = viewer::load_viewer_scene(
         host.scene_file, rig_file ? std::optional<std::filesystem::path>(*rig_file) : std::nullopt);
-    if (!loaded.scene) throw std::runtime_error(loaded.errors.empty() ? "cannot load the scene" : loaded.errors.front());
-    scene_ = std::move(*loaded.scene);
+    if (!loaded.ok()) throw std::runtime_error(loaded.error_text());
+    scene_ = std::move(loaded).value();
   }
   OsgStereoPlugin(const OsgStereoPlugin&) = delete;
   OsgStereoPlugin& operator=(const OsgStereoPlugin&) = delete;
@@ -99,13 +99,13 @@ class OsgStereoPlugin {
 
   /// The render thread: opens the viewer (reporting the outcome to start()), then draws.
   void render(std::promise<std::string> opened) {
-    viewer::StereoViewer::OpenResult r = viewer::StereoViewer::open(scene_, options_, slot_);
-    if (!r.viewer) {
-      opened.set_value(r.error);
+    Result<std::unique_ptr<viewer::StereoViewer>, std::string> r = viewer::StereoViewer::open(scene_, options_, slot_);
+    if (!r.ok()) {
+      opened.set_value(r.error());
       return;
     }
     opened.set_value({});
-    render_error_ = r.viewer->run(stop_render_);
+    render_error_ = r.value()->run(stop_render_);
   }
 
   /// Stops and joins the render thread; the error it ended with, if any.
