@@ -114,12 +114,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const mhd::MeshLoadError& error = loaded.error();
     if (error.reason.empty()) violated("an error without a reason");
     if (error.message().find(file.string()) == std::string::npos) violated("an error without the file");
-    if (!header.ok() && error.reason != header.error && !bytes.empty()) {
+    if (!header.ok() && error.reason != header.error() && !bytes.empty()) {
       violated("the loader refused a bad header differently: " + error.reason);
     }
     return 0;
   }
-  if (!header.ok()) violated("the loader accepted a refused header: " + header.error);
+  if (!header.ok()) violated("the loader accepted a refused header: " + header.error());
   const mhd::TriangleMesh& mesh = loaded->mesh;
   if (mesh.triangles.empty() || mesh.triangles.size() > kBudget) violated("triangle count out of range");
   for (const auto& t : mesh.triangles) {
