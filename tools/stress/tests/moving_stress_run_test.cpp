@@ -7,12 +7,12 @@
 
 #include "stress/moving_stress_run.h"
 
+#include "skipped_carry_check.h"
 #include "stress_test_scenes.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdio>
 #include <memory>
 #include <numbers>
 
@@ -109,23 +109,7 @@ TEST(MovingStress, ObjectsTeleportedWithoutTheCarryAreCaught) {
     const std::uint64_t key = name_key(turning ? "turning_cube_test/cube" : "moving_stress_test/box");
     MovingStressSettings s = turning ? turning_run() : box_run();
     s.strokes = 60;
-    s.fault_skip_carry = true;
-    const MovingStressReport r = stress_moving_object(*scene, 0, key, s);
-    EXPECT_GT(r.crossing_ticks + r.inside_ticks, 0U);
-    EXPECT_FALSE(r.clean());
-    ASSERT_FALSE(r.failures.empty());
-    EXPECT_EQ(r.push_ticks, 0U);  // nothing carried the proxy
-
-    // The reproducer reruns the failing stroke's chain and fails at the same tick.
-    const MovingStrokeFailure& f = r.failures.front();
-    std::FILE* sink = std::tmpfile();
-    ASSERT_NE(sink, nullptr);
-    const MovingStressReport replay = replay_moving_stroke(*scene, 0, key, s, f.stroke, sink);
-    std::fclose(sink);
-    ASSERT_FALSE(replay.failures.empty());
-    EXPECT_EQ(replay.failures.back().stroke, f.stroke);
-    EXPECT_EQ(replay.failures.back().tick, f.tick);
-    EXPECT_EQ(replay.failures.back().p_W_hip, f.p_W_hip);
+    test::expect_skipped_carry_caught_and_replayed(*scene, 0, key, s);
   }
 }
 
