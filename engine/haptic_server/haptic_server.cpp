@@ -103,7 +103,9 @@ Result<OpenedServer> HapticServer::open(const SceneDescription& scene, const Com
   }
   if (!errors.empty()) return errors;
 
+  const bool scene_plans = static_cast<bool>(planner.plan);
   if (planner.plan) {
+    settings->planner_usable_B = planner.usable_B;
     options.plan_base = std::move(planner.plan);
     // The guard's keep-out is the planner's user cylinder unless <server> says otherwise.
     if (!(scene.server && scene.server->params.count("keep_out_m") != 0)) {
@@ -138,6 +140,20 @@ Result<OpenedServer> HapticServer::open(const SceneDescription& scene, const Com
     ForceLimit limit = force_limit_for(scene.haptics.max_force_N, info.value().max_force_N, device->name);
     max_force_N = limit.max_force_N;
     if (limit.warning) out.warnings.push_back({device->where, std::move(*limit.warning)});
+    // The scene's planner keeps the HIP in this device's own workspace, not the rig
+    // model's (which describes a PHANToM): checked above with the rig's, made again here.
+    if (scene_plans) {
+      const std::optional<WorkspaceBox> usable_P =
+          usable_device_workspace(info.value(), impl->rig.device().usable_margin_m);
+      if (!usable_P) {
+        return Diagnostics{{device->where, "device '" + device->name + "' reports no workspace box larger than the "
+                                               "rig's usable margin: the base planner has nowhere to keep the hand"}};
+      }
+      Result<ScenePlanner> made = scene_planner(scene, impl->rig, usable_P);
+      if (!made.ok()) return made.error();
+      impl->settings.planner_usable_B = made->usable_B;
+      impl->options.plan_base = std::move(made->plan);
+    }
   }
   std::size_t next = 1;
   if (tracker != nullptr) impl->tracker = &impl->plugins[next++];

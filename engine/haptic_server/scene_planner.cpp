@@ -3,11 +3,14 @@
 #include "planner/planner.h"
 #include "planner/planner_settings.h"
 
+#include <algorithm>
+#include <cstdint>
 #include <memory>
 
 namespace mhd {
 
-Result<ScenePlanner> scene_planner(const SceneDescription& scene, const Rig& rig) {
+Result<ScenePlanner> scene_planner(const SceneDescription& scene, const Rig& rig,
+                                   const std::optional<WorkspaceBox>& usable_P) {
   if (!scene.planner) return ScenePlanner{};
   Diagnostics errors;
   const ParamBlock& block = *scene.planner;
@@ -16,7 +19,7 @@ Result<ScenePlanner> scene_planner(const SceneDescription& scene, const Rig& rig
     errors.push_back({block.where, "unknown planner kind '" + block.kind + "' (expected seed or predictive)"});
   }
   PlannerSettings defaults;
-  defaults.usable_B = usable_box_in_base(rig);
+  defaults.usable_B = usable_P ? usable_box_in_base(rig, *usable_P) : usable_box_in_base(rig);
   const Result<PlannerSettings, std::vector<std::string>> parsed = planner_settings_from_map(block.params, defaults);
   for (const std::string& e : parsed.ok() ? std::vector<std::string>{} : parsed.error()) {
     // The message names the setting; point at its line when it has one.
@@ -31,6 +34,7 @@ Result<ScenePlanner> scene_planner(const SceneDescription& scene, const Rig& rig
   std::shared_ptr<Planner> planner = make_planner(kind, *parsed);
   ScenePlanner out;
   out.collision_radius_m = parsed->collision_radius_m();
+  out.usable_B = parsed->usable_B;
   out.plan = [planner](const BasePlanInput& in) {
     if (!in.hip_valid || !in.user_known || !in.fresh()) return BaseTwist{};  // nothing fresh to follow: hold still
     PlannerInput p;
@@ -43,6 +47,21 @@ Result<ScenePlanner> scene_planner(const SceneDescription& scene, const Rig& rig
     return planner->update(p).twist_B;
   };
   return out;
+}
+
+std::optional<WorkspaceBox> usable_device_workspace(const mhd_device_info& info, double margin_m) {
+  std::optional<WorkspaceBox> largest;
+  const std::uint32_t count = std::min<std::uint32_t>(info.workspace_box_count, MHD_DEVICE_MAX_WORKSPACE_BOXES);
+  for (std::uint32_t i = 0; i < count; ++i) {
+    const mhd_box_D& b = info.workspace[i];
+    const WorkspaceBox box{Eigen::Vector3d(b.min_m[0], b.min_m[1], b.min_m[2]),
+                           Eigen::Vector3d(b.max_m[0], b.max_m[1], b.max_m[2])};
+    if (!largest || box.size_m().prod() > largest->size_m().prod()) largest = box;
+  }
+  if (!largest) return std::nullopt;
+  const WorkspaceBox usable = largest->shrunk(margin_m);
+  if (!(usable.min_P_m.array() < usable.max_P_m.array()).all()) return std::nullopt;
+  return usable;
 }
 
 }  // namespace mhd

@@ -25,6 +25,7 @@
 #include "haptic_server/haptic_tick.h"
 #include "safety/base_command_guard.h"
 #include "diagnostics/result.h"
+#include "planner/planner_settings.h"
 #include "scene/scene_description.h"
 
 #include <cstdint>
@@ -46,6 +47,9 @@ struct ServerSettings {
   double min_tick_interval_s = 0.0002;
   double plugin_call_timeout_s = 0.1;
   double tracking_range_m = 50.0;
+  /// Where the scene's planner keeps the HIP (base frame): the device's reported
+  /// workspace, moved in by the rig's usable margin. Empty with no planner of the scene's.
+  std::optional<PlanarBox> planner_usable_B;
 };
 
 /// The <server> parameters, or every one that is wrong (each at its file:line).

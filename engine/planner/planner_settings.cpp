@@ -188,9 +188,10 @@ Result<PlannerSettings, std::vector<std::string>> planner_settings_from_map(
   return settings;
 }
 
-PlanarBox usable_box_in_base(const Rig& rig) noexcept {
+PlanarBox usable_box_in_base(const Rig& rig) noexcept { return usable_box_in_base(rig, rig.device().usable_workspace()); }
+
+PlanarBox usable_box_in_base(const Rig& rig, const WorkspaceBox& box) noexcept {
   const Pose X_B_P = rig.X_robot_base().inverse(Eigen::Isometry) * rig.X_robot_phantom();
-  const WorkspaceBox box = rig.device().usable_workspace();
   PlanarBox out{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
                 std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
   for (int corner = 0; corner < 8; ++corner) {

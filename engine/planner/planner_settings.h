@@ -15,6 +15,7 @@
 namespace mhd {
 
 class Rig;
+struct WorkspaceBox;
 
 /// Axis-aligned rectangle on the floor plane, in the base frame B (x forward, z right).
 struct PlanarBox {
@@ -92,5 +93,7 @@ struct PlannerSettings {
 /// The device's usable workspace projected on the floor in B, from a rig: the bounding
 /// rectangle of the usable box's corners (exact when P's axes are B's, as in pomhi.xml).
 [[nodiscard]] PlanarBox usable_box_in_base(const Rig& rig) noexcept;
+/// The same for a usable box `usable_P` in the device frame P (a device's own report).
+[[nodiscard]] PlanarBox usable_box_in_base(const Rig& rig, const WorkspaceBox& usable_P) noexcept;
 
 }  // namespace mhd

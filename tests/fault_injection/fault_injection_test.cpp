@@ -13,7 +13,10 @@
 // tracker that comes back, jittery and lossy trackers, failing writes and kill -9.
 #include "fault_injection_support.h"
 
+#include "kinematics/rig.h"
+#include "planner/planner_settings.h"
 #include "recording/csv_recording_reader.h"
+#include "scene_xml/scene_reader.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -731,6 +734,55 @@ TEST(DeviceForceLimit, AForceBelowTheLimitReachesTheDeviceUnchanged) {
   }
   EXPECT_GT(pressing, 100u) << "the press never pushed";
   EXPECT_EQ(unchanged, pressing);
+}
+
+// ---- the base planner keeps the hand in the device's own workspace ---------------------
+
+/// A short run of a scene with <planner kind="seed"/> and the fi_device reporting
+/// `device_params` (its workspace), as ServerSettings shows it after open.
+RunResult run_with_scene_planner(const std::string& device_params) {
+  const fs::path dir = temp_dir();
+  const PressGeometry g = press_geometry(0.004);
+  const fs::path file =
+      write_scene(dir, g,
+                  fi_device_xml(g, dir / "device.log", kPressAt_s, device_params) +
+                      fi_tracker_xml(dir / "tracker.log", "") + fi_base_xml(dir / "base.log"),
+                  "", "  <planner kind=\"seed\"/>");
+  return run_server(load(file), 0.2, dir / "run.csv", BasePlanFn{});
+}
+
+Rig pomhi_rig() {
+  const Result<SceneDescription> read = read_scene_file(fs::path(MHD_SOURCE_DIR) / "scenes/rigs/pomhi.xml");
+  EXPECT_TRUE(read.ok()) << read.error_text();
+  Result<Rig, std::vector<RigError>> rig = Rig::from_scene(*read);
+  EXPECT_TRUE(rig.ok()) << rig.error_text();
+  return std::move(rig).value();
+}
+
+bool same_box(const PlanarBox& a, const PlanarBox& b) {
+  return std::abs(a.x_min_m - b.x_min_m) < 1e-12 && std::abs(a.x_max_m - b.x_max_m) < 1e-12 &&
+         std::abs(a.z_min_m - b.z_min_m) < 1e-12 && std::abs(a.z_max_m - b.z_max_m) < 1e-12;
+}
+
+TEST(DevicePlannerWorkspace, TheScenesPlannerKeepsTheHandInTheWorkspaceTheDeviceReports) {
+  // A 250 x 150 x 150 mm box, off a PHANToM's: another arm on the same rig frames.
+  const RunResult run =
+      run_with_scene_planner(param("workspace_min_m", "-0.05 0.0 -0.10") + param("workspace_max_m", "0.20 0.15 0.05"));
+  ASSERT_TRUE(run.opened);
+  ASSERT_TRUE(run.settings.planner_usable_B);
+  const Rig rig = pomhi_rig();
+  const double margin_m = rig.device().usable_margin_m;
+  const WorkspaceBox usable_P{Eigen::Vector3d(-0.05 + margin_m, margin_m, -0.10 + margin_m),
+                              Eigen::Vector3d(0.20 - margin_m, 0.15 - margin_m, 0.05 - margin_m)};
+  EXPECT_TRUE(same_box(*run.settings.planner_usable_B, usable_box_in_base(rig, usable_P)));
+  EXPECT_FALSE(same_box(*run.settings.planner_usable_B, usable_box_in_base(rig))) << "the PHANToM model's box";
+}
+
+TEST(DevicePlannerWorkspace, APhantomsOwnReportGivesThePlannerTheRigModelsBox) {
+  const RunResult run = run_with_scene_planner("");
+  ASSERT_TRUE(run.opened);
+  ASSERT_TRUE(run.settings.planner_usable_B);
+  EXPECT_TRUE(same_box(*run.settings.planner_usable_B, usable_box_in_base(pomhi_rig())));
 }
 
 // ---- 6. kill -9 of `mhd run` -----------------------------------------------------------

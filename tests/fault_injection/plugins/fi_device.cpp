@@ -6,6 +6,7 @@
 //   p_free_m, p_press_m   "x y z" (default: a PHANToM's tool at joint angles 0 0.3 0.2)
 //   press_at_s (never), press_ramp_s (0.05)   seconds after start
 //   max_force_N (8.5)     the force limit device_info reports
+//   workspace_min_m, workspace_max_m   the one workspace box device_info reports (default a PHANToM's)
 //   fault=none|nan|error|deactivate, fault_after_s (never), fault_on=read|write (read)
 //     nan: p_D_tool_m[1] is NaN (read only); error: MHD_ERROR with a message
 //   command_log=<path>  at close, one line per device_write: "t_s fx fy fz" (N, device frame), and
@@ -32,6 +33,8 @@ class FiDevice {
           mhd::sdk::number("press_ramp_s", "s", "0.05", "how long it takes", mhd::sdk::non_negative()),
           mhd::sdk::number("max_force_N", "N", nullptr, "the force limit device_info reports (default a PHANToM's)",
                            mhd::sdk::positive()),
+          mhd::sdk::vector3("workspace_min_m", "m", nullptr, "the workspace box's low corner (default a PHANToM's)"),
+          mhd::sdk::vector3("workspace_max_m", "m", nullptr, "the workspace box's high corner (default a PHANToM's)"),
       },
       probe::kFaultParams);
 
@@ -42,11 +45,12 @@ class FiDevice {
         press_at_s_(params.number("press_at_s", std::numeric_limits<double>::infinity())),
         press_ramp_s_(params.number("press_ramp_s")),
         max_force_N_(params.number("max_force_N", test_plugins::kPhantomMaxForce_N)),
+        info_(workspace_info(params)),
         fault_(params, 1u << 17) {}  // 131 s at 1 kHz
 
   void start() { fault_.start(t_start_s_ = mhd::sdk::host_now(host_)); }
   void device_info(mhd_device_info& out) {
-    out = test_plugins::phantom_like_device_info();
+    out = info_;
     out.max_force_N = max_force_N_;
   }
 
@@ -74,7 +78,21 @@ class FiDevice {
   mhd_host host_;
   Vec3 p_free_, p_press_;
   double press_at_s_, press_ramp_s_, max_force_N_;
+  mhd_device_info info_;
   double t_start_s_ = 0.0;
+
+  static mhd_device_info workspace_info(const mhd::sdk::Params& params) {
+    mhd_device_info info = test_plugins::phantom_like_device_info();
+    const Vec3 min_m = params.vector3<Vec3>("workspace_min_m", {info.workspace[0].min_m[0], info.workspace[0].min_m[1],
+                                                                 info.workspace[0].min_m[2]});
+    const Vec3 max_m = params.vector3<Vec3>("workspace_max_m", {info.workspace[0].max_m[0], info.workspace[0].max_m[1],
+                                                                 info.workspace[0].max_m[2]});
+    for (std::size_t i = 0; i < 3; ++i) {
+      info.workspace[0].min_m[i] = min_m[i];
+      info.workspace[0].max_m[i] = max_m[i];
+    }
+    return info;
+  }
   probe::FaultOnCue fault_;
 };
 
