@@ -21,13 +21,15 @@ Result<ScenePlanner> scene_planner(const SceneDescription& scene, const Rig& rig
   PlannerSettings defaults;
   defaults.usable_B = usable_P ? usable_box_in_base(rig, *usable_P) : usable_box_in_base(rig);
   const Result<PlannerSettings, std::vector<std::string>> parsed = planner_settings_from_map(block.params, defaults);
-  for (const std::string& e : parsed.ok() ? std::vector<std::string>{} : parsed.error()) {
-    // The message names the setting; point at its line when it has one.
-    SourceLocation where = block.where;
-    for (const auto& [name, line] : block.param_where) {
-      if (e.find("'" + name + "'") != std::string::npos) where = line;
+  if (!parsed.ok()) {
+    for (const std::string& e : parsed.error()) {
+      // The message names the setting; point at its line when it has one.
+      SourceLocation where = block.where;
+      for (const auto& [name, line] : block.param_where) {
+        if (e.find("'" + name + "'") != std::string::npos) where = line;
+      }
+      errors.push_back({where, e});
     }
-    errors.push_back({where, e});
   }
   if (!errors.empty()) return errors;
 
