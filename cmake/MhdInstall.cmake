@@ -1,14 +1,16 @@
 # What `cmake --install` puts where (GNUInstallDirs; README.md, "Install"), in two
 # components that cpack turns into two .deb packages (MhdPackaging.cmake):
 #   runtime  bin/: mhd and the tools; <libdir>/mhd/plugins-abi<N>/: the plugins;
+#            <libdir>/mhd/libmhd_sim_world.so: the simulated plugins' shared world;
 #            share/mhd/: scenes (with scene.xsd), their meshes, DDS configs, plot scripts;
 #            share/doc/mhd/: README, LICENSE, licensing notes and docs/.
 #   dev      include/mhd/plugin_abi.h and include/mhd/engine/<layer>/*.h; the engine's
 #            static libraries; <libdir>/cmake/MHD/ (find_package(MHD): MHD:: targets and
 #            mhd_add_plugin); <libdir>/pkgconfig/mhd-plugin.pc.
-# The installed mhd needs no RPATH: the engine is linked statically, every shared library
-# it and the plugins load is a system one, and it finds the plugins relative to itself
-# (engine/plugin_host/plugin_search_path.h).
+# The engine is linked statically and mhd finds the plugins relative to itself
+# (engine/plugin_host/plugin_search_path.h). The one shared library of ours is the
+# simulated plugins' world (plugins/sim_world), in <libdir>/mhd/: the simulated plugins
+# and mhd (its tracker server) find it through a relative RUNPATH.
 include_guard(GLOBAL)
 include(CMakePackageConfigHelpers)
 

@@ -12,7 +12,6 @@
 #include "plugin_host/plugin_kind.h"
 #include "plugin_host/plugin_search_path.h"
 #include "scene/rig_kind_check.h"
-#include "simulation/simulated_user.h"
 #include "simulation/simulated_user_params.h"
 
 #include <array>
@@ -57,14 +56,11 @@ Result<OpenedServer> HapticServer::open(const SceneDescription& scene, const Com
     for (const RigError& e : rig.error()) errors.push_back({e.where.file.empty() ? scene_where : e.where, e.message});
   }
 
-  std::optional<simulation::SimulatedUserConfig> user_config;
+  // The simulated plugins run the scene's <simulated_user> (plugins/sim_world); its
+  // errors still refuse the run here, at their lines, before any plugin opens.
   if (scene.simulated_user) {
     auto u = simulation::simulated_user_config_from(*scene.simulated_user);
-    if (u.ok()) {
-      user_config = std::move(u).value();
-    } else {
-      errors.insert(errors.end(), u.error().begin(), u.error().end());
-    }
+    if (!u.ok()) errors.insert(errors.end(), u.error().begin(), u.error().end());
   }
 
   // One device, one tracker, at most one base.
@@ -81,8 +77,8 @@ Result<OpenedServer> HapticServer::open(const SceneDescription& scene, const Com
       displays.push_back(&p);
     } else if (*slot != nullptr) {
       errors.push_back({p.where, "a second " + std::string(to_string(p.kind)) + " plugin '" + p.name +
-                                              "' (the server drives one; the first is at line " +
-                                              std::to_string((*slot)->where.line) + ")"});
+                                     "' (the server drives one; the first is at line " +
+                                     std::to_string((*slot)->where.line) + ")"});
     } else {
       *slot = &p;
     }
@@ -113,7 +109,6 @@ Result<OpenedServer> HapticServer::open(const SceneDescription& scene, const Com
     }
   }
   auto impl = std::make_unique<Impl>(compiled, *settings, std::move(options), std::move(*rig));
-  impl->user_config = std::move(user_config);
   impl->host.set_scene_file(scene.file);
   const PluginSearchPath search = PluginSearchPath::standard(impl->options.plugin_path);
 
@@ -169,12 +164,6 @@ ServerReport HapticServer::run() {
   Impl& m = *impl_;
   ServerReport report;
 
-  // On a desk the hand holds the device from the first moment: place it before the device
-  // starts, or the device's first readings would come from a hand at the world origin.
-  if (m.rig.kind() == RigKind::Desktop && m.user_config) {
-    simulation::SimulatedUser(*m.user_config).update(m.host.now_s(), m.world);
-  }
-
   // Start: device last, so force starts only once the rest is running.
   std::vector<OpenedPlugin*> start_order;
   for (auto& p : m.plugins) {
@@ -213,13 +202,8 @@ ServerReport HapticServer::run() {
         m.running_threads.fetch_sub(1);
       });
     };
-    // A desktop rig has no tracker, base or planner: only the simulated user runs beside
-    // the haptic thread.
-    if (desktop) {
-      if (m.user_config) spawn(&Impl::desk_user_thread);
-    } else {
-      spawn(&Impl::io_thread);
-    }
+    // A desktop rig has no tracker, base or planner: the haptic thread (and the displays).
+    if (!desktop) spawn(&Impl::io_thread);
     spawn(&Impl::haptic_thread);
     if (!desktop) spawn(&Impl::planner_thread);
     if (!m.displays.empty()) spawn(&Impl::display_thread);

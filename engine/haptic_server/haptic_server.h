@@ -4,15 +4,16 @@
 // Threads, each driving only its own plugins (an instance is driven by one thread):
 //   haptic   1 kHz (the scene's rate), absolute deadlines: device read -> HapticTick
 //            (HIP, proxy, safety, torques) -> device write. Never locks, never allocates.
-//   io       tracker and base plugins, and the simulated user (io_rate_hz): tracker samples
+//   io       tracker and base plugins (io_rate_hz): tracker samples
 //            to the haptic thread; base commands from the planner, through the
 //            BaseCommandGuard (stale base or head data, or a fault, stops the base), to the base.
 //   planner  10 Hz: the base motion planner (holds still until one is set).
 //   display  60 Hz: the newest state to every display plugin.
 //   recorder writes the CSV recording, flushed at least every record_flush_s.
 // A desktop rig (<rig kind="desktop">, docs/desktop.md) has a device and displays only:
-// no io or planner thread; the simulated user, if any, moves on its own thread
-// (desk_user_thread.cpp) and the haptic thread renders with the device fixed at X_WD.
+// no io or planner thread, and the haptic thread renders with the device fixed at X_WD.
+// The simulated user is not the server's: the simulated plugins move it in the world
+// they share (plugins/sim_world); the server only checks the scene's <simulated_user>.
 // Hand-offs into and out of the haptic thread are lock-free: SPSC rings for events
 // (tracker samples, commands, recording rows) and triple buffers for state. Other
 // threads share a few values behind a mutex.

@@ -1,4 +1,4 @@
-// The io thread: the simulated user; tracker samples through TrackerSampleFilter to the
+// The io thread: tracker samples through TrackerSampleFilter to the
 // haptic thread (base sensor) and the planner (head); the planner's command through the
 // BaseCommandGuard to the base when BaseCommandScheduler says so.
 #include "haptic_server/server_impl.h"
@@ -10,7 +10,6 @@
 #include "realtime/periodic_timer.h"
 #include "realtime/thread_name.h"
 #include "realtime/thread_priority.h"
-#include "simulation/simulated_user.h"
 
 #include <algorithm>
 #include <array>
@@ -26,8 +25,6 @@ namespace mhd {
 
 void HapticServer::Impl::io_thread() {
   realtime::name_current_thread("mhd-io");
-  std::optional<simulation::SimulatedUser> user;
-  if (user_config) user.emplace(*user_config);
   BaseCommandGuardSettings guard_settings = settings.base_guard;
   guard_settings.command_hold_s = 1.0 / settings.io_rate_hz;
   BaseCommandGuard guard(guard_settings);
@@ -150,7 +147,6 @@ void HapticServer::Impl::io_thread() {
     }
     (void)timer.wait_next();
     const double t_s = host.now_s();
-    if (user) user->update(t_s, world);
     if (base != nullptr && base->instance.simulates()) {
       const std::lock_guard lock(*base->call_mutex);
       const InCall in_call(*base, "simulate_until", t_s);

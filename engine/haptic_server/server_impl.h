@@ -2,7 +2,7 @@
 // The haptic server's shared state (private to engine/haptic_server): the plugins, the
 // hand-offs between the threads, the counters, and the run's end. Each thread's body
 // lives in its own file (haptic_thread.cpp, io_thread.cpp, planner_thread.cpp,
-// display_thread.cpp, recorder_thread.cpp, desk_user_thread.cpp); opening, run() and the last gasp in
+// display_thread.cpp, recorder_thread.cpp); opening, run() and the last gasp in
 // haptic_server.cpp.
 
 #include "haptic_server/haptic_server.h"
@@ -20,8 +20,6 @@
 #include "recording/csv_recording.h"
 #include "safety/base_command_guard.h"
 #include "safety/force_safety.h"
-#include "simulation/simulated_user_params.h"
-#include "simulation/simulated_world.h"
 
 #include <Eigen/Core>
 
@@ -63,9 +61,6 @@ struct HapticServer::Impl {
   ServerSettings settings;
   ServerOptions options;
   Rig rig;
-  std::optional<simulation::SimulatedUserConfig> user_config;
-
-  simulation::SimulatedWorld world;
   HostServices host;
   std::vector<OpenedPlugin> plugins;  // device first, then tracker, base, displays
   OpenedPlugin* device = nullptr;
@@ -114,7 +109,7 @@ struct HapticServer::Impl {
   std::uint64_t recording_rows_written = 0;
 
   Impl(const CompiledScene& s, ServerSettings st, ServerOptions o, Rig r)
-      : scene(s), settings(std::move(st)), options(std::move(o)), rig(std::move(r)), host(&world.table()) {}
+      : scene(s), settings(std::move(st)), options(std::move(o)), rig(std::move(r)), host() {}
 
   static std::string plugin_failure(const PluginDescription& d, const PluginError& e) {
     return Diagnostic{d.where, e.to_string()}.to_string();
@@ -156,7 +151,6 @@ struct HapticServer::Impl {
   // Each thread's body, in its own file (<name>.cpp).
   void haptic_thread();
   void io_thread();
-  void desk_user_thread();
   void planner_thread();
   void display_thread();
   void recorder_thread();

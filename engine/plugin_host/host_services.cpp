@@ -7,10 +7,9 @@ double now_s_callback(void* context) { return static_cast<const HostServices*>(c
 
 }  // namespace
 
-HostServices::HostServices(const mhd_sim_world* sim_world) noexcept
+HostServices::HostServices() noexcept
     : epoch_(std::chrono::steady_clock::now()),
-      host_{MHD_PLUGIN_ABI_VERSION, static_cast<uint32_t>(sizeof(mhd_host)), &now_s_callback,
-            this, sim_world, nullptr} {}
+      host_{MHD_PLUGIN_ABI_VERSION, static_cast<uint32_t>(sizeof(mhd_host)), &now_s_callback, this, nullptr} {}
 
 void HostServices::set_scene_file(const std::filesystem::path& scene_file) {
   scene_file_ = scene_file.empty() ? std::string() : std::filesystem::absolute(scene_file).lexically_normal().string();

@@ -1,6 +1,6 @@
 #pragma once
-// What the host offers every plugin (mhd_host): a monotonic clock and, when a simulated
-// world exists, a pointer to it. Plugins keep the mhd_host pointer they get in open(),
+// What the host offers every plugin (mhd_host): a monotonic clock and the scene file it
+// runs. (Simulated plugins share their world among themselves: plugins/sim_world.) Plugins keep the mhd_host pointer they get in open(),
 // so a HostServices must outlive every instance opened with it and cannot move.
 
 #include <mhd/plugin_abi.h>
@@ -13,8 +13,7 @@ namespace mhd {
 
 class HostServices {
  public:
-  /// `sim_world` may be null (real hardware); it is not owned and must outlive this.
-  explicit HostServices(const mhd_sim_world* sim_world = nullptr) noexcept;
+  HostServices() noexcept;
   HostServices(const HostServices&) = delete;
   HostServices& operator=(const HostServices&) = delete;
   HostServices(HostServices&&) = delete;
@@ -27,9 +26,6 @@ class HostServices {
   /// Seconds on the steady clock since this object was made (the host clock plugins see).
   [[nodiscard]] double now_s() const noexcept;
 
-  [[nodiscard]] const mhd_sim_world* sim_world() const noexcept { return host_.sim_world; }
-  /// Set before opening plugins: they may read the pointer once, in open().
-  void set_sim_world(const mhd_sim_world* sim_world) noexcept { host_.sim_world = sim_world; }
   /// The root scene file plugins see as mhd_host::scene_file (kept as an absolute path);
   /// set before opening plugins. Empty: none.
   void set_scene_file(const std::filesystem::path& scene_file);

@@ -1,20 +1,19 @@
 #pragma once
 // The truth of a simulated session: the base's planar pose, the user's head pose and
-// the user's hand, shared by the simulated plugins through the ABI's mhd_sim_world
-// table (table()), so the simulated tracker sees the base that the simulated base
-// moves. World frame W: y up, floor at y = 0; a planar heading h is a rotation about
+// the user's hand. The simulated plugins of one scene share one world through their own
+// support library (plugins/sim_world/sim_session.h), never through the host, so the
+// simulated tracker sees the base that the simulated base moves. World frame W: y up, floor at y = 0; a planar heading h is a rotation about
 // +y_W, forward x = (cos h, 0, -sin h).
 //
 // Threads: the simulated device reads the base and the hand on the haptic thread, so
 // every reader is lock-free (realtime::Seqlock: never locks, never allocates); writers
 // (tracker, base and user at their own rates) are serialised by one writer mutex.
 
-#include <mhd/plugin_abi.h>
-
 #include <Eigen/Geometry>
 
 #include "realtime/seqlock.h"
 
+#include <atomic>
 #include <mutex>
 
 namespace mhd::simulation {
@@ -35,7 +34,7 @@ class SimulatedWorld {
  public:
   /// Base at the origin with heading 0, head and hand at the origin, head unrotated.
   SimulatedWorld();
-  // table() points at this object.
+  // Shared by reference between threads and plugins: never copied or moved.
   SimulatedWorld(const SimulatedWorld&) = delete;
   SimulatedWorld& operator=(const SimulatedWorld&) = delete;
   SimulatedWorld(SimulatedWorld&&) = delete;
@@ -51,17 +50,16 @@ class SimulatedWorld {
 
   [[nodiscard]] Eigen::Vector3d hand() const noexcept;
   void set_hand(const Eigen::Vector3d& p_W_m);
-
-  /// The C table for mhd_host::sim_world; valid while this object lives.
-  [[nodiscard]] const mhd_sim_world& table() const noexcept { return table_; }
+  /// Whether anyone (a simulated user, a test) has placed the hand: until then a
+  /// simulated device rests its hand where its own parameters say.
+  [[nodiscard]] bool has_hand() const noexcept { return hand_placed_.load(std::memory_order_acquire); }
 
  private:
   std::mutex writer_mutex_;
   realtime::Seqlock<3> base_;      ///< x_m, z_m, heading_rad
   realtime::Seqlock<7> head_;      ///< p_W_m, then q_W as w, x, y, z
   realtime::Seqlock<3> hand_W_m_;
-
-  mhd_sim_world table_{};
+  std::atomic<bool> hand_placed_{false};
 };
 
 }  // namespace mhd::simulation

@@ -1,21 +1,22 @@
 #pragma once
 // Simulation only: one rig's simulated world shared over DDS (mhd_dds::SimWorld). The
-// haptic server owns the world (its simulated user and base move it); its `dds` tracker,
+// haptic server's simulated plugins own the world (its simulated user and base move it); its `dds` tracker,
 // asked with publish_sim_world, publishes the truth every io tick, and `mhd
 // tracker-server --shared-world` writes the newest into its own world before its
 // simulated tracker measures it, so the tracker sees the base the haptic server moves,
-// as a real tracker sees the real base. Both sides work on the ABI's mhd_sim_world table.
+// as a real tracker sees the real base. Both sides work on the simulated plugins' shared
+// world (plugins/sim_world), never on the host.
 
 #include "dds_common/dds_topics.h"
 
-#include <mhd/plugin_abi.h>
+#include "simulation/simulated_world.h"
 
 #include <cstdint>
 
 namespace mhd::dds {
 
 /// The truth of `world` now, numbered and stamped.
-[[nodiscard]] mhd_dds_SimWorld sim_world_sample(const mhd_sim_world& world, std::uint32_t rig_id,
+[[nodiscard]] mhd_dds_SimWorld sim_world_sample(const simulation::SimulatedWorld& world, std::uint32_t rig_id,
                                                 std::uint64_t sequence, std::int64_t timestamp_ns);
 /// Whether a sample can be written into a world: finite, and a quaternion that
 /// normalises (norm within [0.5, 2]).
@@ -27,7 +28,7 @@ class SimWorldPublisher {
   /// DdsError (NOT_ALLOWED_BY_SECURITY when the identity may not publish mhd_sim_world).
   SimWorldPublisher(const Participant& participant, std::uint32_t rig_id);
   /// Never blocks (best-effort).
-  void publish(const mhd_sim_world& world, std::int64_t timestamp_ns);
+  void publish(const simulation::SimulatedWorld& world, std::int64_t timestamp_ns);
   [[nodiscard]] std::uint64_t published() const { return sequence_; }
 
  private:
@@ -42,7 +43,7 @@ class SimWorldSubscriber {
   SimWorldSubscriber(const Participant& participant, std::uint32_t rig_id);
   /// Takes what arrived and writes the newest valid sample of this rig into `world`;
   /// true when it wrote one. Never blocks.
-  bool apply_newest(const mhd_sim_world& world);
+  bool apply_newest(simulation::SimulatedWorld& world);
   /// Blocks until a sample arrives or timeout_ns passes.
   bool wait(dds_duration_t timeout_ns) { return subscriber_.reader().wait(timeout_ns); }
   [[nodiscard]] std::uint64_t applied() const { return applied_; }

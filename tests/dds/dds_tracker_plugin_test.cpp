@@ -11,7 +11,7 @@
 namespace mhd::dds {
 namespace {
 
-// simulate_until publishes the host's simulated world when asked (publish_sim_world).
+// simulate_until publishes the scene's simulated world when asked (publish_sim_world).
 TEST(DdsTrackerPlugin, TheTableIdentifiesATrackerThatCanPublishTheSimulatedWorld) {
   const mhd::test::PluginFile file(MHD_DDS_TRACKER_PLUGIN);
   EXPECT_EQ(file.api().kind, MHD_KIND_TRACKER);
@@ -34,8 +34,6 @@ TEST(DdsTrackerPlugin, BadParametersAreRefusedWithTheirNames) {
             "parameter 'config_file' needs 'domain_id'");
   EXPECT_EQ(mhd::test::open_plugin(file.api(), h.host, {{"publish_sim_world", "yes"}}).error,
             "parameter 'publish_sim_world' must be true or false, got 'yes'");
-  EXPECT_EQ(mhd::test::open_plugin(file.api(), h.host_without_world, {{"publish_sim_world", "true"}}).error,
-            "publish_sim_world: the host has no simulated world (sim_world is NULL)");
 }
 
 TEST(DdsTrackerPlugin, OpensWithAConfigFileAndReadsOnlyWhenStarted) {
@@ -45,7 +43,7 @@ TEST(DdsTrackerPlugin, OpensWithAConfigFileAndReadsOnlyWhenStarted) {
   const std::string d = std::to_string(domain);
   // Relative to the working directory (the repository root) when the host has no scene.
   const auto opened = mhd::test::open_plugin(
-      file.api(), h.host_without_world, {{"domain_id", d.c_str()}, {"config_file", "config/cyclonedds-loopback.xml"}});
+      file.api(), h.host, {{"domain_id", d.c_str()}, {"config_file", "config/cyclonedds-loopback.xml"}});
   ASSERT_NE(opened.instance, nullptr) << opened.error;
   mhd_tracker_sample out[4];
   std::size_t count = 7;

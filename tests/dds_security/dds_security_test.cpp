@@ -115,7 +115,7 @@ class RigServer {
     const std::string id = identity.string();
     host_.now_s = steady_s();
     const mhd::test::Opened opened = mhd::test::open_plugin(
-        file_.api(), host_.host_without_world, {{"domain_id", d.c_str()}, {"rig_id", r.c_str()}, {"identity_dir", id.c_str()}});
+        file_.api(), host_.host, {{"domain_id", d.c_str()}, {"rig_id", r.c_str()}, {"identity_dir", id.c_str()}});
     if (opened.instance == nullptr) throw std::runtime_error(opened.error);
     instance_ = opened.instance;
     mhd_error err{};

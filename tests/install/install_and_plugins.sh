@@ -27,9 +27,10 @@ step() { echo "---- [${SECONDS} s] $*"; }
 step "cmake --install $build --prefix $prefix"
 "$cmake_exe" --install "$build" --prefix "$prefix" >"$scratch/install.log" || { cat "$scratch/install.log"; fail "install"; }
 
-plugin_dir="$prefix/$libdir/mhd/plugins-abi3"
+plugin_dir="$prefix/$libdir/mhd/plugins-abi4"
 for f in bin/mhd bin/mhd-mesh-gen \
-         "$libdir/mhd/plugins-abi3/libmhd_sim_phantom.so" "$libdir/mhd/plugins-abi3/libmhd_null_display.so" \
+         "$libdir/mhd/plugins-abi4/libmhd_sim_phantom.so" "$libdir/mhd/plugins-abi4/libmhd_null_display.so" \
+         "$libdir/mhd/libmhd_sim_world.so" \
          share/mhd/scenes/dolphin.xml share/mhd/scenes/scene.xsd share/mhd/scenes/common/materials.xml \
          share/mhd/assets/dolphin.ply share/mhd/plots/force_traces.py \
          share/doc/mhd/README.md share/doc/mhd/LICENSE share/doc/mhd/plugins.md share/doc/mhd/licensing.md \
@@ -45,6 +46,9 @@ test_plugins="$(find "$plugin_dir" -name 'libmhd_fi_*' -o -name 'libmhd_good_*' 
 # The installed program must not reach back into the tree it was built in.
 if readelf -d "$prefix/bin/mhd" | grep -E 'R(UN)?PATH' | grep -F "$build"; then fail "bin/mhd has a build-tree RPATH"; fi
 if ldd "$prefix/bin/mhd" | grep -F "not found"; then fail "bin/mhd: a shared library is not found"; fi
+# The simulated plugins share their world through the installed libmhd_sim_world.so.
+ldd "$plugin_dir/libmhd_sim_is900.so" | grep -qF "$plugin_dir/../libmhd_sim_world.so" \
+  || fail "libmhd_sim_is900.so does not find the installed libmhd_sim_world.so: $(ldd "$plugin_dir/libmhd_sim_is900.so")"
 "$prefix/bin/mhd" --version | grep -q '^mhd ' || fail "installed mhd --version"
 
 for example in c_frame_counter cpp_contact_log; do

@@ -1,5 +1,6 @@
 // The host table plugins get in open(): this host's ABI numbers, a monotonic clock and
-// the optional simulated world.
+// the scene file. (No simulated world: since ABI 4 the simulated plugins share theirs
+// through plugins/sim_world.)
 
 #include "plugin_host/host_services.h"
 
@@ -12,7 +13,7 @@ TEST(HostServices, AbiTable) {
   const HostServices host;
   EXPECT_EQ(host.abi().abi_version, MHD_PLUGIN_ABI_VERSION);
   EXPECT_EQ(host.abi().struct_size, sizeof(mhd_host));
-  EXPECT_EQ(host.abi().sim_world, nullptr);
+  EXPECT_EQ(host.abi().scene_file, nullptr);
   ASSERT_NE(host.abi().now_s, nullptr);
 }
 
@@ -31,12 +32,15 @@ TEST(HostServices, ClockIsMonotonicAndStartsNearZero) {
   EXPECT_GE(host.now_s(), last);
 }
 
-TEST(HostServices, CarriesTheSimulatedWorld) {
-  mhd_sim_world world{};
-  HostServices host(&world);
-  EXPECT_EQ(host.abi().sim_world, &world);
-  host.set_sim_world(nullptr);
-  EXPECT_EQ(host.sim_world(), nullptr);
+TEST(HostServices, CarriesTheSceneFileAsAnAbsolutePath) {
+  HostServices host;
+  host.set_scene_file("scenes/../scenes/dolphin.xml");
+  ASSERT_NE(host.abi().scene_file, nullptr);
+  const std::filesystem::path given(host.abi().scene_file);
+  EXPECT_TRUE(given.is_absolute());
+  EXPECT_EQ(given, std::filesystem::absolute("scenes/dolphin.xml").lexically_normal());
+  host.set_scene_file({});
+  EXPECT_EQ(host.abi().scene_file, nullptr);
 }
 
 }  // namespace

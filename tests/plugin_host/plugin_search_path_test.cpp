@@ -183,7 +183,7 @@ TEST_F(PluginSearchPathTest, ListingSurvivesEveryBrokenPlugin) {
   }
   EXPECT_EQ(good, (std::vector<std::string>{"good_base", "good_device", "good_tracker", "nan_device", "open_fails",
                                             "rejects_unknown_param"}));
-  EXPECT_EQ(broken, (std::vector<std::string>{"abi2_device", "bad_param_decl", "empty_name", "entry_returns_null",
+  EXPECT_EQ(broken, (std::vector<std::string>{"abi2_device", "abi3_device", "bad_param_decl", "empty_name", "entry_returns_null",
                                               "garbage", "misnamed",
                                               "missing_device_read", "no_entry", "wrong_abi_version", "wrong_kind",
                                               "wrong_struct_size"}));

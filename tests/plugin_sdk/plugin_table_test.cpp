@@ -91,7 +91,7 @@ class PluginTableTest : public ::testing::Test {
   }
 
   Clock clock_;
-  mhd_host host_{MHD_PLUGIN_ABI_VERSION, sizeof(mhd_host), clock_now, &clock_, nullptr, nullptr};
+  mhd_host host_{MHD_PLUGIN_ABI_VERSION, sizeof(mhd_host), clock_now, &clock_, nullptr};
   mhd_plugin_instance* instance_ = nullptr;
   mhd_error err_{};
 };
@@ -195,9 +195,9 @@ TEST_F(PluginTableTest, TheHostTableIsChecked) {
   EXPECT_EQ(kProbe.open(nullptr, nullptr, 0, &err), nullptr);
   EXPECT_STREQ(err.message, "the host table is NULL");
   mhd_host old = host_;
-  old.abi_version = 2;
+  old.abi_version = 3;  // a host of the ABI before this one
   EXPECT_EQ(kProbe.open(&old, nullptr, 0, &err), nullptr);
-  EXPECT_STREQ(err.message, "host ABI version 2 is not 3");
+  EXPECT_STREQ(err.message, "host ABI version 3 is not 4");
   mhd_host no_clock = host_;
   no_clock.now_s = nullptr;
   EXPECT_EQ(kProbe.open(&no_clock, nullptr, 0, &err), nullptr);
@@ -269,7 +269,7 @@ struct TrackerRead {
 };
 
 TrackerRead read_status_tracker(const char* mode) {
-  const mhd_host host{MHD_PLUGIN_ABI_VERSION, sizeof(mhd_host), fixed_now, nullptr, nullptr, nullptr};
+  const mhd_host host{MHD_PLUGIN_ABI_VERSION, sizeof(mhd_host), fixed_now, nullptr, nullptr};
   const mhd_param params[] = {{"mode", mode}};
   mhd_error err{};
   mhd_plugin_instance* t = kStatusTracker.open(&host, params, 1, &err);

@@ -25,14 +25,11 @@ const mhd_plugin_api& PluginFile::api() const {
   return *api;
 }
 
-FakeHost::FakeHost() {
+FakeHost::FakeHost() : session(sim_world::SimSession::acquire("", 0.0)), world(session->world()) {
   host.abi_version = MHD_PLUGIN_ABI_VERSION;
   host.struct_size = sizeof(mhd_host);
   host.now_s = [](void* context) { return *static_cast<double*>(context); };
   host.clock_context = &now_s;
-  host.sim_world = &world.table();
-  host_without_world = host;
-  host_without_world.sim_world = nullptr;
 }
 
 Opened open_plugin(const mhd_plugin_api& api, const mhd_host& host,

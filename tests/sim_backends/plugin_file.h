@@ -3,6 +3,7 @@
 // dlsym("mhd_plugin_entry")), and a host table with a clock the test sets and a
 // SimulatedWorld.
 
+#include "sim_world/sim_session.h"
 #include "simulation/simulated_world.h"
 
 #include <mhd/plugin_abi.h>
@@ -31,15 +32,18 @@ class PluginFile {
   mhd_plugin_entry_fn entry_ = nullptr;
 };
 
+/// A host with a clock the test sets and no scene file; it holds the simulated world the
+/// simulated plugins opened with it share (the session of "no scene"), so the test can
+/// place the base, head and hand there.
 struct FakeHost {
   FakeHost();
   FakeHost(const FakeHost&) = delete;
   FakeHost& operator=(const FakeHost&) = delete;
 
   double now_s = 0.0;
-  simulation::SimulatedWorld world;
-  mhd_host host{};  ///< with the world
-  mhd_host host_without_world{};
+  mhd_host host{};
+  std::shared_ptr<sim_world::SimSession> session;
+  simulation::SimulatedWorld& world;
 };
 
 struct Opened {

@@ -32,7 +32,7 @@ TEST(ReplayPlugin, PlaysTheFileOnTheHostClockFromStart) {
   const PluginFile file(MHD_REPLAY_PLUGIN);
   const mhd_plugin_api& api = file.api();
   FakeHost h;  // replay needs no simulated world
-  const Opened opened = open_plugin(api, h.host_without_world, {{"file", "tests/data/replay/valid.csv"}});
+  const Opened opened = open_plugin(api, h.host, {{"file", "tests/data/replay/valid.csv"}});
   ASSERT_NE(opened.instance, nullptr) << opened.error;
   mhd_plugin_instance* tracker = opened.instance;
   mhd_error err{};

@@ -19,11 +19,9 @@ TEST(SimIs900Plugin, TheTableIdentifiesATracker) {
   EXPECT_EQ(api.base_read, nullptr);
 }
 
-TEST(SimIs900Plugin, OpenNeedsTheSimulatedWorldAndValidParameters) {
+TEST(SimIs900Plugin, OpenNeedsValidParameters) {
   const PluginFile file(MHD_SIM_IS900_PLUGIN);
   FakeHost h;
-  EXPECT_EQ(open_plugin(file.api(), h.host_without_world, {}).error,
-            "sim_is900 measures the simulated world, but the host gives none (sim_world is NULL)");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"rate_hz", "abc"}}).error,
             "parameter 'rate_hz' must be a number > 0 (Hz), got 'abc'");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"base_sensor_id", "1"}}).error,
@@ -32,11 +30,6 @@ TEST(SimIs900Plugin, OpenNeedsTheSimulatedWorldAndValidParameters) {
             "parameter 'tracker_position_m' must be three numbers 'x y z' (m), got '0 2.624'");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"buffer_capacity", "0"}}).error,
             "parameter 'buffer_capacity' must be a non-negative integer in [1, 1048576], got '0'");
-  mhd_sim_world broken = *h.host.sim_world;
-  broken.get_head = nullptr;
-  mhd_host broken_host = h.host;
-  broken_host.sim_world = &broken;
-  EXPECT_EQ(open_plugin(file.api(), broken_host, {}).error, "the host's simulated world has a NULL function");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"noise", "0"}}).error,
             "unknown parameter 'noise' (known: rate_hz, latency_s, position_sigma_m, angle_sigma_deg, base_sensor_id, "
             "head_sensor_id, base_sensor_position_m, base_sensor_rpy_deg, base_sensor_quaternion_wxyz, "

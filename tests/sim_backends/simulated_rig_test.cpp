@@ -1,5 +1,6 @@
-// The simulated base, tracker and user on one SimulatedWorld: the tracker sees the
-// base that the base plugin moves and the head that the user carries.
+// The simulated base, tracker and user on one simulated world, shared by the plugins
+// through their library (plugins/sim_world), never through the host: the tracker sees
+// the base that the base plugin moves and the head of the user it moves itself.
 
 #include "plugin_file.h"
 #include "simulation/simulated_user.h"
@@ -22,10 +23,11 @@ TEST(SimulatedRig, TheTrackerSeesTheBaseMoveAndTheUserWalk) {
   ASSERT_NE(base.instance, nullptr) << base.error;
   ASSERT_NE(tracker.instance, nullptr) << tracker.error;
 
+  // The scene's user, as the session reads it from <simulated_user>; nobody but the
+  // tracker plugin moves it from here on.
   simulation::SimulatedUserConfig user_config;
   user_config.path = simulation::parse_waypoints("0 -1 0; 3 -1 0.5");  // 0.5 m/s along +x
-  simulation::SimulatedUser user(user_config);
-  user.update(0.0, h.world);
+  h.session->set_user(user_config, 0.0);
 
   mhd_error err{};
   ASSERT_EQ(base_api.start(base.instance, &err), MHD_OK) << err.message;
@@ -39,7 +41,6 @@ TEST(SimulatedRig, TheTrackerSeesTheBaseMoveAndTheUserWalk) {
       const mhd_base_command command{h.now_s, h.now_s < 2.0 ? 0.3 : 0.0, 0.0, 0.0};
       ASSERT_EQ(base_api.base_write(base.instance, &command, &err), MHD_OK) << err.message;
     }
-    user.update(h.now_s, h.world);
     ASSERT_EQ(base_api.simulate_until(base.instance, h.now_s, &err), MHD_OK) << err.message;
     ASSERT_EQ(tracker_api.simulate_until(tracker.instance, h.now_s, &err), MHD_OK) << err.message;
     std::size_t count = 0;

@@ -226,11 +226,12 @@ TEST(SimPhantomPlugin, RigTransformsCanBeOverridden) {
   api.close(opened.instance);
 }
 
-TEST(SimPhantomPlugin, WithoutAWorldTheHandRestsAtHandP) {
+TEST(SimPhantomPlugin, UntilTheWorldHasAHandItRestsAtHandPThenItFollowsTheWorlds) {
   const PluginFile file(MHD_SIM_PHANTOM_PLUGIN);
   const mhd_plugin_api& api = file.api();
   FakeHost h;
-  const Opened opened = open_plugin(api, h.host_without_world, {{"hand_P_m", "0.01 0.1 0.02"}});
+  ASSERT_FALSE(h.world.has_hand());
+  const Opened opened = open_plugin(api, h.host, {{"hand_P_m", "0.01 0.1 0.02"}});
   ASSERT_NE(opened.instance, nullptr) << opened.error;
   mhd_error err{};
   ASSERT_EQ(api.start(opened.instance, &err), MHD_OK) << err.message;
@@ -240,6 +241,13 @@ TEST(SimPhantomPlugin, WithoutAWorldTheHandRestsAtHandP) {
   EXPECT_EQ(state.timestamp_s, 0.5);
   // Default resolution 0.03 mm: within 1.5 resolution steps.
   EXPECT_LT((hip_of(state) - Eigen::Vector3d(0.01, 0.1, 0.02)).norm(), 1.5 * 0.03e-3);
+
+  // The dual: a hand placed in the world (at its origin, far below the device) is the
+  // one the tool follows from then on.
+  h.world.set_hand(Eigen::Vector3d::Zero());
+  ASSERT_EQ(api.simulate_until(opened.instance, 1.0, &err), MHD_OK) << err.message;
+  ASSERT_EQ(api.device_read(opened.instance, &state, &err), MHD_OK);
+  EXPECT_GT((hip_of(state) - Eigen::Vector3d(0.01, 0.1, 0.02)).norm(), 0.01);
   api.close(opened.instance);
 }
 

@@ -20,36 +20,24 @@ TEST(SimulatedWorld, StartsAtTheOriginUnrotated) {
   EXPECT_EQ(world.head().q_W.w(), 1.0);
 }
 
-TEST(SimulatedWorld, TheCTableReadsAndWritesTheSameState) {
+TEST(SimulatedWorld, ReadsWhatWasWrittenAndKnowsWhenAHandWasPlaced) {
   SimulatedWorld world;
-  const mhd_sim_world& t = world.table();
-  ASSERT_EQ(t.context, &world);
-
-  t.set_base_pose(t.context, 1.5, -2.0, 0.25);
-  double x = 0, z = 0, h = 0;
-  t.get_base_pose(t.context, &x, &z, &h);
-  EXPECT_EQ(x, 1.5);
-  EXPECT_EQ(z, -2.0);
-  EXPECT_EQ(h, 0.25);
+  world.set_base_pose({1.5, -2.0, 0.25});
   EXPECT_EQ(world.base_pose().x_m, 1.5);
+  EXPECT_EQ(world.base_pose().z_m, -2.0);
+  EXPECT_EQ(world.base_pose().heading_rad, 0.25);
 
-  const double hand[3] = {0.4, 1.1, -0.3};
-  t.set_hand(t.context, hand);
-  double hand_out[3] = {};
-  t.get_hand(t.context, hand_out);
-  for (int i = 0; i < 3; ++i) EXPECT_EQ(hand_out[i], hand[i]);
+  // No hand until someone places one (a simulated device then rests its own).
+  EXPECT_FALSE(world.has_hand());
+  world.set_hand({0.4, 1.1, -0.3});
+  EXPECT_TRUE(world.has_hand());
   EXPECT_EQ(world.hand(), Eigen::Vector3d(0.4, 1.1, -0.3));
 
   // A quaternion of norm 2 is stored normalised.
-  const double p[3] = {0.1, 1.65, 0.2};
-  const double q[4] = {0.0, 0.0, 2.0, 0.0};
-  t.set_head(t.context, p, q);
-  double p_out[3] = {};
-  double q_out[4] = {};
-  t.get_head(t.context, p_out, q_out);
-  EXPECT_EQ(p_out[1], 1.65);
-  EXPECT_DOUBLE_EQ(q_out[2], 1.0);
-  EXPECT_EQ(q_out[0], 0.0);
+  world.set_head({Eigen::Vector3d(0.1, 1.65, 0.2), Eigen::Quaterniond(0.0, 0.0, 2.0, 0.0)});
+  EXPECT_EQ(world.head().p_W_m.y(), 1.65);
+  EXPECT_DOUBLE_EQ(world.head().q_W.y(), 1.0);
+  EXPECT_EQ(world.head().q_W.w(), 0.0);
 }
 
 // Writers store (a, 2a, 3a); a torn read would break the ratio.

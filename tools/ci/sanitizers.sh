@@ -63,6 +63,7 @@ tsan_exclude=(
 tsan_targets=(
   realtime_tests              # SpscRing, TripleBuffer: producer/consumer threads
   simulation_tests            # SimulatedWorld's seqlock and mutexes, concurrent writers
+  sim_world_tests             # the simulated plugins' shared world, advanced from two threads
   plugin_host_tests           # the loader the server threads call into
   haptic_server_tests         # the whole server (haptic, io, planner, display, recorder)
   recording_replay_tests      # the recorder thread, then replay

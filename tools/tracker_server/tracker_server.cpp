@@ -10,6 +10,7 @@
 #include "simulation/simulated_user.h"
 #include "simulation/simulated_user_params.h"
 #include "simulation/simulated_world.h"
+#include "sim_world/sim_session.h"
 
 #include <fmt/format.h>
 
@@ -66,23 +67,25 @@ TrackerServerReport run_tracker_server(const TrackerServerOptions& options, cons
   const SceneDescription scene = read_scene(options.scene_file);
   const PluginDescription description = tracker_of(scene, options.scene_file, options);
 
-  simulation::SimulatedWorld world;
   // Not shared: the scene's <simulated_user> when it has one, else a random walk seeded
   // by --seed. Shared: the haptic server's user and base, received below.
-  std::optional<simulation::SimulatedUser> user;
+  std::optional<simulation::SimulatedUserConfig> user_config;
   if (!options.shared_world) {
-    simulation::SimulatedUserConfig user_config;
-    user_config.seed = options.user_seed;
+    user_config.emplace();
+    user_config->seed = options.user_seed;
     if (scene.simulated_user) {
       auto parsed = simulation::simulated_user_config_from(*scene.simulated_user);
       if (!parsed.ok()) throw TrackerServerError(parsed.error().front().to_string());
       user_config = std::move(parsed).value();
     }
-    user.emplace(user_config);
   }
-  HostServices host(&world.table());
+  HostServices host;
   host.set_scene_file(std::filesystem::absolute(options.scene_file));
-  if (user) user->update(host.now_s(), world);
+  // The world the simulated tracker plugin will find (the same session: same scene, same
+  // process); it moves the user itself.
+  const std::shared_ptr<sim_world::SimSession> session = sim_world::SimSession::acquire(host.abi());
+  session->set_user(std::move(user_config), host.now_s());
+  simulation::SimulatedWorld& world = session->world();
 
   const PluginSearchPath search = PluginSearchPath::standard(options.plugin_paths);
   Result<PluginInstance, PluginError> opened = open_plugin(search, description, host.abi());
@@ -99,7 +102,7 @@ TrackerServerReport run_tracker_server(const TrackerServerOptions& options, cons
   std::optional<SimWorldSubscriber> shared;
   if (options.shared_world) {
     shared.emplace(participant, options.rig_id);
-    while (!shared->apply_newest(world.table())) {
+    while (!shared->apply_newest(world)) {
       if (stop.load(std::memory_order_relaxed) ||
           (options.duration_s && host.now_s() - t0_s >= *options.duration_s)) {
         report.elapsed_s = host.now_s() - t0_s;
@@ -127,8 +130,7 @@ TrackerServerReport run_tracker_server(const TrackerServerOptions& options, cons
   while (!stop.load(std::memory_order_relaxed)) {
     const double now_s = host.now_s();
     if (options.duration_s && now_s - t0_s >= *options.duration_s) break;
-    if (user) user->update(now_s, world);
-    if (shared) (void)shared->apply_newest(world.table());
+    if (shared) (void)shared->apply_newest(world);
     if (tracker.simulates()) {
       if (auto r = tracker.simulate_until(now_s); !r) fail(r.error());
     }

@@ -1,9 +1,10 @@
 #pragma once
 // `mhd tracker-server`: runs a scene's tracker plugin (sim_is900, replay, or real
 // hardware) and publishes every sample it reads as mhd_dds::TrackerSample for one rig.
-// For simulated trackers it owns the SimulatedWorld and a SimulatedUser (random walk)
-// and advances them itself; the base stays where the world puts it (the base is the
-// haptic server's). With shared_world it runs no user: it measures the world the rig's
+// For simulated trackers it sets up the scene's simulated world (plugins/sim_world, the
+// simulated plugins' own library) before opening the plugin: the scene's <simulated_user>
+// or a random walk, which the plugin moves; the base stays where the world puts it (the
+// base is the haptic server's). With shared_world it runs no user: it measures the world the rig's
 // haptic server publishes (dds_common/shared_sim_world.h), so the simulated tracker sees
 // the base the haptic server moves. The plugin is polled every poll_period_s, so a sample leaves at
 // most one period after the plugin makes it readable.

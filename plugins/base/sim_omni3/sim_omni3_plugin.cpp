@@ -1,11 +1,12 @@
 // The sim_omni3 base plugin: the C ABI over Omni3Model. Commands are stamped with the
 // host clock when they arrive; the host advances the base with simulate_until(), and
-// the true pose goes to the shared simulated world after every advance. With command_log,
+// the true pose goes to the scene's simulated world (sim_world/sim_session.h) after every advance. With command_log,
 // every command and every firing of the command watchdog goes to a CSV
 // (sim_common/command_log.h).
 
 #include "sim_omni3_model.h"
 #include "sim_common/command_log.h"
+#include "sim_world/sim_session.h"
 
 #include <mhd/plugin_sdk.hpp>
 
@@ -40,7 +41,8 @@ class SimOmni3Plugin {
       sdk::text("command_log", nullptr, "a CSV file that receives every command and watchdog firing"),
   };
 
-  SimOmni3Plugin(const mhd_host& host, const sdk::Params& params) : host_(host), model_(read_config(host, params)) {
+  SimOmni3Plugin(const mhd_host& host, const sdk::Params& params)
+      : host_(host), session_(sim_world::SimSession::acquire(host)), model_(read_config(*session_, params)) {
     if (const auto file = params.optional_text("command_log")) {
       log_ = std::make_unique<plugin_support::CommandLog>(*file, std::array{"vx_mps", "vz_mps", "omega_radps"});
     }
@@ -84,7 +86,7 @@ class SimOmni3Plugin {
   }
 
  private:
-  static Omni3Config read_config(const mhd_host& host, const sdk::Params& params) {
+  static Omni3Config read_config(sim_world::SimSession& session, const sdk::Params& params) {
     // The numbers that go to the model as they are (their ranges are declared above).
     constexpr std::array<std::pair<const char*, double Omni3Config::*>, 8> kPlainNumbers{{
         {"base_radius_m", &Omni3Config::base_radius_m},
@@ -100,10 +102,10 @@ class SimOmni3Plugin {
     for (const auto& [name, field] : kPlainNumbers) c.*field = params.number(name, c.*field);
     c.max_omega_radps = params.number("max_omega_degps", c.max_omega_radps / kDegToRad) * kDegToRad;
     c.seed = params.integer("seed", c.seed);
-    // The start pose: the simulated world's base pose when there is one, each field
-    // overridden by its parameter.
+    // The start pose: the simulated world's base pose, each field overridden by its parameter.
     PlanarPose& p = c.initial_pose;
-    if (host.sim_world != nullptr) host.sim_world->get_base_pose(host.sim_world->context, &p.x_m, &p.z_m, &p.heading_rad);
+    const simulation::PlanarPose world_base = session.world().base_pose();
+    p = {world_base.x_m, world_base.z_m, world_base.heading_rad};
     p.x_m = params.number("x_m", p.x_m);
     p.z_m = params.number("z_m", p.z_m);
     if (const auto heading_deg = params.optional_number("heading_deg")) p.heading_rad = *heading_deg * kDegToRad;
@@ -115,12 +117,12 @@ class SimOmni3Plugin {
   }
 
   void publish_pose() {
-    if (host_.sim_world == nullptr) return;
     const PlanarPose& p = model_.pose();
-    host_.sim_world->set_base_pose(host_.sim_world->context, p.x_m, p.z_m, p.heading_rad);
+    session_->world().set_base_pose({p.x_m, p.z_m, p.heading_rad});
   }
 
   mhd_host host_;
+  std::shared_ptr<sim_world::SimSession> session_;
   Omni3Model model_;
   bool read_once_ = false;
   double last_read_time_s_ = 0.0;

@@ -1,11 +1,12 @@
 // The sim_delta device plugin: the C ABI (through the plugin SDK) over DeltaSimModel
-// (docs/sim_delta.md), a Cartesian device (ABI 3) as sim_phantom is. A desk device rides no
+// (docs/sim_delta.md), a Cartesian device (ABI 4) as sim_phantom is. A desk device rides no
 // base, so the simulated hand reaches it through its pose in the world, X_WD (parameters
-// device_position_m, device_rpy_deg: the scene's <frame name="device">); without a
-// simulated world the hand rests at hand_D_m.
+// device_position_m, device_rpy_deg: the scene's <frame name="device">); until a hand is
+// placed in the scene's simulated world (sim_world/sim_session.h) it rests at hand_D_m.
 
 #include "sim_delta_model.h"
 #include "sim_common/simulated_device.h"
+#include "sim_world/sim_session.h"
 
 #include "geometry/pose.h"
 
@@ -30,11 +31,12 @@ class SimDeltaPlugin {
       sdk::vector3("device_position_m", "m", "0 0 0", "the device frame D in the world (the scene's frame 'device')"),
       sdk::vector3("device_rpy_deg", "deg", "0 0 0", "its roll, pitch, yaw"),
       sdk::vector3("hand_D_m", "m", nullptr,
-                   "without a simulated world: where the hand rests, device frame (default: the workspace centre)"),
+                   "while the simulated world has no hand: where it rests, device frame (default: the workspace centre)"),
   });
 
   SimDeltaPlugin(const mhd_host& host, const sdk::Params& params)
-      : host_(host), model_(read_config(params)), X_DW_(read_X_WD(params).inverse(Eigen::Isometry)) {
+      : host_(host), session_(sim_world::SimSession::acquire(host)), model_(read_config(params)),
+        X_DW_(read_X_WD(params).inverse(Eigen::Isometry)) {
     rest_hand_D_m_ = params.vector3("hand_D_m", model_.config().workspace.center_D_m());
   }
 
@@ -42,8 +44,12 @@ class SimDeltaPlugin {
     const double now = sdk::host_now(host_);
     model_.start(now);
     simulate_until(now);
+    // The scene's user walks on the session's thread (device calls run on the haptic
+    // thread, which must not lock).
+    user_runner_ = sim_world::SimSession::run_user(session_, host_);
     read_once_ = false;
   }
+  void stop() { user_runner_.reset(); }
 
   void device_info(mhd_device_info& out) const {
     const DeltaWorkspaceBox& box = model_.config().workspace;
@@ -67,15 +73,14 @@ class SimDeltaPlugin {
     model_.command(force_D, sdk::host_now(host_));  // throws on a non-finite force
   }
 
-  /// The device at t_s with the world's hand in D, or the resting hand without a world.
+  /// The device at t_s with the world's hand in D, or the resting hand while the world has none.
   void simulate_until(double t_s) {
-    if (host_.sim_world == nullptr) {
+    const simulation::SimulatedWorld& w = session_->world();
+    if (!w.has_hand()) {
       model_.simulate_until(t_s, rest_hand_D_m_);
       return;
     }
-    Eigen::Vector3d p_W_hand;
-    host_.sim_world->get_hand(host_.sim_world->context, p_W_hand.data());
-    model_.simulate_until(t_s, X_DW_ * p_W_hand);
+    model_.simulate_until(t_s, X_DW_ * w.hand());
   }
 
  private:
@@ -95,6 +100,8 @@ class SimDeltaPlugin {
   }
 
   mhd_host host_;
+  std::shared_ptr<sim_world::SimSession> session_;
+  std::unique_ptr<sim_world::UserRunner> user_runner_;  ///< between start and stop
   DeltaSimModel model_;
   Pose X_DW_;
   Eigen::Vector3d rest_hand_D_m_ = Eigen::Vector3d::Zero();

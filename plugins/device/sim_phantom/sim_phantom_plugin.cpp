@@ -1,10 +1,11 @@
-// The sim_phantom device plugin: the C ABI over PhantomSimModel. A Cartesian device (ABI 3)
+// The sim_phantom device plugin: the C ABI over PhantomSimModel. A Cartesian device (ABI 4)
 // as a vendor SDK is: it reports the tool point in its frame P, from the joint angles its
 // encoders give (the thesis's forward kinematics), and maps the force it receives to motor
 // torques itself, tau = J_P^T F (thesis ch. 5.2), clamped to its motors' limits. Torques are
 // stamped with the host clock when they arrive; the host advances the device with simulate_until(),
-// which reads the hand and the base pose from the simulated world (without a world: a
-// fixed hand, parameter hand_P_m, in the device frame). hand_model selects the kinematic
+// which reads the hand and the base pose from the scene's simulated world
+// (sim_world/sim_session.h; until a hand is placed there, a fixed hand, parameter
+// hand_P_m, in the device frame). hand_model selects the kinematic
 // hand (a stiff spring) or the impedance hand (a mass-spring-damper pushed by the force). With command_log, every command
 // and every firing of the command watchdog goes to a CSV (sim_common/command_log.h).
 // docs/sim_phantom.md.
@@ -12,6 +13,7 @@
 #include "sim_phantom_model.h"
 #include "sim_common/command_log.h"
 #include "sim_common/simulated_device.h"
+#include "sim_world/sim_session.h"
 
 #include "geometry/pose.h"
 
@@ -45,12 +47,13 @@ class SimPhantomPlugin {
       sdk::vector3("base_position_m", "m", nullptr, "the floor frame in the robot frame (default: pomhi.xml's)"),
       sdk::vector3("base_rpy_deg", "deg", nullptr, "its roll, pitch, yaw (default: pomhi.xml's)"),
       sdk::vector3("hand_P_m", "m", nullptr,
-                   "without a simulated world: where the hand rests, device frame (default: the workspace centre)"),
+                   "while the simulated world has no hand: where it rests, device frame (default: the workspace centre)"),
       sdk::text("command_log", nullptr, "a CSV file that receives every command and watchdog firing"),
   });
 
   SimPhantomPlugin(const mhd_host& host, const sdk::Params& params)
-      : host_(host), model_(read_config(params)), rest_hand_P_m_(params.vector3("hand_P_m", workspace_center())) {
+      : host_(host), session_(sim_world::SimSession::acquire(host)), model_(read_config(params)),
+        rest_hand_P_m_(params.vector3("hand_P_m", workspace_center())) {
     if (const auto file = params.optional_text("command_log")) {
       log_ = std::make_unique<plugin_support::CommandLog>(*file, std::array{"force_x_N", "force_y_N", "force_z_N"});
     }
@@ -61,9 +64,15 @@ class SimPhantomPlugin {
     model_.start(now);
     simulate(now);
     read_once_ = false;
+    // The scene's user walks on the session's thread: this plugin's calls run on the
+    // haptic thread, which must not lock, and on a desk nothing else moves the user.
+    user_runner_ = sim_world::SimSession::run_user(session_, host_);
     log_event(now, CommandEvent::Start);
   }
-  void stop() { log_event(sdk::host_now(host_), CommandEvent::Stop); }
+  void stop() {
+    user_runner_.reset();
+    log_event(sdk::host_now(host_), CommandEvent::Stop);
+  }
 
   void device_info(mhd_device_info& out) const {
     const WorkspaceBox& box = model_.config().device.workspace;
@@ -116,21 +125,24 @@ class SimPhantomPlugin {
   }
 
   /// Evaluates the device at t_s with the world's hand (where the user means it to be)
-  /// and base pose, or without a world with the hand resting at rest_hand_P_m.
+  /// and base pose, or, while the world has no hand, with the hand resting at rest_hand_P_m.
   void simulate(double t_s) {
-    if (host_.sim_world == nullptr) {
+    const simulation::SimulatedWorld& w = session_->world();
+    if (!w.has_hand()) {
       model_.simulate_until(t_s, rest_hand_P_m_);
       return;
     }
-    const mhd_sim_world& w = *host_.sim_world;
+    const simulation::PlanarPose b = w.base_pose();
     BasePose base;
-    w.get_base_pose(w.context, &base.x_m, &base.z_m, &base.heading_rad);
-    Eigen::Vector3d p_W;
-    w.get_hand(w.context, p_W.data());
-    model_.simulate_until(t_s, base, p_W);
+    base.x_m = b.x_m;
+    base.z_m = b.z_m;
+    base.heading_rad = b.heading_rad;
+    model_.simulate_until(t_s, base, w.hand());
   }
 
   mhd_host host_;
+  std::shared_ptr<sim_world::SimSession> session_;
+  std::unique_ptr<sim_world::UserRunner> user_runner_;  ///< between start and stop
   PhantomSimModel model_;
   Eigen::Vector3d rest_hand_P_m_;
   bool read_once_ = false;

@@ -1,4 +1,4 @@
-/* MHD plugin ABI, version 3. The only header a plugin includes.
+/* MHD plugin ABI, version 4. The only header a plugin includes.
  *
  * A plugin is a shared library exporting one C function, mhd_plugin_entry, that returns
  * a table of function pointers (mhd_plugin_api). The host checks the table's ABI
@@ -15,6 +15,9 @@
  * in D; joint kinematics live inside the device plugin. device_info replaced
  * device_limits, and every plugin declares its parameters (params, param_count), so the
  * host checks a scene's parameters without opening the plugin. A v2 plugin is refused.
+ * Version 4 took the simulated world out of mhd_host: simulation is not the host's
+ * business, so simulated backends share their world through a support library of their
+ * own (plugins/sim_world). A v3 plugin is refused.
  * All quantities are SI (metres, radians, seconds, newtons); device-native units
  * (millimetres, encoder counts) stay inside the plugin. Frames follow the engine's
  * X_AB naming: a pose of B given in A.
@@ -40,7 +43,7 @@
 extern "C" {
 #endif
 
-#define MHD_PLUGIN_ABI_VERSION 3u
+#define MHD_PLUGIN_ABI_VERSION 4u
 #define MHD_PLUGIN_ENTRY_SYMBOL "mhd_plugin_entry"
 #define MHD_ERROR_MESSAGE_SIZE 256
 
@@ -194,29 +197,12 @@ typedef struct mhd_display_frame {
 
 /* ---- what the host offers a plugin -------------------------------------------- */
 
-/* Simulated backends share one simulated world (the user's body and hand, the base's
- * true pose) through the host, so a simulated tracker sees the simulated base move.
- * Real backends ignore it. All poses in the world frame. */
-typedef struct mhd_sim_world {
-  void* context;
-  /* True planar pose of the base. */
-  void (*get_base_pose)(void* context, double* x_m, double* z_m, double* heading_rad);
-  void (*set_base_pose)(void* context, double x_m, double z_m, double heading_rad);
-  /* The user's hand (where the device's handle is held) and head. */
-  void (*get_hand)(void* context, double p_W_m[3]);
-  void (*set_hand)(void* context, const double p_W_m[3]);
-  void (*get_head)(void* context, double p_W_m[3], double q_W_wxyz[4]);
-  void (*set_head)(void* context, const double p_W_m[3], const double q_W_wxyz[4]);
-} mhd_sim_world;
-
 typedef struct mhd_host {
   uint32_t abi_version;
   uint32_t struct_size;
   /* Monotonic host clock, seconds. */
   double (*now_s)(void* context);
   void* clock_context;
-  /* NULL when no simulated world exists (real hardware only). */
-  const mhd_sim_world* sim_world;
   /* Absolute path of the root scene XML the host runs, NULL when there is none. A display
    * plugin loads the scene's geometry from it; paths inside resolve against it. */
   const char* scene_file;

@@ -1,5 +1,5 @@
 // MHD plugin SDK: a plugin written as a C++ class, exported through the C ABI of
-// mhd/plugin_abi.h (version 3). Header-only C++20. A plugin is its class plus one macro:
+// mhd/plugin_abi.h (version 4). Header-only C++20. A plugin is its class plus one macro:
 //
 //   class Gripper {
 //    public:
@@ -15,8 +15,7 @@
 //                              .description = "..."})
 //
 // What the SDK promises the class:
-//   - open() checks the host table (ABI version, size, clock, a complete sim_world when
-//     one is given) and the scene's parameters against kParams (mhd/plugin_sdk_params.hpp)
+//   - open() checks the host table (ABI version, size, clock) and the scene's parameters against kParams (mhd/plugin_sdk_params.hpp)
 //     before the constructor runs; the constructor gets valid values only.
 //   - No exception crosses the ABI: one thrown by the class becomes MHD_ERROR (NULL from
 //     open) with its what() in mhd_error.
@@ -79,8 +78,7 @@ inline void set_error(mhd_error* err, std::string_view message) noexcept {
   err->message[n] = '\0';
 }
 
-/// Throws std::runtime_error unless host is a usable table of this ABI version with a
-/// clock and, when it gives a simulated world, with all of its functions.
+/// Throws std::runtime_error unless host is a usable table of this ABI version with a clock.
 inline void check_host(const mhd_host* host) {
   if (host == nullptr) throw std::runtime_error("the host table is NULL");
   if (host->abi_version != MHD_PLUGIN_ABI_VERSION) {
@@ -92,11 +90,6 @@ inline void check_host(const mhd_host* host) {
                              std::to_string(sizeof(mhd_host)));
   }
   if (host->now_s == nullptr) throw std::runtime_error("the host gives no clock (now_s is NULL)");
-  const mhd_sim_world* w = host->sim_world;
-  if (w != nullptr && (w->get_base_pose == nullptr || w->set_base_pose == nullptr || w->get_hand == nullptr ||
-                       w->set_hand == nullptr || w->get_head == nullptr || w->set_head == nullptr)) {
-    throw std::runtime_error("the host's simulated world has a NULL function");
-  }
 }
 
 /// The host clock, seconds; throws std::runtime_error if it returns a non-finite time.

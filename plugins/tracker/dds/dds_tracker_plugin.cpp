@@ -8,6 +8,7 @@
 #include "dds_common/shared_sim_world.h"
 #include "dds_common/tracker_subscriber.h"
 #include "dds_common/dds_plugin_params.h"
+#include "sim_world/sim_session.h"
 
 #include <mhd/plugin_sdk.hpp>
 
@@ -48,7 +49,7 @@ class DdsTrackerPlugin {
           sdk::number("restart_after_s", "s", "0.25", "a silent writer may restart its sequence after this",
                       sdk::positive()),
           sdk::number("quaternion_tolerance", "", "0.001", "| |q| - 1 | allowed", sdk::positive()),
-          sdk::boolean("publish_sim_world", "false", "publish this host's simulated world (mhd_sim_world topic)"),
+          sdk::boolean("publish_sim_world", "false", "publish the scene's simulated world (mhd_sim_world topic)"),
       });
 
   DdsTrackerPlugin(const mhd_host& host, const sdk::Params& params)
@@ -74,11 +75,12 @@ class DdsTrackerPlugin {
     return subscriber_.wait(timeout_ns) ? MHD_OK : MHD_NO_DATA;
   }
 
-  // The host calls this after its simulated user and base have moved to t_s: the world
-  // the remote simulated tracker measures is this one, at this moment.
+  // The host calls this after the simulated base has moved to t_s: the world the remote
+  // simulated tracker measures is this process's, with its user at this moment.
   void simulate_until(double t_s) {
     if (sim_world_) {
-      sim_world_->publish(*host_.sim_world, dds::realtime_from_host(t_s, sdk::host_now(host_), dds::realtime_ns()));
+      session_->advance_to(t_s);
+      sim_world_->publish(session_->world(), dds::realtime_from_host(t_s, sdk::host_now(host_), dds::realtime_ns()));
     }
   }
 
@@ -104,7 +106,10 @@ class DdsTrackerPlugin {
   DdsTrackerPlugin(const mhd_host& host, const Config& c)
       : host_(host), config_(c), participant_(c.endpoint.domain_id, c.endpoint.config, c.endpoint.identity_dir),
         subscriber_(participant_, c.limits) {
-    if (c.publish_sim_world) sim_world_.emplace(participant_, c.endpoint.rig_id);
+    if (c.publish_sim_world) {
+      session_ = sim_world::SimSession::acquire(host);
+      sim_world_.emplace(participant_, c.endpoint.rig_id);
+    }
   }
 
   static Config read_config(const mhd_host& host, const sdk::Params& params) {
@@ -117,9 +122,6 @@ class DdsTrackerPlugin {
     c.limits.restart_after_s = params.number("restart_after_s", c.limits.restart_after_s);
     c.limits.quaternion_tolerance = params.number("quaternion_tolerance", c.limits.quaternion_tolerance);
     c.publish_sim_world = params.boolean("publish_sim_world", false);
-    if (c.publish_sim_world && host.sim_world == nullptr) {
-      throw std::runtime_error("publish_sim_world: the host has no simulated world (sim_world is NULL)");
-    }
     return c;
   }
 
@@ -127,6 +129,7 @@ class DdsTrackerPlugin {
   Config config_;
   dds::Participant participant_;
   dds::TrackerSubscriber subscriber_;
+  std::shared_ptr<sim_world::SimSession> session_;  ///< with publish_sim_world: this scene's simulated world
   std::optional<dds::SimWorldPublisher> sim_world_;
 };
 

@@ -1,8 +1,11 @@
-// The sim_is900 tracker plugin: the C ABI over Is900Model. It measures the shared
-// simulated world (base pose and head), so it needs the host's sim_world. The host
-// advances it with simulate_until(); tracker_read returns what has arrived by then.
+// The sim_is900 tracker plugin: the C ABI over Is900Model. It measures the scene's
+// simulated world (base pose and head; sim_world/sim_session.h), moving the scene's
+// simulated user there first. The host advances it with simulate_until(); tracker_read
+// returns what has arrived by then.
 
 #include "sim_is900_model.h"
+#include "sim_world/sim_session.h"
+#include "world_truth.h"
 
 #include <mhd/plugin_sdk.hpp>
 
@@ -44,17 +47,6 @@ Eigen::Isometry3d read_pose(const sdk::Params& params, const std::string& prefix
   if (rpy_deg) X.linear() = rotation_from_rpy_deg(*rpy_deg).toRotationMatrix();
   if (q) X.linear() = q->toRotationMatrix();
   return X;
-}
-
-WorldTruth read_world(const mhd_sim_world& world) {
-  WorldTruth t;
-  world.get_base_pose(world.context, &t.base_x_m, &t.base_z_m, &t.base_heading_rad);
-  double p[3];
-  double q[4];
-  world.get_head(world.context, p, q);
-  t.p_W_head = Eigen::Vector3d(p[0], p[1], p[2]);
-  t.q_W_head = Eigen::Quaterniond(q[0], q[1], q[2], q[3]);
-  return t;
 }
 
 Is900Config read_config(const sdk::Params& params) {
@@ -106,18 +98,23 @@ class SimIs900Plugin {
       sdk::number("dropout_duration_s", "s", "0", "how long it lasts", sdk::non_negative()),
   };
 
-  SimIs900Plugin(const mhd_host& host, const sdk::Params& params) : host_(host), model_(read_config(params)) {
-    if (host.sim_world == nullptr) {
-      throw std::runtime_error("sim_is900 measures the simulated world, but the host gives none (sim_world is NULL)");
-    }
-  }
+  SimIs900Plugin(const mhd_host& host, const sdk::Params& params)
+      : host_(host), session_(sim_world::SimSession::acquire(host)), model_(read_config(params)) {}
 
-  void start() { model_.start(sdk::host_now(host_), read_world(*host_.sim_world)); }
+  void start() {
+    const double now = sdk::host_now(host_);
+    session_->advance_to(now);
+    model_.start(now, world_truth(session_->world()));
+  }
   std::size_t tracker_read(std::span<mhd_tracker_sample> out) { return model_.read(out); }
-  void simulate_until(double t_s) { model_.simulate_until(t_s, read_world(*host_.sim_world)); }
+  void simulate_until(double t_s) {
+    session_->advance_to(t_s);
+    model_.simulate_until(t_s, world_truth(session_->world()));
+  }
 
  private:
   mhd_host host_;
+  std::shared_ptr<sim_world::SimSession> session_;
   Is900Model model_;
 };
 

@@ -1,4 +1,4 @@
-// A base for the fault-injection suite: moves the host's simulated base with the twist it
+// A base for the fault-injection suite: moves the scene's simulated base (sim_world/sim_session.h) with the twist it
 // was last commanded (integrated at every base_read, no dynamics), so the tracker sees
 // the base that is commanded; logs every command with its time; fails on cue.
 // Parameters:
@@ -7,6 +7,7 @@
 //   command_log=<path>  at close, one line per base_write: "t_s vx_mps vz_mps omega_radps",
 //                       and a marker "t_s nan nan nan" when the fault strikes
 #include "probe_common.h"
+#include "sim_world/sim_session.h"
 
 #include <cmath>
 #include <limits>
@@ -18,11 +19,8 @@ class FiBase {
  public:
   static constexpr auto kParams = probe::kFaultParams;
 
-  FiBase(const mhd_host& host, const mhd::sdk::Params& params) : host_(host), fault_(params, 1u << 20) {
-    if (host.sim_world == nullptr) {
-      throw std::runtime_error("fi_base moves the simulated base: the host has no sim_world");
-    }
-  }
+  FiBase(const mhd_host& host, const mhd::sdk::Params& params)
+      : host_(host), session_(mhd::sim_world::SimSession::acquire(host)), fault_(params, 1u << 20) {}
 
   void start() {
     last_read_s_ = mhd::sdk::host_now(host_);
@@ -31,9 +29,9 @@ class FiBase {
 
   mhd_status base_read(mhd_base_state& out) {
     const double t_s = mhd::sdk::host_now(host_);
-    const mhd_sim_world& w = *host_.sim_world;
-    double x = 0.0, z = 0.0, h = 0.0;
-    w.get_base_pose(w.context, &x, &z, &h);
+    mhd::simulation::SimulatedWorld& w = session_->world();
+    const mhd::simulation::PlanarPose pose = w.base_pose();
+    double x = pose.x_m, z = pose.z_m, h = pose.heading_rad;
     // Base frame: x forward = (cos h, 0, -sin h), z = x cross y = (sin h, 0, cos h).
     const double dt = t_s - last_read_s_;
     last_read_s_ = t_s;
@@ -42,7 +40,7 @@ class FiBase {
     x += vx_W * dt;
     z += vz_W * dt;
     h += last_.omega_radps * dt;
-    w.set_base_pose(w.context, x, z, h);
+    w.set_base_pose({x, z, h});
     out = {.timestamp_s = t_s, .x_m = x, .z_m = z, .heading_rad = h, .vx_mps = vx_W, .vz_mps = vz_W,
            .omega_radps = last_.omega_radps};
     bool nan = false;
@@ -62,6 +60,7 @@ class FiBase {
 
  private:
   mhd_host host_;
+  std::shared_ptr<mhd::sim_world::SimSession> session_;
   probe::FaultOnCue fault_;
   double last_read_s_ = 0.0;
   mhd_base_command last_{};

@@ -1,5 +1,5 @@
 // A tracker for the fault-injection suite: the simulated IS-900 (sim_is900's Is900Model,
-// measuring the host's simulated base and head) with delivery faults on top. The
+// measuring the scene's simulated base and head, sim_world/sim_session.h) with delivery faults on top. The
 // timestamps stay true (when the pose was measured); what the faults change is whether
 // and when a sample arrives:
 //   silent_after_s (never), resume_after_s (never)   nothing measured in between
@@ -21,6 +21,8 @@
 #include "probe_common.h"
 
 #include "sim_is900_model.h"
+#include "sim_world/sim_session.h"
+#include "world_truth.h"
 
 #include <algorithm>
 #include <array>
@@ -37,16 +39,6 @@ struct Pending {
   mhd_tracker_sample sample;
   double arrival_s;
 };
-
-mhd::sim_is900::WorldTruth truth_of(const mhd_sim_world& w) {
-  mhd::sim_is900::WorldTruth t;
-  w.get_base_pose(w.context, &t.base_x_m, &t.base_z_m, &t.base_heading_rad);
-  double p[3], q[4];
-  w.get_head(w.context, p, q);
-  t.p_W_head = Eigen::Vector3d(p[0], p[1], p[2]);
-  t.q_W_head = Eigen::Quaterniond(q[0], q[1], q[2], q[3]);
-  return t;
-}
 
 class FiTracker {
  public:
@@ -69,6 +61,7 @@ class FiTracker {
 
   FiTracker(const mhd_host& host, const mhd::sdk::Params& params)
       : host_(host),
+        session_(mhd::sim_world::SimSession::acquire(host)),
         model_(config_from(params)),
         rng_(model_.config().seed ^ 0x5eedu),
         silent_after_s_(params.number("silent_after_s", std::numeric_limits<double>::infinity())),
@@ -77,12 +70,9 @@ class FiTracker {
         delay_s_(params.number("delay_ms") * 1e-3),
         jitter_s_(params.number("jitter_ms") * 1e-3),
         with_head_(params.boolean("with_head")) {
-    if (host.sim_world == nullptr) {
-      throw std::runtime_error("fi_tracker measures the simulated world: the host has none");
-    }
     if (const auto head_p_W_m = params.optional_vector3("head_p_W_m")) {
-      const double q_W_wxyz[4] = {1.0, 0.0, 0.0, 0.0};
-      host.sim_world->set_head(host.sim_world->context, head_p_W_m->data(), q_W_wxyz);
+      const auto& p = *head_p_W_m;
+      session_->world().set_head({Eigen::Vector3d(p[0], p[1], p[2]), Eigen::Quaterniond::Identity()});
     }
     delivered_.open(params.optional_text("delivery_log").value_or(""), 1u << 18);
   }
@@ -92,12 +82,14 @@ class FiTracker {
 
   void start() {
     t_start_s_ = mhd::sdk::host_now(host_);
-    model_.start(t_start_s_, truth_of(*host_.sim_world));
+    session_->advance_to(t_start_s_);
+    model_.start(t_start_s_, mhd::sim_is900::world_truth(session_->world()));
   }
 
   /// Advances the model; what it measured goes in flight with its delivery time, or is lost.
   void simulate_until(double t_s) {
-    model_.simulate_until(t_s, truth_of(*host_.sim_world));
+    session_->advance_to(t_s);
+    model_.simulate_until(t_s, mhd::sim_is900::world_truth(session_->world()));
     std::array<mhd_tracker_sample, 32> measured{};
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     for (;;) {
@@ -144,6 +136,7 @@ class FiTracker {
   }
 
   mhd_host host_;
+  std::shared_ptr<mhd::sim_world::SimSession> session_;
   mhd::sim_is900::Is900Model model_;
   std::mt19937_64 rng_;
   double silent_after_s_, resume_after_s_;

@@ -1,6 +1,6 @@
 // A device plugin as it was written for plugin ABI 2 (joint angles in, joint torques out),
 // built against the frozen v2 header (tests/plugin_host/abi2): like every v2 plugin it
-// answers only a host that asks for version 2. The ABI 3 host must refuse it and say so.
+// answers only a host that asks for version 2. A later host must refuse it and say so.
 #include <mhd/plugin_abi.h>
 
 static_assert(MHD_PLUGIN_ABI_VERSION == 2u, "abi2_device must be built against the frozen ABI 2 header");
