@@ -109,7 +109,7 @@ struct HapticServer::Impl {
   std::uint64_t recording_rows_written = 0;
 
   Impl(const CompiledScene& s, ServerSettings st, ServerOptions o, Rig r)
-      : scene(s), settings(std::move(st)), options(std::move(o)), rig(std::move(r)), host() {}
+      : scene(s), settings(std::move(st)), options(std::move(o)), rig(std::move(r)) {}
 
   static std::string plugin_failure(const PluginDescription& d, const PluginError& e) {
     return Diagnostic{d.where, e.to_string()}.to_string();

@@ -1,6 +1,7 @@
 #pragma once
 // What the host offers every plugin (mhd_host): a monotonic clock and the scene file it
-// runs. (Simulated plugins share their world among themselves: plugins/sim_world.) Plugins keep the mhd_host pointer they get in open(),
+// runs. (Simulated plugins share their world among themselves: plugins/sim_world.)
+// Plugins keep the mhd_host pointer they get in open(),
 // so a HostServices must outlive every instance opened with it and cannot move.
 
 #include <mhd/plugin_abi.h>

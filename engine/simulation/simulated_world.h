@@ -2,8 +2,9 @@
 // The truth of a simulated session: the base's planar pose, the user's head pose and
 // the user's hand. The simulated plugins of one scene share one world through their own
 // support library (plugins/sim_world/sim_session.h), never through the host, so the
-// simulated tracker sees the base that the simulated base moves. World frame W: y up, floor at y = 0; a planar heading h is a rotation about
-// +y_W, forward x = (cos h, 0, -sin h).
+// simulated tracker sees the base that the simulated base moves. World frame W: y up,
+// floor at y = 0; a planar heading h is a rotation about +y_W, forward x = (cos h, 0,
+// -sin h).
 //
 // Threads: the simulated device reads the base and the hand on the haptic thread, so
 // every reader is lock-free (realtime::Seqlock: never locks, never allocates); writers

@@ -15,8 +15,9 @@
 //                              .description = "..."})
 //
 // What the SDK promises the class:
-//   - open() checks the host table (ABI version, size, clock) and the scene's parameters against kParams (mhd/plugin_sdk_params.hpp)
-//     before the constructor runs; the constructor gets valid values only.
+//   - open() checks the host table (ABI version, size, clock) and the scene's parameters
+//     against kParams (mhd/plugin_sdk_params.hpp) before the constructor runs; the
+//     constructor gets valid values only.
 //   - No exception crosses the ABI: one thrown by the class becomes MHD_ERROR (NULL from
 //     open) with its what() in mhd_error.
 //   - One call at a time: a call that overlaps another on the same instance is refused
