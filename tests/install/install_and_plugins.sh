@@ -47,9 +47,13 @@ test_plugins="$(find "$plugin_dir" -name 'libmhd_fi_*' -o -name 'libmhd_good_*' 
 if readelf -d "$prefix/bin/mhd" | grep -E 'R(UN)?PATH' | grep -F "$build"; then fail "bin/mhd has a build-tree RPATH"; fi
 if ldd "$prefix/bin/mhd" | grep -F "not found"; then fail "bin/mhd: a shared library is not found"; fi
 # The simulated plugins share their world through the installed libmhd_sim_world.so.
-ldd "$plugin_dir/libmhd_sim_is900.so" | grep -qF "$plugin_dir/../libmhd_sim_world.so" \
-  || fail "libmhd_sim_is900.so does not find the installed libmhd_sim_world.so: $(ldd "$plugin_dir/libmhd_sim_is900.so")"
-"$prefix/bin/mhd" --version | grep -q '^mhd ' || fail "installed mhd --version"
+# Output is captured before grep reads it: under pipefail, `cmd | grep -q` fails whenever grep's early exit
+# kills the writer with SIGPIPE, which depends on timing.
+sim_is900_deps="$(ldd "$plugin_dir/libmhd_sim_is900.so")"
+grep -qF "$plugin_dir/../libmhd_sim_world.so" <<<"$sim_is900_deps" \
+  || fail "libmhd_sim_is900.so does not find the installed libmhd_sim_world.so: $sim_is900_deps"
+mhd_version="$("$prefix/bin/mhd" --version)"
+grep -q '^mhd ' <<<"$mhd_version" || fail "installed mhd --version: $mhd_version"
 
 for example in c_frame_counter cpp_contact_log; do
   step "out-of-tree $example: configure, build, install against the prefix"
