@@ -15,6 +15,12 @@
 #include <limits>
 
 namespace mhd {
+namespace {
+
+// The look-ahead runs only while this fraction of the haptic period has not passed.
+constexpr double kLookAheadWithinPeriod = 0.25;
+
+}  // namespace
 
 void HapticServer::Impl::haptic_thread() {
   const HapticTickSettings& tick_settings = settings.tick;  // max_force_N: the device's, set at open
@@ -125,6 +131,11 @@ void HapticServer::Impl::haptic_thread() {
     status_counters.safety_gain.store(out.safety_gain, std::memory_order_relaxed);
     status_counters.tracker_age_s.store(out.tracker_age_s, std::memory_order_relaxed);
     status_counters.in_contact.store(out.in_contact, std::memory_order_relaxed);
+
+    // The force is out: the rest of the period is idle, so the proxy looks ahead to the next
+    // tick's HIP (ProxyLookAhead), unless this tick ran long enough that the look-ahead,
+    // which costs about as much, could make the next one late.
+    if (host.now_s() - t_s < kLookAheadWithinPeriod / settings.haptic_rate_hz) (void)tick.look_ahead();
   }
 
   // Safe state: zero torque, whatever ended the loop.

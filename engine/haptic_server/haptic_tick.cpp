@@ -47,6 +47,7 @@ HapticTickOutput HapticTick::tick(double t_s, double dt_s, const Eigen::Vector3d
 HapticTickOutput HapticTick::render(double t_s, double dt_s, const Eigen::Vector3d& p_D_tool_m,
                                     const std::optional<BasePose>& base, double tracker_age_s) noexcept {
   HapticTickOutput out;
+  rendered_last_tick_ = false;
   out.t_s = t_s;
   out.p_D_tool_m = p_D_tool_m;
   out.tracker_age_s = tracker_age_s;
@@ -83,6 +84,8 @@ HapticTickOutput HapticTick::render(double t_s, double dt_s, const Eigen::Vector
     }
     const ProxyOutput p =
         step_proxy(moving_.world(), scene_.materials, proxy_settings_, proxy_, out.p_W_hip, dt_s, moving_.twists());
+    rendered_last_tick_ = true;
+    last_rendered_dt_s_ = dt_s;
     out.proxy_W_m = p.proxy_W;
     out.proxy_force_W_N = p.force_W;
     out.in_contact = p.in_contact;
@@ -120,6 +123,12 @@ HapticTickOutput HapticTick::render(double t_s, double dt_s, const Eigen::Vector
   }
   moving_.apply_reaction(proxy_, Eigen::Vector3d::Zero());  // no hand: nothing pushes
   return out;
+}
+
+LookAheadReport HapticTick::look_ahead() noexcept {
+  if (!rendered_last_tick_) return {};
+  return look_ahead_.run(moving_.world(), scene_.materials, proxy_settings_, proxy_, last_rendered_dt_s_,
+                         moving_.twists());
 }
 
 }  // namespace mhd

@@ -16,6 +16,7 @@
 #include "prediction/base_pose_predictor.h"
 #include "proxy/god_object.h"
 #include "proxy/moving_world.h"
+#include "proxy/proxy_look_ahead.h"
 #include "safety/force_safety.h"
 #include "scene_compiler/compiled_scene.h"
 
@@ -78,6 +79,12 @@ class HapticTick {
   HapticTickOutput render(double t_s, double dt_s, const Eigen::Vector3d& p_D_tool_m, const std::optional<BasePose>& base,
                           double tracker_age_s) noexcept;
 
+  /// Between ticks, after the last tick's force has gone to the device: steps a copy of the
+  /// proxy to where the HIP will be next (ProxyLookAhead), so the next tick finds its data in
+  /// the cache. Changes nothing any tick returns. Does nothing (ran false) unless the last
+  /// tick rendered a proxy.
+  LookAheadReport look_ahead() noexcept;
+
   [[nodiscard]] const ForceSafety& safety() const noexcept { return safety_; }
   /// Ticks with no base pose yet (before the first tracker sample): counted here, not by
   /// the safety stage, so a normal start is not reported as stale or faulty.
@@ -97,6 +104,9 @@ class HapticTick {
   BasePosePredictor predictor_;
   ForceSafety safety_;
   ProxyState proxy_;
+  ProxyLookAhead look_ahead_;
+  double last_rendered_dt_s_ = 0.0;
+  bool rendered_last_tick_ = false;  // the last tick stepped the proxy
   MovingWorld moving_;  // the scene's world, its moving objects where they are now
   std::optional<double> t0_s_;  // the first tick: scripted motions start there
   std::uint64_t squeeze_ticks_ = 0;

@@ -299,3 +299,29 @@ TEST(HapticTick, ADesktopRigRendersFromTheFirstTickAndNeverGoesStale) {
 }
 
 }  // namespace
+
+TEST(HapticTick, TheLookAheadBetweenTicksChangesNothingTheDeviceGets) {
+  // Two ticks on one input: one looks ahead after every tick, as the haptic thread does,
+  // one never does. What goes to the device must be the same, bit for bit, while the
+  // look-ahead does the work of a tick in contact (it presses into the box as the hand does).
+  Fixture f = make_fixture(0.002);
+  const Rig desk = Rig::desktop(f.rig->X_W_phantom(f.rig->X_W_robot_from_base({})));
+  HapticTick looking(*f.scene, desk, no_fade_in());
+  HapticTick plain(*f.scene, desk, no_fade_in());
+  Eigen::Vector3d p = tool(kQ);
+  int ticks_in_contact = 0;
+  int look_aheads_in_contact = 0;
+  for (int i = 0; i < 200; ++i) {
+    p += Eigen::Vector3d(0.0002, i < 100 ? -0.0001 : 0.0001, 0.0);  // down 10 mm and up again, sliding
+    const HapticTickOutput a = looking.tick(0.001 * i, 0.001, p);
+    const HapticTickOutput b = plain.tick(0.001 * i, 0.001, p);
+    ASSERT_EQ(a.force_D_N, b.force_D_N) << "tick " << i;
+    ASSERT_EQ(a.proxy_W_m, b.proxy_W_m) << "tick " << i;
+    if (a.in_contact) ++ticks_in_contact;
+    const LookAheadReport ahead = looking.look_ahead();
+    ASSERT_TRUE(ahead.ran) << "tick " << i;
+    if (ahead.sweeps > 1) ++look_aheads_in_contact;
+  }
+  EXPECT_GT(ticks_in_contact, 100);
+  EXPECT_GT(look_aheads_in_contact, 100);
+}

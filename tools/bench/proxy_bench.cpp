@@ -2,7 +2,8 @@
 // at 0.5 m/s and 1 kHz; per-update times (median / p99 / p99.9 / max, one core) over the
 // ticks in contact and over all ticks (free-space transit included), the ticks that ran
 // out of the proxy's work budget, the most sweeps in one tick, and the exact pop-through
-// count. Prints a Markdown table. --force-shading shades every object, for the cost of shading.
+// count, and the look-ahead between ticks timed apart (--no-look-ahead: none). Prints a
+// Markdown table. --force-shading shades every object, for the cost of shading.
 
 #include "scene_compiler/scene_compiler.h"
 #include "scene_xml/scene_reader.h"
@@ -146,6 +147,10 @@ int main(int argc, char** argv) {
   app.add_flag("--force-shading", shade_all,
                "Turn force shading on for every object (at its material's crease angle), to set its cost beside "
                "the same run without");
+  bool no_look_ahead = false;
+  app.add_flag("--no-look-ahead", no_look_ahead,
+               "Do not look ahead between ticks (the haptic server does, proxy/proxy_look_ahead.h): the ticks as "
+               "they cost with only what the last tick left in the cache");
   std::string path_dir;
   app.add_option("--write-path", path_dir,
                  "Also write each scene's HIP path to DIR/<scene>.csv, for mhd proxy-replay (before/after checks)");
@@ -153,8 +158,9 @@ int main(int argc, char** argv) {
 
   fmt::print("| scene | triangles | contact updates | median µs | p99 µs | p99.9 µs | max µs | all updates "
              "| all median µs | all p99 µs | all p99.9 µs | all max µs | budget exhausted | max sweeps "
-             "| max planes | pop-throughs | ticks inside | follow failures |\n");
-  fmt::print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+             "| max planes | pop-throughs | ticks inside | follow failures "
+             "| look-ahead median / p99 / p99.9 / max µs |\n");
+  fmt::print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   int status = 0;
   for (const auto& file : scenes) {
     const auto read = mhd::read_scene_file(file);
@@ -189,14 +195,18 @@ int main(int argc, char** argv) {
         status = 1;
       }
     }
-    const auto r = mhd::verify::run_strokes(scene, oracle, set, rate);
+    const auto r = mhd::verify::run_strokes(scene, oracle, set, rate, !no_look_ahead);
     const auto& c = r.contact_updates;
     const auto& a = r.all_updates;
+    const auto& l = r.look_ahead_updates;
+    const std::string look_ahead =
+        no_look_ahead ? std::string("off")
+                      : fmt::format("{:.2f} / {:.2f} / {:.2f} / {:.1f}", l.median_us, l.p99_us, l.p999_us, l.max_us);
     fmt::print("| {} | {} | {} | {:.2f} | {:.2f} | {:.2f} | {:.1f} | {} | {:.2f} | {:.2f} | {:.2f} | {:.1f} | {} | {} "
-               "| {} | {} | {} | {} |\n",
+               "| {} | {} | {} | {} | {} |\n",
                shade_all ? file + " (shaded)" : file, scene.triangle_count, c.count, c.median_us, c.p99_us,
                c.p999_us, c.max_us, a.count, a.median_us, a.p99_us, a.p999_us, a.max_us, r.budget_exhausted_ticks,
-               r.max_sweeps, r.max_plane_count, r.pop_throughs, r.ticks_inside, r.follow_failures);
+               r.max_sweeps, r.max_plane_count, r.pop_throughs, r.ticks_inside, r.follow_failures, look_ahead);
     std::fflush(stdout);
     if (r.pop_throughs != 0 || r.ticks_inside != 0 || r.follow_failures != 0) status = 1;
   }

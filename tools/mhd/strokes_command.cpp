@@ -111,6 +111,10 @@ int run(const RunOptions& opt) {
   fmt::print("proxy update in contact: median {:.2f} us, p99 {:.2f} us, p99.9 {:.2f} us, max {:.1f} us\n",
              r.contact_updates.median_us, r.contact_updates.p99_us, r.contact_updates.p999_us,
              r.contact_updates.max_us);
+  fmt::print("look-ahead between ticks (off the force's path): median {:.2f} us, p99 {:.2f} us, p99.9 {:.2f} us, "
+             "max {:.1f} us\n",
+             r.look_ahead_updates.median_us, r.look_ahead_updates.p99_us, r.look_ahead_updates.p999_us,
+             r.look_ahead_updates.max_us);
   fmt::print("pop-throughs: {} proxy moves touched the surface, {} ticks ended inside (exact check); "
              "follow failures: {} ticks (largest free-space gap {:.3f} mm)\n",
              r.pop_throughs, r.ticks_inside, r.follow_failures, 1e3 * r.max_free_gap_m);

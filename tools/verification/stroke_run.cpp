@@ -1,5 +1,7 @@
 #include "verification/stroke_run.h"
 
+#include "proxy/proxy_look_ahead.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -27,11 +29,12 @@ LatencySummary summarize_latency(std::vector<double>& samples_us) {
 }
 
 StrokeRunReport run_strokes(const CompiledScene& scene, const SurfaceCrossingOracle& oracle,
-                            const StrokeSet& strokes, double rate_Hz) {
+                            const StrokeSet& strokes, double rate_Hz, bool look_ahead) {
   using Clock = std::chrono::steady_clock;
   StrokeRunReport report;
   std::vector<double> contact_us;
   std::vector<double> all_us;
+  std::vector<double> look_ahead_us;
   double contact_force_sum = 0.0;
   const double dt_s = 1.0 / rate_Hz;
   const auto objects = static_cast<std::size_t>(scene.world.object_count());
@@ -46,6 +49,7 @@ StrokeRunReport run_strokes(const CompiledScene& scene, const SurfaceCrossingOra
     record.reserve(stroke.p_W_hip.size());
     ProxyState state;
     reset_proxy(state, stroke.p_W_hip.front());
+    ProxyLookAhead ahead;
     for (const Eigen::Vector3d& hip : stroke.p_W_hip) {
       const auto t0 = Clock::now();
       const ProxyOutput out = step_proxy(scene.world, scene.materials, scene.proxy, state, hip, dt_s);
@@ -68,6 +72,11 @@ StrokeRunReport run_strokes(const CompiledScene& scene, const SurfaceCrossingOra
       if (out.budget_exhausted) ++report.budget_exhausted_ticks;
       report.max_sweeps = std::max(report.max_sweeps, out.sweeps);
       record.push_back(make_tick_sample(hip, out, state));
+      if (look_ahead) {
+        const auto t2 = Clock::now();
+        (void)ahead.run(scene.world, scene.materials, scene.proxy, state, dt_s);
+        look_ahead_us.push_back(std::chrono::duration<double, std::micro>(Clock::now() - t2).count());
+      }
     }
     report.pop_throughs += count_crossings(oracle, record);
     report.ticks_inside += count_ticks_inside(oracle, record);
@@ -79,6 +88,7 @@ StrokeRunReport run_strokes(const CompiledScene& scene, const SurfaceCrossingOra
       report.contact_ticks > 0 ? contact_force_sum / static_cast<double>(report.contact_ticks) : 0.0;
   report.contact_updates = summarize_latency(contact_us);
   report.all_updates = summarize_latency(all_us);
+  report.look_ahead_updates = summarize_latency(look_ahead_us);
   return report;
 }
 

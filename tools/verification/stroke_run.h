@@ -29,6 +29,10 @@ struct StrokeRunReport {
   double mean_contact_force_N = 0.0;
   LatencySummary contact_updates;  ///< ticks that ended in contact
   LatencySummary all_updates;  ///< every tick, free-space transit included
+  /// The look-aheads between ticks (proxy/proxy_look_ahead.h), timed apart from the ticks:
+  /// the haptic thread's other work, off the path from the reading to the force. Empty
+  /// when the run did not look ahead.
+  LatencySummary look_ahead_updates;
   std::size_t budget_exhausted_ticks = 0;  ///< ticks whose proxy hit its work budget
   int max_sweeps = 0;                      ///< most sweeps one tick made
   /// Contact ticks and summed force magnitude per object (indexed like the world).
@@ -42,8 +46,9 @@ struct StrokeRunReport {
   double max_free_gap_m = 0.0;  ///< largest |proxy - HIP| with the segment between them free
 };
 
-/// Steps the proxy along every stroke (reset at each stroke's first sample).
+/// Steps the proxy along every stroke (reset at each stroke's first sample). With
+/// `look_ahead`, between ticks as the haptic server does.
 [[nodiscard]] StrokeRunReport run_strokes(const CompiledScene& scene, const SurfaceCrossingOracle& oracle,
-                                          const StrokeSet& strokes, double rate_Hz);
+                                          const StrokeSet& strokes, double rate_Hz, bool look_ahead = true);
 
 }  // namespace mhd::verify
