@@ -5,7 +5,8 @@
 //         dolphin's back along a smooth path (from 10 mm above the surface to --depth-m
 //         below it; joint angles from the device's IK), a base pose arrives every 10 ms. Prints median, p99, p99.9 and max per tick; with
 //         --realtime it also paces the ticks at 10 kHz on absolute deadlines and counts
-//         overruns.
+//         overruns; with --look-ahead it looks ahead after each tick as the server does
+//         and times that apart.
 //   leap  The HIP's leap per 1 kHz tick when a base pose arrives, the base driving at
 //         0.2 m/s: IS-900-like samples at 100 Hz (2.5 mm, 0.4 deg noise; 4 ms latency plus
 //         0-2 ms jitter), with prediction and with the newest sample held. The leap is the
@@ -66,7 +67,7 @@ double quantile(std::vector<double> v, double q) {
   return v[k];
 }
 
-int run_tick(const std::string& scene_file, double seconds, bool realtime, double depth_m) {
+int run_tick(const std::string& scene_file, double seconds, bool realtime, double depth_m, bool look_ahead) {
   Loaded l = load(scene_file);
   if (!l.scene) return 1;
   const Rig& rig = *l.rig;
@@ -102,6 +103,8 @@ int run_tick(const std::string& scene_file, double seconds, bool realtime, doubl
 
   std::vector<double> us;
   us.reserve(ticks);
+  std::vector<double> look_ahead_us;
+  look_ahead_us.reserve(look_ahead ? ticks : 0);
   std::size_t contact = 0, waiting_inside = 0;
   const std::string scheduling = realtime ? realtime::make_current_thread_realtime(80).detail : "";
   realtime::PeriodicTimer timer(kDt);
@@ -117,6 +120,10 @@ int run_tick(const std::string& scene_file, double seconds, bool realtime, doubl
     us.push_back(std::chrono::duration<double, std::micro>(end - start).count());
     if (out.in_contact) ++contact;
     if (out.hip_inside_object) ++waiting_inside;
+    if (look_ahead) {  // as the haptic thread does once the force is out
+      (void)tick.look_ahead();
+      look_ahead_us.push_back(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - end).count());
+    }
   }
   fmt::print("tick on {} ({} triangles): {} ticks at 10 kHz{}, {:.1f} % in contact, {} ticks waiting for the "
              "hand to leave the object it started in\n",
@@ -124,6 +131,12 @@ int run_tick(const std::string& scene_file, double seconds, bool realtime, doubl
              100.0 * static_cast<double>(contact) / static_cast<double>(ticks), waiting_inside);
   fmt::print("  per tick: median {:.2f} us, p99 {:.2f} us, p99.9 {:.2f} us, max {:.1f} us\n", quantile(us, 0.5),
              quantile(us, 0.99), quantile(us, 0.999), *std::max_element(us.begin(), us.end()));
+  if (look_ahead) {
+    fmt::print("  look-ahead after each tick (not in the tick's time): median {:.2f} us, p99 {:.2f} us, p99.9 {:.2f} us, "
+               "max {:.1f} us\n",
+               quantile(look_ahead_us, 0.5), quantile(look_ahead_us, 0.99), quantile(look_ahead_us, 0.999),
+               *std::max_element(look_ahead_us.begin(), look_ahead_us.end()));
+  }
   if (realtime) {
     fmt::print("  paced at 10 kHz ({}): {} overruns, {} deadlines missed\n", scheduling, timer.stats().overruns,
                timer.stats().missed_deadlines);
@@ -248,11 +261,14 @@ int main(int argc, char** argv) {
   tick->add_option("--seconds", seconds, "Simulated seconds (10 kHz ticks)");
   tick->add_option("--depth-m", depth_m, "Deepest point of the strokes below the surface (default 0.015)");
   tick->add_flag("--realtime", realtime, "Pace ticks at 10 kHz on absolute deadlines and count overruns");
+  bool look_ahead = false;
+  tick->add_flag("--look-ahead", look_ahead,
+                 "After each tick, look ahead as the server's haptic thread does (HapticTick::look_ahead), timed apart");
   CLI::App* leap = app.add_subcommand("leap", "HIP leap when base poses arrive, with and without prediction");
   leap->add_option("--scene", scene, "Scene with a rig");
   leap->add_option("--seconds", seconds, "Simulated seconds per run");
   leap->add_option("--seeds", seeds, "Runs (noise seeds); the worst is reported");
   CLI11_PARSE(app, argc, argv);
-  if (tick->parsed()) return run_tick(scene, seconds, realtime, depth_m);
+  if (tick->parsed()) return run_tick(scene, seconds, realtime, depth_m, look_ahead);
   return run_leaps(scene, seconds, seeds);
 }
