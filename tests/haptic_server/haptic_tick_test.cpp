@@ -298,7 +298,6 @@ TEST(HapticTick, ADesktopRigRendersFromTheFirstTickAndNeverGoesStale) {
   EXPECT_EQ(tick.safety().counters().fault_ticks, 0u);
 }
 
-}  // namespace
 
 TEST(HapticTick, TheLookAheadBetweenTicksChangesNothingTheDeviceGets) {
   // Two ticks on one input: one looks ahead after every tick, as the haptic thread does,
@@ -325,3 +324,5 @@ TEST(HapticTick, TheLookAheadBetweenTicksChangesNothingTheDeviceGets) {
   EXPECT_GT(ticks_in_contact, 100);
   EXPECT_GT(look_aheads_in_contact, 100);
 }
+
+}  // namespace
