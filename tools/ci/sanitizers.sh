@@ -61,7 +61,7 @@ tsan_exclude=(
 # threads, the DDS listener threads of Cyclone, the viewer's state hand-off), the
 # lock-free hand-offs, and the plugin host that those threads drive.
 tsan_targets=(
-  realtime_tests              # SpscRing, TripleBuffer: producer/consumer threads
+  realtime_tests              # SpscRing, TripleBuffer, Seqlock: producer/consumer threads
   simulation_tests            # SimulatedWorld's seqlock and mutexes, concurrent writers
   sim_world_tests             # the simulated plugins' shared world, advanced from two threads
   plugin_host_tests           # the loader the server threads call into
