@@ -6,7 +6,11 @@
 //         below it; joint angles from the device's IK), a base pose arrives every 10 ms. Prints median, p99, p99.9 and max per tick; with
 //         --realtime it also paces the ticks at 10 kHz on absolute deadlines and counts
 //         overruns; with --look-ahead it looks ahead after each tick as the server does
-//         and times that apart.
+//         and times that apart. --write-path writes the ticks' HIPs for
+//         mhd-proxy-tick-probe, --write-times each tick's time, contact, planned depth,
+//         distance off its planned point and proxy-to-HIP gap. (Following the surface
+//         height, the path also drags the hand sideways through the back's ridge: about a
+//         quarter of its ticks hold the proxy over 25 mm behind it; docs/benchmarks.md.)
 //   leap  The HIP's leap per 1 kHz tick when a base pose arrives, the base driving at
 //         0.2 m/s: IS-900-like samples at 100 Hz (2.5 mm, 0.4 deg noise; 4 ms latency plus
 //         0-2 ms jitter), with prediction and with the newest sample held. The leap is the
@@ -26,6 +30,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <numbers>
 #include <random>
 #include <string>
@@ -67,7 +72,60 @@ double quantile(std::vector<double> v, double q) {
   return v[k];
 }
 
-int run_tick(const std::string& scene_file, double seconds, bool realtime, double depth_m, bool look_ahead) {
+struct TickBenchOptions {
+  double seconds = 10.0;
+  bool realtime = false;
+  double depth_m = 0.015;
+  bool look_ahead = false;
+  std::string write_path;   ///< the ticks' HIPs, for mhd-proxy-tick-probe --hip-csv
+  std::string write_times;  ///< each tick's time and contact
+};
+
+// One tick, for the files --write-path and --write-times write (outside the timed part).
+struct TickRow {
+  double tick_us = 0.0;
+  bool contact = false;
+  Eigen::Vector3d p_W_hip = Eigen::Vector3d::Zero();
+  Eigen::Vector3d proxy_W = Eigen::Vector3d::Zero();
+  Eigen::Vector3d planned_W = Eigen::Vector3d::Zero();  ///< where the strokes meant the HIP to be
+  double planned_depth_m = 0.0;                        ///< how far below the surface that is
+};
+
+// The HIPs as mhd-proxy-tick-probe and `mhd proxy-replay` read them, and each tick's time,
+// contact and geometry beside them (row for row), so the probe's first/again costs can be
+// set against them and a HIP off its planned stroke (an IK miss) seen.
+bool write_tick_files(const TickBenchOptions& o, const std::vector<TickRow>& rows, double dt_s) {
+  if (!o.write_path.empty()) {
+    std::ofstream out(o.write_path);
+    out << "t_s,x_m,y_m,z_m\n";
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      const Eigen::Vector3d& p = rows[i].p_W_hip;
+      out << fmt::format("{:.17g},{:.17g},{:.17g},{:.17g}\n", static_cast<double>(i) * dt_s, p.x(), p.y(), p.z());
+    }
+    if (!out) {
+      fmt::print(stderr, "error: cannot write {}\n", o.write_path);
+      return false;
+    }
+  }
+  if (!o.write_times.empty()) {
+    std::ofstream out(o.write_times);
+    out << "tick,tick_us,contact,planned_depth_mm,hip_off_plan_mm,proxy_to_hip_mm\n";
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      const TickRow& r = rows[i];
+      out << fmt::format("{},{:.3f},{},{:.3f},{:.3f},{:.3f}\n", i, r.tick_us, r.contact ? 1 : 0, r.planned_depth_m * 1e3,
+                         (r.p_W_hip - r.planned_W).norm() * 1e3, (r.proxy_W - r.p_W_hip).norm() * 1e3);
+    }
+    if (!out) {
+      fmt::print(stderr, "error: cannot write {}\n", o.write_times);
+      return false;
+    }
+  }
+  return true;
+}
+
+int run_tick(const std::string& scene_file, const TickBenchOptions& o) {
+  const double seconds = o.seconds, depth_m = o.depth_m;
+  const bool realtime = o.realtime, look_ahead = o.look_ahead;
   Loaded l = load(scene_file);
   if (!l.scene) return 1;
   const Rig& rig = *l.rig;
@@ -81,6 +139,8 @@ int run_tick(const std::string& scene_file, double seconds, bool realtime, doubl
   // The stroke path in the world; joint angles from IK, outside the timed part.
   const auto ticks = static_cast<std::size_t>(seconds * kRate);
   std::vector<Eigen::Vector3d> q(ticks);
+  std::vector<Eigen::Vector3d> planned(ticks);  // where the strokes mean the HIP to be
+  std::vector<double> planned_depth_m(ticks);   // how far below the surface that is
   Eigen::Vector3d last_q(0, 0.5, 0.2);
   // Strokes as a hand makes them: along the back, from 10 mm above the surface to
   // `depth_m` into it (at 600 N/m the force limit is 14 mm deep), the surface height found
@@ -96,6 +156,8 @@ int run_tick(const std::string& scene_file, double seconds, bool realtime, doubl
     const double z = centre_W.z() + 0.05 * std::sin(1.7 * t + 0.5);
     const double height = 0.01 - (0.01 + depth_m) * (0.5 - 0.5 * std::cos(3.3 * t));  // starts above
     const Eigen::Vector3d p(x, surface_y(x, z) + height, z);
+    planned[i] = p;
+    planned_depth_m[i] = -height;
     const PhantomIkSolution ik = phantom_inverse_kinematics(rig.device(), rig.p_P_from_W(X_W_robot, p));
     if (ik.status == PhantomIkStatus::Ok || ik.status == PhantomIkStatus::OutsideJointLimits) last_q = ik.q_rad;
     q[i] = last_q;
@@ -105,6 +167,8 @@ int run_tick(const std::string& scene_file, double seconds, bool realtime, doubl
   us.reserve(ticks);
   std::vector<double> look_ahead_us;
   look_ahead_us.reserve(look_ahead ? ticks : 0);
+  std::vector<TickRow> rows;
+  rows.reserve(ticks);
   std::size_t contact = 0, waiting_inside = 0;
   const std::string scheduling = realtime ? realtime::make_current_thread_realtime(80).detail : "";
   realtime::PeriodicTimer timer(kDt);
@@ -120,6 +184,7 @@ int run_tick(const std::string& scene_file, double seconds, bool realtime, doubl
     us.push_back(std::chrono::duration<double, std::micro>(end - start).count());
     if (out.in_contact) ++contact;
     if (out.hip_inside_object) ++waiting_inside;
+    rows.push_back({us.back(), out.in_contact, out.p_W_hip, out.proxy_W_m, planned[i], planned_depth_m[i]});
     if (look_ahead) {  // as the haptic thread does once the force is out
       (void)tick.look_ahead();
       look_ahead_us.push_back(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - end).count());
@@ -141,7 +206,7 @@ int run_tick(const std::string& scene_file, double seconds, bool realtime, doubl
     fmt::print("  paced at 10 kHz ({}): {} overruns, {} deadlines missed\n", scheduling, timer.stats().overruns,
                timer.stats().missed_deadlines);
   }
-  return 0;
+  return write_tick_files(o, rows, kDt) ? 0 : 1;
 }
 
 struct LeapFigures {
@@ -253,22 +318,23 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   std::string scene = "scenes/benchmarks/server_dolphin_1m.xml";
   double seconds = 10.0;
-  bool realtime = false;
-  double depth_m = 0.015;
   int seeds = 5;
+  TickBenchOptions tick_options;
   CLI::App* tick = app.add_subcommand("tick", "Whole haptic tick on the 1M dolphin at 10 kHz");
   tick->add_option("--scene", scene, "Scene with a rig (default: the 1M dolphin server scene)");
-  tick->add_option("--seconds", seconds, "Simulated seconds (10 kHz ticks)");
-  tick->add_option("--depth-m", depth_m, "Deepest point of the strokes below the surface (default 0.015)");
-  tick->add_flag("--realtime", realtime, "Pace ticks at 10 kHz on absolute deadlines and count overruns");
-  bool look_ahead = false;
-  tick->add_flag("--look-ahead", look_ahead,
+  tick->add_option("--seconds", tick_options.seconds, "Simulated seconds (10 kHz ticks)");
+  tick->add_option("--depth-m", tick_options.depth_m, "Deepest point of the strokes below the surface (default 0.015)");
+  tick->add_flag("--realtime", tick_options.realtime, "Pace ticks at 10 kHz on absolute deadlines and count overruns");
+  tick->add_flag("--look-ahead", tick_options.look_ahead,
                  "After each tick, look ahead as the server's haptic thread does (HapticTick::look_ahead), timed apart");
+  tick->add_option("--write-path", tick_options.write_path,
+                   "Write the ticks' HIPs (t_s,x_m,y_m,z_m) for mhd-proxy-tick-probe --hip-csv");
+  tick->add_option("--write-times", tick_options.write_times, "Write each tick's time and contact (tick,tick_us,contact)");
   CLI::App* leap = app.add_subcommand("leap", "HIP leap when base poses arrive, with and without prediction");
   leap->add_option("--scene", scene, "Scene with a rig");
   leap->add_option("--seconds", seconds, "Simulated seconds per run");
   leap->add_option("--seeds", seeds, "Runs (noise seeds); the worst is reported");
   CLI11_PARSE(app, argc, argv);
-  if (tick->parsed()) return run_tick(scene, seconds, realtime, depth_m, look_ahead);
+  if (tick->parsed()) return run_tick(scene, tick_options);
   return run_leaps(scene, seconds, seeds);
 }
