@@ -72,5 +72,7 @@ function(mhd_add_plugin)
   target_link_options(${target} PRIVATE "LINKER:--exclude-libs,ALL")
   if(NOT ARG_NO_INSTALL)
     install(TARGETS ${target} LIBRARY DESTINATION "${MHD_PLUGIN_INSTALL_DIR}")
+    # The shipped plugins, for a target that builds a runnable mhd and nothing else.
+    set_property(GLOBAL APPEND PROPERTY MHD_SHIPPED_PLUGINS ${target})
   endif()
 endfunction()
