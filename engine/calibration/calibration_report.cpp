@@ -1,4 +1,5 @@
 #include "calibration/calibration_report.h"
+#include "calibration/text_concat.h"
 
 #include <array>
 #include <cstdio>
@@ -8,7 +9,7 @@ namespace mhd {
 
 namespace {
 
-constexpr double kDegPerRad = 180.0 / std::numbers::pi;
+using calibration_detail::kDegPerRad;
 
 std::string line_of(const char* text) { return std::string(text); }
 

@@ -1,4 +1,5 @@
 #include "calibration/calibration_sample.h"
+#include "calibration/text_concat.h"
 
 #include <algorithm>
 #include <array>
@@ -13,14 +14,9 @@ namespace mhd {
 
 namespace {
 
-constexpr std::size_t kColumnCount = kCalibrationSampleColumns.size();
+using calibration_detail::concat;
 
-template <typename... Parts>
-std::string concat(const Parts&... parts) {
-  std::string out;
-  (out.append(std::string_view(parts)), ...);
-  return out;
-}
+constexpr std::size_t kColumnCount = kCalibrationSampleColumns.size();
 
 std::string_view trim(std::string_view s) {
   const auto is_space = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; };

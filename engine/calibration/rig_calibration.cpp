@@ -1,4 +1,5 @@
 #include "calibration/rig_calibration.h"
+#include "calibration/text_concat.h"
 
 #include <Eigen/Dense>
 #include <Eigen/SVD>
@@ -13,14 +14,8 @@ namespace mhd {
 
 namespace {
 
-constexpr double kDegPerRad = 180.0 / std::numbers::pi;
-
-template <typename... Parts>
-std::string concat(const Parts&... parts) {
-  std::string out;
-  (out.append(std::string_view(parts)), ...);
-  return out;
-}
+using calibration_detail::concat;
+using calibration_detail::kDegPerRad;
 
 /// "%.3g" of a value.
 std::string g3(double value) {

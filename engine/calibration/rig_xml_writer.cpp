@@ -1,4 +1,5 @@
 #include "calibration/rig_xml_writer.h"
+#include "calibration/text_concat.h"
 
 #include "scene_xml/scene_reader.h"
 
@@ -20,18 +21,13 @@ namespace mhd {
 
 namespace {
 
+using calibration_detail::concat;
+using calibration_detail::kDegPerRad;
+
 namespace fs = std::filesystem;
 
-constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 constexpr double kReadBackTolerance_m = 1e-6;
 constexpr double kReadBackTolerance_rad = 1e-6;
-
-template <typename... Parts>
-std::string concat(const Parts&... parts) {
-  std::string out;
-  (out.append(std::string_view(parts)), ...);
-  return out;
-}
 
 /// Fixed-point with trailing zeros removed ("203.05", "90", "-0.5").
 std::string fixed(double value, int decimals) {

@@ -13,14 +13,14 @@ std::string expected_header() {
   return fmt::format("{},{},{},{}", kHipPathColumns[0], kHipPathColumns[1], kHipPathColumns[2], kHipPathColumns[3]);
 }
 
-/// The fields of a line, split on ','; at most kHipPathColumns.size() + 1 are kept (one
+/// The fields of a line, split_fields on ','; at most kHipPathColumns.size() + 1 are kept (one
 /// more is enough to say "extra"). `count` is how many there were in all.
 struct Fields {
   std::array<std::string_view, kHipPathColumns.size() + 1> text{};
   std::size_t count = 0;
 };
 
-Fields split(std::string_view line) {
+Fields split_fields(std::string_view line) {
   Fields f;
   std::size_t start = 0;
   while (true) {
@@ -89,7 +89,7 @@ void HipPathCsvReader::read_header() {
                        : fmt::format("the file is empty (the header must be {})", expected_header()));
     return;
   }
-  const Fields f = split(line_);
+  const Fields f = split_fields(line_);
   for (std::size_t k = 0; k < kHipPathColumns.size(); ++k) {
     if (k >= f.count) {
       fail(1, fmt::format("missing column '{}' (the header must be {})", kHipPathColumns[k], expected_header()));
@@ -127,7 +127,7 @@ std::optional<HipPathSample> HipPathCsvReader::next() {
     fail(line, fmt::format("empty line (each row must be {})", expected_header()));
     return std::nullopt;
   }
-  const Fields f = split(line_);
+  const Fields f = split_fields(line_);
   if (f.count < kHipPathColumns.size()) {
     fail(line, fmt::format("missing column '{}' (found {} fields, expected {}: {})", kHipPathColumns[f.count], f.count,
                            kHipPathColumns.size(), expected_header()));

@@ -24,7 +24,9 @@
 #include <utility>
 
 namespace mhd::viewer {
-namespace {
+// Named, not anonymous: StereoViewer::Impl holds it, and GCC warns (-Wsubobject-linkage)
+// when a class outside the main file of a unity batch holds an internal-linkage type.
+namespace stereo_viewer_detail {
 
 /// Reads the camera's viewport into `image` after the camera has drawn, when armed.
 class CaptureCallback : public osg::Camera::DrawCallback {
@@ -39,6 +41,12 @@ class CaptureCallback : public osg::Camera::DrawCallback {
   bool armed = false;
   osg::ref_ptr<osg::Image> image = make_ref<osg::Image>();
 };
+
+}  // namespace stereo_viewer_detail
+
+using stereo_viewer_detail::CaptureCallback;
+
+namespace {
 
 /// Looks at the objects from 1.7 m high, far enough back to see them whole.
 Pose pick_default_head(const Eigen::AlignedBox3d& bounds, const ViewerOptions& options) {

@@ -9,10 +9,10 @@
 namespace mhd {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr double kRadPerDeg = std::numbers::pi / 180.0;
 
 Pose at(double x, double y, double z, double yaw_deg) {
-  return pose_from_xyz_rpy(Eigen::Vector3d(x, y, z), Eigen::Vector3d(0, 0, yaw_deg * kDeg));
+  return pose_from_xyz_rpy(Eigen::Vector3d(x, y, z), Eigen::Vector3d(0, 0, yaw_deg * kRadPerDeg));
 }
 
 double distance(const Pose& a, const Pose& b) { return (a.matrix() - b.matrix()).cwiseAbs().maxCoeff(); }
@@ -39,7 +39,7 @@ TEST(ObjectMotion, KeyframesPassThroughEveryKeyAndInterpolateBetween) {
   EXPECT_LT(distance(m.X_WO_at(0.5), at(0.1, 0, 0, 45)), 1e-12);  // slerp: half the turn at half time
   EXPECT_LT(distance(m.X_WO_at(2.0), at(0.2, 0.2, 0, 90)), 1e-12);
   EXPECT_NEAR(m.max_speed_mps(), 0.2, 1e-12);
-  EXPECT_NEAR(m.max_rate_radps(), 90 * kDeg, 1e-12);
+  EXPECT_NEAR(m.max_rate_radps(), 90 * kRadPerDeg, 1e-12);
   expect_velocity_is_derivative(m, 0.3);
   expect_velocity_is_derivative(m, 2.2);
 }

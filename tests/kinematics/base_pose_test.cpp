@@ -10,25 +10,25 @@
 namespace mhd {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+constexpr double kHalfTurn_rad = std::numbers::pi;
 
 TEST(BasePose, WrapsAnglesIntoMinusPiPi) {
   EXPECT_DOUBLE_EQ(wrap_angle(0.5), 0.5);
-  EXPECT_DOUBLE_EQ(wrap_angle(kPi), kPi);
-  EXPECT_DOUBLE_EQ(wrap_angle(-kPi), kPi);
-  EXPECT_NEAR(wrap_angle(3 * kPi + 0.25), -kPi + 0.25, 1e-12);
-  EXPECT_NEAR(wrap_angle(-7.0), -7.0 + 2 * kPi, 1e-12);
+  EXPECT_DOUBLE_EQ(wrap_angle(kHalfTurn_rad), kHalfTurn_rad);
+  EXPECT_DOUBLE_EQ(wrap_angle(-kHalfTurn_rad), kHalfTurn_rad);
+  EXPECT_NEAR(wrap_angle(3 * kHalfTurn_rad + 0.25), -kHalfTurn_rad + 0.25, 1e-12);
+  EXPECT_NEAR(wrap_angle(-7.0), -7.0 + 2 * kHalfTurn_rad, 1e-12);
 }
 
 TEST(BasePose, HeadingTurnsAboutWorldUp) {
-  const Pose X = pose_from_base(BasePose{1.0, -2.0, kPi / 2});
+  const Pose X = pose_from_base(BasePose{1.0, -2.0, kHalfTurn_rad / 2});
   // A quarter turn counter-clockwise seen from above takes B's x (forward) to world -z.
   EXPECT_LT((X.linear().col(0) - Eigen::Vector3d(0, 0, -1)).norm(), 1e-15);
   EXPECT_LT((X.translation() - Eigen::Vector3d(1, 0, -2)).norm(), 1e-15);
   const BasePose back = base_from_pose(X);
   EXPECT_DOUBLE_EQ(back.x_m, 1.0);
   EXPECT_DOUBLE_EQ(back.z_m, -2.0);
-  EXPECT_NEAR(back.heading_rad, kPi / 2, 1e-15);
+  EXPECT_NEAR(back.heading_rad, kHalfTurn_rad / 2, 1e-15);
 }
 
 TEST(BasePose, IntegratesAConstantTwistAlongItsArc) {
@@ -52,7 +52,7 @@ TEST(BasePose, IntegratesAConstantTwistAlongItsArc) {
   EXPECT_NEAR(straight.x_m, 0.3, 1e-15);
   EXPECT_EQ(straight.z_m, 0.0);
   // A full circle comes back.
-  const BasePose circle = integrate_twist(start, BaseTwist{0.2, 0, 1.0}, 2 * kPi);
+  const BasePose circle = integrate_twist(start, BaseTwist{0.2, 0, 1.0}, 2 * kHalfTurn_rad);
   EXPECT_NEAR(circle.x_m, start.x_m, 1e-12);
   EXPECT_NEAR(circle.z_m, start.z_m, 1e-12);
 }

@@ -17,8 +17,8 @@
 namespace mhd {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kDeg = kPi / 180.0;
+constexpr double kHalfTurn = std::numbers::pi;
+constexpr double kRadPerDeg = kHalfTurn / 180.0;
 constexpr double L = 4191.0 / 20.0;  // the thesis's l1 = l2 in mm
 
 const std::filesystem::path kPomhi = std::filesystem::path(MHD_SOURCE_DIR) / "scenes/rigs/pomhi.xml";
@@ -35,7 +35,7 @@ Eigen::Matrix3d Ry(double a) { return Eigen::AngleAxisd(a, Eigen::Vector3d::Unit
 Eigen::Matrix3d Rx(double a) { return Eigen::AngleAxisd(a, Eigen::Vector3d::UnitX()).toRotationMatrix(); }
 
 // The IS-900 measurement of the base station at yaw phi and position S (mm).
-Pose sensor_reading(double phi, const Eigen::Vector3d& S_mm) { return homogeneous_mm(Rz(phi) * Rx(kPi), S_mm); }
+Pose sensor_reading(double phi, const Eigen::Vector3d& S_mm) { return homogeneous_mm(Rz(phi) * Rx(kHalfTurn), S_mm); }
 
 Rig pomhi_rig() {
   const Result<SceneDescription> read = read_scene_file(kPomhi);
@@ -50,7 +50,7 @@ FrameDescription frame(std::string name, std::string parent, const Eigen::Vector
   FrameDescription f;
   f.name = std::move(name);
   f.parent = std::move(parent);
-  f.X_PF = pose_from_xyz_rpy(p_mm / 1000.0, rpy_deg * kDeg);
+  f.X_PF = pose_from_xyz_rpy(p_mm / 1000.0, rpy_deg * kRadPerDeg);
   f.where = SourceLocation{"scene.xml", line};
   return f;
 }
@@ -76,7 +76,7 @@ struct ThesisInput {
 };
 
 ThesisInput random_input(std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> position(-1000, 1000), height(1200, 1700), angle(-kPi, kPi);
+  std::uniform_real_distribution<double> position(-1000, 1000), height(1200, 1700), angle(-kHalfTurn, kHalfTurn);
   return ThesisInput{Eigen::Vector3d(position(rng), position(rng), height(rng)), angle(rng),
                      Eigen::Vector3d(angle(rng), angle(rng), angle(rng))};
 }
@@ -166,7 +166,7 @@ TEST(Rig, ToolRotationMatchesTheRederivedClosedForm) {
   for (int i = 0; i < 200; ++i) {
     const ThesisInput in = random_input(rng);
     const Pose X = rig.X_W_tool(rig.X_W_robot_from_sensor(sensor_reading(in.phi, in.S_mm)), in.q);
-    const Eigen::Matrix3d expected = Ry(kPi - in.phi + in.q.x()) * Rx(-in.q.z());
+    const Eigen::Matrix3d expected = Ry(kHalfTurn - in.phi + in.q.x()) * Rx(-in.q.z());
     EXPECT_LT((X.linear() - expected).norm(), 1e-12);
     const double c = std::cos(in.phi), s = std::sin(in.phi);
     const double c1 = std::cos(in.q.x()), s1 = std::sin(in.q.x()), c3 = std::cos(in.q.z()), s3 = std::sin(in.q.z());
@@ -198,7 +198,7 @@ TEST(Rig, CalibratedOffsetsMatchChapter44) {
 TEST(Rig, PlanarBasePathAgreesWithTheTrackerPath) {
   const Rig rig = pomhi_rig();
   std::mt19937_64 rng(5);
-  std::uniform_real_distribution<double> position(-3, 3), angle(-kPi, kPi);
+  std::uniform_real_distribution<double> position(-3, 3), angle(-kHalfTurn, kHalfTurn);
   for (int i = 0; i < 200; ++i) {
     const BasePose base{position(rng), position(rng), angle(rng)};
     const Pose X_is900_sensor = rig.X_is900_base_sensor_from_base(base);
@@ -209,7 +209,7 @@ TEST(Rig, PlanarBasePathAgreesWithTheTrackerPath) {
     EXPECT_NEAR(wrap_angle(back.heading_rad - base.heading_rad), 0, 1e-12);
     // The measured station is level with z up, turned by the tracker's yaw phi = pi - heading.
     const Eigen::Matrix3d R = X_is900_sensor.linear();
-    EXPECT_LT((R - Rz(kPi - base.heading_rad) * Rx(kPi)).norm(), 1e-12);
+    EXPECT_LT((R - Rz(kHalfTurn - base.heading_rad) * Rx(kHalfTurn)).norm(), 1e-12);
   }
   // The nominal station pose is the base at the origin with heading 0.
   const BasePose home = rig.base_from_sensor(rig.X_is900_base_sensor_nominal());
@@ -226,7 +226,7 @@ TEST(Rig, AtTheOriginThePhantomFacesTheUserAtHandHeight) {
   EXPECT_LT((X_W_P.translation() - Eigen::Vector3d(-0.0016, 0.870, 0.2358)).norm(), 1e-12);
   EXPECT_NEAR((X_W_P * rig.device().workspace.center_P_m()).y(), 1.0, 1e-12);
   // The robot: x forward (= world x at heading 0), z up.
-  EXPECT_LT((X_W_robot.linear() - Rx(-kPi / 2)).norm(), 1e-12);
+  EXPECT_LT((X_W_robot.linear() - Rx(-kHalfTurn / 2)).norm(), 1e-12);
   EXPECT_NEAR(X_W_robot.translation().y(), 0.8108, 1e-12);
 }
 
@@ -239,7 +239,7 @@ Eigen::Vector3d hip_from_parameters(const Rig& rig, const Eigen::Matrix<double, 
 TEST(Rig, HipJacobianMatchesCentralDifferencesOfTheChain) {
   const Rig rig = pomhi_rig();
   std::mt19937_64 rng(6);
-  std::uniform_real_distribution<double> position(-3, 3), angle(-kPi, kPi);
+  std::uniform_real_distribution<double> position(-3, 3), angle(-kHalfTurn, kHalfTurn);
   constexpr double h = 1e-6;
   for (int i = 0; i < 300; ++i) {
     Eigen::Matrix<double, 7, 1> v;
@@ -259,11 +259,11 @@ TEST(Rig, HipJacobianMatchesEquation52) {
   const Result<Rig, std::vector<RigError>> built = Rig::from_frames(rig_frames(kCalibratedSR, kCalibratedRP));
   ASSERT_TRUE(built.ok());
   std::mt19937_64 rng(7);
-  std::uniform_real_distribution<double> position(-3, 3), angle(-kPi, kPi);
+  std::uniform_real_distribution<double> position(-3, 3), angle(-kHalfTurn, kHalfTurn);
   constexpr double H = 4191.0 / 40;  // l / 2
   for (int i = 0; i < 300; ++i) {
     const double phi = angle(rng), t1 = angle(rng), t2 = angle(rng), t3 = angle(rng);
-    const BasePose base{position(rng), position(rng), kPi - phi};
+    const BasePose base{position(rng), position(rng), kHalfTurn - phi};
     const Rig::HipJacobian J = built->hip_jacobian(base, {t1, t2, t3});
     using std::cos, std::sin;
     Eigen::Matrix<double, 3, 6> thesis;

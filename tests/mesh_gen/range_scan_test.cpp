@@ -20,9 +20,9 @@
 namespace mhd::mesh_gen {
 namespace {
 
-constexpr double kHalfPi = 0.5 * std::numbers::pi;
+constexpr double kQuarterTurn = 0.5 * std::numbers::pi;
 
-TriangleMesh small_bowl() { return make_bowl(0.15, kHalfPi, bowl_layout(600, kHalfPi)); }
+TriangleMesh small_bowl() { return make_bowl(0.15, kQuarterTurn, bowl_layout(600, kQuarterTurn)); }
 
 // A 100 mm sphere with a 30 mm one 200 mm in front of it (+z): seen along -z the small
 // one covers part of the large one, a depth jump of ~0.2 m all around its outline.

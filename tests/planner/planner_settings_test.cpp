@@ -11,7 +11,7 @@
 namespace mhd {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr double kRadPerDeg = std::numbers::pi / 180.0;
 
 TEST(PlannerSettings, DefaultsAreValid) {
   EXPECT_TRUE(validate(PlannerSettings{}).empty());
@@ -28,8 +28,8 @@ TEST(PlannerSettings, ReadsEitherUnit) {
                                                             {"command_period_ms", "50"}});
   ASSERT_TRUE(p.ok()) << p.error_text();
   EXPECT_DOUBLE_EQ(p->max_linear_speed_mps, 0.2);
-  EXPECT_DOUBLE_EQ(p->max_angular_speed_radps, 90.0 * kDeg);
-  EXPECT_DOUBLE_EQ(p->step_angle_rad, 45.0 * kDeg);
+  EXPECT_DOUBLE_EQ(p->max_angular_speed_radps, 90.0 * kRadPerDeg);
+  EXPECT_DOUBLE_EQ(p->step_angle_rad, 45.0 * kRadPerDeg);
   EXPECT_DOUBLE_EQ(p->stop_interval_m, 0.02);
   EXPECT_DOUBLE_EQ(p->arm_length_m, 0.5);
   EXPECT_DOUBLE_EQ(p->command_period_s, 0.05);

@@ -36,7 +36,7 @@ std::string bad_value(const mhd_param_decl& d) {
   return "";
 }
 
-PluginDescription describe(PluginKind kind, const std::string& name, std::map<std::string, std::string> params) {
+PluginDescription describe_plugin(PluginKind kind, const std::string& name, std::map<std::string, std::string> params) {
   PluginDescription d;
   d.kind = kind;
   d.name = name;
@@ -59,7 +59,7 @@ TEST(DeclaredParams, EveryInTreePluginRefusesABadValueOfEachDeclaredParameterBef
     for (std::size_t i = 0; i < api.param_count; ++i) {
       const mhd_param_decl& d = api.params[i];
       const std::string value = bad_value(d);
-      const Status<PluginError> s = check_scene_plugin(search, describe(info.kind, info.name, {{d.name, value}}));
+      const Status<PluginError> s = check_scene_plugin(search, describe_plugin(info.kind, info.name, {{d.name, value}}));
       ASSERT_FALSE(s.ok()) << info.name << ": '" << d.name << "' = '" << value << "' passed";
       EXPECT_EQ(s.error().kind, PluginErrorKind::BadParameter);
       EXPECT_NE(s.error().message.find(std::string("parameter '") + d.name + "' must be"), std::string::npos)
@@ -67,7 +67,7 @@ TEST(DeclaredParams, EveryInTreePluginRefusesABadValueOfEachDeclaredParameterBef
       ++checked;
     }
     // An undeclared name is refused too.
-    const Status<PluginError> unknown = check_scene_plugin(search, describe(info.kind, info.name, {{"no_such_param", "1"}}));
+    const Status<PluginError> unknown = check_scene_plugin(search, describe_plugin(info.kind, info.name, {{"no_such_param", "1"}}));
     ASSERT_FALSE(unknown.ok());
     EXPECT_EQ(unknown.error().message.rfind("unknown parameter 'no_such_param' (known: ", 0), 0u);
   }
@@ -94,7 +94,7 @@ TEST(DeclaredParams, EveryDeclaredDefaultGivenExplicitlyPasses) {
     for (std::size_t i = 0; i < api.param_count; ++i) {  // a required one needs a value to pass
       if ((api.params[i].flags & MHD_PARAM_REQUIRED) != 0u) defaults[api.params[i].name] = "x.csv";
     }
-    const Status<PluginError> s = check_scene_plugin(search, describe(info.kind, info.name, defaults));
+    const Status<PluginError> s = check_scene_plugin(search, describe_plugin(info.kind, info.name, defaults));
     EXPECT_TRUE(s.ok()) << s.error().to_string();
   }
 }

@@ -24,8 +24,8 @@ using V = Eigen::Vector3d;
 using test::stiff;
 constexpr double kDeg = std::numbers::pi / 180.0;
 
-struct Rig : test::ProxyRig {
-  Rig() { settings.max_force_N = 100; }  // compared with k * depth: never clamped
+struct ShadingRig : test::ProxyRig {
+  ShadingRig() { settings.max_force_N = 100; }  // compared with k * depth: never clamped
   /// Adds `mesh` with force shading on or off; its corner normals as the scene compiler
   /// gives them.
   void add_shaded(TriangleMesh mesh, bool shading, double crease_rad = 60 * kDeg) {
@@ -62,7 +62,7 @@ struct Ripple {
 // tilted great circle, the HIP 2 mm inside the largest inscribed sphere, at 0.1 m/s,
 // and measures how far the force strays from the true sphere's normal at the HIP.
 Ripple stroke_coarse_sphere(bool shading) {
-  Rig rig;
+  ShadingRig rig;
   const TriangleMesh sphere = make_sphere_mesh(0.05, 1);
   const double r_m = insphere_radius_m(sphere) - 0.002;
   rig.add_shaded(sphere, shading);
@@ -120,7 +120,7 @@ TEST(ForceShading, ACoarseSphereStrokedAtConstantDepthFeelsRound) {
 // A stroke 3 mm deep over a cube's top face and off its edge, then back in from the side
 // and down it.
 std::vector<ProxyOutput> stroke_cube(bool shading, double crease_rad) {
-  Rig rig;
+  ShadingRig rig;
   rig.add_shaded(make_box_mesh(V(0.1, 0.1, 0.1)), shading, crease_rad);
   std::vector<ProxyOutput> outs;
   auto go = [&](const V& from, const V& to, int ticks) {
@@ -161,7 +161,7 @@ TEST(ForceShading, ACubeKeepsFlatFacesAndEdgesSharperThanTheCreaseAngle) {
 TEST(ForceShading, AFlatFaceWithShadingOnNeedsNoSecondPass) {
   // The shaded goal of a flat face is the contact itself: no extra sweeps per tick.
   auto sweeps = [](bool shading) {
-    Rig rig;
+    ShadingRig rig;
     rig.add_shaded(make_box_mesh(V(0.1, 0.1, 0.1)), shading);
     reset_proxy(rig.state, V(0, 0, 0.07));
     rig.move(V(0, 0, 0.07), V(0, 0, 0.046), 30);

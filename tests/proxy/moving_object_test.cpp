@@ -21,7 +21,7 @@ namespace mhd {
 namespace {
 
 using V = Eigen::Vector3d;
-constexpr double kDt = test::kProxyTestDt_s;
+constexpr double kMovingDt_s = test::kProxyTestDt_s;
 constexpr double kSkin_m = 1e-6;
 
 Pose at_x(double x) {
@@ -50,8 +50,8 @@ struct MovingRig {
 template <class Hip>
 verify::MovingDrive drive(MovingRig& rig, Hip&& hip, int n) {
   std::vector<V> path;
-  for (int k = 0; k <= n; ++k) path.push_back(hip(k * kDt));
-  return verify::drive_moving_proxy(rig.world, rig.motions, rig.materials, rig.settings, path, 1.0 / kDt);
+  for (int k = 0; k <= n; ++k) path.push_back(hip(k * kMovingDt_s));
+  return verify::drive_moving_proxy(rig.world, rig.motions, rig.materials, rig.settings, path, 1.0 / kMovingDt_s);
 }
 
 TEST(MovingObject, AnApproachingFacePushesTheProxyAndLetsItGoWhenItLeaves) {

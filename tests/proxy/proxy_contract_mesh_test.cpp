@@ -21,8 +21,8 @@ namespace mhd {
 namespace {
 
 using V = Eigen::Vector3d;
-constexpr double kDt = 1e-3;
-constexpr double kFollow_m = 1e-5;  // see docs/proxy.md
+constexpr double kMeshDt_s = 1e-3;
+constexpr double kMeshFollow_m = 1e-5;  // see docs/proxy.md
 const char* const kBunny = "/usr/share/glmark2/models/bunny.obj";
 
 struct Surface {
@@ -66,7 +66,7 @@ std::vector<V> sample(const std::vector<V>& waypoints, double speed_mps) {
   for (std::size_t i = 1; i < waypoints.size(); ++i) {
     const V from = path.back();
     const V& to = waypoints[i];
-    const int n = std::max(1, static_cast<int>(std::ceil((to - from).norm() / (speed_mps * kDt))));
+    const int n = std::max(1, static_cast<int>(std::ceil((to - from).norm() / (speed_mps * kMeshDt_s))));
     for (int k = 1; k <= n; ++k) path.push_back(from + (to - from) * (double(k) / n));
   }
   return path;
@@ -124,7 +124,7 @@ TEST(ProxyContractOnAScan, TheBunnyAlongAContinuousPathNeverCrossedNeverStuck) {
   const verify::SurfaceCrossingOracle oracle(world);
 
   const std::vector<V> path = scan_tour(oracle, surface, box, 41, 150);
-  const verify::TickRecord rec = verify::drive_proxy(world, materials, settings, path, 1.0 / kDt);
+  const verify::TickRecord rec = verify::drive_proxy(world, materials, settings, path, 1.0 / kMeshDt_s);
   EXPECT_EQ(verify::count_crossings(oracle, rec), 0u);
   std::size_t contact = 0, free_segments = 0, not_followed = 0, free_force = 0;
   double worst_gap_m = 0.0;
@@ -133,9 +133,9 @@ TEST(ProxyContractOnAScan, TheBunnyAlongAContinuousPathNeverCrossedNeverStuck) {
     if (rec[k].in_contact) ++contact;
     if (!oracle.segment_touches_surface(rec[k - 1].proxy_W, rec[k].p_W_hip)) {
       ++free_segments;
-      if (gap > kFollow_m) ++not_followed;
+      if (gap > kMeshFollow_m) ++not_followed;
     }
-    if (gap > kFollow_m && !oracle.segment_touches_surface(rec[k].proxy_W, rec[k].p_W_hip)) {
+    if (gap > kMeshFollow_m && !oracle.segment_touches_surface(rec[k].proxy_W, rec[k].p_W_hip)) {
       ++free_force;
       worst_gap_m = std::max(worst_gap_m, gap);
     }

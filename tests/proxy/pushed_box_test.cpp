@@ -21,7 +21,7 @@ namespace mhd {
 namespace {
 
 using V = Eigen::Vector3d;
-constexpr double kDt = test::kProxyTestDt_s;
+constexpr double kPushDt_s = test::kProxyTestDt_s;
 constexpr double kMass_kg = 0.5;
 constexpr double kFriction = 0.4;
 constexpr double kSide_m = 0.1;
@@ -47,8 +47,8 @@ struct PushRig {
   template <class Hip>
   verify::MovingDrive drive(Hip&& hip, int n) {
     std::vector<V> path;
-    for (int k = 0; k <= n; ++k) path.push_back(hip(k * kDt));
-    return verify::drive_moving_proxy(world, motions, materials, settings, path, 1.0 / kDt, dynamics);
+    for (int k = 0; k <= n; ++k) path.push_back(hip(k * kPushDt_s));
+    return verify::drive_moving_proxy(world, motions, materials, settings, path, 1.0 / kPushDt_s, dynamics);
   }
 };
 

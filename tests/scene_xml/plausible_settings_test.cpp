@@ -17,17 +17,17 @@ namespace {
 using test::to_strings;
 using Lines = std::vector<std::string>;
 
-const std::string kDir = "tests/data/scenes/malformed/";
+const std::string kMalformedDir = "tests/data/scenes/malformed/";
 
 class PlausibleSettings : public test::FromSourceRoot {
  protected:
   static Lines errors_of(const std::string& name) {
-    const Result<SceneDescription> result = read_scene_file(kDir + name);
+    const Result<SceneDescription> result = read_scene_file(kMalformedDir + name);
     EXPECT_FALSE(result.ok()) << name << " was accepted";
     return to_strings(result.diagnostics());
   }
   static std::string at(const std::string& name, int line, const std::string& message) {
-    return kDir + name + ":" + std::to_string(line) + ": error: " + message;
+    return kMalformedDir + name + ":" + std::to_string(line) + ": error: " + message;
   }
 };
 

@@ -13,7 +13,7 @@
 namespace mhd::sim_is900 {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+constexpr double kHalfTurn = std::numbers::pi;
 
 WorldTruth truth_at(double base_x_m) {
   WorldTruth t;
@@ -106,7 +106,7 @@ TEST(Is900Model, ASampleBecomesReadableFourMillisecondsAfterItsMeasurement) {
 
 TEST(Is900Model, MeasuresTheMountedBaseSensorAndTheHeadExactlyWithoutNoise) {
   Is900Config c = noiseless();
-  c.X_BS = Eigen::Translation3d(0.1, 0.7, 0.0) * Eigen::AngleAxisd(kPi / 2, Eigen::Vector3d::UnitY());
+  c.X_BS = Eigen::Translation3d(0.1, 0.7, 0.0) * Eigen::AngleAxisd(kHalfTurn / 2, Eigen::Vector3d::UnitY());
   Is900Model m(c);
   m.start(0.0, truth_at(1.0));
   m.simulate_until(0.01, truth_at(1.0));
@@ -116,7 +116,7 @@ TEST(Is900Model, MeasuresTheMountedBaseSensorAndTheHeadExactlyWithoutNoise) {
   const mhd_tracker_sample& head = samples[0].sensor_id == 1 ? samples[0] : samples[1];
   // Forward of the base at heading 0.5 is (cos 0.5, 0, -sin 0.5).
   EXPECT_TRUE(position(base).isApprox(Eigen::Vector3d(1.0 + 0.1 * std::cos(0.5), 0.7, 2.0 - 0.1 * std::sin(0.5)), 1e-12));
-  EXPECT_TRUE(rotation(base).isApprox(Eigen::Quaterniond(Eigen::AngleAxisd(0.5 + kPi / 2, Eigen::Vector3d::UnitY())), 1e-12));
+  EXPECT_TRUE(rotation(base).isApprox(Eigen::Quaterniond(Eigen::AngleAxisd(0.5 + kHalfTurn / 2, Eigen::Vector3d::UnitY())), 1e-12));
   EXPECT_TRUE(position(head).isApprox(truth_at(1.0).p_W_head, 1e-12));
   EXPECT_TRUE(rotation(head).isApprox(truth_at(1.0).q_W_head, 1e-12));
 }
@@ -124,7 +124,7 @@ TEST(Is900Model, MeasuresTheMountedBaseSensorAndTheHeadExactlyWithoutNoise) {
 TEST(Is900Model, ReportsPosesInTheTrackerFrame) {
   Is900Config c = noiseless();
   // The paper's rig: the IS-900 frame 2.624 m up, axes turned.
-  c.X_WT = Eigen::Translation3d(0.0, 2.624, 0.0) * Eigen::AngleAxisd(kPi / 2, Eigen::Vector3d::UnitZ());
+  c.X_WT = Eigen::Translation3d(0.0, 2.624, 0.0) * Eigen::AngleAxisd(kHalfTurn / 2, Eigen::Vector3d::UnitZ());
   Is900Model m(c);
   m.start(0.0, truth_at(1.0));
   m.simulate_until(0.01, truth_at(1.0));
@@ -156,8 +156,8 @@ TEST(Is900Model, DefaultsFollowTheThesisRig) {
   const mhd_tracker_sample& base = samples[0];
   ASSERT_EQ(base.sensor_id, 0u);
   EXPECT_TRUE(position(base).isApprox(Eigen::Vector3d(0.206, 0.0, 1.4432), 1e-12));
-  const Eigen::Quaterniond nominal(Eigen::AngleAxisd(kPi, Eigen::Vector3d::UnitZ()) *
-                                   Eigen::AngleAxisd(kPi, Eigen::Vector3d::UnitX()));
+  const Eigen::Quaterniond nominal(Eigen::AngleAxisd(kHalfTurn, Eigen::Vector3d::UnitZ()) *
+                                   Eigen::AngleAxisd(kHalfTurn, Eigen::Vector3d::UnitX()));
   EXPECT_LT(rotation(base).angularDistance(nominal), 1e-12);
   // The head, 1.65 m up, is 0.974 m below the ceiling station, along the IS-900's +z.
   EXPECT_LT((position(samples[1]) - Eigen::Vector3d(0.0, 0.0, 2.624 - 1.65)).norm(), 1e-12);
@@ -197,7 +197,7 @@ TEST(Is900Model, NoiseHasTheConfiguredSpread) {
   ASSERT_GT(n, 5000);
   EXPECT_NEAR(std::sqrt(position_squares / (3.0 * n)), 0.0025, 0.0025 * 0.05);
   EXPECT_LT((position_sum / n).norm(), 0.0025 * 0.1);
-  EXPECT_NEAR(std::sqrt(angle_squares / (3.0 * n)), 0.35 * kPi / 180.0, 0.35 * kPi / 180.0 * 0.05);
+  EXPECT_NEAR(std::sqrt(angle_squares / (3.0 * n)), 0.35 * kHalfTurn / 180.0, 0.35 * kHalfTurn / 180.0 * 0.05);
 }
 
 TEST(Is900Model, AFullBufferDropsTheOldestAndCountsThem) {

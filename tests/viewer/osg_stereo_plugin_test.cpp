@@ -23,7 +23,7 @@
 namespace mhd {
 namespace {
 
-const std::filesystem::path kSource = MHD_SOURCE_DIR;
+const std::filesystem::path kSourceDir = MHD_SOURCE_DIR;
 
 PluginDescription osg_stereo(std::map<std::string, std::string> params) {
   PluginDescription d;
@@ -40,7 +40,7 @@ class OsgStereoPlugin : public ::testing::Test {
 };
 
 TEST_F(OsgStereoPlugin, OpenRefusesUnknownParametersAndAHostWithoutScene) {
-  host_.set_scene_file(kSource / "scenes/dolphin.xml");
+  host_.set_scene_file(kSourceDir / "scenes/dolphin.xml");
   auto bad = open_plugin(search_, osg_stereo({{"colour", "red"}}), host_.abi());
   ASSERT_FALSE(bad.ok());
   EXPECT_NE(bad.error().to_string().find("unknown parameter 'colour'"), std::string::npos) << bad.error().to_string();
@@ -59,7 +59,7 @@ TEST_F(OsgStereoPlugin, DrawsTheFramesItIsGivenInItsOwnThread) {
       std::filesystem::temp_directory_path() / "mhd_viewer_tests" / std::to_string(::getpid()) / "plugin.png";
   std::filesystem::create_directories(out.parent_path());
   std::filesystem::remove(out);
-  host_.set_scene_file(kSource / "scenes/dolphin.xml");
+  host_.set_scene_file(kSourceDir / "scenes/dolphin.xml");
   auto opened = open_plugin(search_,
                             osg_stereo({{"offscreen", "true"}, {"width", "640"}, {"height", "320"}, {"frames", "20"},
                                         {"screenshot", out.string()}, {"grid", "false"}, {"max_frame_rate_Hz", "200"}}),

@@ -54,7 +54,7 @@ void print_error(const std::string& where, int line, const std::string& message)
   }
 }
 
-void print_diagnostics(const mhd::Diagnostics& diagnostics) {
+void print_calibration_diagnostics(const mhd::Diagnostics& diagnostics) {
   for (const mhd::Diagnostic& d : diagnostics) print_error(d.where.file, d.where.line, d.message);
 }
 
@@ -66,7 +66,7 @@ struct LoadedRig {
 std::optional<LoadedRig> load_rig(const std::string& file) {
   mhd::Result<mhd::SceneDescription> read = mhd::read_scene_file(file);
   if (!read.ok()) {
-    print_diagnostics(read.diagnostics());
+    print_calibration_diagnostics(read.diagnostics());
     return std::nullopt;
   }
   const mhd::Result<mhd::Rig, std::vector<mhd::RigError>> built = mhd::Rig::from_scene(*read);
@@ -114,7 +114,7 @@ std::string default_output(const std::string& rig) {
 int calibrate(const CalibrateOptions& o, const LoadedRig& loaded) {
   const mhd::Result<std::vector<mhd::CalibrationSample>> read = mhd::read_calibration_samples(o.samples);
   if (!read.ok()) {
-    print_diagnostics(read.error());
+    print_calibration_diagnostics(read.error());
     return 1;
   }
   mhd::CalibrationOptions options;

@@ -21,7 +21,7 @@
 
 namespace {
 
-struct RunOptions {
+struct StrokesOptions {
   std::string scene;
   int strokes = 200;
   std::uint64_t seed = 1;
@@ -54,7 +54,7 @@ mhd::verify::StrokeSet strokes_on_object(const mhd::CompiledScene& scene, int ob
   return out;
 }
 
-int run(const RunOptions& opt) {
+int run(const StrokesOptions& opt) {
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();
   const mhd::Result<mhd::SceneDescription> read = mhd::read_scene_file(opt.scene);
@@ -125,7 +125,7 @@ int run(const RunOptions& opt) {
 }  // namespace
 
 void add_strokes_command(CLI::App& app) {
-  auto opt = std::make_shared<RunOptions>();
+  auto opt = std::make_shared<StrokesOptions>();
   CLI::App* cmd = app.add_subcommand(
       "strokes", "Drive the scripted stroke set through the haptic proxy and count pop-throughs exactly");
   cmd->add_option("scene", opt->scene, "Scene XML file")->required()->check(CLI::ExistingFile);

@@ -25,7 +25,7 @@ struct TryOptions {
   bool no_cache = false;
 };
 
-std::optional<Eigen::Vector3d> vector3(const std::vector<double>& v) {
+std::optional<Eigen::Vector3d> vector3_of(const std::vector<double>& v) {
   if (v.size() != 3) return std::nullopt;
   return Eigen::Vector3d(v[0], v[1], v[2]);
 }
@@ -57,9 +57,9 @@ int run_try(TryOptions& o) {
   v::HandSessionOptions& options = o.session;
   v::ViewerOptions& view = options.view;
   view.window_title = "MHD: try it by hand - " + o.scene;
-  view.default_head_m = vector3(o.head_m);
-  view.look_at_m = vector3(o.look_at_m);
-  options.p_W_start_m = vector3(o.start_m);
+  view.default_head_m = vector3_of(o.head_m);
+  view.look_at_m = vector3_of(o.look_at_m);
+  options.p_W_start_m = vector3_of(o.start_m);
   if (!view.screenshot_png.empty()) {
     view.offscreen = true;
     if (view.frames == 0) view.frames = 10;

@@ -29,7 +29,7 @@ std::unique_ptr<StressMover> make_mover(const CompiledScene& scene, int object, 
   return std::make_unique<ScriptedMover>(scene.world, std::move(motions), object);
 }
 
-void print_vec(std::FILE* out, const Eigen::Vector3d& v) { fmt::print(out, "{:.9f} {:.9f} {:.9f}", v.x(), v.y(), v.z()); }
+void print_vector(std::FILE* out, const Eigen::Vector3d& v) { fmt::print(out, "{:.9f} {:.9f} {:.9f}", v.x(), v.y(), v.z()); }
 
 MovingStressReport run_range(const CompiledScene& scene, int object, std::uint64_t object_key,
                              const MovingStressSettings& settings, std::size_t first, std::size_t last,
@@ -167,9 +167,9 @@ MovingStressReport run_range(const CompiledScene& scene, int object, std::uint64
       if (v.failed() && !failure) failure = MovingStrokeFailure{i, stroke.kind, motion.kind, k, p_W_hip, out.proxy_W, v};
       if (traced) {
         fmt::print(trace, "  {:4d} {:.3f} ", k, t_s);
-        print_vec(trace, p_W_hip);
+        print_vector(trace, p_W_hip);
         fmt::print(trace, "  ");
-        print_vec(trace, out.proxy_W);
+        print_vector(trace, out.proxy_W);
         fmt::print(trace, "  {} {}{}{} {} {} {} {} {} {:.4f}\n", out.in_contact ? "yes" : "no",
                    carry.rode > 0 ? "R" : "-", carry.pushed > 0 ? "P" : "-", carry.squeezed ? "S" : "-",
                    v.crossed ? "YES" : "no", v.inside ? "YES" : "no", v.not_followed ? "YES" : "no",

@@ -37,7 +37,7 @@ std::unique_ptr<CompiledScene> box_on_floor() {
 }
 
 // A 120 mm cube alone, not pushable in its scene: it floats (no gravity), 1 kg.
-std::unique_ptr<CompiledScene> floating_cube() {
+std::unique_ptr<CompiledScene> floating_cube_scene() {
   SceneDescription d;
   d.name = "floating_cube_test";
   d.objects.push_back(firm_object("cube", BoxSource{Vector3d::Constant(0.12)}, Vector3d(0.0, 1.0, -0.5)));
@@ -79,14 +79,14 @@ TEST(PushedStress, ABoxPushedOnAFloorIsCleanAndMoves) {
 }
 
 TEST(PushedStress, AFloatingCubeIsCleanAndMoves) {
-  const auto scene = floating_cube();
+  const auto scene = floating_cube_scene();
   ASSERT_TRUE(scene);
   const MovingStressReport r = stress_moving_object(*scene, 0, name_key("floating_cube_test/cube"), pushed_run());
   expect_clean_moved_and_pushed(r, 200);
 }
 
 TEST(PushedStress, TheHandAloneMovesAnUnthrownBodyAndAStillObjectStaysPut) {
-  const auto scene = floating_cube();
+  const auto scene = floating_cube_scene();
   ASSERT_TRUE(scene);
   const std::uint64_t key = name_key("floating_cube_test/cube");
   MovingStressSettings s = pushed_run();
@@ -110,7 +110,7 @@ TEST(PushedStress, TheHandAloneMovesAnUnthrownBodyAndAStillObjectStaysPut) {
 TEST(PushedStress, BodiesMovedWithoutTheCarryAreCaught) {
   for (const bool floating : {false, true}) {
     SCOPED_TRACE(floating ? "floating cube" : "box on a floor");
-    const auto scene = floating ? floating_cube() : box_on_floor();
+    const auto scene = floating ? floating_cube_scene() : box_on_floor();
     ASSERT_TRUE(scene);
     const std::uint64_t key = name_key(floating ? "floating_cube_test/cube" : "pushed_stress_test/box");
     MovingStressSettings s = pushed_run();
