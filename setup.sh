@@ -28,16 +28,43 @@ if [ ${#missing[@]} -gt 0 ]; then
   "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-cmake --preset release >/dev/null
+# Each phase's wall time, printed as it ends and again as a table when the script exits
+# (a failed phase included), so that every run shows what it cost.
+t_start=$(date +%s)
+phases=()
+phase() {  # phase <label> <command...>
+  local label="$1" t0 rc=0
+  shift
+  echo "==== setup: $label"
+  t0=$(date +%s)
+  "$@" || rc=$?
+  phases+=("$(printf '%-34s %6d s  %s' "$label" $(($(date +%s) - t0)) "$([ $rc -eq 0 ] && echo ok || echo "FAILED ($rc)")")")
+  echo "==== setup: $label: $(($(date +%s) - t0)) s, exit $rc"
+  return $rc
+}
+summary() {
+  [ ${#phases[@]} -gt 0 ] || return 0
+  echo "==== setup: phases ($mode)"
+  printf '  %s\n' "${phases[@]}"
+  printf '  %-34s %6d s\n' total $(($(date +%s) - t_start))
+}
+trap summary EXIT
+
+phase "release configure" cmake --preset release >/dev/null
 
 if [ "$mode" = demo ]; then
   # Only what the demo runs: mhd and the plugins (the tests and benchmarks come with `test`).
-  cmake --build --preset release --target mhd-runtime
+  phase "release build (mhd and plugins)" cmake --build --preset release --target mhd-runtime
+  trap - EXIT
+  summary
   exec build/release/tools/mhd/mhd run scenes/dolphin.xml --duration 20 --record build/release/dolphin_run.csv
 else
-  cmake --build --preset release
-  ctest --preset release
-  # MHD_SANITIZERS=0 / MHD_FUZZ_SECONDS=0 skip these (for a quick local run).
-  if [ "${MHD_SANITIZERS:-1}" != 0 ]; then tools/ci/sanitizers.sh all; fi
-  if [ "${MHD_FUZZ_SECONDS:-20}" != 0 ]; then tools/fuzz/run_fuzzers.sh --seconds "${MHD_FUZZ_SECONDS:-20}"; fi
+  phase "release build" cmake --build --preset release
+  phase "release test" ctest --preset release
+  # MHD_SANITIZERS=0 / MHD_FUZZ_SECONDS=0 skip these (for a quick local run). The
+  # sanitizer script prints its own phases (configure, build, test for ASan and TSan).
+  if [ "${MHD_SANITIZERS:-1}" != 0 ]; then phase "sanitizers (ASan+UBSan, TSan)" tools/ci/sanitizers.sh all; fi
+  if [ "${MHD_FUZZ_SECONDS:-20}" != 0 ]; then
+    phase "fuzz (build, then each target ${MHD_FUZZ_SECONDS:-20} s)" tools/fuzz/run_fuzzers.sh --seconds "${MHD_FUZZ_SECONDS:-20}"
+  fi
 fi

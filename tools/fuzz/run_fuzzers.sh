@@ -101,7 +101,9 @@ if [[ $build -eq 1 ]]; then
   build_targets=()
   for t in "${targets[@]}"; do build_targets+=("mhd-fuzz-$t"); done
   echo "== building ${build_targets[*]} (-j$jobs)"
+  build_t0=$(date +%s)
   cmake --build "$build_dir" -j "$jobs" --target "${build_targets[@]}"
+  echo "== built in $(($(date +%s) - build_t0)) s"
 fi
 
 # The scene fuzzer writes every input to a file in a folder under $TMPDIR: on tmpfs that
