@@ -49,8 +49,9 @@ summary() {
   printf '  %-34s %6d s\n' total $(($(date +%s) - t_start))
 }
 trap summary EXIT
+quietly() { "$@" >/dev/null; }
 
-phase "release configure" cmake --preset release >/dev/null
+phase "release configure" quietly cmake --preset release
 
 if [ "$mode" = demo ]; then
   # Only what the demo runs: mhd and the plugins (the tests and benchmarks come with `test`).
