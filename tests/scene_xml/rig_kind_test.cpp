@@ -15,7 +15,7 @@ namespace {
 using ::testing::ElementsAre;
 using ::testing::IsEmpty;
 
-std::vector<std::string> messages(const Result<SceneDescription>& r) {
+std::vector<std::string> messages_of(const Result<SceneDescription>& r) {
   std::vector<std::string> out;
   for (const Diagnostic& d : r.diagnostics()) out.push_back(d.to_string());
   return out;
@@ -36,7 +36,7 @@ TEST(RigKind, ADesktopRigWithADeviceIsAccepted) {
       scene(std::string(kDesktopRig) + R"(
   <plugins><plugin kind="device" name="sim_phantom"/></plugins>)"),
       "mem/desk.xml");
-  ASSERT_TRUE(r.ok()) << testing::PrintToString(messages(r));
+  ASSERT_TRUE(r.ok()) << testing::PrintToString(messages_of(r));
   EXPECT_EQ(r->rig_kind.kind, RigKind::Desktop);
   ASSERT_TRUE(r->rig_kind.where);
   EXPECT_EQ(r->rig_kind.where->line, 3);
@@ -46,7 +46,7 @@ TEST(RigKind, ADesktopRigWithADeviceIsAccepted) {
 TEST(RigKind, MobileIsTheDefaultAndMayBeSaid) {
   for (const std::string rig : {"", "  <rig kind=\"mobile\"/>"}) {
     const Result<SceneDescription> r = read_scene_string(scene(rig), "mem/mobile.xml");
-    ASSERT_TRUE(r.ok()) << rig << testing::PrintToString(messages(r));
+    ASSERT_TRUE(r.ok()) << rig << testing::PrintToString(messages_of(r));
     EXPECT_EQ(r->rig_kind.kind, RigKind::Mobile);
     EXPECT_EQ(r->rig_kind.where.has_value(), !rig.empty());
   }
@@ -62,7 +62,7 @@ TEST(RigKind, ADesktopRigRefusesATrackerABaseAndAPlannerEachAtItsLine) {
   <planner kind="predictive"/>)"),
                                               "mem/desk.xml");
   EXPECT_FALSE(r.ok());
-  EXPECT_THAT(messages(r),
+  EXPECT_THAT(messages_of(r),
               ElementsAre("mem/desk.xml:8: error: tracker plugin 'sim_is900' in a desktop rig (declared at "
                           "mem/desk.xml:3): a desktop device is fixed in the world and has no tracker (use <rig "
                           "kind=\"mobile\">)",
@@ -75,14 +75,14 @@ TEST(RigKind, ADesktopRigRefusesATrackerABaseAndAPlannerEachAtItsLine) {
 
 TEST(RigKind, ADesktopRigNeedsItsDeviceFrameOnTheWorldAndNoOther) {
   const Result<SceneDescription> missing = read_scene_string(scene("  <rig kind=\"desktop\"/>"), "mem/desk.xml");
-  EXPECT_THAT(messages(missing), ElementsAre("mem/desk.xml:3: error: a desktop rig needs the device's pose: <frame "
+  EXPECT_THAT(messages_of(missing), ElementsAre("mem/desk.xml:3: error: a desktop rig needs the device's pose: <frame "
                                              "name=\"device\" parent=\"world\" .../>"));
   const Result<SceneDescription> other = read_scene_string(scene(R"(  <rig kind="desktop">
     <frame name="table" parent="world"/>
     <frame name="device" parent="table"/>
   </rig>)"),
                                                   "mem/desk.xml");
-  EXPECT_THAT(messages(other),
+  EXPECT_THAT(messages_of(other),
               ElementsAre("mem/desk.xml:4: error: rig frame 'table' in a desktop rig (declared at mem/desk.xml:3): its "
                           "only frame is 'device' (parent 'world')",
                           "mem/desk.xml:5: error: rig frame 'device' of a desktop rig must have parent 'world', not "
@@ -92,9 +92,9 @@ TEST(RigKind, ADesktopRigNeedsItsDeviceFrameOnTheWorldAndNoOther) {
 }
 
 TEST(RigKind, AnUnknownOrContradictingKindIsAnError) {
-  EXPECT_THAT(messages(read_scene_string(scene("  <rig kind=\"boat\"/>"), "mem/s.xml")),
+  EXPECT_THAT(messages_of(read_scene_string(scene("  <rig kind=\"boat\"/>"), "mem/s.xml")),
               ElementsAre("mem/s.xml:3: error: invalid rig kind 'boat' (expected mobile or desktop)"));
-  EXPECT_THAT(messages(read_scene_string(scene(std::string(kDesktopRig) + "\n  <rig kind=\"mobile\"/>"), "mem/s.xml")),
+  EXPECT_THAT(messages_of(read_scene_string(scene(std::string(kDesktopRig) + "\n  <rig kind=\"mobile\"/>"), "mem/s.xml")),
               ElementsAre("mem/s.xml:6: error: <rig kind=\"mobile\"> contradicts the rig kind declared at mem/s.xml:3"));
 }
 
@@ -104,7 +104,7 @@ TEST(RigKind, AMobileSceneToRunNeedsATrackerAtItsPluginsLine) {
     <plugin kind="device" name="sim_phantom"/>
   </plugins>)"),
                                               "mem/mobile.xml");
-  ASSERT_TRUE(r.ok()) << testing::PrintToString(messages(r));  // valid as a file: the rig may come later
+  ASSERT_TRUE(r.ok()) << testing::PrintToString(messages_of(r));  // valid as a file: the rig may come later
   std::vector<std::string> run;
   for (const Diagnostic& d : check_rig_plugins_for_run(*r)) run.push_back(d.to_string());
   EXPECT_THAT(run, ElementsAre("mem/mobile.xml:4: error: the scene names no tracker plugin (<plugin "
