@@ -9,7 +9,7 @@
 #   --build-dir DIR build folder (default build/fuzz); the corpora, crash files and logs
 #                   go under DIR/fuzz/
 #   --only NAME     one target: scene, mesh-header, replay-csv or dds-sample (default: all)
-#   --jobs J        build jobs (default 2)
+#   --jobs J        build jobs, and targets fuzzed at once (default 2)
 #   --fresh         start from the seeds only (drop what earlier runs added to the corpus)
 #   --no-build      run what is already built
 #
@@ -116,6 +116,43 @@ export LSAN_OPTIONS="${LSAN_OPTIONS:-suppressions=$repo/tools/fuzz/lsan.supp:pri
 work="$build_dir/fuzz"
 status=0
 summary=()
+# The targets run side by side, --jobs at a time (each is one process on one core), so the
+# phase takes about targets / jobs times --seconds; each still runs its full time.
+launch() {  # launch <target>: seeds its corpus, starts it in the background
+  local t="$1" binary corpus artifacts log n_seeds=0 rel dict
+  binary="$build_dir/tools/fuzz/mhd-fuzz-$t"
+  corpus="$work/corpus/$t"
+  artifacts="$work/artifacts/$t"
+  log="$work/logs/$t.log"
+  [[ $fresh -eq 1 ]] && rm -rf "$corpus"
+  mkdir -p "$corpus" "$artifacts" "$(dirname "$log")"
+  rm -f "$work/logs/$t.rc"
+  # Seeds under names made from their paths (several folders hold a materials.xml).
+  while IFS= read -r seed; do
+    [[ -n "$seed" ]] || continue
+    rel="${seed#"$repo"/}"
+    cp -f "$seed" "$corpus/seed_${rel//\//_}"
+    n_seeds=$((n_seeds + 1))
+  done < <(seeds_of "$t")
+  local args=("$corpus" "-max_total_time=$seconds" -timeout=10 -rss_limit_mb=2048 "-max_len=$(max_len_of "$t")"
+              "-artifact_prefix=$artifacts/" -print_final_stats=1)
+  dict="$(dict_of "$t")"
+  [[ -n "$dict" ]] && args+=("-dict=$dict")
+  echo "== fuzzing $t for ${seconds}s ($n_seeds seeds; log $log)"
+  { local rc=0; "$binary" "${args[@]}" >"$log" 2>&1 || rc=$?; echo "$rc" >"$work/logs/$t.rc"; } &
+}
+running=0
+for t in "${targets[@]}"; do
+  [[ -x "$build_dir/tools/fuzz/mhd-fuzz-$t" ]] || continue
+  if [[ $running -ge $jobs ]]; then
+    wait -n || true
+    running=$((running - 1))
+  fi
+  launch "$t"
+  running=$((running + 1))
+done
+wait || true
+
 for t in "${targets[@]}"; do
   binary="$build_dir/tools/fuzz/mhd-fuzz-$t"
   if [[ ! -x "$binary" ]]; then
@@ -124,29 +161,8 @@ for t in "${targets[@]}"; do
     summary+=("$(printf '%-11s %-9s' "$t" "not-built")")
     continue
   fi
-  corpus="$work/corpus/$t"
-  artifacts="$work/artifacts/$t"
   log="$work/logs/$t.log"
-  [[ $fresh -eq 1 ]] && rm -rf "$corpus"
-  mkdir -p "$corpus" "$artifacts" "$(dirname "$log")"
-  # Seeds under names made from their paths (several folders hold a materials.xml).
-  n_seeds=0
-  while IFS= read -r seed; do
-    [[ -n "$seed" ]] || continue
-    rel="${seed#"$repo"/}"
-    cp -f "$seed" "$corpus/seed_${rel//\//_}"
-    n_seeds=$((n_seeds + 1))
-  done < <(seeds_of "$t")
-
-  args=("$corpus" "-max_total_time=$seconds" -timeout=10 -rss_limit_mb=2048 "-max_len=$(max_len_of "$t")"
-        "-artifact_prefix=$artifacts/" -print_final_stats=1)
-  dict="$(dict_of "$t")"
-  [[ -n "$dict" ]] && args+=("-dict=$dict")
-  echo "== fuzzing $t for ${seconds}s ($n_seeds seeds; log $log)"
-  set +e
-  "$binary" "${args[@]}" >"$log" 2>&1
-  rc=$?
-  set -e
+  rc="$(cat "$work/logs/$t.rc" 2>/dev/null || echo 1)"
 
   # The last value libFuzzer printed for each figure (none when it stopped at once).
   last_of() { { grep -o "$1 [0-9]*" "$log" || true; } | tail -n 1 | sed "s|^$1 ||"; }
