@@ -94,7 +94,7 @@ if [[ $build -eq 1 ]]; then
   mkdir -p "$build_dir"
   CC=clang CXX=clang++ cmake -S "$repo" -B "$build_dir" -G Ninja \
     -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g" -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" \
+    -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1" -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
     -DCMAKE_C_FLAGS="$sanitize_flags" -DCMAKE_CXX_FLAGS="$sanitize_flags" \
     -DMHD_FUZZ=ON -DMHD_BUILD_TESTS=OFF -DMHD_BUILD_BENCHMARKS=OFF >"$build_dir/fuzz-configure.log" 2>&1 ||
     { cat "$build_dir/fuzz-configure.log" >&2; echo "run_fuzzers.sh: error: configuring failed" >&2; exit 1; }
