@@ -78,6 +78,9 @@ class CollisionWorld {
   [[nodiscard]] std::uint64_t geometry_id() const { return geometry_id_; }
   [[nodiscard]] const Pose& pose(int object) const { return objects_[static_cast<std::size_t>(object)].X_WO; }
   [[nodiscard]] const MeshBvh& shape(int object) const { return *objects_[static_cast<std::size_t>(object)].shape; }
+  [[nodiscard]] const std::shared_ptr<const MeshBvh>& shape_ptr(int object) const {
+    return objects_[static_cast<std::size_t>(object)].shape;
+  }
 
   /// Sweeps a point from a_W to b_W. Reports the triangle that the point reaches
   /// first, where "reaches" means coming within `skin_m` of the triangle's plane over

@@ -2,9 +2,11 @@
 
 #include "collision/segment_triangle.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
+#include <string>
 
 namespace mhd {
 namespace {
@@ -24,22 +26,30 @@ btVector3 to_bt(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
 void MeshBvh::make_interface() {
   if (mesh_->triangles.empty()) throw std::invalid_argument("MeshBvh: mesh has no triangles");
-  btIndexedMesh part;
-  part.m_numTriangles = static_cast<int>(mesh_->triangles.size());
-  part.m_triangleIndexBase = reinterpret_cast<const unsigned char*>(mesh_->triangles.data());
-  part.m_triangleIndexStride = static_cast<int>(sizeof(TriangleIndices));
-  part.m_indexType = PHY_INTEGER;
-  part.m_numVertices = static_cast<int>(mesh_->vertices_m.size());
-  part.m_vertexBase = reinterpret_cast<const unsigned char*>(mesh_->vertices_m.data());
-  part.m_vertexStride = static_cast<int>(sizeof(Eigen::Vector3d));
-  part.m_vertexType = PHY_DOUBLE;
+  if (!holds(mesh_->triangles.size())) {
+    throw std::length_error("MeshBvh: " + std::to_string(mesh_->triangles.size()) + " triangles, more than the " +
+                            std::to_string(kMaxTriangles) + " one tree holds");
+  }
+  interface_ = std::make_unique<btTriangleIndexVertexArray>();
+  // One Bullet part per kPartTriangles triangles, all over the same vertices: a leaf then
+  // names (part, index in part), and part * kPartTriangles + index is the mesh's triangle.
+  for (std::size_t first = 0; first < mesh_->triangles.size(); first += kPartTriangles) {
+    btIndexedMesh part;
+    part.m_numTriangles = static_cast<int>(std::min<std::size_t>(kPartTriangles, mesh_->triangles.size() - first));
+    part.m_triangleIndexBase = reinterpret_cast<const unsigned char*>(mesh_->triangles.data() + first);
+    part.m_triangleIndexStride = static_cast<int>(sizeof(TriangleIndices));
+    part.m_indexType = PHY_INTEGER;
+    part.m_numVertices = static_cast<int>(mesh_->vertices_m.size());
+    part.m_vertexBase = reinterpret_cast<const unsigned char*>(mesh_->vertices_m.data());
+    part.m_vertexStride = static_cast<int>(sizeof(Eigen::Vector3d));
+    part.m_vertexType = PHY_DOUBLE;
+    interface_->addIndexedMesh(part, PHY_INTEGER);
+  }
   face_normals_O_.resize(mesh_->triangles.size());
   for (std::size_t i = 0; i < mesh_->triangles.size(); ++i) {
     const TriangleIndices& t = mesh_->triangles[i];
     face_normals_O_[i] = unit_face_normal(mesh_->vertices_m[t[0]], mesh_->vertices_m[t[1]], mesh_->vertices_m[t[2]]);
   }
-  interface_ = std::make_unique<btTriangleIndexVertexArray>();
-  interface_->addIndexedMesh(part, PHY_INTEGER);
   bounds_ = mesh_bounds(*mesh_);
   const double extent = bounds_.sizes().maxCoeff();
   bvh_scale_ = extent > 0.0 ? kBvhExtentUnits / extent : 1.0;
@@ -87,11 +97,7 @@ std::unique_ptr<MeshBvh> MeshBvh::from_serialized(std::shared_ptr<const Triangle
   const auto& leaves = tree->getQuantizedNodeArray();
   for (int i = 0; i < leaves.size(); ++i) {
     const auto& node = leaves[i];
-    if (node.isLeafNode() &&
-        (node.getPartId() != 0 ||
-         static_cast<std::size_t>(node.getTriangleIndex()) >= out->mesh_->triangles.size())) {
-      return nullptr;
-    }
+    if (node.isLeafNode() && leaf_triangle(node) >= out->mesh_->triangles.size()) return nullptr;
   }
   if (leaves.size() == 0 || (!leaves[0].isLeafNode() && leaves[0].getEscapeIndex() > leaves.size())) return nullptr;
   out->adopt_tree(tree);

@@ -1,5 +1,7 @@
 #pragma once
 // A triangle mesh with its Bullet BVH (btBvhTriangleMeshShape, quantized AABBs).
+// A leaf has 21 bits for a triangle's index, so the mesh is given to Bullet as parts of
+// 2^21 triangles over one vertex array, and a leaf's (part, index) names the triangle.
 // The BVH is built once per mesh in the mesh's own frame; moving the object moves
 // only its pose, never the tree. btScalar is double (Debian's -float64 Bullet).
 
@@ -19,6 +21,17 @@ namespace mhd {
 
 class MeshBvh {
  public:
+  /// Most triangles one tree holds. Bullet keeps its node array (2 per triangle) in an
+  /// int, and a leaf's triangle as 10 bits of part and 21 of index in that part.
+  static constexpr std::uint64_t kMaxTriangles = (std::uint64_t{1} << 30) - 1;
+  /// Triangles per Bullet part: the 21 bits a leaf has for the index within its part.
+  static constexpr std::uint32_t kPartTriangles = std::uint32_t{1} << 21;
+
+  /// True when a tree can hold a mesh of `triangles` (1 to kMaxTriangles).
+  [[nodiscard]] static constexpr bool holds(std::uint64_t triangles) {
+    return triangles >= 1 && triangles <= kMaxTriangles;
+  }
+
   /// Builds the BVH. Precondition: mesh has at least one triangle, all indices valid.
   explicit MeshBvh(std::shared_ptr<const TriangleMesh> mesh);
 
@@ -42,6 +55,16 @@ class MeshBvh {
   /// zero area: unit_face_normal() of its corners, computed once when the tree is made or
   /// adopted (24 bytes per triangle), so a sweep's triangle test does not redo it.
   [[nodiscard]] const Eigen::Vector3d& face_normal_O(std::uint32_t t) const { return face_normals_O_[t]; }
+
+  /// Bullet sees the mesh scaled by this (largest extent 1e4 units, see mesh_bvh.cpp):
+  /// shape() is in those units.
+  [[nodiscard]] double bvh_scale() const { return bvh_scale_; }
+
+  /// The mesh's triangle a leaf names: its part's first triangle plus its index there.
+  [[nodiscard]] static std::uint64_t leaf_triangle(const btQuantizedBvhNode& leaf) {
+    return static_cast<std::uint64_t>(leaf.getPartId()) * kPartTriangles +
+           static_cast<std::uint64_t>(leaf.getTriangleIndex());
+  }
 
   /// A box on the tree's grid: Bullet's 16-bit quantization of the mesh's bounds.
   struct QuantizedBox {
@@ -76,7 +99,7 @@ class MeshBvh {
                            box.min[2] <= node->m_quantizedAabbMax[2] && box.max[2] >= node->m_quantizedAabbMin[2];
       if (node->isLeafNode()) {
         if (overlap) {
-          const auto triangle = static_cast<std::uint32_t>(node->getTriangleIndex());
+          const auto triangle = static_cast<std::uint32_t>(leaf_triangle(*node));
           if constexpr (std::is_same_v<decltype(f(triangle, *node)), bool>) {
             if (!f(triangle, *node)) return;
           } else {

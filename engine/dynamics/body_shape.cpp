@@ -31,18 +31,13 @@ BodyHull make_body_hull(const TriangleMesh& mesh) {
   return hull;
 }
 
-StaticMeshShape make_static_mesh_shape(std::shared_ptr<const TriangleMesh> mesh) {
+StaticMeshShape make_static_mesh_shape(std::shared_ptr<const MeshBvh> bvh) {
   StaticMeshShape s;
-  s.mesh = std::move(mesh);
-  const TriangleMesh& m = *s.mesh;
-  if (m.triangles.empty()) throw std::invalid_argument("a still object's mesh has no triangles");
-  // Bullet reads the mesh's own arrays (indices as int: a mesh has far fewer than 2^31 vertices).
-  s.triangles = std::make_unique<btTriangleIndexVertexArray>(
-      static_cast<int>(m.triangles.size()),
-      const_cast<int*>(reinterpret_cast<const int*>(m.triangles.data())),  // NOLINT: Bullet's API is not const
-      static_cast<int>(sizeof(TriangleIndices)), static_cast<int>(m.vertices_m.size()),
-      const_cast<btScalar*>(m.vertices_m.front().data()), static_cast<int>(sizeof(Eigen::Vector3d)));
-  s.shape = std::make_unique<btBvhTriangleMeshShape>(s.triangles.get(), true);
+  s.bvh = std::move(bvh);
+  const double to_m = 1.0 / s.bvh->bvh_scale();
+  // Bullet's API is not const; contact queries only read the tree and the mesh.
+  auto* tree = const_cast<btBvhTriangleMeshShape*>(&s.bvh->shape());  // NOLINT
+  s.shape = std::make_unique<btScaledBvhTriangleMeshShape>(tree, btVector3(to_m, to_m, to_m));
   return s;
 }
 

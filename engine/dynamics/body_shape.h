@@ -4,8 +4,10 @@
 // the surface stays where the mesh is; edges rounded by the margin); a still object is
 // its exact triangle mesh. Built at scene start, never on the haptic thread.
 
+#include "collision/mesh_bvh.h"
 #include "geometry/triangle_mesh.h"
 
+#include <BulletCollision/CollisionShapes/btScaledBvhTriangleMeshShape.h>
 #include <btBulletCollisionCommon.h>
 
 #include <Eigen/Core>
@@ -28,14 +30,13 @@ inline constexpr double kMaxBodyMargin_m = 2e-3;
 /// The convex hull of `mesh`. Throws std::invalid_argument for a mesh with no volume.
 [[nodiscard]] BodyHull make_body_hull(const TriangleMesh& mesh);
 
-/// A still object's exact surface; the mesh is shared, not copied, and must outlive it.
+/// A still object's exact surface: the haptic tree itself, seen at metre scale (the tree
+/// is in Bullet's units, MeshBvh::bvh_scale()). Shared, not copied or built again.
 struct StaticMeshShape {
-  std::shared_ptr<const TriangleMesh> mesh;
-  std::unique_ptr<btTriangleIndexVertexArray> triangles;
-  std::unique_ptr<btBvhTriangleMeshShape> shape;
+  std::shared_ptr<const MeshBvh> bvh;
+  std::unique_ptr<btScaledBvhTriangleMeshShape> shape;
 };
 
-/// Precondition: the mesh has at least one triangle.
-[[nodiscard]] StaticMeshShape make_static_mesh_shape(std::shared_ptr<const TriangleMesh> mesh);
+[[nodiscard]] StaticMeshShape make_static_mesh_shape(std::shared_ptr<const MeshBvh> bvh);
 
 }  // namespace mhd

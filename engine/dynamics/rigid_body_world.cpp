@@ -150,7 +150,7 @@ RigidBodyWorld::RigidBodyWorld(const CollisionWorld& world, std::span<const std:
       w.body_of_object[i] = static_cast<int>(w.bodies.size() - 1);
     } else if (static_object[i] && world.shape(object).mesh().triangle_count() > 0) {
       Impl::Static& s = w.statics.emplace_back();
-      s.shape = make_static_mesh_shape(world.shape(object).mesh_ptr());
+      s.shape = make_static_mesh_shape(world.shape_ptr(object));
       s.object = std::make_unique<btCollisionObject>();
       s.object->setCollisionShape(s.shape.shape.get());
       s.object->setWorldTransform(bt(world.pose(object)));

@@ -31,7 +31,8 @@ namespace mhd {
 /// layout, the loader's processing (load_mesh_file) or MeshBvh's tree convention
 /// changes, so that old entries are never used.
 /// 2: the loader welds unshared files itself instead of assimp's JoinIdenticalVertices.
-inline constexpr std::uint32_t kMeshCacheFormatVersion = 2;
+/// 3: a mesh past 2^21 triangles is split into Bullet parts (MeshBvh::kPartTriangles).
+inline constexpr std::uint32_t kMeshCacheFormatVersion = 3;
 
 /// Meshes with at least this many triangles report progress.
 inline constexpr std::size_t kProgressMinTriangles = 100'000;

@@ -1,6 +1,7 @@
 #include "mesh_io/mesh_cache.h"
 
 #include "geometry/primitive_mesh.h"
+#include "support/large_mesh.h"
 #include "test_mesh_files.h"
 
 #include <gtest/gtest.h>
@@ -270,6 +271,33 @@ TEST_F(MeshCacheTest, LargeMeshesReportProgress) {
   calls.clear();
   ASSERT_TRUE(cache.load(mesh_file_, Eigen::Vector3d::Ones(), record).ok());
   EXPECT_TRUE(calls.empty());
+}
+
+TEST_F(MeshCacheTest, AMeshPastOneBulletPartRoundTripsAndIsTouchedWhereItsLastTrianglesAre) {
+  // Past 2^21 triangles a tree spans several Bullet parts: its cache entry is kept and
+  // used, not rejected and rebuilt on every load, and the adopted tree finds the last
+  // triangles (the only ones in the box below) as the built one does.
+  const auto file = dir_ / "past_one_part.ply";
+  test::write_binary_ply(file, *test::mesh_past_one_bullet_part());
+  MeshCache cache(cache_dir_);
+  cache.set_limit_bytes(std::uint64_t{1} << 30);
+  const Result<CachedMesh, MeshLoadError> cold = cache.load(file, Eigen::Vector3d::Ones());
+  ASSERT_TRUE(cold.ok()) << cold.error_text();
+  ASSERT_GT(cold->mesh().triangle_count(), std::size_t{1} << 21);
+  EXPECT_EQ(cold->outcome, CacheOutcome::Miss);
+  ASSERT_TRUE(cold->written);
+  const Result<CachedMesh, MeshLoadError> warm = cache.load(file, Eigen::Vector3d::Ones());
+  ASSERT_TRUE(warm.ok()) << warm.error_text();
+  EXPECT_EQ(warm->outcome, CacheOutcome::Hit) << warm->rejected_reason;
+  EXPECT_EQ(warm->mesh().triangles, cold->mesh().triangles);
+  const Eigen::AlignedBox3d patch(Eigen::Vector3d(0.45, 0.45, 0.4), Eigen::Vector3d(0.55, 0.55, 0.6));
+  const auto must = brute_force(warm->mesh(), patch);
+  ASSERT_FALSE(must.empty());
+  EXPECT_GE(must.front(), test::kPatchFirstTriangle);
+  const auto from_cache = query(*warm->bvh, patch);
+  EXPECT_EQ(from_cache, query(*cold->bvh, patch));
+  EXPECT_TRUE(std::includes(from_cache.begin(), from_cache.end(), must.begin(), must.end()));
+  EXPECT_GE(from_cache.front(), test::kPatchFirstTriangle);
 }
 
 /// Sets an environment variable for the scope (nullptr unsets it).

@@ -1,0 +1,91 @@
+// Meshes past the 2^21 triangles that one Bullet part can index: every leaf of the tree
+// must still name the triangle it bounds, in a tree built here and in one adopted from
+// its serialized form (the mesh cache).
+
+#include "collision/collision_world.h"
+#include "support/large_mesh.h"
+#include "collision/mesh_bvh.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+namespace mhd {
+namespace {
+
+using test::kPatchFirstTriangle;
+
+std::vector<std::uint32_t> reported(const MeshBvh& bvh, const Eigen::AlignedBox3d& box_O) {
+  std::vector<std::uint32_t> out;
+  bvh.for_each_triangle_overlapping(box_O, [&](std::uint32_t t) { out.push_back(t); });
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// The triangles whose own bounds overlap box_O: what any tree must report (and may add to).
+std::vector<std::uint32_t> overlapping(const TriangleMesh& mesh, const Eigen::AlignedBox3d& box_O) {
+  std::vector<std::uint32_t> out;
+  for (std::uint32_t t = 0; t < mesh.triangle_count(); ++t) {
+    Eigen::AlignedBox3d b;
+    for (auto v : mesh.triangles[t]) b.extend(mesh.vertices_m[v]);
+    if (b.intersects(box_O)) out.push_back(t);
+  }
+  return out;
+}
+
+void expect_names_the_patch(const MeshBvh& bvh, const char* which) {
+  SCOPED_TRACE(which);
+  const TriangleMesh& mesh = bvh.mesh();
+  // Only the last triangles (the patch at z = 0.5) lie in this box.
+  const Eigen::AlignedBox3d box_O(Eigen::Vector3d(0.45, 0.45, 0.4), Eigen::Vector3d(0.55, 0.55, 0.6));
+  const auto must = overlapping(mesh, box_O);
+  ASSERT_FALSE(must.empty());
+  ASSERT_GE(must.front(), kPatchFirstTriangle);
+  const auto got = reported(bvh, box_O);
+  EXPECT_TRUE(std::includes(got.begin(), got.end(), must.begin(), must.end()))
+      << got.size() << " reported, " << must.size() << " overlap";
+  for (const std::uint32_t t : got) {
+    ASSERT_LT(t, mesh.triangle_count());
+    EXPECT_GE(t, kPatchFirstTriangle) << "a leaf names triangle " << t << ", which is far from its box";
+  }
+
+  // The hand comes down onto the patch: the sweep stops on it, at the triangle it hit.
+  CollisionWorld world;
+  const int id = world.add_object(std::shared_ptr<const MeshBvh>(&bvh, [](const MeshBvh*) {}), Pose::Identity());
+  const auto hit = world.sweep(Eigen::Vector3d(0.503, 0.497, 1.0), Eigen::Vector3d(0.503, 0.497, 0.2), 1e-4);
+  ASSERT_TRUE(hit) << "the hand passed through the last triangles";
+  EXPECT_EQ(hit->where.object, id);
+  EXPECT_GE(hit->where.triangle, kPatchFirstTriangle);
+  EXPECT_NEAR(hit->plane_offset_m, 0.5, 1e-12);
+  // Below the patch the grid at z = 0, the first triangles, is found as well.
+  const auto grid = world.sweep(Eigen::Vector3d(0.9, 0.9, 0.2), Eigen::Vector3d(0.9, 0.9, -0.2), 1e-4);
+  ASSERT_TRUE(grid);
+  EXPECT_LT(grid->where.triangle, kPatchFirstTriangle);
+}
+
+TEST(LargeMesh, LeavesPastTwoToTheTwentyOneNameTheirTrianglesBuiltAndAdopted) {
+  const auto mesh = test::mesh_past_one_bullet_part();
+  ASSERT_GT(mesh->triangle_count(), std::size_t{1} << 21);
+  const MeshBvh built(mesh);
+  expect_names_the_patch(built, "built");
+  // The serialized tree (what the cache stores) is adopted, not refused, and answers alike.
+  const auto adopted = MeshBvh::from_serialized(mesh, built.serialize_bvh());
+  ASSERT_NE(adopted, nullptr) << "a valid tree of a mesh past 2^21 triangles was refused";
+  expect_names_the_patch(*adopted, "adopted");
+}
+
+TEST(LargeMesh, TheTreeHoldsEveryCountTheSceneAllows) {
+  // Bullet's node array has 2n entries in an int, and a leaf has 10 bits of part and 21
+  // of triangle: 2^30 - 1 triangles at most, above the 10^9 a scene may declare.
+  EXPECT_TRUE(MeshBvh::holds(1));
+  EXPECT_TRUE(MeshBvh::holds((std::uint64_t{1} << 21) + 1));
+  EXPECT_TRUE(MeshBvh::holds(1'000'000'000));
+  EXPECT_TRUE(MeshBvh::holds(MeshBvh::kMaxTriangles));
+  EXPECT_FALSE(MeshBvh::holds(MeshBvh::kMaxTriangles + 1));
+  EXPECT_FALSE(MeshBvh::holds(std::uint64_t{1} << 31));
+  EXPECT_FALSE(MeshBvh::holds(0));
+}
+
+}  // namespace
+}  // namespace mhd
