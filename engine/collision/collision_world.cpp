@@ -68,6 +68,11 @@ void CollisionWorld::set_exact_shape(int object, const ExactShape& shape) {
   geometry_id_ = next_geometry_id();
 }
 
+void CollisionWorld::set_touchable(int object, TouchableFaces faces) {
+  objects_.at(static_cast<std::size_t>(object)).touchable = faces;
+  // Candidate lists hold triangles, not sides: they stay valid.
+}
+
 const ExactShape* CollisionWorld::exact_shape(int object) const {
   const auto& o = objects_.at(static_cast<std::size_t>(object));
   return o.exact ? &*o.exact : nullptr;
@@ -183,7 +188,8 @@ std::optional<SweepHit> CollisionWorld::sweep_among(int only_object, const Eigen
       const TriangleIndices& t = mesh.triangles[ti];
       const auto hit = sweep_point_triangle(a_O, b_O, mesh.vertices_m[t[0]], mesh.vertices_m[t[1]],
                                             mesh.vertices_m[t[2]], shape.face_normal_O(ti), skin_m, inflate_m);
-      if (!hit) return;
+      // The hit's normal faces the start: the same way as the face's, from the front.
+      if (!hit || !touchable_from(o.touchable, hit->normal.dot(shape.face_normal_O(ti)) > 0.0)) return;
       // Earliest stop wins; ties (shared edges) go to the earlier plane crossing, then
       // to the lower index so results never depend on traversal order.
       const bool better = hit->t_stop < best_t_stop ||
@@ -258,7 +264,9 @@ std::optional<SweepHit> CollisionWorld::sweep_triangle(const TriangleRef& ref, c
   const auto hit = sweep_point_triangle(o.X_OW * a_W, o.X_OW * b_W, mesh.vertices_m[t[0]], mesh.vertices_m[t[1]],
                                         mesh.vertices_m[t[2]], o.shape->face_normal_O(ref.triangle), skin_m,
                                         kInflatePerSkin * skin_m);
-  if (!hit) return std::nullopt;
+  if (!hit || !touchable_from(o.touchable, hit->normal.dot(o.shape->face_normal_O(ref.triangle)) > 0.0)) {
+    return std::nullopt;
+  }
   SweepHit h;
   h.where = ref;
   h.t_stop = hit->t_stop;

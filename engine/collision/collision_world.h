@@ -7,6 +7,7 @@
 #include "collision/sweep_candidates.h"
 #include "geometry/exact_shape.h"
 #include "geometry/pose.h"
+#include "geometry/touchable_faces.h"
 #include "geometry/shading_normals.h"
 
 #include <cstdint>
@@ -60,6 +61,15 @@ class CollisionWorld {
   /// TriangleRef{object, kExactSurface}. Throws std::out_of_range for an object this world
   /// does not have, std::invalid_argument for a size that is not positive and finite.
   void set_exact_shape(int object, const ExactShape& shape);
+
+  /// Which side of the object's triangles blocks a sweep (both by default): with Front, a
+  /// segment that starts behind a triangle passes it. An exact shape is a solid, touched
+  /// from outside; this setting is for triangles. Throws std::out_of_range for an object
+  /// this world does not have.
+  void set_touchable(int object, TouchableFaces faces);
+  [[nodiscard]] TouchableFaces touchable(int object) const {
+    return objects_.at(static_cast<std::size_t>(object)).touchable;
+  }
   /// The object's exact shape, or null where its triangles are swept.
   [[nodiscard]] const ExactShape* exact_shape(int object) const;
   /// For an exact object and a point outside it: the plane tangent to its surface at the
@@ -148,6 +158,7 @@ class CollisionWorld {
     Pose X_WO;
     Pose X_OW;
     std::shared_ptr<const ShadingNormals> shading;
+    TouchableFaces touchable = TouchableFaces::Both;
   };
   std::vector<Object> objects_;
   std::uint64_t geometry_id_ = 0;

@@ -6,6 +6,7 @@
 #include "geometry/object_dynamics.h"
 #include "geometry/object_motion.h"
 #include "geometry/pose.h"
+#include "geometry/touchable_faces.h"
 #include "material/haptic_material.h"
 #include "diagnostics/diagnostic.h"
 #include "scene/plugin_kind.h"
@@ -52,6 +53,8 @@ struct ObjectDescription {
   /// Mass and friction (<dynamics>): a body the hand can push; none for a still or
   /// scripted object (an object has a motion or dynamics, not both).
   std::optional<ObjectDynamics> dynamics;
+  /// touchable="front|back|both": which side of its triangles the hand can touch.
+  TouchableFaces touchable = TouchableFaces::Both;
   SourceLocation where;
 };
 

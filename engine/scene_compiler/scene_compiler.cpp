@@ -130,6 +130,7 @@ class Compiler {
     for (std::size_t i = 0; i < objects.size(); ++i) {
       const int id = scene->world.add_object(shapes[i], objects[i].X_WO);
       if (const auto exact = exact_shape_of(objects[i].shape)) scene->world.set_exact_shape(id, *exact);
+      scene->world.set_touchable(id, objects[i].touchable);
       if (objects[i].material.force_shading) {
         scene->world.set_shading_normals(id, shading_normals_for(shapes[i], objects[i].material));
       }

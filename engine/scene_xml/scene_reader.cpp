@@ -424,13 +424,21 @@ class SceneReader {
   }
 
   void read_object(const tinyxml2::XMLElement& e, const FileContext& ctx) {
-    AttributeParser a(e, ctx.sink, {"name", "material"});
+    AttributeParser a(e, ctx.sink, {"name", "material", "touchable"});
     const auto name = a.text("name", Presence::Required, Emptiness::Forbidden);
     const auto material_ref = a.text("material", Presence::Optional, Emptiness::Forbidden);
     const std::string label = name ? concat("object '", *name, "'") : std::string("<object>");
 
     ObjectDescription object;
     object.name = name.value_or("");
+    if (const auto touchable = a.text("touchable", Presence::Optional, Emptiness::Forbidden)) {
+      if (const auto faces = parse_touchable_faces(*touchable)) {
+        object.touchable = *faces;
+      } else {
+        ctx.sink.error(a.line_of("touchable"), concat("attribute 'touchable' on ", label,
+                                                      " must be front, back or both (is '", *touchable, "')"));
+      }
+    }
     object.where = ctx.sink.at(e.GetLineNum());
     const tinyxml2::XMLElement* shape = nullptr;
     const tinyxml2::XMLElement* pose = nullptr;
@@ -495,6 +503,20 @@ class SceneReader {
       ctx.sink.error(e.GetLineNum(),
                      concat(label, " has no shape (expected <mesh>, <plane>, <sphere>, <box>, "
                                    "<cylinder> or <capsule>)"));
+    }
+    const bool exact_primitive = std::visit(
+        [](const auto& source) {
+          if constexpr (requires { source.exact; }) {
+            return source.exact;
+          } else {
+            return false;
+          }
+        },
+        object.shape);
+    if (object.touchable != TouchableFaces::Both && shape != nullptr && exact_primitive) {
+      ctx.sink.error(a.line_of("touchable"),
+                     concat(label, " is an exact ", tag(*shape), ", a solid touched from outside; touchable=\"",
+                            touchable_faces_name(object.touchable), "\" applies to triangles (set exact=\"false\")"));
     }
     if (motion != nullptr) {
       object.motion = read_motion(*motion, ctx.sink, ctx.unit_to_m, object.X_WO, pose != nullptr);

@@ -30,6 +30,37 @@ TEST(CollisionWorld, SweepFindsTheSurfaceInTheObjectsPose) {
   EXPECT_NEAR(stop.x(), 2.0 + 1e-6, 1e-12);
 }
 
+TEST(CollisionWorld, AFrontOnlySheetBlocksFromTheFrontAndIsPassedFromBehind) {
+  // The square faces +z (counter-clockwise seen from above). Turned over by its pose, its
+  // front faces -z: the side is the triangle's, wherever the object is placed.
+  for (const bool turned : {false, true}) {
+    SCOPED_TRACE(turned ? "turned over" : "as built");
+    CollisionWorld world;
+    const Pose X_WO = turned ? pose_from_xyz_rpy(Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(std::numbers::pi, 0, 0))
+                             : Pose::Identity();
+    const int id = world.add_object(unit_square(), X_WO);
+    const Eigen::Vector3d front(0.5, 0.5, turned ? -1.0 : 1.0), back(0.5, 0.5, turned ? 1.0 : -1.0);
+    const Eigen::Vector3d on_plane_front = front * 1e-9 + Eigen::Vector3d(0.5, 0.5, 0) * (1 - 1e-9);
+    EXPECT_EQ(world.touchable(id), TouchableFaces::Both);
+    ASSERT_TRUE(world.sweep(front, back, 1e-6));  // both sides by default
+    ASSERT_TRUE(world.sweep(back, front, 1e-6));
+
+    world.set_touchable(id, TouchableFaces::Front);
+    const auto from_front = world.sweep(front, back, 1e-6);
+    ASSERT_TRUE(from_front);
+    EXPECT_GT(from_front->normal_W.dot(front - back), 0.0);  // pushes back out to the front
+    EXPECT_FALSE(world.sweep(back, front, 1e-6)) << "a front-only face blocked a move from behind";
+    EXPECT_FALSE(world.sweep_triangle(TriangleRef{id, 0}, back, front, 1e-6));
+    EXPECT_TRUE(world.sweep_triangle(TriangleRef{id, 0}, front, back, 1e-6));
+    // Resting a hair in front of it, the surface still holds.
+    EXPECT_TRUE(world.sweep(on_plane_front, back, 1e-6));
+
+    world.set_touchable(id, TouchableFaces::Back);
+    EXPECT_FALSE(world.sweep(front, back, 1e-6));
+    EXPECT_TRUE(world.sweep(back, front, 1e-6));
+  }
+}
+
 TEST(CollisionWorld, MovingAnObjectMovesItsSurfaceNotItsTree) {
   CollisionWorld world;
   const auto shape = unit_square();

@@ -223,6 +223,35 @@ TEST_F(SceneXmlReader, PrimitiveDimensionsOutsideOneMicrometreToTenKilometresAre
   EXPECT_EQ(errors[2], "x.xml:4: error: attribute 'height' on <cylinder> must be between 1e-6 m and 1e4 m (is 20000 m)");
 }
 
+TEST_F(SceneXmlReader, TouchableFacesAreReadAndBothByDefault) {
+  const Result<SceneDescription> r = read_scene_string(R"(<scene version="1">
+    <object name="a"><material stiffness_N_per_m="1"/><box size="1 1 1"/></object>
+    <object name="b" touchable="front"><material stiffness_N_per_m="1"/><box size="1 1 1"/></object>
+    <object name="c" touchable="back"><material stiffness_N_per_m="1"/><sphere radius="1"/></object>
+    <object name="d" touchable="both"><material stiffness_N_per_m="1"/><plane size="1 1"/></object></scene>)", "x.xml");
+  ASSERT_TRUE(r.ok()) << to_strings(r.diagnostics()).front();
+  ASSERT_EQ(r->objects.size(), 4u);
+  EXPECT_EQ(r->objects[0].touchable, TouchableFaces::Both);
+  EXPECT_EQ(r->objects[1].touchable, TouchableFaces::Front);
+  EXPECT_EQ(r->objects[2].touchable, TouchableFaces::Back);
+  EXPECT_EQ(r->objects[3].touchable, TouchableFaces::Both);
+}
+
+TEST_F(SceneXmlReader, TouchableFacesOtherThanTheThreeOrOnAnExactSolidAreRefused) {
+  const Result<SceneDescription> r = read_scene_string(R"(<scene version="1">
+    <object name="a" touchable="outside"><material stiffness_N_per_m="1"/><box size="1 1 1"/></object>
+    <object name="b" touchable=""><material stiffness_N_per_m="1"/><box size="1 1 1"/></object>
+    <object name="c" touchable="front"><material stiffness_N_per_m="1"/><sphere radius="1" exact="true"/></object>
+    <object name="d" touchable="FRONT"><material stiffness_N_per_m="1"/><box size="1 1 1"/></object></scene>)", "x.xml");
+  const std::vector<std::string> errors = to_strings(r.diagnostics());
+  ASSERT_EQ(errors.size(), 4u) << ::testing::PrintToString(errors);
+  EXPECT_EQ(errors[0], "x.xml:2: error: attribute 'touchable' on object 'a' must be front, back or both (is 'outside')");
+  EXPECT_NE(errors[1].find("x.xml:3: error:"), std::string::npos) << errors[1];
+  EXPECT_EQ(errors[2], "x.xml:4: error: object 'c' is an exact <sphere>, a solid touched from outside; "
+                       "touchable=\"front\" applies to triangles (set exact=\"false\")");
+  EXPECT_EQ(errors[3], "x.xml:5: error: attribute 'touchable' on object 'd' must be front, back or both (is 'FRONT')");
+}
+
 TEST_F(SceneXmlReader, AQuaternionOfTinyComponentsIsNotAllZeros) {
   const Result<SceneDescription> r = read_scene_string(R"(<scene version="1">
     <object name="o"><material stiffness_N_per_m="1"/><sphere radius="1"/>

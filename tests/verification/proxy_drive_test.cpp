@@ -7,6 +7,8 @@ using namespace mhd::test;  // hand-made meshes
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace mhd::verify {
 namespace {
@@ -48,6 +50,53 @@ TEST(DriveProxy, RecordsEveryTickAndAContinuousPath) {
     EXPECT_GE(contact, 10U);
     EXPECT_EQ(count_crossings(oracle, records), 0U);
     EXPECT_EQ(count_ticks_inside(oracle, records), 0U);
+  }
+}
+
+TEST(DriveProxy, AFrontOnlySheetHoldsTheHandInFrontAndLetsItOutFromBehind) {
+  // A 20 cm sheet in z = 0 facing +z, touchable from the front. The hand comes down
+  // through it from above (held on it, pushed back up, no crossing), goes round its edge
+  // to below, then rises through it from behind: the proxy follows the hand all the way,
+  // with no force, and that move is no crossing either. Both sides: the same rise is held.
+  auto mesh = std::make_shared<TriangleMesh>();
+  mesh->vertices_m = {{-0.1, -0.1, 0}, {0.1, -0.1, 0}, {0.1, 0.1, 0}, {-0.1, 0.1, 0}};
+  mesh->triangles = {{0, 1, 2}, {0, 2, 3}};
+  std::vector<Vector3d> down, rise;
+  for (int k = 0; k <= 100; ++k) down.emplace_back(0.0, 0.0, 0.02 - 0.0004 * k);  // to 2 cm below
+  // Round the edge at x = 0.15, then in under the middle, then up to 2 cm above.
+  const std::vector<Vector3d> corners = {{0.0, 0.0, 0.02}, {0.15, 0.0, 0.02}, {0.15, 0.0, -0.02},
+                                         {0.0, 0.0, -0.02}, {0.0, 0.0, 0.02}};
+  for (std::size_t c = 0; c + 1 < corners.size(); ++c) {
+    for (int k = 0; k < 100; ++k) rise.push_back(corners[c] + (corners[c + 1] - corners[c]) * (k / 100.0));
+  }
+  rise.push_back(corners.back());
+  for (const TouchableFaces faces : {TouchableFaces::Front, TouchableFaces::Both}) {
+    SCOPED_TRACE(std::string(touchable_faces_name(faces)));
+    CollisionWorld world;
+    const int id = world.add_object(std::make_shared<const MeshBvh>(mesh), Pose::Identity());
+    world.set_touchable(id, faces);
+    const std::vector<HapticMaterial> materials(1);
+    const ProxySettings settings;
+    const SurfaceCrossingOracle oracle(world);
+
+    const TickRecord pressed = drive_proxy(world, materials, settings, down, 1000.0);
+    EXPECT_GE(pressed.back().proxy_W.z(), 0.0);
+    EXPECT_GT(pressed.back().force_W.z(), 0.0);
+    EXPECT_EQ(count_crossings(oracle, pressed), 0U);
+
+    const TickRecord risen = drive_proxy(world, materials, settings, rise, 1000.0);
+    EXPECT_EQ(count_crossings(oracle, risen), 0U);
+    // Under the middle, on the way up: in front of the sheet's back there is nothing.
+    const TickSample& under = risen[330];
+    ASSERT_LT(under.p_W_hip.z(), 0.0);
+    if (faces == TouchableFaces::Front) {
+      EXPECT_EQ(risen.back().proxy_W, risen.back().p_W_hip);
+      EXPECT_EQ(risen.back().force_W, Vector3d::Zero());
+      for (const TickSample& s : risen) EXPECT_LT((s.proxy_W - s.p_W_hip).norm(), 1e-9);
+    } else {
+      EXPECT_LT(risen.back().proxy_W.z(), 0.0);  // held under the sheet
+      EXPECT_LT(risen.back().force_W.z(), 0.0);
+    }
   }
 }
 

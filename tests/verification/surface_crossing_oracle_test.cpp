@@ -7,6 +7,7 @@ using namespace mhd::test;  // hand-made meshes
 
 #include <cmath>
 #include <numbers>
+#include <string>
 
 namespace mhd::verify {
 namespace {
@@ -52,6 +53,33 @@ TEST(SurfaceCrossingOracle, SegmentThroughTriangleInterior) {
   EXPECT_EQ(hit->where, (TriangleRef{0, 0}));
   EXPECT_NEAR(hit->t, 0.5, 1e-15);
   EXPECT_FALSE(oracle.first_touched_triangle({0.75, 0.75, 1.0}, {0.75, 0.75, -1.0}).has_value());
+}
+
+TEST(SurfaceCrossingOracle, AFrontOnlyFaceIsCrossedOnlyFromTheFront) {
+  // The triangle faces +z. Front only: a move down through it crosses, a move up does
+  // not; one that starts on it and goes behind does, one that leaves it to the front
+  // does not. Back only: the mirror. Both: every move that touches.
+  const TriangleMesh mesh = one_triangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+  const Vector3d above(0.2, 0.2, 1), below(0.2, 0.2, -1), on(0.2, 0.2, 0);
+  struct Case {
+    TouchableFaces faces;
+    bool down, up, on_to_below, on_to_above, along;
+  };
+  for (const Case& c : {Case{TouchableFaces::Both, true, true, true, true, true},
+                        Case{TouchableFaces::Front, true, false, true, false, true},
+                        Case{TouchableFaces::Back, false, true, false, true, true}}) {
+    SCOPED_TRACE(std::string(touchable_faces_name(c.faces)));
+    const PlacedMesh placed{&mesh, Pose::Identity(), c.faces};
+    const SurfaceCrossingOracle oracle(std::span<const PlacedMesh>(&placed, 1));
+    EXPECT_EQ(oracle.segment_touches_surface(above, below), c.down);
+    EXPECT_EQ(oracle.segment_touches_surface(below, above), c.up);
+    EXPECT_EQ(oracle.segment_touches_surface(on, below), c.on_to_below);
+    EXPECT_EQ(oracle.segment_touches_surface(on, above), c.on_to_above);
+    EXPECT_EQ(oracle.segment_touches_surface(on, Vector3d(0.1, 0.1, 0)), c.along);
+    EXPECT_EQ(oracle.first_touched_triangle(above, below).has_value(), c.down);
+    EXPECT_EQ(oracle.first_touched_triangle(below, above).has_value(), c.up);
+    EXPECT_TRUE(oracle.point_touches_surface(on));  // a point on it touches either way
+  }
 }
 
 TEST(SurfaceCrossingOracle, SegmentThroughSharedEdgeTouchesBoth) {

@@ -111,6 +111,8 @@ struct SurfaceCrossingOracle::Impl {
   std::vector<std::array<Eigen::Vector3d, 3>> triangles_W;
   std::vector<TriangleRef> refs;
   std::vector<bool> closed;  // per object
+  std::vector<TouchableFaces> touchable;  // per object
+  bool one_sided = false;  // some object is touchable from one side only
 
   // Non-degenerate triangles go in a triangle tree; collinear ones become their
   // non-degenerate edges in a segment tree; single points are checked one by one.
@@ -138,6 +140,8 @@ struct SurfaceCrossingOracle::Impl {
     if (!CGAL::collinear(a, b, c)) {
       cgal_triangles.emplace_back(a, b, c);
       cgal_triangle_source.push_back(source);
+    } else if (touchable[static_cast<std::size_t>(ref.object)] != TouchableFaces::Both) {
+      // A one-sided surface has no side where it has no area: nothing to touch.
     } else if (a == b && b == c) {
       cgal_points.push_back(a);
       cgal_point_source.push_back(source);
@@ -153,6 +157,10 @@ struct SurfaceCrossingOracle::Impl {
   void build(std::span<const PlacedMesh> meshes) {
     bounds_W.setEmpty();
     closed.reserve(meshes.size());
+    for (const PlacedMesh& placed : meshes) {
+      touchable.push_back(placed.touchable);
+      one_sided = one_sided || placed.touchable != TouchableFaces::Both;
+    }
     for (std::size_t i = 0; i < meshes.size(); ++i) {
       const TriangleMesh& mesh = *meshes[i].mesh;
       const Pose& X_WO = meshes[i].X_WO;
@@ -171,6 +179,20 @@ struct SurfaceCrossingOracle::Impl {
     segment_tree.build();
   }
 
+  // Whether segment a->b, which touches cgal_triangles[k], meets a side of it that is
+  // there: it comes from the front when a is on the side the counter-clockwise normal
+  // points to (CGAL's positive side of the plane through the corners in order), or starts
+  // on the plane and goes behind it. A move within the plane touches either side.
+  [[nodiscard]] bool side_is_there(std::size_t k, const Point& a, const Point& b) const {
+    const TouchableFaces faces = touchable[static_cast<std::size_t>(refs[cgal_triangle_source[k]].object)];
+    if (faces == TouchableFaces::Both) return true;
+    const Triangle& t = cgal_triangles[k];
+    const CGAL::Orientation at_a = CGAL::orientation(t[0], t[1], t[2], a);
+    if (at_a != CGAL::COPLANAR) return touchable_from(faces, at_a == CGAL::POSITIVE);
+    const CGAL::Orientation at_b = CGAL::orientation(t[0], t[1], t[2], b);
+    return at_b == CGAL::COPLANAR || touchable_from(faces, at_b == CGAL::NEGATIVE);
+  }
+
   // Calls f(source index, t) for every touched primitive. Query: Point or Segment.
   template <class Query, class F>
   void for_each_touch(const Query& query, const Eigen::Vector3d& a, const Eigen::Vector3d& b, F&& f) const {
@@ -180,8 +202,12 @@ struct SurfaceCrossingOracle::Impl {
       triangle_tree.all_intersected_primitives(query, std::back_inserter(hits));
       for (TriangleIterator it : hits) {
         double t = 0.0;
-        if constexpr (!kIsPoint) t = first_param(a, b, CGAL::intersection(query, *it), 0.0);
-        f(cgal_triangle_source[static_cast<std::size_t>(it - cgal_triangles.cbegin())], t);
+        const auto k = static_cast<std::size_t>(it - cgal_triangles.cbegin());
+        if constexpr (!kIsPoint) {
+          if (!side_is_there(k, query.source(), query.target())) continue;
+          t = first_param(a, b, CGAL::intersection(query, *it), 0.0);
+        }
+        f(cgal_triangle_source[k], t);
       }
     }
     if (!segment_tree.empty()) {
@@ -211,6 +237,19 @@ struct SurfaceCrossingOracle::Impl {
         if (exact.signed_distance(to_eigen(query)) <= 0.0) return true;
       } else {
         if (exact.touches(to_eigen(query.source()), to_eigen(query.target()))) return true;
+      }
+    }
+    if constexpr (std::is_same_v<Query, Segment>) {
+      if (one_sided && !triangle_tree.empty()) {
+        std::vector<TriangleIterator> hits;
+        triangle_tree.all_intersected_primitives(query, std::back_inserter(hits));
+        for (TriangleIterator it : hits) {
+          if (side_is_there(static_cast<std::size_t>(it - cgal_triangles.cbegin()), query.source(), query.target())) {
+            return true;
+          }
+        }
+        if (!segment_tree.empty() && segment_tree.do_intersect(query)) return true;
+        return std::any_of(cgal_points.begin(), cgal_points.end(), [&](const Point& p) { return query.has_on(p); });
       }
     }
     if (!triangle_tree.empty() && triangle_tree.do_intersect(query)) return true;
@@ -282,7 +321,7 @@ SurfaceCrossingOracle::SurfaceCrossingOracle(const CollisionWorld& world) : impl
   std::vector<PlacedMesh> meshes;
   meshes.reserve(static_cast<std::size_t>(world.object_count()));
   for (int i = 0; i < world.object_count(); ++i) {
-    meshes.push_back({&world.shape(i).mesh(), world.pose(i)});
+    meshes.push_back({&world.shape(i).mesh(), world.pose(i), world.touchable(i)});
     const ExactShape* exact = world.exact_shape(i);
     impl_->is_exact.push_back(exact != nullptr);
     if (exact != nullptr) impl_->exact.add(i, *exact, world.pose(i));

@@ -2,13 +2,16 @@
 // An exact, independent checker for "a moving point never crosses a surface". It shares
 // no code with the collision layer: it copies the triangles into the world frame and
 // answers with CGAL's exact predicates (Epick) over its own AABB tree, so a bug in the
-// engine's conservative sweeps cannot hide itself here. Touching counts as crossing.
+// engine's conservative sweeps cannot hide itself here. Touching counts as crossing; on
+// an object touchable from one side, only a move that meets a triangle from that side
+// does (geometry/touchable_faces.h), decided by the exact orientation of its start.
 // Objects that the world sweeps as exact primitives are judged as the solids they are
 // (exact_solid_oracle.h), not by their tessellations: touching or entering one crosses it,
 // and a hit on one is reported as TriangleRef{object, kExactSurface}.
 
 #include "collision/collision_world.h"
 #include "geometry/pose.h"
+#include "geometry/touchable_faces.h"
 #include "geometry/triangle_mesh.h"
 
 #include <Eigen/Core>
@@ -26,6 +29,8 @@ namespace mhd::verify {
 struct PlacedMesh {
   const TriangleMesh* mesh = nullptr;  ///< not owned; read only in the constructor
   Pose X_WO = Pose::Identity();
+  /// A move that meets a triangle from a side that is not touchable does not touch it.
+  TouchableFaces touchable = TouchableFaces::Both;
 };
 
 /// A triangle a segment touches.
