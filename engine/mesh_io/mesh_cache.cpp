@@ -386,6 +386,10 @@ Result<CachedMesh, MeshLoadError> MeshCache::load(const std::filesystem::path& f
   Result<LoadedMesh, MeshLoadError> loaded = load_mesh_file(file, scale_to_m, read_progress, budget);
   if (!loaded.ok()) return loaded.error();
   result.dropped_triangles = loaded->dropped_triangles;
+  if (!MeshBvh::holds(loaded->mesh.triangle_count())) {
+    return MeshLoadError{file, fmt::format("{} triangles, more than the {} one collision tree holds",
+                                           loaded->mesh.triangle_count(), MeshBvh::kMaxTriangles)};
+  }
   auto mesh = std::make_shared<const TriangleMesh>(std::move(loaded->mesh));
   const bool big = mesh->triangle_count() >= kProgressMinTriangles;
   const std::string what = fmt::format("building BVH of {} ({} triangles)", name, mesh->triangle_count());

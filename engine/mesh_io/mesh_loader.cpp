@@ -166,6 +166,10 @@ Result<LoadedMesh, MeshLoadError> load_mesh_file(const std::filesystem::path& fi
       if (std::string refused = budget->refusal("the header claims", *header->claimed_faces, "faces"); !refused.empty()) {
         return fail(file, std::move(refused));
       }
+      if (std::string refused = budget->memory_refusal("the header claims", *header->claimed_faces, "faces");
+          !refused.empty()) {
+        return fail(file, std::move(refused));
+      }
     }
   }
 

@@ -3,6 +3,7 @@
 #include "dynamics/body_shape.h"
 #include "geometry/primitive_mesh.h"
 #include "geometry/shading_normals.h"
+#include "mesh_io/available_memory.h"
 #include "mesh_io/mesh_cache.h"
 #include "scene_compiler/exact_primitive.h"
 #include "scene_compiler/texture_compiler.h"
@@ -270,7 +271,7 @@ class Compiler {
     const MeshKey key = mesh_key(source);
     if (const auto it = meshes_.find(key); it != meshes_.end()) return it->second;
     SharedShape shape;
-    const TriangleBudget budget{description_.max_triangles, loaded_triangles_};
+    const TriangleBudget budget{description_.max_triangles, loaded_triangles_, available_memory_bytes()};
     const Result<CachedMesh, MeshLoadError> loaded =
         cache_.load(source.file, source.scale_to_m, progress_for(object), budget);
     if (loaded.ok()) {

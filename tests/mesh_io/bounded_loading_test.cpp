@@ -1,5 +1,6 @@
 // Loading within bounds (issue 14, item 6), through load_mesh_file and real files: each
 // hostile input is refused at once with its exact message, and good meshes still load.
+#include "mesh_io/available_memory.h"
 #include "mesh_io/mesh_loader.h"
 #include "test_mesh_files.h"
 
@@ -55,6 +56,28 @@ TEST(BoundedLoading, HeaderFaceCountAboveMaxTrianglesIsRefusedBeforeLoading) {
   EXPECT_EQ(reason_of(load_mesh_file(dir / "two.ply", Eigen::Vector3d::Ones(), {}, TriangleBudget{1})),
             "the header claims 2 faces, more than max_triangles (1)");
   EXPECT_TRUE(load_mesh_file(dir / "two.ply", Eigen::Vector3d::Ones(), {}, TriangleBudget{2}).ok());
+}
+
+TEST(BoundedLoading, AHeaderClaimingMoreThanMemoryHoldsIsRefusedBeforeLoading) {
+  // Refused from the header at what a load takes per triangle, and loaded when it fits.
+  TempDir dir;
+  TriangleMesh mesh;
+  mesh.vertices_m = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+  mesh.triangles = {{0, 1, 2}, {1, 3, 2}};
+  test::write_binary_ply(dir / "two.ply", mesh);
+  const std::uint64_t needed = 2 * TriangleBudget::kLoadBytesPerTriangle;
+  EXPECT_EQ(reason_of(load_mesh_file(dir / "two.ply", Eigen::Vector3d::Ones(), {}, TriangleBudget{10, 0, needed - 1})),
+            "the header claims 2 faces, about " + std::to_string(needed) + " bytes to load, more than the " +
+                std::to_string(needed - 1) + " bytes of memory available");
+  EXPECT_TRUE(load_mesh_file(dir / "two.ply", Eigen::Vector3d::Ones(), {}, TriangleBudget{10, 0, needed}).ok());
+  EXPECT_TRUE(load_mesh_file(dir / "two.ply", Eigen::Vector3d::Ones(), {}, TriangleBudget{10, 0, 0}).ok());
+  // A billion triangles, what a scene may declare, in the units a user reads.
+  const TriangleBudget machine{1'000'000'000, 0, std::uint64_t{24} << 30};
+  EXPECT_EQ(machine.memory_refusal("the header claims", 1'000'000'000, "faces"),
+            "the header claims 1000000000 faces, about 163.0 GiB to load, more than the 24.0 GiB of memory available");
+  EXPECT_EQ(machine.memory_refusal("the header claims", 100'000'000, "faces"), "");
+  // This machine's figure is read, and the repository's meshes fit it.
+  EXPECT_GT(available_memory_bytes(), std::uint64_t{1} << 28);
 }
 
 TEST(BoundedLoading, LoadedTrianglesAboveMaxTrianglesAreRefused) {
