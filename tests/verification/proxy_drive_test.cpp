@@ -89,6 +89,9 @@ TEST(DriveProxy, AFrontOnlySheetHoldsTheHandInFrontAndLetsItOutFromBehind) {
     // Under the middle, on the way up: in front of the sheet's back there is nothing.
     const TickSample& under = risen[330];
     ASSERT_LT(under.p_W_hip.z(), 0.0);
+    // Held: the hand 2 cm above, its proxy under the sheet (both sides touchable only).
+    EXPECT_EQ(count_held_ticks(oracle, risen) > 0, faces == TouchableFaces::Both);
+    EXPECT_EQ(count_held_ticks(oracle, pressed), 0U);  // pressing in from the front is no hold
     if (faces == TouchableFaces::Front) {
       EXPECT_EQ(risen.back().proxy_W, risen.back().p_W_hip);
       EXPECT_EQ(risen.back().force_W, Vector3d::Zero());

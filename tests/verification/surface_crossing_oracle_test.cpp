@@ -79,6 +79,11 @@ TEST(SurfaceCrossingOracle, AFrontOnlyFaceIsCrossedOnlyFromTheFront) {
     EXPECT_EQ(oracle.first_touched_triangle(above, below).has_value(), c.down);
     EXPECT_EQ(oracle.first_touched_triangle(below, above).has_value(), c.up);
     EXPECT_TRUE(oracle.point_touches_surface(on));  // a point on it touches either way
+    // Whatever side is touchable: from above, a point below is behind the face.
+    EXPECT_TRUE(oracle.segment_meets_a_front(above, below));
+    EXPECT_FALSE(oracle.segment_meets_a_front(below, above));
+    EXPECT_FALSE(oracle.segment_meets_a_front(on, below));
+    EXPECT_FALSE(oracle.segment_meets_a_front(above, Vector3d(0.2, 0.2, 0.5)));
   }
 }
 

@@ -6,11 +6,17 @@
 #include <assimp/scene.h>
 
 #include <algorithm>
+#include <bit>
 #include <cctype>
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
 #include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace mhd::mesh_gen {
 std::string mesh_file_format(const std::filesystem::path& file) {
@@ -22,8 +28,58 @@ std::string mesh_file_format(const std::filesystem::path& file) {
   throw std::runtime_error("cannot write '" + file.string() + "': unknown extension (use .ply, .obj or .stl)");
 }
 
+namespace {
+
+// Binary PLY written as a stream: assimp's exporter holds a second copy of the mesh with
+// one heap block per face, about 50 bytes per triangle more than the mesh itself, which
+// at hundreds of millions of triangles does not fit.
+void write_binary_ply(const TriangleMesh& mesh, const std::filesystem::path& file, double file_units_per_m) {
+  static_assert(std::endian::native == std::endian::little, "binary_little_endian is written as in memory");
+  if (mesh.vertices_m.size() > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max())) {
+    throw std::runtime_error("cannot write '" + file.string() + "': more vertices than a PLY int index reaches");
+  }
+  std::ofstream out(file, std::ios::binary | std::ios::trunc);
+  if (!out) throw std::runtime_error("cannot write '" + file.string() + "': " + std::strerror(errno));
+  out << "ply\nformat binary_little_endian 1.0\ncomment written by mhd-mesh-gen\n"
+      << "element vertex " << mesh.vertices_m.size() << "\nproperty float x\nproperty float y\nproperty float z\n"
+      << "element face " << mesh.triangles.size() << "\nproperty list uchar int vertex_indices\nend_header\n";
+  std::vector<char> chunk;
+  constexpr std::size_t kChunkBytes = std::size_t{1} << 22;
+  chunk.reserve(kChunkBytes + 64);
+  auto put = [&chunk](const auto& value) {
+    const auto* bytes = reinterpret_cast<const char*>(&value);
+    chunk.insert(chunk.end(), bytes, bytes + sizeof value);
+  };
+  auto flush = [&](bool force) {
+    if (!force && chunk.size() < kChunkBytes) return;
+    out.write(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+    chunk.clear();
+  };
+  for (const Eigen::Vector3d& v : mesh.vertices_m) {
+    const Eigen::Vector3f p = (v * file_units_per_m).cast<float>();
+    put(p.x());
+    put(p.y());
+    put(p.z());
+    flush(false);
+  }
+  for (const TriangleIndices& t : mesh.triangles) {
+    put(std::uint8_t{3});
+    for (const std::uint32_t i : t) put(static_cast<std::int32_t>(i));
+    flush(false);
+  }
+  flush(true);
+  out.close();
+  if (!out) throw std::runtime_error("cannot write '" + file.string() + "': " + std::strerror(errno));
+}
+
+}  // namespace
+
 void write_mesh_file(const TriangleMesh& mesh, const std::filesystem::path& file, double file_units_per_m) {
   const std::string format = mesh_file_format(file);
+  if (format == "plyb") {
+    write_binary_ply(mesh, file, file_units_per_m);
+    return;
+  }
   if (mesh.vertices_m.size() > std::numeric_limits<unsigned int>::max() ||
       mesh.triangles.size() > std::numeric_limits<unsigned int>::max()) {
     throw std::runtime_error("cannot write '" + file.string() + "': mesh too large");

@@ -1,6 +1,7 @@
 #pragma once
-// Writes a TriangleMesh through assimp's exporter, the format chosen by the file's
-// extension: .ply (binary PLY), .obj (no material file), .stl (binary STL).
+// Writes a TriangleMesh, the format chosen by the file's extension: .ply (binary PLY,
+// streamed by hand so any size fits), .obj (no material file) and .stl (binary STL)
+// through assimp's exporter.
 
 #include "geometry/triangle_mesh.h"
 

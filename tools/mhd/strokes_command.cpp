@@ -118,6 +118,9 @@ int run(const StrokesOptions& opt) {
   fmt::print("pop-throughs: {} proxy moves touched the surface, {} ticks ended inside (exact check); "
              "follow failures: {} ticks (largest free-space gap {:.3f} mm)\n",
              r.pop_throughs, r.ticks_inside, r.follow_failures, 1e3 * r.max_free_gap_m);
+  fmt::print("held behind a surface: {} ticks (proxy over {:.0f} mm from the hand, a face's front towards the hand "
+             "between them)\n",
+             r.held_ticks, 1e3 * mhd::verify::kHeldGap_m);
   // Both halves of the proxy's contract (docs/proxy.md) decide the status.
   return r.pop_throughs == 0 && r.ticks_inside == 0 && r.follow_failures == 0 ? 0 : 1;
 }

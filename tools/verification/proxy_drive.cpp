@@ -95,4 +95,12 @@ std::size_t count_ticks_inside(const SurfaceCrossingOracle& oracle, const TickRe
   return inside;
 }
 
+std::size_t count_held_ticks(const SurfaceCrossingOracle& oracle, const TickRecord& records) {
+  std::size_t held = 0;
+  for (const TickSample& s : records) {
+    if ((s.proxy_W - s.p_W_hip).norm() > kHeldGap_m && oracle.segment_meets_a_front(s.p_W_hip, s.proxy_W)) ++held;
+  }
+  return held;
+}
+
 }  // namespace mhd::verify

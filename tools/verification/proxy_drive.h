@@ -69,6 +69,16 @@ struct Crossing {
 /// inside the surface"). Open objects have no inside and never count.
 [[nodiscard]] std::size_t count_ticks_inside(const SurfaceCrossingOracle& oracle, const TickRecord& records);
 
+/// A hand farther than this from its proxy, with a face's front towards the hand between
+/// them, is held behind that face (not pressing into it from the front).
+inline constexpr double kHeldGap_m = 0.010;
+
+/// Ticks that ended with the proxy over kHeldGap_m from the HIP and behind a face the HIP
+/// is in front of (SurfaceCrossingOracle::segment_meets_a_front): the hand pulled back to
+/// the front of an open surface while the proxy stays behind it. Zero on a surface
+/// touchable from the front only.
+[[nodiscard]] std::size_t count_held_ticks(const SurfaceCrossingOracle& oracle, const TickRecord& records);
+
 /// A tick that broke "otherwise go to the hand" (follow_check.h).
 struct FollowFailure {
   std::size_t tick = 0;

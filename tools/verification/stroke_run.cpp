@@ -80,6 +80,7 @@ StrokeRunReport run_strokes(const CompiledScene& scene, const SurfaceCrossingOra
     }
     report.pop_throughs += count_crossings(oracle, record);
     report.ticks_inside += count_ticks_inside(oracle, record);
+    report.held_ticks += count_held_ticks(oracle, record);
     const FollowCheck follow_check = find_follow_failures(oracle, record, follow);
     report.follow_failures += follow_check.failures.size();
     report.max_free_gap_m = std::max(report.max_free_gap_m, follow_check.max_free_gap_m);

@@ -40,6 +40,7 @@ struct StrokeRunReport {
   std::vector<double> force_sum_by_object_N;
   std::size_t pop_throughs = 0;  ///< proxy moves that touched the surface (exact check)
   std::size_t ticks_inside = 0;  ///< ticks that ended inside a closed object
+  std::size_t held_ticks = 0;    ///< ticks held behind a face the hand is in front of (count_held_ticks)
   /// Ticks where the proxy did not go to a HIP it could reach (follow_check.h, exact,
   /// tolerance kFollowTolerance_m at the scene's stiffest material).
   std::size_t follow_failures = 0;

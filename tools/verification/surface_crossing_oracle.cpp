@@ -352,6 +352,17 @@ bool SurfaceCrossingOracle::point_touches_surface(const Eigen::Vector3d& p_W) co
   return impl_->touches(to_point(p_W));
 }
 
+bool SurfaceCrossingOracle::segment_meets_a_front(const Eigen::Vector3d& a_W, const Eigen::Vector3d& b_W) const {
+  const Impl& m = *impl_;
+  if (a_W == b_W || m.triangle_tree.empty()) return false;
+  const Point a = to_point(a_W);
+  std::vector<TriangleIterator> hits;
+  m.triangle_tree.all_intersected_primitives(Segment(a, to_point(b_W)), std::back_inserter(hits));
+  return std::any_of(hits.begin(), hits.end(), [&](TriangleIterator t) {
+    return CGAL::orientation((*t)[0], (*t)[1], (*t)[2], a) == CGAL::POSITIVE;
+  });
+}
+
 std::vector<OracleHit> SurfaceCrossingOracle::touched_triangles(const Eigen::Vector3d& a_W,
                                                                 const Eigen::Vector3d& b_W) const {
   std::vector<std::pair<std::size_t, double>> touched;  // (source, t)

@@ -63,6 +63,11 @@ class SurfaceCrossingOracle {
   [[nodiscard]] bool segment_touches_surface(const Eigen::Vector3d& a_W, const Eigen::Vector3d& b_W) const;
   [[nodiscard]] bool point_touches_surface(const Eigen::Vector3d& p_W) const;
 
+  /// Exact: true iff the segment [a_W, b_W] touches a triangle (of non-zero area) whose
+  /// front a_W lies strictly in front of, whichever side its object is touchable from:
+  /// from a hand at a_W, a proxy at b_W is behind that face.
+  [[nodiscard]] bool segment_meets_a_front(const Eigen::Vector3d& a_W, const Eigen::Vector3d& b_W) const;
+
   /// True when the segment [a_W, b_W] comes within clearance_m of a triangle (or
   /// degenerate edge) that lies farther than 2 clearance_m from a_W: a brush of the
   /// surface on the way, not the surface the start rests on. Distances are constructed in
