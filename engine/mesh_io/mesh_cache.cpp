@@ -1,5 +1,6 @@
 #include "mesh_io/mesh_cache.h"
 
+#include "mesh_io/byte_count_text.h"
 #include "mesh_io/mesh_cache_eviction.h"
 #include "mesh_io/regular_file.h"
 
@@ -399,12 +400,12 @@ Result<CachedMesh, MeshLoadError> MeshCache::load(const std::filesystem::path& f
   result.bvh = bvh;
 
   // 3. Store it.
-  if (key && writable_) store(result.cache_file, *key, *bvh, result);
+  if (key && writable_) store(file, result.cache_file, *key, *bvh, result);
   return result;
 }
 
-void MeshCache::store(const std::filesystem::path& target, const MeshCacheKey& key, const MeshBvh& bvh,
-                      CachedMesh& result) {
+void MeshCache::store(const std::filesystem::path& mesh_file, const std::filesystem::path& target,
+                      const MeshCacheKey& key, const MeshBvh& bvh, CachedMesh& result) {
   const TriangleMesh& mesh = bvh.mesh();
   std::vector<std::byte> serialized;
   try {
@@ -502,6 +503,13 @@ void MeshCache::store(const std::filesystem::path& target, const MeshCacheKey& k
   ++stats_.writes;
   result.written = true;
   spdlog::debug("mesh cache: wrote '{}'", target.string());
+  if (const std::uint64_t entry_bytes = layout->end; entry_bytes > limit_bytes_) {
+    result.over_limit = fmt::format(
+        "the cache entry of '{}' takes {}, more than the cache's limit of {} (set by MHD_CACHE_MAX_MB); "
+        "it is kept until another mesh is cached",
+        mesh_file.string(), byte_count_text(entry_bytes), byte_count_text(limit_bytes_));
+    spdlog::warn("mesh cache: {}", result.over_limit);
+  }
   const MeshCacheRemoval evicted = evict_mesh_cache(*dir_, limit_bytes_, target);
   if (evicted.removed > 0)
     spdlog::info("mesh cache: removed {} least recently used entries ({:.1f} MiB) to stay within {:.0f} MiB",

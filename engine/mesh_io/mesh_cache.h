@@ -66,6 +66,10 @@ struct CachedMesh {
   std::string rejected_reason;  ///< why the existing cache file was rejected
   std::filesystem::path cache_file;
   std::size_t dropped_triangles = 0;  ///< by the loader (0 on a hit)
+  /// Set when the entry written is larger than the cache's size limit: what it takes, the
+  /// limit and the variable that sets it (also logged as a warning). Such an entry is
+  /// kept until another mesh is cached, which evicts it.
+  std::string over_limit;
   [[nodiscard]] const TriangleMesh& mesh() const { return bvh->mesh(); }
 };
 
@@ -99,7 +103,8 @@ class MeshCache {
   [[nodiscard]] std::filesystem::path file_for(const MeshCacheKey& key) const;
 
  private:
-  void store(const std::filesystem::path& target, const MeshCacheKey& key, const MeshBvh& bvh, CachedMesh& result);
+  void store(const std::filesystem::path& mesh_file, const std::filesystem::path& target, const MeshCacheKey& key,
+             const MeshBvh& bvh, CachedMesh& result);
 
   std::optional<std::filesystem::path> dir_;
   bool writable_ = false;

@@ -121,6 +121,28 @@ TEST_F(MeshCacheTest, SecondLoadHitsAndMatchesAFreshBuild) {
   EXPECT_EQ(other.load(mesh_file_, Eigen::Vector3d::Ones())->outcome, CacheOutcome::Hit);
 }
 
+TEST_F(MeshCacheTest, AnEntryOverTheSizeLimitIsReportedWithItsSizeAndTheVariableNotDropped) {
+  MeshCache small(cache_dir_);
+  small.set_limit_bytes(1000);
+  const Result<CachedMesh, MeshLoadError> over = small.load(mesh_file_, Eigen::Vector3d::Ones());
+  ASSERT_TRUE(over.ok()) << over.error_text();
+  ASSERT_TRUE(over->written);
+  const auto entry_bytes = std::filesystem::file_size(over->cache_file);
+  ASSERT_GT(entry_bytes, 1000u);
+  EXPECT_EQ(over->over_limit, "the cache entry of '" + mesh_file_.string() + "' takes " +
+                                  (entry_bytes < (1u << 20) ? std::to_string(entry_bytes) + " bytes" : std::string("?")) +
+                                  ", more than the cache's limit of 1000 bytes (set by MHD_CACHE_MAX_MB); it is kept "
+                                  "until another mesh is cached");
+  EXPECT_TRUE(std::filesystem::is_regular_file(over->cache_file));  // kept, and used:
+  EXPECT_EQ(small.load(mesh_file_, Eigen::Vector3d::Ones())->outcome, CacheOutcome::Hit);
+  // Within the limit, nothing is said.
+  MeshCache roomy(dir_ / "roomy");
+  const Result<CachedMesh, MeshLoadError> fits = roomy.load(mesh_file_, Eigen::Vector3d::Ones());
+  ASSERT_TRUE(fits.ok());
+  EXPECT_TRUE(fits->written);
+  EXPECT_EQ(fits->over_limit, "");
+}
+
 TEST_F(MeshCacheTest, TruncatedCacheFileIsRejectedAndRebuilt) {
   MeshCache cache(cache_dir_);
   const Result<CachedMesh, MeshLoadError> cold = cache.load(mesh_file_, Eigen::Vector3d::Ones());
