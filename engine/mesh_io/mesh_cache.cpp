@@ -57,7 +57,8 @@ struct FileHeader {
   std::uint64_t bvh_bytes;
   std::uint64_t payload_bytes;
   std::uint64_t payload_hash_low, payload_hash_high;  ///< XXH3-128 of everything after the header
-  std::array<std::uint64_t, 2> reserved;
+  std::uint64_t source_bytes;  ///< length of the mesh file's path, the last section
+  std::uint64_t reserved;
   std::uint64_t header_hash;  ///< XXH3-64 of this header with header_hash = 0
 };
 static_assert(sizeof(FileHeader) == 128);
@@ -67,14 +68,17 @@ constexpr std::size_t align_up(std::size_t n) { return (n + kAlign - 1) / kAlign
 
 /// Byte offsets of the payload sections, relative to the file start.
 struct Layout {
-  std::size_t vertices, triangles, normals, bvh, end;
+  std::size_t vertices, triangles, normals, bvh, source, end;
 };
+
+/// Longest mesh file path an entry records (Linux's PATH_MAX).
+constexpr std::uint64_t kMaxSourceBytes = 4096;
 /// Layout for the given counts; nullopt if it would not fit in `limit` bytes (checked
 /// before multiplying, so hostile counts cannot overflow).
 std::optional<Layout> layout_for(std::uint64_t vertices, std::uint64_t triangles, std::uint64_t normals,
-                                 std::uint64_t bvh_bytes, std::uint64_t limit) {
+                                 std::uint64_t bvh_bytes, std::uint64_t source_bytes, std::uint64_t limit) {
   if (vertices > limit / sizeof(Eigen::Vector3d) || triangles > limit / sizeof(TriangleIndices) ||
-      normals > limit / sizeof(Eigen::Vector3d) || bvh_bytes > limit) {
+      normals > limit / sizeof(Eigen::Vector3d) || bvh_bytes > limit || source_bytes > kMaxSourceBytes) {
     return std::nullopt;
   }
   Layout l{};
@@ -82,7 +86,8 @@ std::optional<Layout> layout_for(std::uint64_t vertices, std::uint64_t triangles
   l.triangles = align_up(l.vertices + static_cast<std::size_t>(vertices) * sizeof(Eigen::Vector3d));
   l.normals = align_up(l.triangles + static_cast<std::size_t>(triangles) * sizeof(TriangleIndices));
   l.bvh = align_up(l.normals + static_cast<std::size_t>(normals) * sizeof(Eigen::Vector3d));
-  l.end = l.bvh + static_cast<std::size_t>(bvh_bytes);
+  l.source = l.bvh + static_cast<std::size_t>(bvh_bytes);
+  l.end = l.source + static_cast<std::size_t>(source_bytes);
   if (l.end > limit) return std::nullopt;
   return l;
 }
@@ -172,7 +177,8 @@ std::optional<Layout> check_header(const FileHeader& h, const MeshCacheKey& key,
     why = "implausible counts";
     return std::nullopt;
   }
-  const auto layout = layout_for(h.vertex_count, h.triangle_count, h.normal_count, h.bvh_bytes, file_size);
+  const auto layout =
+      layout_for(h.vertex_count, h.triangle_count, h.normal_count, h.bvh_bytes, h.source_bytes, file_size);
   if (!layout || layout->end != file_size || h.payload_bytes != file_size - sizeof(FileHeader)) {
     why = fmt::format("size mismatch ({} bytes)", file_size);
     return std::nullopt;
@@ -320,6 +326,24 @@ std::optional<MeshCacheKey> mesh_cache_key(const std::filesystem::path& file, co
   return MeshCacheKey{h.low64, h.high64};
 }
 
+std::optional<std::string> mesh_cache_entry_source(const std::filesystem::path& entry) {
+  Fd fd(::open(entry.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC));
+  if (fd.fd < 0) return std::nullopt;
+  struct stat st {};
+  if (::fstat(fd.fd, &st) != 0 || !S_ISREG(st.st_mode)) return std::nullopt;
+  FileHeader h;
+  if (::pread(fd.fd, &h, sizeof h, 0) != static_cast<ssize_t>(sizeof h)) return std::nullopt;
+  std::string why;
+  const auto layout = check_header(h, MeshCacheKey{h.key_low, h.key_high}, static_cast<std::size_t>(st.st_size), why);
+  if (!layout) return std::nullopt;
+  std::string source(static_cast<std::size_t>(h.source_bytes), '\0');
+  if (!source.empty() && ::pread(fd.fd, source.data(), source.size(), static_cast<off_t>(layout->source)) !=
+                             static_cast<ssize_t>(source.size())) {
+    return std::nullopt;
+  }
+  return source;
+}
+
 MeshCache::MeshCache(std::optional<std::filesystem::path> dir)
     : dir_(std::move(dir)), limit_bytes_(mesh_cache_limit_bytes()) {
   if (!dir_) return;
@@ -415,9 +439,13 @@ void MeshCache::store(const std::filesystem::path& mesh_file, const std::filesys
     spdlog::warn("mesh cache: not caching '{}': {}", target.string(), e.what());
     return;
   }
+  // The mesh file it came from, for `mhd cache list` (the key is its content, not its name).
+  std::error_code absolute_ec;
+  std::string source = std::filesystem::absolute(mesh_file, absolute_ec).lexically_normal().string();
+  if (absolute_ec || source.size() > kMaxSourceBytes) source.clear();
   const std::size_t limit = std::numeric_limits<std::size_t>::max() / 2;
   const auto layout = layout_for(mesh.vertices_m.size(), mesh.triangles.size(), mesh.vertex_normals.size(),
-                                 serialized.size(), limit);
+                                 serialized.size(), source.size(), limit);
   if (!layout || mesh.vertex_normals.size() != mesh.vertices_m.size()) {
     ++stats_.write_failures;
     return;
@@ -436,6 +464,7 @@ void MeshCache::store(const std::filesystem::path& mesh_file, const std::filesys
   add(layout->triangles, mesh.triangles.data(), mesh.triangles.size() * sizeof(TriangleIndices));
   add(layout->normals, mesh.vertex_normals.data(), mesh.vertex_normals.size() * sizeof(Eigen::Vector3d));
   add(layout->bvh, serialized.data(), serialized.size());
+  add(layout->source, source.data(), source.size());
 
   std::unique_ptr<XXH3_state_t, XXH_errorcode (*)(XXH3_state_t*)> state(XXH3_createState(), &XXH3_freeState);
   if (!state || XXH3_128bits_reset(state.get()) != XXH_OK) {
@@ -459,6 +488,7 @@ void MeshCache::store(const std::filesystem::path& mesh_file, const std::filesys
   h.triangle_count = mesh.triangles.size();
   h.normal_count = mesh.vertex_normals.size();
   h.bvh_bytes = serialized.size();
+  h.source_bytes = source.size();
   h.payload_bytes = layout->end - sizeof(FileHeader);
   h.payload_hash_low = payload.low64;
   h.payload_hash_high = payload.high64;

@@ -6,7 +6,8 @@
 // Bullet version. One file per key, "<32 hex digits>.mhdbvh" in the cache folder:
 // a 128-byte header (magic "MHDBVH", versions, key, counts, payload checksum, header
 // checksum), then vertices (double), triangles (uint32), vertex normals (double) and
-// Bullet's serialized BVH, each section 16-byte aligned. Files are written to a temp
+// Bullet's serialized BVH, each section 16-byte aligned, then the path of the mesh file
+// that wrote it. Files are written to a temp
 // file and renamed into place; a file that fails any check (size, counts, checksums,
 // key, index ranges, BVH leaves) is ignored and rebuilt, never trusted. The folder is kept
 // under a size limit (mesh_cache_eviction.h): a hit touches its file, and each write
@@ -32,7 +33,8 @@ namespace mhd {
 /// changes, so that old entries are never used.
 /// 2: the loader welds unshared files itself instead of assimp's JoinIdenticalVertices.
 /// 3: a mesh past 2^21 triangles is split into Bullet parts (MeshBvh::kPartTriangles).
-inline constexpr std::uint32_t kMeshCacheFormatVersion = 3;
+/// 4: an entry ends with the absolute path of the mesh file that wrote it.
+inline constexpr std::uint32_t kMeshCacheFormatVersion = 4;
 
 /// Meshes with at least this many triangles report progress.
 inline constexpr std::size_t kProgressMinTriangles = 100'000;
@@ -72,6 +74,10 @@ struct CachedMesh {
   std::string over_limit;
   [[nodiscard]] const TriangleMesh& mesh() const { return bvh->mesh(); }
 };
+
+/// The absolute path of the mesh file an entry was written from ("" if it did not fit
+/// the entry); nullopt for a file that is not an entry of this format whose header holds.
+[[nodiscard]] std::optional<std::string> mesh_cache_entry_source(const std::filesystem::path& entry);
 
 struct MeshCacheStats {
   std::size_t hits = 0, misses = 0, rejected = 0, writes = 0, write_failures = 0;

@@ -116,6 +116,10 @@ TEST_F(MeshCacheTest, SecondLoadHitsAndMatchesAFreshBuild) {
   }
   EXPECT_GT(reported, 0u);
 
+  // The entry names the mesh file it was written from.
+  EXPECT_EQ(mesh_cache_entry_source(cold->cache_file), std::filesystem::absolute(mesh_file_).lexically_normal().string());
+  EXPECT_EQ(mesh_cache_entry_source(mesh_file_), std::nullopt);  // not an entry
+
   // A second cache object (another process, say) finds the file too.
   MeshCache other(cache_dir_);
   EXPECT_EQ(other.load(mesh_file_, Eigen::Vector3d::Ones())->outcome, CacheOutcome::Hit);

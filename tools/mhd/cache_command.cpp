@@ -36,8 +36,11 @@ int list() {
     total += e.size_bytes;
     const auto when = std::chrono::time_point_cast<std::chrono::seconds>(
         std::chrono::file_clock::to_sys(e.last_used));
-    fmt::print("  {}  {:>10}  last used {:%Y-%m-%d %H:%M:%S} UTC\n", e.file.filename().string(), mib(e.size_bytes),
-               when);
+    const std::optional<std::string> source = mhd::mesh_cache_entry_source(e.file);
+    fmt::print("  {}  {:>10}  last used {:%Y-%m-%d %H:%M:%S} UTC  {}\n", e.file.filename().string(), mib(e.size_bytes),
+               when,
+               !source ? std::string("(not an entry of this version: rebuilt when its mesh is loaded)")
+                       : source->empty() ? std::string("(mesh file not recorded)") : *source);
   }
   fmt::print("{} entries, {} of {} (limit: MHD_CACHE_MAX_MB; least recently used go first)\n", entries.size(),
              mib(total), mib(mhd::mesh_cache_limit_bytes()));
@@ -66,7 +69,7 @@ void add_cache_command(CLI::App& app) {
       "build. Folder: $MHD_CACHE_DIR, else $XDG_CACHE_HOME/mhd, else ~/.cache/mhd. Size\n"
       "limit: $MHD_CACHE_MAX_MB (default 512); each write removes the least recently used\n"
       "entries beyond it. Entries are rebuilt when missing, so clearing is always safe.");
-  CLI::App* list_cmd = cmd->add_subcommand("list", "Each entry with its size and last use, the total and the limit");
+  CLI::App* list_cmd = cmd->add_subcommand("list", "Each entry with its size, last use and mesh file, the total and the limit");
   list_cmd->callback([] { mhd::cli::exit_with(list()); });
   CLI::App* clear_cmd = cmd->add_subcommand("clear", "Remove every entry (they are rebuilt on the next load)");
   clear_cmd->callback([] { mhd::cli::exit_with(clear()); });
