@@ -7,6 +7,8 @@
 
 #include "proxy_replay_command.h"
 
+#include "load_progress.h"
+
 #include "command_exit.h"
 #include "staged_output_file.h"
 
@@ -93,6 +95,7 @@ int proxy_replay(const ProxyReplayOptions& opt) {
   if (!read.ok()) return 1;
   mhd::CompileOptions compile_options;
   compile_options.use_cache = !opt.no_cache;
+  compile_options.progress = mhd::cli::stderr_load_progress();
   const mhd::Result<std::unique_ptr<mhd::CompiledScene>> compiled = mhd::compile_scene(*read, compile_options);
   for (const auto& d : compiled.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
   if (!compiled.ok()) return 1;

@@ -7,6 +7,8 @@
 
 #include "replay_command.h"
 
+#include "load_progress.h"
+
 #include "command_exit.h"
 #include "haptic_server/recording_replay.h"
 #include "haptic_server/server_settings.h"
@@ -52,7 +54,9 @@ int replay(const ReplayOptions& opt) {
   const mhd::Result<mhd::SceneDescription> read = mhd::read_scene_file(scene_file);
   for (const auto& d : read.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
   if (!read.ok()) return 1;
-  const mhd::Result<std::unique_ptr<mhd::CompiledScene>> compiled = mhd::compile_scene(*read);
+  mhd::CompileOptions compile_options;
+  compile_options.progress = mhd::cli::stderr_load_progress();
+  const mhd::Result<std::unique_ptr<mhd::CompiledScene>> compiled = mhd::compile_scene(*read, compile_options);
   for (const auto& d : compiled.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
   if (!compiled.ok()) return 1;
   const mhd::Result<mhd::Rig, std::vector<mhd::RigError>> rig = mhd::Rig::from_scene(*read);

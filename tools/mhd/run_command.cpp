@@ -10,6 +10,8 @@
 
 #include "run_command.h"
 
+#include "load_progress.h"
+
 #include "command_exit.h"
 #include "run_signals.h"
 #include "haptic_server/haptic_server.h"
@@ -99,6 +101,7 @@ int run(const RunOptions& opt) {
 
   mhd::CompileOptions compile_options;
   compile_options.use_cache = !opt.no_cache;
+  compile_options.progress = mhd::cli::stderr_load_progress();
   const mhd::Result<std::unique_ptr<mhd::CompiledScene>> compiled = mhd::compile_scene(*read, compile_options);
   for (const auto& d : compiled.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
   if (!compiled.ok()) return 1;

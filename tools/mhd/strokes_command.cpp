@@ -6,6 +6,8 @@
 
 #include "strokes_command.h"
 
+#include "load_progress.h"
+
 #include "command_exit.h"
 #include "scene_compiler/scene_compiler.h"
 #include "scene_xml/scene_reader.h"
@@ -63,10 +65,7 @@ int run(const StrokesOptions& opt) {
 
   mhd::CompileOptions compile_options;
   compile_options.use_cache = !opt.no_cache;
-  compile_options.progress = [](std::string_view what, double fraction) {
-    fmt::print(stderr, "\r{} {:3.0f} %", what, 100.0 * fraction);
-    if (fraction >= 1.0) fmt::print(stderr, "\n");
-  };
+  compile_options.progress = mhd::cli::stderr_load_progress();
   const mhd::Result<std::unique_ptr<mhd::CompiledScene>> compiled = mhd::compile_scene(*read, compile_options);
   for (const auto& d : compiled.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
   if (!compiled.ok()) return 1;

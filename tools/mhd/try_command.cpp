@@ -1,5 +1,7 @@
 #include "try_command.h"
 
+#include "load_progress.h"
+
 #include "command_exit.h"
 #include "scene_compiler/scene_compiler.h"
 #include "scene_xml/scene_reader.h"
@@ -50,6 +52,7 @@ int run_try(TryOptions& o) {
   v::ViewerScene scene{loaded->scene, std::nullopt, {}};
   mhd::CompileOptions compile_options;
   compile_options.use_cache = !o.no_cache;
+  compile_options.progress = mhd::cli::stderr_load_progress();
   const mhd::Result<std::unique_ptr<mhd::CompiledScene>> compiled = mhd::compile_scene(scene.scene, compile_options);
   for (const auto& d : compiled.diagnostics()) fmt::print(stderr, "mhd try: {}\n", d.to_string());
   if (!compiled.ok()) return 1;

@@ -1,5 +1,7 @@
 #include "validate_command.h"
 
+#include "load_progress.h"
+
 #include "command_exit.h"
 #include "plugin_host/scene_plugin_check.h"
 #include "plugin_host/plugin_search_path.h"
@@ -51,9 +53,7 @@ bool compile_and_report(const std::string& file, const mhd::SceneDescription& sc
                         const ValidateOptions& options) {
   mhd::CompileOptions compile_options;
   compile_options.use_cache = !options.no_cache;
-  compile_options.progress = [&file](std::string_view what, double fraction) {
-    spdlog::debug("{}: loading {} ({:.0f}%)", file, what, fraction * 100.0);
-  };
+  compile_options.progress = mhd::cli::stderr_load_progress();
   const mhd::Result<std::unique_ptr<mhd::CompiledScene>> compiled = mhd::compile_scene(scene, compile_options);
   print_diagnostics(compiled.diagnostics());
   if (!compiled.ok()) return false;
