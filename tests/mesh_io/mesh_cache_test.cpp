@@ -5,6 +5,8 @@
 #include "test_mesh_files.h"
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -145,6 +147,50 @@ TEST_F(MeshCacheTest, AnEntryOverTheSizeLimitIsReportedWithItsSizeAndTheVariable
   ASSERT_TRUE(fits.ok());
   EXPECT_TRUE(fits->written);
   EXPECT_EQ(fits->over_limit, "");
+}
+
+TEST_F(MeshCacheTest, ProcessesLoadingOneMeshAtOnceEachGetACorrectTreeAndLeaveOneWholeEntry) {
+  // Four processes load the same (100 k-triangle) mesh into one empty cache folder at
+  // once, so their writes overlap: each must answer like a fresh build, and what is left
+  // is one entry that a later load uses.
+  const auto file = dir_ / "shared.ply";
+  test::write_binary_ply(file, make_uv_sphere_mesh(0.1, 160, 320));
+  const auto answers_like_a_fresh_build = [&](const CachedMesh& loaded) {
+    const MeshBvh fresh(loaded.bvh->mesh_ptr());
+    for (const auto& box : random_boxes(fresh.bounds(), 50)) {
+      if (query(*loaded.bvh, box) != query(fresh, box)) return false;
+    }
+    return true;
+  };
+  constexpr int kProcesses = 4;
+  std::vector<pid_t> children;
+  for (int i = 0; i < kProcesses; ++i) {
+    const pid_t pid = ::fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+      MeshCache cache(cache_dir_);
+      const Result<CachedMesh, MeshLoadError> r = cache.load(file, Eigen::Vector3d::Ones());
+      ::_exit(r.ok() && answers_like_a_fresh_build(*r) ? 0 : 1);
+    }
+    children.push_back(pid);
+  }
+  for (const pid_t pid : children) {
+    int status = 0;
+    ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "a process got no correct tree";
+  }
+  std::size_t entries = 0, temps = 0;
+  for (const auto& item : std::filesystem::directory_iterator(cache_dir_)) {
+    entries += item.path().extension() == ".mhdbvh" ? 1 : 0;
+    temps += item.path().string().find(".tmp.") != std::string::npos ? 1 : 0;
+  }
+  EXPECT_EQ(entries, 1u);
+  EXPECT_EQ(temps, 0u);
+  MeshCache after(cache_dir_);
+  const Result<CachedMesh, MeshLoadError> hit = after.load(file, Eigen::Vector3d::Ones());
+  ASSERT_TRUE(hit.ok());
+  EXPECT_EQ(hit->outcome, CacheOutcome::Hit) << hit->rejected_reason;
+  EXPECT_TRUE(answers_like_a_fresh_build(*hit));
 }
 
 TEST_F(MeshCacheTest, TruncatedCacheFileIsRejectedAndRebuilt) {
