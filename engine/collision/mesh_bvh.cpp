@@ -75,7 +75,7 @@ void MeshBvh::adopt_tree(btQuantizedBvh* tree) {
 
 std::unique_ptr<MeshBvh> MeshBvh::from_serialized(std::shared_ptr<const TriangleMesh> mesh,
                                                   std::span<const std::byte> serialized) {
-  if (!mesh || mesh->triangles.empty() || serialized.empty()) return nullptr;
+  if (!mesh || mesh->triangles.empty() || serialized.empty() || serialized.size() > kMaxSerializedBytes) return nullptr;
   std::unique_ptr<MeshBvh> out(new MeshBvh());
   out->mesh_ = std::move(mesh);
   out->make_interface();
@@ -113,8 +113,23 @@ MeshBvh::~MeshBvh() {
   if (adopted_tree_ != nullptr) adopted_tree_->~btQuantizedBvh();
 }
 
+std::uint64_t MeshBvh::serialized_bytes(std::uint64_t nodes, std::uint64_t subtrees) {
+  // As btQuantizedBvh::calculateSerializeBufferSize adds them, without its wrap-around.
+  return sizeof(btQuantizedBvh) + btQuantizedBvh::getAlignmentSerializationPadding() +
+         subtrees * sizeof(btBvhSubtreeInfo) + nodes * sizeof(btQuantizedBvhNode);
+}
+
 std::vector<std::byte> MeshBvh::serialize_bvh() const {
+  // Bullet's API is not const-correct; this only reads the subtree count.
+  auto* tree = const_cast<btQuantizedBvh*>(tree_);  // NOLINT
+  const std::uint64_t bytes = serialized_bytes(static_cast<std::uint64_t>(node_count_),
+                                               static_cast<std::uint64_t>(tree->getSubtreeInfoArray().size()));
+  if (bytes > kMaxSerializedBytes) {
+    throw std::length_error("MeshBvh: the tree takes " + std::to_string(bytes) + " bytes, more than the " +
+                            std::to_string(kMaxSerializedBytes) + " Bullet's serialized format holds");
+  }
   const unsigned size = tree_->calculateSerializeBufferSize();
+  if (size != bytes) throw std::runtime_error("MeshBvh: Bullet's serialized size is not the one counted");
   const std::size_t padded = (size + kBulletAlignment - 1) / kBulletAlignment * kBulletAlignment;
   std::unique_ptr<std::byte[], void (*)(std::byte*)> buffer(
       static_cast<std::byte*>(std::aligned_alloc(kBulletAlignment, padded)), &free_aligned);

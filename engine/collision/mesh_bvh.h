@@ -44,8 +44,17 @@ class MeshBvh {
   MeshBvh(const MeshBvh&) = delete;
   MeshBvh& operator=(const MeshBvh&) = delete;
 
-  /// The BVH in Bullet's own in-place format (the cache stores it verbatim).
+  /// The BVH in Bullet's own in-place format (the cache stores it verbatim). Throws
+  /// std::length_error for a tree over kMaxSerializedBytes.
   [[nodiscard]] std::vector<std::byte> serialize_bvh() const;
+
+  /// Bullet's serialized format counts its bytes in an unsigned int and writes every node
+  /// whatever size it was given: a larger tree (from about 134 M triangles) cannot be
+  /// serialized, and trying would write past the buffer.
+  static constexpr std::uint64_t kMaxSerializedBytes = 0xFFFF'FFFFu;
+  /// Bytes Bullet's format takes for a tree of `nodes` nodes and `subtrees` subtree
+  /// headers, counted in 64 bits.
+  [[nodiscard]] static std::uint64_t serialized_bytes(std::uint64_t nodes, std::uint64_t subtrees);
 
   [[nodiscard]] const TriangleMesh& mesh() const { return *mesh_; }
   [[nodiscard]] const std::shared_ptr<const TriangleMesh>& mesh_ptr() const { return mesh_; }

@@ -436,7 +436,7 @@ void MeshCache::store(const std::filesystem::path& mesh_file, const std::filesys
     serialized = bvh.serialize_bvh();
   } catch (const std::exception& e) {
     ++stats_.write_failures;
-    spdlog::warn("mesh cache: not caching '{}': {}", target.string(), e.what());
+    spdlog::warn("mesh cache: not caching '{}': {}", mesh_file.string(), e.what());
     return;
   }
   // The mesh file it came from, for `mhd cache list` (the key is its content, not its name).

@@ -75,6 +75,23 @@ TEST(LargeMesh, LeavesPastTwoToTheTwentyOneNameTheirTrianglesBuiltAndAdopted) {
   expect_names_the_patch(*adopted, "adopted");
 }
 
+TEST(LargeMesh, ATreeTooLargeForBulletsSerializedFormatIsNotSerialized) {
+  // 2n - 1 nodes for n triangles. 100 M fit the format's 32-bit size; 2^30 - 1 (the most
+  // a tree holds) and 135 M do not, and serializing them must refuse, not overrun.
+  const auto bytes_for = [](std::uint64_t triangles) { return MeshBvh::serialized_bytes(2 * triangles - 1, 64); };
+  EXPECT_LE(bytes_for(100'000'000), MeshBvh::kMaxSerializedBytes);
+  EXPECT_GT(bytes_for(135'000'000), MeshBvh::kMaxSerializedBytes);
+  EXPECT_GT(bytes_for(MeshBvh::kMaxTriangles), MeshBvh::kMaxSerializedBytes);
+  // The count is Bullet's own where both fit: the tree below serializes to exactly it.
+  const auto mesh = std::make_shared<TriangleMesh>();
+  mesh->vertices_m = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+  mesh->triangles = {{0, 1, 2}, {1, 3, 2}};
+  const MeshBvh small(mesh);
+  auto* tree = const_cast<btBvhTriangleMeshShape&>(small.shape()).getOptimizedBvh();
+  EXPECT_EQ(small.serialize_bvh().size(),
+            MeshBvh::serialized_bytes(3, static_cast<std::uint64_t>(tree->getSubtreeInfoArray().size())));
+}
+
 TEST(LargeMesh, TheTreeHoldsEveryCountTheSceneAllows) {
   // Bullet's node array has 2n entries in an int, and a leaf has 10 bits of part and 21
   // of triangle: 2^30 - 1 triangles at most, above the 10^9 a scene may declare.
