@@ -3,6 +3,7 @@
 #include "collision/segment_triangle.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
@@ -75,19 +76,30 @@ void MeshBvh::adopt_tree(btQuantizedBvh* tree) {
 
 std::unique_ptr<MeshBvh> MeshBvh::from_serialized(std::shared_ptr<const TriangleMesh> mesh,
                                                   std::span<const std::byte> serialized) {
-  if (!mesh || mesh->triangles.empty() || serialized.empty() || serialized.size() > kMaxSerializedBytes) return nullptr;
+  if (serialized.empty() || serialized.size() > kMaxSerializedBytes) return nullptr;
+  const std::size_t size = (serialized.size() + kBulletAlignment - 1) / kBulletAlignment * kBulletAlignment;
+  std::shared_ptr<std::byte> buffer(static_cast<std::byte*>(std::aligned_alloc(kBulletAlignment, size)),
+                                    &free_aligned);
+  if (!buffer) return nullptr;
+  std::memcpy(buffer.get(), serialized.data(), serialized.size());
+  return adopt_serialized(std::move(mesh), {buffer.get(), serialized.size()}, buffer);
+}
+
+std::unique_ptr<MeshBvh> MeshBvh::adopt_serialized(std::shared_ptr<const TriangleMesh> mesh,
+                                                   std::span<std::byte> serialized, std::shared_ptr<void> storage) {
+  if (!mesh || mesh->triangles.empty() || serialized.empty() || serialized.size() > kMaxSerializedBytes ||
+      reinterpret_cast<std::uintptr_t>(serialized.data()) % kBulletAlignment != 0) {
+    return nullptr;
+  }
   std::unique_ptr<MeshBvh> out(new MeshBvh());
   out->mesh_ = std::move(mesh);
   out->make_interface();
-  const std::size_t size = (serialized.size() + kBulletAlignment - 1) / kBulletAlignment * kBulletAlignment;
-  auto* raw = static_cast<std::byte*>(std::aligned_alloc(kBulletAlignment, size));
-  if (raw == nullptr) return nullptr;
-  out->serialized_storage_ = {raw, &free_aligned};
-  std::memcpy(raw, serialized.data(), serialized.size());
+  out->serialized_storage_ = std::move(storage);
   // Bullet's own adoption path: it builds a btQuantizedBvh in the buffer and hands it out
   // as btOptimizedBvh* (which adds no data). Our calls go through the object's true
   // type, btQuantizedBvh, at the same address (single inheritance, offset 0).
-  btOptimizedBvh* adopted = btOptimizedBvh::deSerializeInPlace(raw, static_cast<unsigned>(serialized.size()),
+  btOptimizedBvh* adopted = btOptimizedBvh::deSerializeInPlace(serialized.data(),
+                                                               static_cast<unsigned>(serialized.size()),
                                                                /*swapEndian=*/false);
   if (adopted == nullptr) return nullptr;
   auto* tree = reinterpret_cast<btQuantizedBvh*>(adopted);

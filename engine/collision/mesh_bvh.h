@@ -40,6 +40,14 @@ class MeshBvh {
   static std::unique_ptr<MeshBvh> from_serialized(std::shared_ptr<const TriangleMesh> mesh,
                                                   std::span<const std::byte> serialized);
 
+  /// Adopts it in place, not copied: `serialized` (16-byte aligned and writable, e.g. a
+  /// private mapping of a cache file) becomes the tree's storage, and `storage` keeps it
+  /// alive as long as the tree. Bullet writes only the tree's header in it, so the nodes
+  /// of a mapped file stay shared pages, read as the tree's walks reach them. Returns
+  /// nullptr as from_serialized() does.
+  static std::unique_ptr<MeshBvh> adopt_serialized(std::shared_ptr<const TriangleMesh> mesh,
+                                                   std::span<std::byte> serialized, std::shared_ptr<void> storage);
+
   ~MeshBvh();
   MeshBvh(const MeshBvh&) = delete;
   MeshBvh& operator=(const MeshBvh&) = delete;
@@ -141,8 +149,9 @@ class MeshBvh {
   double bvh_scale_ = 1.0;
   std::unique_ptr<btTriangleIndexVertexArray> interface_;
   std::unique_ptr<btBvhTriangleMeshShape> shape_;
-  // Backing store of a deserialized BVH (Bullet's in-place format points into it).
-  std::unique_ptr<std::byte[], void (*)(std::byte*)> serialized_storage_{nullptr, nullptr};
+  // Backing store of a deserialized BVH (Bullet's in-place format points into it): a
+  // buffer of our own, or a cache file's mapping.
+  std::shared_ptr<void> serialized_storage_;
   // The tree our own code queries. A deserialized tree is a plain btQuantizedBvh
   // (Bullet's deSerializeInPlace builds that), so it is never used as btOptimizedBvh here.
   const btQuantizedBvh* tree_ = nullptr;

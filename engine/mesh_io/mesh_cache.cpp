@@ -5,6 +5,7 @@
 #include "mesh_io/regular_file.h"
 
 #include <fcntl.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <sys/uio.h>
 #include <unistd.h>
@@ -205,9 +206,10 @@ bool bvh_finds_its_triangles(const MeshBvh& bvh) {
 }
 
 /// Builds the mesh and BVH from a whole cache file image whose header passed
-/// check_header(); returns null with the reason if the payload fails validation.
-std::unique_ptr<MeshBvh> parse_payload(const FileHeader& h, const Layout& layout, std::span<const std::byte> image,
-                                       std::string& why) {
+/// check_header(), adopting the tree in place in the image (which `image_owner` keeps
+/// alive); returns null with the reason if the payload fails validation.
+std::unique_ptr<MeshBvh> parse_payload(const FileHeader& h, const Layout& layout, std::span<std::byte> image,
+                                       const std::shared_ptr<void>& image_owner, std::string& why) {
   const XXH128_hash_t payload = XXH3_128bits(image.data() + sizeof(FileHeader), image.size() - sizeof(FileHeader));
   if (payload.low64 != h.payload_hash_low || payload.high64 != h.payload_hash_high) {
     why = "payload checksum mismatch";
@@ -237,7 +239,12 @@ std::unique_ptr<MeshBvh> parse_payload(const FileHeader& h, const Layout& layout
       return nullptr;
     }
   }
-  auto bvh = MeshBvh::from_serialized(std::move(mesh), image.subspan(layout.bvh, static_cast<std::size_t>(h.bvh_bytes)));
+  // The sections before the tree are copied into the mesh: their pages leave memory, and
+  // the tree is adopted where it lies.
+  const std::size_t page = static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
+  if (const std::size_t copied = layout.bvh / page * page; copied > 0) ::madvise(image.data(), copied, MADV_DONTNEED);
+  auto bvh = MeshBvh::adopt_serialized(std::move(mesh), image.subspan(layout.bvh, static_cast<std::size_t>(h.bvh_bytes)),
+                                       image_owner);
   if (!bvh) {
     why = "invalid serialized BVH";
   } else if (!bvh_finds_its_triangles(*bvh)) {
@@ -273,14 +280,23 @@ std::unique_ptr<MeshBvh> read_cache_file(const std::filesystem::path& path, cons
   const bool report = progress && h.triangle_count >= kProgressMinTriangles;
   const std::string what = fmt::format("reading cached BVH of {}", name);
   if (report) progress(what, 0.0);
-  // One read of the whole file into one buffer.
-  auto image = std::make_unique_for_overwrite<std::byte[]>(size);
-  std::memcpy(image.get(), &h, sizeof h);
-  if (!read_all(fd.fd, image.get() + sizeof h, size - sizeof h)) {
-    why = "read error or file shrank";
+  // The file mapped, private and writable: Bullet writes the tree's header where it lies
+  // (a copy of that page), and the nodes stay the file's pages. Our writers replace an
+  // entry by renaming a new file over it, so a mapped file is never truncated under it.
+  void* mapped = ::mmap(nullptr, size, PROT_READ | PROT_WRITE, MAP_PRIVATE, fd.fd, 0);
+  if (mapped == MAP_FAILED) {
+    why = fmt::format("cannot map: {}", std::strerror(errno));
     return nullptr;
   }
-  auto bvh = parse_payload(h, *layout, {image.get(), size}, why);
+  const std::shared_ptr<void> image_owner(mapped, [size](void* p) { ::munmap(p, size); });
+  ::madvise(mapped, size, MADV_SEQUENTIAL);  // the checksum reads it through once
+  const std::span<std::byte> image(static_cast<std::byte*>(mapped), size);
+  if (std::memcmp(image.data(), &h, sizeof h) != 0) {
+    why = "file changed while read";
+    return nullptr;
+  }
+  auto bvh = parse_payload(h, *layout, image, image_owner, why);
+  if (bvh) ::madvise(mapped, size, MADV_RANDOM);  // from now on the walks read where the hand is
   if (report) progress(what, 1.0);
   return bvh;
 }

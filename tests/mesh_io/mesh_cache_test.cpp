@@ -193,6 +193,41 @@ TEST_F(MeshCacheTest, ProcessesLoadingOneMeshAtOnceEachGetACorrectTreeAndLeaveOn
   EXPECT_TRUE(answers_like_a_fresh_build(*hit));
 }
 
+// Bytes of `file` mapped into this process (/proc/self/maps), 0 when it is not mapped.
+std::uint64_t mapped_bytes_of(const std::filesystem::path& file) {
+  std::ifstream maps("/proc/self/maps");
+  std::uint64_t bytes = 0;
+  const std::string name = file.string();
+  for (std::string line; std::getline(maps, line);) {
+    // The path is the line's last field, after a space.
+    if (line.size() <= name.size() || !line.ends_with(name) || line[line.size() - name.size() - 1] != ' ') continue;
+    const auto dash = line.find('-'), space = line.find(' ');
+    bytes += std::stoull(line.substr(dash + 1, space - dash - 1), nullptr, 16) - std::stoull(line.substr(0, dash), nullptr, 16);
+  }
+  return bytes;
+}
+
+TEST_F(MeshCacheTest, AHitAdoptsTheTreeWhereItLiesInTheMappedEntryUntilTheMeshIsGone) {
+  MeshCache cache(cache_dir_);
+  const Result<CachedMesh, MeshLoadError> cold = cache.load(mesh_file_, Eigen::Vector3d::Ones());
+  ASSERT_TRUE(cold.ok());
+  EXPECT_EQ(mapped_bytes_of(cold->cache_file), 0u);  // a built tree is in memory of its own
+  std::optional<Result<CachedMesh, MeshLoadError>> warm(cache.load(mesh_file_, Eigen::Vector3d::Ones()));
+  ASSERT_TRUE(warm->ok());
+  ASSERT_EQ((*warm)->outcome, CacheOutcome::Hit);
+  EXPECT_GE(mapped_bytes_of(cold->cache_file), std::filesystem::file_size(cold->cache_file));
+  // It answers as the built one, and an entry renamed over it (another writer) does not
+  // disturb the mapped one.
+  const MeshBvh fresh((*warm)->bvh->mesh_ptr());
+  const auto box = fresh.bounds();
+  EXPECT_EQ(query(*(*warm)->bvh, box), query(fresh, box));
+  std::filesystem::copy_file(cold->cache_file, dir_ / "copy.mhdbvh");
+  std::filesystem::rename(dir_ / "copy.mhdbvh", cold->cache_file);
+  EXPECT_EQ(query(*(*warm)->bvh, box), query(fresh, box));
+  warm.reset();
+  EXPECT_EQ(mapped_bytes_of(cold->cache_file), 0u);
+}
+
 TEST_F(MeshCacheTest, TruncatedCacheFileIsRejectedAndRebuilt) {
   MeshCache cache(cache_dir_);
   const Result<CachedMesh, MeshLoadError> cold = cache.load(mesh_file_, Eigen::Vector3d::Ones());
