@@ -49,10 +49,7 @@ TEST(BoundedLoading, BinaryStlWithALyingCountIsRefused) {
 
 TEST(BoundedLoading, HeaderFaceCountAboveMaxTrianglesIsRefusedBeforeLoading) {
   TempDir dir;
-  TriangleMesh mesh;
-  mesh.vertices_m = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
-  mesh.triangles = {{0, 1, 2}, {1, 3, 2}};
-  test::write_binary_ply(dir / "two.ply", mesh);
+  test::write_binary_ply(dir / "two.ply", test::unit_square_mesh());
   EXPECT_EQ(reason_of(load_mesh_file(dir / "two.ply", Eigen::Vector3d::Ones(), {}, TriangleBudget{1})),
             "the header claims 2 faces, more than max_triangles (1)");
   EXPECT_TRUE(load_mesh_file(dir / "two.ply", Eigen::Vector3d::Ones(), {}, TriangleBudget{2}).ok());
@@ -61,10 +58,7 @@ TEST(BoundedLoading, HeaderFaceCountAboveMaxTrianglesIsRefusedBeforeLoading) {
 TEST(BoundedLoading, AHeaderClaimingMoreThanMemoryHoldsIsRefusedBeforeLoading) {
   // Refused from the header at what a load takes per triangle, and loaded when it fits.
   TempDir dir;
-  TriangleMesh mesh;
-  mesh.vertices_m = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
-  mesh.triangles = {{0, 1, 2}, {1, 3, 2}};
-  test::write_binary_ply(dir / "two.ply", mesh);
+  test::write_binary_ply(dir / "two.ply", test::unit_square_mesh());
   const std::uint64_t needed = 2 * TriangleBudget::kLoadBytesPerTriangle;
   EXPECT_EQ(reason_of(load_mesh_file(dir / "two.ply", Eigen::Vector3d::Ones(), {}, TriangleBudget{10, 0, needed - 1})),
             "the header claims 2 faces, about " + std::to_string(needed) + " bytes to load, more than the " +

@@ -62,6 +62,14 @@ inline void write_box_obj(const std::filesystem::path& file, const Eigen::Vector
   ASSERT_TRUE(out.good()) << file;
 }
 
+/// The unit square in z = 0 as two triangles facing +z.
+inline TriangleMesh unit_square_mesh() {
+  TriangleMesh mesh;
+  mesh.vertices_m = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+  mesh.triangles = {{0, 1, 2}, {1, 3, 2}};
+  return mesh;
+}
+
 /// Binary little-endian PLY (float32 positions, int32 indices).
 inline void write_binary_ply(const std::filesystem::path& file, const TriangleMesh& mesh) {
   std::ofstream out(file, std::ios::binary);

@@ -39,10 +39,7 @@ TEST(MaxTriangles, DefaultIsFiftyMillion) {
 TEST(MaxTriangles, HeaderAboveTheLimitIsRefusedBeforeLoading) {
   TempDir dir;
   // The header's 2 faces fit the file's size: only the limit refuses it.
-  TriangleMesh mesh;
-  mesh.vertices_m = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
-  mesh.triangles = {{0, 1, 2}, {1, 3, 2}};
-  test::write_binary_ply(dir / "quad.ply", mesh);
+  test::write_binary_ply(dir / "quad.ply", test::unit_square_mesh());
   test::write_text(dir / "scene.xml",
                    "<scene version=\"1\" max_triangles=\"1\">\n"
                    "  <material name=\"m\" stiffness_N_per_m=\"500\"/>\n"
