@@ -124,5 +124,39 @@ TEST(SimOmni3Plugin, LogsEveryCommandAndItsOwnWatchdogFiring) {
   EXPECT_EQ(rows[5].event, "stop");
 }
 
+TEST(SimOmni3Plugin, ACommandAfterTheLastOneExpiredFollowsTheWatchdogFiring) {
+  // The host froze between simulate_until and base_write: the real base's watchdog fired
+  // during the gap, whatever the host's calls saw, so the log says so, in order.
+  const PluginFile file(MHD_SIM_OMNI3_PLUGIN);
+  const mhd_plugin_api& api = file.api();
+  FakeHost h;
+  const std::filesystem::path log =
+      std::filesystem::temp_directory_path() / ("sim_omni3_gap_" + std::to_string(::getpid()) + ".csv");
+  const Opened opened = open_plugin(api, h.host, {{"command_log", log.c_str()}});  // command_timeout_s 0.2
+  ASSERT_NE(opened.instance, nullptr) << opened.error;
+  mhd_error err{};
+  ASSERT_EQ(api.start(opened.instance, &err), MHD_OK) << err.message;
+  const mhd_base_command first{h.now_s, 0.25, 0.0, 0.0};
+  ASSERT_EQ(api.base_write(opened.instance, &first, &err), MHD_OK) << err.message;
+  ASSERT_EQ(api.simulate_until(opened.instance, 0.01, &err), MHD_OK) << err.message;
+  h.now_s = 1.0;  // frozen, then the next command comes first
+  const mhd_base_command next{h.now_s, 0.1, 0.0, 0.0};
+  ASSERT_EQ(api.base_write(opened.instance, &next, &err), MHD_OK) << err.message;
+  ASSERT_EQ(api.simulate_until(opened.instance, 1.0, &err), MHD_OK) << err.message;
+  ASSERT_EQ(api.stop(opened.instance, &err), MHD_OK);
+  api.close(opened.instance);
+
+  const std::vector<CommandLogRow> rows = read_command_log(log);
+  std::filesystem::remove(log);
+  ASSERT_EQ(rows.size(), 5u);
+  EXPECT_EQ(rows[1].event, "command");
+  EXPECT_EQ(rows[2].event, "timeout");
+  EXPECT_NEAR(rows[2].t_s, 0.2, 1e-6);
+  EXPECT_TRUE(rows[2].is_zero());
+  EXPECT_EQ(rows[3].event, "command");
+  EXPECT_NEAR(rows[3].t_s, 1.0, 1e-6);
+  EXPECT_EQ(rows[4].event, "stop");
+}
+
 }  // namespace
 }  // namespace mhd::test

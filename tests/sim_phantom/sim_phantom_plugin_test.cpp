@@ -294,6 +294,43 @@ TEST(SimPhantomPlugin, LogsEveryCommandAndItsOwnWatchdogFiring) {
   EXPECT_EQ(rows[7].event, "stop");
 }
 
+TEST(SimPhantomPlugin, ACommandAfterTheLastOneExpiredFollowsTheWatchdogFiring) {
+  // The host froze between simulate_until and device_write: the real device's watchdog
+  // fired during the gap, whatever the host's calls saw, so the log says so, in order.
+  const PluginFile file(MHD_SIM_PHANTOM_PLUGIN);
+  const mhd_plugin_api& api = file.api();
+  FakeHost h;
+  const std::filesystem::path log =
+      std::filesystem::temp_directory_path() / ("sim_phantom_gap_" + std::to_string(::getpid()) + ".csv");
+  const Opened opened = open_plugin(api, h.host, {{"command_log", log.c_str()}, {"command_timeout_s", "0.02"}});
+  ASSERT_NE(opened.instance, nullptr) << opened.error;
+  mhd_error err{};
+  h.now_s = 1.0;
+  ASSERT_EQ(api.start(opened.instance, &err), MHD_OK) << err.message;
+  h.now_s = 1.001;
+  ASSERT_EQ(api.simulate_until(opened.instance, h.now_s, &err), MHD_OK) << err.message;
+  const mhd_device_command first = force_command(h.now_s, Eigen::Vector3d(0.5, 0.0, 0.0));
+  ASSERT_EQ(api.device_write(opened.instance, &first, &err), MHD_OK) << err.message;
+  ASSERT_EQ(api.simulate_until(opened.instance, 1.002, &err), MHD_OK) << err.message;
+  h.now_s = 1.5;  // frozen for half a second, then the next command comes first
+  const mhd_device_command next = force_command(h.now_s, Eigen::Vector3d(0.3, 0.0, 0.0));
+  ASSERT_EQ(api.device_write(opened.instance, &next, &err), MHD_OK) << err.message;
+  ASSERT_EQ(api.simulate_until(opened.instance, h.now_s, &err), MHD_OK) << err.message;
+  ASSERT_EQ(api.stop(opened.instance, &err), MHD_OK);
+  api.close(opened.instance);
+
+  const std::vector<CommandLogRow> rows = read_command_log(log);
+  std::filesystem::remove(log);
+  ASSERT_EQ(rows.size(), 5u);
+  EXPECT_EQ(rows[1].event, "command");
+  EXPECT_EQ(rows[2].event, "timeout");
+  EXPECT_NEAR(rows[2].t_s, 1.021, 1e-6);
+  EXPECT_TRUE(rows[2].is_zero());
+  EXPECT_EQ(rows[3].event, "command");
+  EXPECT_NEAR(rows[3].t_s, 1.5, 1e-6);
+  EXPECT_EQ(rows[4].event, "stop");
+}
+
 TEST(SimPhantomPlugin, FlushesTheCommandLogWhileOpen) {
   const PluginFile file(MHD_SIM_PHANTOM_PLUGIN);
   const mhd_plugin_api& api = file.api();

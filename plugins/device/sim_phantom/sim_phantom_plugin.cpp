@@ -102,6 +102,11 @@ class SimPhantomPlugin {
                                     .cwiseMax(-tau_max)
                                     .cwiseMin(tau_max);
     const double now = sdk::host_now(host_);
+    // A host frozen between simulate_until and this call: the device's watchdog fired in
+    // the gap, so the device lives through it before the new command applies.
+    if (!model_.watchdog_stopped() && now - model_.command_time_s() > model_.config().command_timeout_s) {
+      simulate_until(now);
+    }
     model_.command(tau, now);
     log_event(now, CommandEvent::Command, {force_P[0], force_P[1], force_P[2]});
   }
