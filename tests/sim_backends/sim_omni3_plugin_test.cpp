@@ -124,6 +124,33 @@ TEST(SimOmni3Plugin, LogsEveryCommandAndItsOwnWatchdogFiring) {
   EXPECT_EQ(rows[5].event, "stop");
 }
 
+TEST(SimOmni3Plugin, ACommandArrivingAfterAControlTickTheHostHasNotSimulatedIsNoTimeout) {
+  // The io thread writes before it simulates the time up to the write; the 50 Hz
+  // controller's tick in between still saw the previous, fresh command.
+  const PluginFile file(MHD_SIM_OMNI3_PLUGIN);
+  const mhd_plugin_api& api = file.api();
+  FakeHost h;
+  const std::filesystem::path log =
+      std::filesystem::temp_directory_path() / ("sim_omni3_lag_" + std::to_string(::getpid()) + ".csv");
+  const Opened opened = open_plugin(api, h.host, {{"command_log", log.c_str()}});
+  ASSERT_NE(opened.instance, nullptr) << opened.error;
+  mhd_error err{};
+  ASSERT_EQ(api.start(opened.instance, &err), MHD_OK) << err.message;
+  for (int k = 0; k < 20; ++k) {
+    h.now_s = 0.025 * k;  // a controller tick (every 0.02 s) often lies before it, unsimulated
+    const mhd_base_command command{h.now_s, 0.25, 0.0, 0.0};
+    ASSERT_EQ(api.base_write(opened.instance, &command, &err), MHD_OK) << err.message;
+    ASSERT_EQ(api.simulate_until(opened.instance, h.now_s + 0.015, &err), MHD_OK) << err.message;
+  }
+  ASSERT_EQ(api.stop(opened.instance, &err), MHD_OK);
+  api.close(opened.instance);
+
+  const std::vector<CommandLogRow> rows = read_command_log(log);
+  std::filesystem::remove(log);
+  ASSERT_EQ(rows.size(), 1u + 20u + 1u);
+  for (const CommandLogRow& row : rows) EXPECT_NE(row.event, "timeout") << row.t_s;
+}
+
 TEST(SimOmni3Plugin, ACommandAfterTheLastOneExpiredFollowsTheWatchdogFiring) {
   // The host froze between simulate_until and base_write: the real base's watchdog fired
   // during the gap, whatever the host's calls saw, so the log says so, in order.

@@ -71,11 +71,10 @@ class SimOmni3Plugin {
 
   void base_write(const mhd_base_command& command) {
     const double now = sdk::host_now(host_);
-    // A host frozen between simulate_until and this call: the base's watchdog fired in the
-    // gap, so the base lives through it before the new command applies.
-    if (!model_.watchdog_stopped() && now - model_.command_time_s() > model_.config().command_timeout_s) {
-      simulate_until(now);
-    }
+    // The base lives up to the command's arrival under the previous one: a controller tick
+    // the host has not yet simulated saw that command, not this one, and a host frozen in
+    // between let the watchdog fire in the gap.
+    simulate_until(now);
     model_.command(Twist(command.vx_mps, command.vz_mps, command.omega_radps), now);
     log_event(now, CommandEvent::Command, {command.vx_mps, command.vz_mps, command.omega_radps});
   }
