@@ -11,6 +11,7 @@
 #include "plugin_host/open_plugin.h"
 #include "plugin_host/plugin_kind.h"
 #include "plugin_host/plugin_search_path.h"
+#include "realtime/alternate_signal_stack.h"
 #include "scene/rig_kind_check.h"
 #include "simulation/simulated_user_params.h"
 
@@ -194,19 +195,32 @@ ServerReport HapticServer::run() {
   const double t0_s = m.host.now_s();
   if (!m.stop.load()) {
     std::vector<std::thread> threads;
-    auto spawn = [&](void (Impl::*body)()) {
+    auto spawn = [&](void (Impl::*body)(), const char* name) {
       m.running_threads.fetch_add(1);
-      threads.emplace_back([&m, body] {
+      threads.emplace_back([&m, body, name] {
         t_server_thread = true;
+        // The last gasp must run even when this thread's own stack overflowed.
+        const realtime::AlternateSignalStack signal_stack;
+        // Runs on a return and on the unwinding of pthread_exit alike.
+        struct ThreadEnd {
+          Impl& m;
+          void (Impl::*body)();
+          const char* name;
+          bool returned = false;
+          ~ThreadEnd() {
+            if (!returned) m.thread_vanished(body, name);
+            m.running_threads.fetch_sub(1);
+          }
+        } end{m, body, name};
         (m.*body)();
-        m.running_threads.fetch_sub(1);
+        end.returned = true;
       });
     };
     // A desktop rig has no tracker, base or planner: the haptic thread (and the displays).
-    if (!desktop) spawn(&Impl::io_thread);
-    spawn(&Impl::haptic_thread);
-    if (!desktop) spawn(&Impl::planner_thread);
-    if (!m.displays.empty()) spawn(&Impl::display_thread);
+    if (!desktop) spawn(&Impl::io_thread, "io");
+    spawn(&Impl::haptic_thread, "haptic");
+    if (!desktop) spawn(&Impl::planner_thread, "planner");
+    if (!m.displays.empty()) spawn(&Impl::display_thread, "display");
     std::thread recorder;
     if (m.recording) recorder = std::thread([&] { m.recorder_thread(); });
 
@@ -263,6 +277,13 @@ ServerReport HapticServer::run() {
     }
     m.recorder_stop.store(true, std::memory_order_release);
     if (recorder.joinable()) recorder.join();
+    // A vanished thread never sent its safe state: this thread does, now that none of
+    // the server's threads calls the plugins any more.
+    if (!m.abandoned && m.haptic_thread_vanished.load()) {
+      const InCall in_call(*m.device, "device_write", m.host.now_s());
+      m.zero_force_sent = send_zero_torque(m.device->instance, m.host);
+    }
+    if (!m.abandoned && m.io_thread_vanished.load()) m.stop_base();
   }
 
   // The tracker's final counts (its thread has ended, so this thread may call it).
@@ -322,6 +343,19 @@ ServerReport HapticServer::run() {
   }
   if (report.error) report.ended_by = RunEnd::Fault;  // a fault wins over a stop at the same moment
   return report;
+}
+
+void HapticServer::Impl::thread_vanished(void (Impl::*body)(), const char* thread_name) {
+  if (body == &Impl::haptic_thread) haptic_thread_vanished.store(true);
+  if (body == &Impl::io_thread) io_thread_vanished.store(true);
+  const auto [plugin, call] = last_plugin_call_on_this_thread();
+  std::string message = std::string("the ") + thread_name + " thread ended without returning";
+  if (plugin != nullptr) {
+    message = Diagnostic{plugin->description.where, "plugin '" + plugin->description.name + "': " + message +
+                                                        ", last in " + call + " (pthread_exit?)"}
+                  .to_string();
+  }
+  fail(std::move(message));
 }
 
 // ---- last gasp -------------------------------------------------------------------------

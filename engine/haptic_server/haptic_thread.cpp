@@ -69,6 +69,8 @@ void HapticServer::Impl::haptic_thread() {
 
     const HapticTickOutput out = tick.tick(t_s, dt_s, p_D_tool_m);
 
+    // A call that returned after the watchdog ended the run: nothing but zero from here.
+    if (stop.load(std::memory_order_relaxed)) break;
     mhd_device_command cmd{};
     cmd.timestamp_s = t_s;
     for (int j = 0; j < 3; ++j) cmd.force_D_N[j] = out.force_D_N[j];

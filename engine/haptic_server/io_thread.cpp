@@ -166,6 +166,12 @@ void HapticServer::Impl::io_thread() {
       return base->instance.base_read(base_state);
     }();
     if (check(br, *base) || deactivated(br.value(), *base, "base_read")) break;
+    if (br.value() == PluginCallStatus::Ok && !base_position_plausible(base_state, settings.tracking_range_m)) {
+      fail(Diagnostic{base->description.where,
+                      plugin_said(*base, base_position_fault(base_state, settings.tracking_range_m))}
+               .to_string());
+      break;
+    }
 
     // Command: the planner's newest, through the guard; stale base or head data stops the
     // base at once, otherwise commands go out at the base rate (and feed the base's watchdog).
@@ -190,6 +196,7 @@ void HapticServer::Impl::io_thread() {
       counts_published = guard.counts();
       base_stop_counts.set(counts_published);
     }
+    if (stop.load(std::memory_order_relaxed)) break;  // nothing but the stop after the run ended
     if (scheduler.should_send(t_s, new_plan, guarded.twist_B)) {
       mhd_base_command cmd{};
       cmd.timestamp_s = t_s;

@@ -10,6 +10,8 @@ namespace {
 /// The plugin call in progress on this thread: the last gasp names it when the thread dies.
 thread_local const OpenedPlugin* t_plugin_in_call = nullptr;
 thread_local const char* t_call_in_progress = nullptr;
+thread_local const OpenedPlugin* t_last_plugin = nullptr;
+thread_local const char* t_last_call = nullptr;
 
 }  // namespace
 
@@ -25,6 +27,8 @@ InCall::InCall(OpenedPlugin& plugin, const char* call, double now_s) noexcept
   watch_.since_s.store(now_s, std::memory_order_release);
   t_plugin_in_call = &plugin;
   t_call_in_progress = call;
+  t_last_plugin = &plugin;
+  t_last_call = call;
 }
 
 InCall::~InCall() {
@@ -36,6 +40,10 @@ InCall::~InCall() {
 
 std::pair<const OpenedPlugin*, const char*> plugin_call_on_this_thread() noexcept {
   return {t_plugin_in_call, t_call_in_progress};
+}
+
+std::pair<const OpenedPlugin*, const char*> last_plugin_call_on_this_thread() noexcept {
+  return {t_last_plugin, t_last_call};
 }
 
 }  // namespace mhd

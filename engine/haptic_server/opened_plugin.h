@@ -49,4 +49,8 @@ class InCall {
 /// (reads thread-locals).
 [[nodiscard]] std::pair<const OpenedPlugin*, const char*> plugin_call_on_this_thread() noexcept;
 
+/// The plugin and call this thread entered last, returned or not (nulls when none): what a
+/// thread that vanished (pthread_exit) was doing, after the unwinding cleared its mark.
+[[nodiscard]] std::pair<const OpenedPlugin*, const char*> last_plugin_call_on_this_thread() noexcept;
+
 }  // namespace mhd

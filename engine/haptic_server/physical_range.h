@@ -33,4 +33,11 @@ inline constexpr double kWorkspaceMargin_m = 0.1;
 [[nodiscard]] std::string tracked_position_fault(unsigned sensor_id, const Eigen::Vector3d& p_T_m,
                                                  double tracking_range_m);
 
+/// False when the base's odometry puts it farther from the world origin than
+/// `tracking_range_m`: the base moves where it is tracked, so farther is no real reading.
+[[nodiscard]] bool base_position_plausible(const mhd_base_state& state, double tracking_range_m) noexcept;
+
+/// "base_read returned the base at (1e+308, 0) m, farther than the tracking range of 50 m"
+[[nodiscard]] std::string base_position_fault(const mhd_base_state& state, double tracking_range_m);
+
 }  // namespace mhd

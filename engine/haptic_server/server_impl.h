@@ -92,6 +92,9 @@ struct HapticServer::Impl {
   std::atomic<int> gasp_state{kGaspIdle};
   std::atomic<bool> recorder_stop{false};  ///< set after the haptic thread has ended
   std::atomic<int> running_threads{0};     ///< server threads not yet ended (not the recorder)
+  /// Threads that ended without returning (pthread_exit in a plugin call): their safe
+  /// state (the haptic thread's zero torque, the io thread's base stop) is run()'s to send.
+  std::atomic<bool> haptic_thread_vanished{false}, io_thread_vanished{false};
   /// A thread never came back from a plugin call: this Impl (and the plugin's library)
   /// must outlive it, so it is never destroyed.
   bool abandoned = false;
@@ -114,6 +117,10 @@ struct HapticServer::Impl {
   static std::string plugin_failure(const PluginDescription& d, const PluginError& e) {
     return Diagnostic{d.where, e.to_string()}.to_string();
   }
+
+  /// A server thread ended without returning from its body: the run ends, naming the
+  /// plugin call it was last in.
+  void thread_vanished(void (Impl::*body)(), const char* thread_name);
 
   void fail(std::string message) {
     {

@@ -52,4 +52,21 @@ TEST(PhysicalRange, TrackedPositionsWithinTheRangePassBeyondItFail) {
             "tracker_read returned sensor 0 at 1e+09 m from the tracker, beyond its tracking range of 50 m");
 }
 
+TEST(PhysicalRange, BasePositionsWithinTheRangePassBeyondItFail) {
+  mhd_base_state s{};
+  s.x_m = 3.0;
+  s.z_m = 4.0;
+  EXPECT_TRUE(base_position_plausible(s, 5.0));  // exactly at the range
+  s.z_m = 4.001;
+  EXPECT_FALSE(base_position_plausible(s, 5.0));
+  s.x_m = 1e308;
+  EXPECT_FALSE(base_position_plausible(s, 50.0));
+  s.x_m = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_FALSE(base_position_plausible(s, 50.0));
+  s.x_m = 1e308;
+  s.z_m = 0.0;
+  EXPECT_EQ(base_position_fault(s, 50.0),
+            "base_read returned the base at (1e+308, 0) m, farther than the tracking range of 50 m");
+}
+
 }  // namespace

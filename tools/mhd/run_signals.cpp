@@ -1,5 +1,7 @@
 #include "run_signals.h"
 
+#include "realtime/alternate_signal_stack.h"
+
 #include <unistd.h>
 
 #include <atomic>
@@ -54,6 +56,12 @@ extern "C" void on_last_gasp_timeout(int /*signal*/) {
   ::_exit(kRunLastGasp);
 }
 
+/// The plugins' own threads (a driver's I/O, a simulated backend's log) pass the zeros on.
+void let_plugin_threads_pass_the_zeros_on() noexcept {
+  const timespec grace{0, 30000000};
+  nanosleep(&grace, nullptr);
+}
+
 /// Zero torque and a base stop through the plugins, the message, the exit: from the
 /// dying thread, async-signal-safe as far as the plugins' write calls are.
 [[noreturn]] void last_gasp_and_exit(const char* cause) noexcept {
@@ -83,9 +91,7 @@ extern "C" void on_last_gasp_timeout(int /*signal*/) {
     last.add("mhd run: last gasp: the server was not running; nothing sent\n");
   }
   last.write_to_stderr();
-  // The plugins' own threads (a driver's I/O, a simulated backend's log) pass the zeros on.
-  const timespec grace{0, 30000000};
-  nanosleep(&grace, nullptr);
+  let_plugin_threads_pass_the_zeros_on();
   ::_exit(kRunLastGasp);
 }
 
@@ -110,6 +116,16 @@ extern "C" void on_exit_while_running() {
   last_gasp_and_exit("exit() called while the server runs");
 }
 
+/// Registered before on_exit_while_running, so it runs after it: only when a plugin called
+/// exit() again during the last gasp, which then ends with that call's status. The run
+/// did not end cleanly, so the status says so.
+extern "C" void on_exit_during_last_gasp() {
+  if (!g_gasping.load()) return;
+  Message().add("mhd run: last gasp: a plugin called exit() again while the zeros were sent\n").write_to_stderr();
+  let_plugin_threads_pass_the_zeros_on();
+  ::_exit(kRunLastGasp);
+}
+
 [[noreturn]] void on_terminate() noexcept {
   static std::string cause;  // not a signal handler: allocating is fine here
   cause = "uncaught exception";
@@ -132,7 +148,9 @@ void install(int signal, void (*handler)(int)) {
   struct sigaction action {};
   action.sa_handler = handler;
   sigemptyset(&action.sa_mask);
-  action.sa_flags = SA_RESTART;
+  // SA_ONSTACK: on the thread's alternate stack, where it has one, so that a stack
+  // overflow still ends in the last gasp.
+  action.sa_flags = SA_RESTART | SA_ONSTACK;
   sigaction(signal, &action, nullptr);
 }
 
@@ -146,8 +164,14 @@ void install_run_signal_handlers() {
   for (const int s : {SIGPIPE, SIGUSR1, SIGUSR2}) install(s, SIG_IGN);
   for (const int s : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) install(s, on_fatal_signal);
   std::set_terminate(on_terminate);
+  // atexit handlers run last-registered first.
+  std::atexit(on_exit_during_last_gasp);
   std::atexit(on_exit_while_running);
+  std::at_quick_exit(on_exit_during_last_gasp);
   std::at_quick_exit(on_exit_while_running);
+  // The main thread calls plugins too (start, stop); its stack lives as long as the process.
+  static const auto* const main_thread_signal_stack = new realtime::AlternateSignalStack();
+  (void)main_thread_signal_stack;
 }
 
 void guard_server(HapticServer* server) noexcept {
