@@ -5,6 +5,7 @@
 
 #include "haptic_server/force_limit.h"
 #include "haptic_server/plugin_watchdog.h"
+#include "haptic_server/run_check.h"
 #include "haptic_server/safe_stop.h"
 #include "haptic_server/scene_planner.h"
 #include "haptic_server/server_impl.h"
@@ -46,59 +47,35 @@ const ServerSettings& HapticServer::settings() const noexcept { return impl_->se
 
 Result<OpenedServer> HapticServer::open(const SceneDescription& scene, const CompiledScene& compiled,
                                         ServerOptions options) {
-  Diagnostics errors;
-  const SourceLocation scene_where{scene.file.string(), 0};
-
+  // What `mhd validate` checks too: the verdict is the same function's.
+  Diagnostics errors = check_scene_for_run(scene, static_cast<bool>(options.plan_base));
+  if (!errors.empty()) return errors;
   Result<ServerSettings> settings = server_settings_from(scene);
-  errors.insert(errors.end(), settings.diagnostics().begin(), settings.diagnostics().end());
-
   Result<Rig, std::vector<RigError>> rig = Rig::from_scene(scene);
-  if (!rig.ok()) {
-    for (const RigError& e : rig.error()) errors.push_back({e.where.file.empty() ? scene_where : e.where, e.message});
-  }
+  if (!settings.ok() || !rig.ok()) throw std::logic_error("check_scene_for_run passed a scene it cannot run");
 
-  // The simulated plugins run the scene's <simulated_user> (plugins/sim_world); its
-  // errors still refuse the run here, at their lines, before any plugin opens.
-  if (scene.simulated_user) {
-    auto u = simulation::simulated_user_config_from(*scene.simulated_user);
-    if (!u.ok()) errors.insert(errors.end(), u.error().begin(), u.error().end());
-  }
-
-  // One device, one tracker, at most one base.
   const PluginDescription* device = nullptr;
   const PluginDescription* tracker = nullptr;
   const PluginDescription* base = nullptr;
   std::vector<const PluginDescription*> displays;
   for (const PluginDescription& p : scene.plugins) {
-    const PluginDescription** slot = p.kind == PluginKind::Device    ? &device
-                                     : p.kind == PluginKind::Tracker ? &tracker
-                                     : p.kind == PluginKind::Base    ? &base
-                                                                     : nullptr;
-    if (slot == nullptr) {
-      displays.push_back(&p);
-    } else if (*slot != nullptr) {
-      errors.push_back({p.where, "a second " + std::string(to_string(p.kind)) + " plugin '" + p.name +
-                                     "' (the server drives one; the first is at line " +
-                                     std::to_string((*slot)->where.line) + ")"});
+    if (p.kind == PluginKind::Device) {
+      device = &p;
+    } else if (p.kind == PluginKind::Tracker) {
+      tracker = &p;
+    } else if (p.kind == PluginKind::Base) {
+      base = &p;
     } else {
-      *slot = &p;
+      displays.push_back(&p);
     }
   }
   const bool desktop = scene.rig_kind.kind == RigKind::Desktop;
-  // The reader checked a file's rig kind; a description built in code is checked here.
-  for (const Diagnostics& d : {check_rig_kind(scene), check_rig_plugins_for_run(scene)}) {
-    errors.insert(errors.end(), d.begin(), d.end());
-  }
   ScenePlanner planner;
-  if (rig.ok() && !desktop && !options.plan_base) {
+  if (!desktop && !options.plan_base) {
     Result<ScenePlanner> made = scene_planner(scene, *rig);
-    if (made.ok()) {
-      planner = std::move(made).value();
-    } else {
-      errors.insert(errors.end(), made.error().begin(), made.error().end());
-    }
+    if (!made.ok()) return made.error();
+    planner = std::move(made).value();
   }
-  if (!errors.empty()) return errors;
 
   const bool scene_plans = static_cast<bool>(planner.plan);
   if (planner.plan) {

@@ -19,8 +19,9 @@
 //                             after this long ends the run (the others reach their
 //                             safe state; a stuck device must rely on its own watchdog)
 //   tracking_range_m (50)     a tracked sensor farther than this from the tracker's origin
-//                             is a fault (physical_range.h); within [1, 1000]
-//   io_rate_hz within [10, 20000], base_rate_hz and display_rate_hz within [1, 1000]
+//                             is a fault (physical_range.h)
+// Every number's range is declared in kServerNumbers: `mhd validate` and `mhd run` judge
+// <server> by server_settings_from alone.
 
 #include "haptic_server/haptic_tick.h"
 #include "safety/base_command_guard.h"
@@ -28,10 +29,42 @@
 #include "planner/planner_settings.h"
 #include "scene/scene_description.h"
 
+#include <array>
 #include <cstdint>
 #include <optional>
+#include <string_view>
 
 namespace mhd {
+
+/// A numeric <server> parameter and the range it must lie in (inclusive).
+struct ServerNumber {
+  std::string_view name;
+  double low;
+  double high;
+  std::string_view unit;
+};
+
+/// Every numeric <server> parameter. The bounds are what a host loop and the hardware can
+/// live with: a tiny rate is a near-infinite period, a huge timeout no watchdog at all.
+inline constexpr std::array<ServerNumber, 14> kServerNumbers{{
+    {"tracker_timeout_s", 0.001, 10.0, "s"},
+    {"tracker_fade_s", 0.0, 10.0, "s"},
+    {"hip_jump_m", 1e-5, 1.0, "m"},
+    {"fade_in_s", 0.0, 60.0, "s"},
+    {"io_rate_hz", 10.0, 20'000.0, "Hz"},
+    {"base_rate_hz", 1.0, 1000.0, "Hz"},
+    {"display_rate_hz", 1.0, 1000.0, "Hz"},
+    {"base_max_speed_mps", 0.001, 10.0, "m/s"},
+    {"base_max_omega_degps", 0.01, 3600.0, "deg/s"},
+    {"keep_out_m", 0.0, 100.0, "m"},
+    {"record_flush_s", 0.001, 60.0, "s"},
+    {"min_tick_interval_s", 0.0, 0.01, "s"},
+    {"plugin_call_timeout_s", 0.001, 60.0, "s"},
+    {"tracking_range_m", 1.0, 1000.0, "m"},
+}};
+
+/// The sensor ids (<server> base_sensor_id, head_sensor_id) are integers in [0, this].
+inline constexpr std::uint64_t kMaxSensorId = 0xFFFF'FFFFu;
 
 struct ServerSettings {
   HapticTickSettings tick;

@@ -1,5 +1,7 @@
 #include "scene/param_block_reader.h"
 
+#include <fmt/core.h>
+
 #include <charconv>
 #include <cmath>
 #include <utility>
@@ -61,6 +63,19 @@ double ParamBlockReader::positive(std::string_view name, double fallback) {
   double out = 0.0;
   if (!parse_double(*value, out) || out <= 0.0) {
     error(name, "param '" + std::string(name) + "' in " + element_ + " must be a positive number, got '" + *value + "'");
+    return fallback;
+  }
+  return out;
+}
+
+double ParamBlockReader::within(std::string_view name, double fallback, double low, double high,
+                                std::string_view unit) {
+  const std::string* value = find(name);
+  if (value == nullptr) return fallback;
+  double out = 0.0;
+  if (!parse_double(*value, out) || !(out >= low && out <= high)) {
+    error(name, fmt::format("param '{}' in {} must be a number in [{:g}, {:g}]{}{}, got '{}'", name, element_, low, high,
+                            unit.empty() ? "" : " ", unit, *value));
     return fallback;
   }
   return out;

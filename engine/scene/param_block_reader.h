@@ -24,6 +24,8 @@ class ParamBlockReader {
   [[nodiscard]] double positive(std::string_view name, double fallback);      ///< > 0
   [[nodiscard]] double non_negative(std::string_view name, double fallback);  ///< >= 0
   [[nodiscard]] double fraction(std::string_view name, double fallback);      ///< in [0, 1]
+  /// A finite number in [low, high]; `unit` (may be empty) is named in the message.
+  [[nodiscard]] double within(std::string_view name, double fallback, double low, double high, std::string_view unit);
   [[nodiscard]] std::uint64_t unsigned_integer(std::string_view name, std::uint64_t fallback);
   [[nodiscard]] bool boolean(std::string_view name, bool fallback);  ///< true/false/1/0
   [[nodiscard]] std::string text(std::string_view name, const std::string& fallback);

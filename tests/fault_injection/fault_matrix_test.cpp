@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
@@ -190,6 +191,13 @@ TEST_P(FaultMatrix, EndsWithTheHardwareSafeAndSaysSo) {
   const std::string seen = "exit " + (exited ? std::to_string(code) : "by signal " + std::to_string(WTERMSIG(ended->status))) +
                            ", last force x " + std::to_string(device->values[0]) + ", last vx " +
                            std::to_string(base->values[0]) + "\n" + output;
+  // The cell as docs/reliability/fault_injection.md tabulates it.
+  const auto error_at = output.find("error: ");
+  const std::string said =
+      error_at == std::string::npos ? "(no error)" : output.substr(error_at + 7, output.find('\n', error_at) - error_at - 7);
+  std::printf("cell | %s | %s | %s | %s | %s | %s\n", fault.c_str(), call.c_str(),
+              exited ? std::to_string(code).c_str() : ("signal " + std::to_string(WTERMSIG(ended->status))).c_str(),
+              device_safe ? "zero" : "FORCE", base_safe ? "zero" : "MOVING", said.c_str());
   switch (e) {
     case Expect::SafeFault:
       EXPECT_TRUE(device_safe) << seen;

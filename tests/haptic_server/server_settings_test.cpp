@@ -6,6 +6,11 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <fmt/core.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -65,10 +70,45 @@ TEST(ServerSettings, AbsurdRatesAndTrackingRangeAreRefusedAtTheirLines) {
   std::vector<std::string> lines;
   for (const Diagnostic& d : r.diagnostics()) lines.push_back(d.to_string());
   EXPECT_EQ(lines, (std::vector<std::string>{
-                       "scene.xml:7: error: param 'io_rate_hz' in <server> must be within [10, 20000], got 1e-308",
-                       "scene.xml:7: error: param 'base_rate_hz' in <server> must be within [1, 1000], got 1e+09",
-                       "scene.xml:7: error: param 'display_rate_hz' in <server> must be within [1, 1000], got 0.5",
-                       "scene.xml:7: error: param 'tracking_range_m' in <server> must be within [1, 1000], got 1e+09"}));
+                       "scene.xml:7: error: param 'io_rate_hz' in <server> must be a number in [10, 20000] Hz, got '1e-308'",
+                       "scene.xml:7: error: param 'base_rate_hz' in <server> must be a number in [1, 1000] Hz, got '1e9'",
+                       "scene.xml:7: error: param 'display_rate_hz' in <server> must be a number in [1, 1000] Hz, got '0.5'",
+                       "scene.xml:7: error: param 'tracking_range_m' in <server> must be a number in [1, 1000] m, got '1e9'"}));
+}
+
+// The envelope of every declared number: NaN, the infinities, 0, negative, the largest and
+// the smallest double are refused wherever they lie outside the declared range, and the
+// range's ends and middle are accepted (the companion that a cross-rule compares with set
+// so that only the range decides).
+TEST(ServerSettings, EveryDeclaredNumberIsRefusedOutsideItsRangeAndAcceptedWithinIt) {
+  const std::vector<std::string> envelope = {"nan", "inf", "-inf", "0", "-1", "1e308", "4.9e-324", "-4.9e-324"};
+  for (const ServerNumber& n : kServerNumbers) {
+    const std::string name(n.name);
+    std::vector<std::string> values = envelope;
+    for (const double v : {n.low, n.high, (n.low + n.high) / 2.0}) values.push_back(fmt::format("{}", v));
+    for (const std::string& value : values) {
+      std::map<std::string, std::string> params{{name, value}};
+      // The fade must not outlast the timeout: the other one out of the way.
+      if (name == "tracker_fade_s") params.emplace(std::string("tracker_timeout_s"), std::string("10"));
+      if (name == "tracker_timeout_s") params.emplace(std::string("tracker_fade_s"), std::string("0"));
+      const Result<ServerSettings> r = server_settings_from(scene_with_server(params));
+      const double v = std::strtod(value.c_str(), nullptr);
+      const bool inside = std::isfinite(v) && v >= n.low && v <= n.high &&
+                          !(name == "min_tick_interval_s" && v > 0.001);  // the haptic period's own rule
+      EXPECT_EQ(r.ok(), inside) << name << " = " << value;
+      if (!inside && !r.diagnostics().empty()) {
+        EXPECT_EQ(r.diagnostics()[0].where.line, 7) << name << " = " << value;
+        EXPECT_THAT(r.diagnostics()[0].message, HasSubstr(fmt::format("'{}'", name))) << name << " = " << value;
+      }
+    }
+  }
+}
+
+TEST(ServerSettings, SensorIdsBeyond32BitsAreRefusedNotCut) {
+  const Result<ServerSettings> r = server_settings_from(scene_with_server({{"base_sensor_id", "4294967296"}}));
+  ASSERT_FALSE(r.ok());
+  EXPECT_THAT(r.diagnostics()[0].message, HasSubstr("'base_sensor_id' in <server> must be an integer in [0, 4294967295]"));
+  EXPECT_TRUE(server_settings_from(scene_with_server({{"base_sensor_id", "4294967295"}})).ok());
 }
 
 TEST(ServerSettings, TheTrackingRangeHasADefaultAndIsRead) {

@@ -3,6 +3,7 @@
 #include "load_progress.h"
 
 #include "command_exit.h"
+#include "haptic_server/run_check.h"
 #include "plugin_host/scene_plugin_check.h"
 #include "plugin_host/plugin_search_path.h"
 #include "scene_compiler/scene_compiler.h"
@@ -78,6 +79,14 @@ bool validate_file(const std::string& file, const ValidateOptions& options) {
   const mhd::Result<mhd::SceneDescription> read = mhd::read_scene_file(file);
   print_diagnostics(read.diagnostics());
   if (!read.ok()) return false;
+  // The settings (<server>, <simulated_user>) by run's own function. What a file may leave
+  // to the scene that includes it (the rig's frames, the plugins a run needs) is run's to
+  // refuse.
+  const mhd::Diagnostics problems = mhd::check_scene_settings(*read);
+  if (!problems.empty()) {
+    print_diagnostics(problems);
+    return false;
+  }
   if (!check_plugins(*read, options)) return false;
   if (options.no_meshes) {
     fmt::print("{}: ok ({} objects, meshes not loaded)\n", file, read->objects.size());

@@ -1,0 +1,63 @@
+#include "haptic_server/run_check.h"
+
+#include "haptic_server/scene_planner.h"
+#include "haptic_server/server_settings.h"
+#include "kinematics/rig.h"
+#include "plugin_host/plugin_kind.h"
+#include "scene/rig_kind_check.h"
+#include "simulation/simulated_user_params.h"
+
+#include <string>
+
+namespace mhd {
+
+Diagnostics check_scene_settings(const SceneDescription& scene) {
+  Diagnostics errors = server_settings_from(scene).diagnostics();
+  // The simulated plugins run the scene's <simulated_user> (plugins/sim_world); its
+  // errors still refuse the run here, at their lines, before any plugin opens.
+  if (scene.simulated_user) {
+    auto u = simulation::simulated_user_config_from(*scene.simulated_user);
+    if (!u.ok()) errors.insert(errors.end(), u.error().begin(), u.error().end());
+  }
+  return errors;
+}
+
+Diagnostics check_scene_for_run(const SceneDescription& scene, bool custom_planner) {
+  Diagnostics errors = check_scene_settings(scene);
+  const SourceLocation scene_where{scene.file.string(), 0};
+  const auto add = [&errors](const Diagnostics& more) { errors.insert(errors.end(), more.begin(), more.end()); };
+
+  Result<Rig, std::vector<RigError>> rig = Rig::from_scene(scene);
+  if (!rig.ok()) {
+    for (const RigError& e : rig.error()) errors.push_back({e.where.file.empty() ? scene_where : e.where, e.message});
+  }
+
+  // One device, one tracker, at most one base.
+  const PluginDescription* device = nullptr;
+  const PluginDescription* tracker = nullptr;
+  const PluginDescription* base = nullptr;
+  for (const PluginDescription& p : scene.plugins) {
+    const PluginDescription** slot = p.kind == PluginKind::Device    ? &device
+                                     : p.kind == PluginKind::Tracker ? &tracker
+                                     : p.kind == PluginKind::Base    ? &base
+                                                                     : nullptr;
+    if (slot == nullptr) continue;
+    if (*slot != nullptr) {
+      errors.push_back({p.where, "a second " + std::string(to_string(p.kind)) + " plugin '" + p.name +
+                                     "' (the server drives one; the first is at line " +
+                                     std::to_string((*slot)->where.line) + ")"});
+    } else {
+      *slot = &p;
+    }
+  }
+  // The reader checked a file's rig kind; a description built in code is checked here.
+  add(check_rig_kind(scene));
+  add(check_rig_plugins_for_run(scene));
+  if (rig.ok() && scene.rig_kind.kind != RigKind::Desktop && !custom_planner) {
+    Result<ScenePlanner> made = scene_planner(scene, *rig);
+    if (!made.ok()) add(made.error());
+  }
+  return errors;
+}
+
+}  // namespace mhd
