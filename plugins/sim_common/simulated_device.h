@@ -17,10 +17,11 @@ namespace mhd::plugin_support {
 inline constexpr std::array kSimulatedHandParams{
     sdk::choice("hand_model", "kinematic|impedance", "kinematic",
                 "how the simulated hand moves: a stiff spring to the intended path, or a mass-spring-damper arm"),
-    sdk::number("hand_mass_kg", "kg", "0.55", "impedance hand: the arm's apparent mass", sdk::positive()),
+    sdk::number("hand_mass_kg", "kg", "0.55", "impedance hand: the arm's apparent mass", sdk::above_up_to(0, 100)),
     sdk::number("hand_stiffness_N_per_m", "N/m", nullptr,
-                "the hand's spring to the intended path (default 2000 kinematic, 135 impedance)", sdk::positive()),
-    sdk::number("hand_damping_Ns_per_m", "N s/m", "6.5", "impedance hand: the arm's damping", sdk::positive()),
+                "the hand's spring to the intended path (default 2000 kinematic, 135 impedance)",
+                sdk::above_up_to(0, 1e6)),
+    sdk::number("hand_damping_Ns_per_m", "N s/m", "6.5", "impedance hand: the arm's damping", sdk::above_up_to(0, 1e4)),
 };
 
 /// Fills a device model's hand fields (hand_model, hand_impedance, hand_stiffness_N_per_m)

@@ -29,7 +29,7 @@ TEST(DdsTrackerPlugin, BadParametersAreRefusedWithTheirNames) {
   EXPECT_EQ(mhd::test::open_plugin(file.api(), h.host, {{"rig_id", "-1"}}).error,
             "parameter 'rig_id' must be a non-negative integer in [0, 4294967295], got '-1'");
   EXPECT_EQ(mhd::test::open_plugin(file.api(), h.host, {{"max_age_s", "0"}}).error,
-            "parameter 'max_age_s' must be a number > 0 (s), got '0'");
+            "parameter 'max_age_s' must be a number in (0, 10] (s), got '0'");
   EXPECT_EQ(mhd::test::open_plugin(file.api(), h.host, {{"config_file", "config/cyclonedds-loopback.xml"}}).error,
             "parameter 'config_file' needs 'domain_id'");
   EXPECT_EQ(mhd::test::open_plugin(file.api(), h.host, {{"publish_sim_world", "yes"}}).error,

@@ -3,14 +3,19 @@
 // and the host's check (check_scene_plugin, what validate and run both call before
 // open) must refuse it naming that parameter. The dual: every declared default, given
 // explicitly, passes, so good input is never refused.
+#include "plugin_host/host_services.h"
+#include "plugin_host/open_plugin.h"
 #include "plugin_host/scene_plugin_check.h"
 
 #include <mhd/plugin_params.hpp>
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdlib>
 #include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace {
@@ -77,6 +82,74 @@ TEST(DeclaredParams, EveryInTreePluginRefusesABadValueOfEachDeclaredParameterBef
     EXPECT_TRUE(seen.count(name) == 1) << name << " not found in " << MHD_BUILD_PLUGIN_DIR;
   }
   EXPECT_GT(checked, 60u);
+}
+
+/// Whether `value` lies in the range `d` declares (its exclusive ends included).
+bool in_declared_range(const mhd_param_decl& d, double value) {
+  if (!std::isfinite(value)) return false;
+  if ((d.flags & MHD_PARAM_HAS_MIN) != 0u) {
+    if ((d.flags & MHD_PARAM_MIN_EXCLUSIVE) != 0u ? value <= d.min_value : value < d.min_value) return false;
+  }
+  if ((d.flags & MHD_PARAM_HAS_MAX) != 0u) {
+    if ((d.flags & MHD_PARAM_MAX_EXCLUSIVE) != 0u ? value >= d.max_value : value > d.max_value) return false;
+  }
+  return true;
+}
+
+// The envelope of every declared number, integer and vector: each has a lower and an upper
+// bound, and NaN, the infinities, 0, negatives, the largest and smallest doubles are
+// refused outside them and accepted inside, by the check validate and run both make.
+// Then run's side: the plugins that open without hardware or a network open with every
+// value the check accepted (the declaration is the whole rule for one parameter).
+TEST(DeclaredParams, EveryNumberHasTwoBoundsAndTheEnvelopeIsJudgedByThemAlikeAtOpen) {
+  const PluginSearchPath search = in_tree_plugins();
+  const std::set<std::string> opens_offline = {"sim_phantom", "sim_delta", "sim_is900", "sim_omni3", "vendor_cartesian"};
+  HostServices host;
+  const std::vector<std::string> envelope = {"nan", "inf", "-inf", "0", "-1", "1e308", "-1e308", "4.9e-324", "-4.9e-324"};
+  std::size_t walked = 0;
+  std::size_t opened = 0;
+  for (const PluginListing& listing : search.list()) {
+    ASSERT_TRUE(listing.loaded.ok());
+    const PluginInfo& info = listing.loaded.value();
+    const auto library = PluginLibrary::load(listing.path);
+    ASSERT_TRUE(library.ok());
+    const mhd_plugin_api& api = library.value()->api();
+    for (std::size_t i = 0; i < api.param_count; ++i) {
+      const mhd_param_decl& d = api.params[i];
+      if (d.type != MHD_PARAM_NUMBER && d.type != MHD_PARAM_INTEGER && d.type != MHD_PARAM_VECTOR3) continue;
+      EXPECT_NE(d.flags & MHD_PARAM_HAS_MIN, 0u) << info.name << ": '" << d.name << "' has no lower bound";
+      EXPECT_NE(d.flags & MHD_PARAM_HAS_MAX, 0u) << info.name << ": '" << d.name << "' has no upper bound";
+      std::vector<std::string> values = envelope;
+      for (const double v : {d.min_value, d.max_value, (d.min_value + d.max_value) / 2.0}) {
+        values.push_back(d.type == MHD_PARAM_INTEGER ? std::to_string(static_cast<long long>(std::llround(v)))
+                                                     : std::to_string(v));
+      }
+      for (const std::string& one : values) {
+        const std::string value = d.type == MHD_PARAM_VECTOR3 ? one + " " + one + " " + one : one;
+        const double v = std::strtod(one.c_str(), nullptr);
+        const bool integral = one.find_first_not_of("0123456789") == std::string::npos;
+        const bool expected = in_declared_range(d, v) && (d.type != MHD_PARAM_INTEGER || integral);
+        std::map<std::string, std::string> params{{d.name, value}};
+        // What a rule across parameters (open()'s own) asks of the others.
+        if (std::string_view(d.name) == "hand_mass_kg" || std::string_view(d.name) == "hand_damping_Ns_per_m") {
+          params.emplace("hand_model", "impedance");
+        }
+        if (std::string_view(d.name) == "head_sensor_id") params.emplace("base_sensor_id", "7");
+        const PluginDescription description = describe_plugin(info.kind, info.name, params);
+        const Status<PluginError> checked = check_scene_plugin(search, description);
+        EXPECT_EQ(checked.ok(), expected) << info.name << ": '" << d.name << "' = '" << value << "'";
+        ++walked;
+        if (!checked.ok() || opens_offline.count(info.name) == 0) continue;
+        const auto instance = open_plugin(search, description, host.abi());
+        EXPECT_TRUE(instance.ok()) << info.name << ": '" << d.name << "' = '" << value
+                                   << "' passed the declarations, then open() refused it: "
+                                   << instance.error().to_string();
+        ++opened;
+      }
+    }
+  }
+  EXPECT_GT(walked, 500u);
+  EXPECT_GT(opened, 100u);
 }
 
 TEST(DeclaredParams, EveryDeclaredDefaultGivenExplicitlyPasses) {

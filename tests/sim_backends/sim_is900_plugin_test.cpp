@@ -23,11 +23,11 @@ TEST(SimIs900Plugin, OpenNeedsValidParameters) {
   const PluginFile file(MHD_SIM_IS900_PLUGIN);
   FakeHost h;
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"rate_hz", "abc"}}).error,
-            "parameter 'rate_hz' must be a number > 0 (Hz), got 'abc'");
+            "parameter 'rate_hz' must be a number in [1, 10000] (Hz), got 'abc'");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"base_sensor_id", "1"}}).error,
             "parameters 'base_sensor_id' and 'head_sensor_id' must differ, both are 1");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"tracker_position_m", "0 2.624"}}).error,
-            "parameter 'tracker_position_m' must be three numbers 'x y z' (m), got '0 2.624'");
+            "parameter 'tracker_position_m' must be three numbers 'x y z', each in [-1000, 1000] (m), got '0 2.624'");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"buffer_capacity", "0"}}).error,
             "parameter 'buffer_capacity' must be a non-negative integer in [1, 1048576], got '0'");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"noise", "0"}}).error,
@@ -39,7 +39,7 @@ TEST(SimIs900Plugin, OpenNeedsValidParameters) {
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"dropout_sensor", "hand"}}).error,
             "parameter 'dropout_sensor' must be one of head|base, got 'hand'");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"dropout_duration_s", "-1"}}).error,
-            "parameter 'dropout_duration_s' must be a number >= 0 (s), got '-1'");
+            "parameter 'dropout_duration_s' must be a number in [0, 86400] (s), got '-1'");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"base_sensor_quaternion_wxyz", "0 0 0 0"}}).error,
             "parameter 'base_sensor_quaternion_wxyz' must be four numbers 'w x y z' of non-zero norm, got '0 0 0 0'");
 }

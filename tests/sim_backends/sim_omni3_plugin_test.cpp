@@ -33,7 +33,7 @@ TEST(SimOmni3Plugin, OpenRejectsUnknownAndMalformedParameters) {
             "control_rate_hz, motor_time_constant_s, max_wheel_accel_mps2, slip_fraction, command_timeout_s, seed, x_m, "
             "z_m, heading_deg, command_log)");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"max_speed_mps", "fast"}}).error,
-            "parameter 'max_speed_mps' must be a number > 0 (m/s), got 'fast'");
+            "parameter 'max_speed_mps' must be a number in [0.001, 10] (m/s), got 'fast'");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"slip_fraction", "1.5"}}).error,
             "parameter 'slip_fraction' must be a number in [0, 1), got '1.5'");
   mhd_host old_host = h.host;

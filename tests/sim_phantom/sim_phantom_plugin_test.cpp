@@ -68,17 +68,17 @@ TEST(SimPhantomPlugin, OpenRejectsUnknownAndMalformedParameters) {
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"hand_mass_kg", "0.5"}}).error,
             "parameter 'hand_mass_kg' applies only to hand_model 'impedance'");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"hand_model", "impedance"}, {"hand_damping_Ns_per_m", "0"}}).error,
-            "parameter 'hand_damping_Ns_per_m' must be a number > 0 (N s/m), got '0'");
+            "parameter 'hand_damping_Ns_per_m' must be a number in (0, 10000] (N s/m), got '0'");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"command_log", "/nonexistent/dir/log.csv"}}).error,
             "cannot write the command log '/nonexistent/dir/log.csv': No such file or directory");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"command_timeout_s", "0"}}).error,
-            "parameter 'command_timeout_s' must be a number > 0 (s), got '0'");
+            "parameter 'command_timeout_s' must be a number in [0.001, 1] (s), got '0'");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"hand_stiffness_N_per_m", "-5"}}).error,
-            "parameter 'hand_stiffness_N_per_m' must be a number > 0 (N/m), got '-5'");
+            "parameter 'hand_stiffness_N_per_m' must be a number in (0, 1e+06] (N/m), got '-5'");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"position_resolution_m", "fine"}}).error,
-            "parameter 'position_resolution_m' must be a number >= 0 (m), got 'fine'");
+            "parameter 'position_resolution_m' must be a number in [0, 0.01] (m), got 'fine'");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"hand_P_m", "0 0.1"}}).error,
-            "parameter 'hand_P_m' must be three numbers 'x y z' (m), got '0 0.1'");
+            "parameter 'hand_P_m' must be three numbers 'x y z', each in [-10, 10] (m), got '0 0.1'");
   mhd_host old_host = h.host;
   old_host.abi_version = 0;
   EXPECT_EQ(open_plugin(file.api(), old_host, {}).error, "host ABI version 0 is not " + std::to_string(MHD_PLUGIN_ABI_VERSION));

@@ -46,7 +46,7 @@ TEST_F(OsgStereoPlugin, OpenRefusesUnknownParametersAndAHostWithoutScene) {
   EXPECT_NE(bad.error().to_string().find("unknown parameter 'colour'"), std::string::npos) << bad.error().to_string();
   auto bad_ipd = open_plugin(search_, osg_stereo({{"ipd_m", "abc"}}), host_.abi());
   ASSERT_FALSE(bad_ipd.ok());
-  EXPECT_NE(bad_ipd.error().to_string().find("parameter 'ipd_m' must be a number >= 0 (m), got 'abc'"), std::string::npos);
+  EXPECT_NE(bad_ipd.error().to_string().find("parameter 'ipd_m' must be a number in [0, 0.2] (m), got 'abc'"), std::string::npos);
   HostServices no_scene;
   auto none = open_plugin(search_, osg_stereo({}), no_scene.abi());
   ASSERT_FALSE(none.ok());

@@ -27,11 +27,13 @@ class SimDeltaPlugin {
  public:
   static constexpr std::array kParams = sdk::join(plugin_support::kSimulatedHandParams, std::array{
       sdk::number("command_timeout_s", "s", "0.02", "the device's own watchdog: older forces count as zero",
-                  sdk::positive()),
-      sdk::vector3("device_position_m", "m", "0 0 0", "the device frame D in the world (the scene's frame 'device')"),
-      sdk::vector3("device_rpy_deg", "deg", "0 0 0", "its roll, pitch, yaw"),
+                  sdk::between(0.001, 1)),
+      sdk::vector3("device_position_m", "m", "0 0 0", "the device frame D in the world (the scene's frame 'device')",
+                   sdk::between(-1000, 1000)),
+      sdk::vector3("device_rpy_deg", "deg", "0 0 0", "its roll, pitch, yaw", sdk::between(-360, 360)),
       sdk::vector3("hand_D_m", "m", nullptr,
-                   "while the simulated world has no hand: where it rests, device frame (default: the workspace centre)"),
+                   "while the simulated world has no hand: where it rests, device frame (default: the workspace centre)",
+                   sdk::between(-10, 10)),
   });
 
   SimDeltaPlugin(const mhd_host& host, const sdk::Params& params)

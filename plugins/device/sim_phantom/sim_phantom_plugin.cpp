@@ -39,15 +39,20 @@ class SimPhantomPlugin {
  public:
   static constexpr std::array kParams = sdk::join(plugin_support::kSimulatedHandParams, std::array{
       sdk::number("command_timeout_s", "s", "0.02", "the device's own watchdog: older torques count as zero",
-                  sdk::positive()),
+                  sdk::between(0.001, 1)),
       sdk::number("position_resolution_m", "m", "3e-05", "tool-point resolution of the encoders; 0: exact",
-                  sdk::non_negative()),
-      sdk::vector3("phantom_position_m", "m", nullptr, "the device frame in the robot frame (default: pomhi.xml's)"),
-      sdk::vector3("phantom_rpy_deg", "deg", nullptr, "its roll, pitch, yaw (default: pomhi.xml's)"),
-      sdk::vector3("base_position_m", "m", nullptr, "the floor frame in the robot frame (default: pomhi.xml's)"),
-      sdk::vector3("base_rpy_deg", "deg", nullptr, "its roll, pitch, yaw (default: pomhi.xml's)"),
+                  sdk::between(0, 0.01)),
+      sdk::vector3("phantom_position_m", "m", nullptr, "the device frame in the robot frame (default: pomhi.xml's)",
+                   sdk::between(-10, 10)),
+      sdk::vector3("phantom_rpy_deg", "deg", nullptr, "its roll, pitch, yaw (default: pomhi.xml's)",
+                   sdk::between(-360, 360)),
+      sdk::vector3("base_position_m", "m", nullptr, "the floor frame in the robot frame (default: pomhi.xml's)",
+                   sdk::between(-10, 10)),
+      sdk::vector3("base_rpy_deg", "deg", nullptr, "its roll, pitch, yaw (default: pomhi.xml's)",
+                   sdk::between(-360, 360)),
       sdk::vector3("hand_P_m", "m", nullptr,
-                   "while the simulated world has no hand: where it rests, device frame (default: the workspace centre)"),
+                   "while the simulated world has no hand: where it rests, device frame (default: the workspace centre)",
+                   sdk::between(-10, 10)),
       sdk::text("command_log", nullptr, "a CSV file that receives every command and watchdog firing"),
   });
 

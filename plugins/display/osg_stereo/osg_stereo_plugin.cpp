@@ -26,7 +26,7 @@ class OsgStereoPlugin {
  public:
   static constexpr std::array kParams{
       sdk::boolean("stereo", "true", "side-by-side stereo, left eye in the left half"),
-      sdk::number("ipd_m", "m", "0.064", "interpupillary distance", sdk::non_negative()),
+      sdk::number("ipd_m", "m", "0.064", "interpupillary distance", sdk::between(0, 0.2)),
       sdk::number("fov_deg", "deg", "90", "per-eye vertical field of view", sdk::above_up_to(0, 179)),
       sdk::integer("width", "px", "1600", "the window or image, both eyes", sdk::between(1, 16384)),
       sdk::integer("height", "px", "800", "the window or image", sdk::between(1, 16384)),
@@ -35,7 +35,7 @@ class OsgStereoPlugin {
       sdk::integer("frames", "", "0", "frames to render before the screenshot and exit; 0: until closed",
                    sdk::between(0, 1e9)),
       sdk::number("max_frame_rate_Hz", "Hz", "60", "the render thread's pace; 0: as fast as it draws",
-                  sdk::non_negative()),
+                  sdk::between(0, 1000)),
       sdk::boolean("grid", "true", "a 1 m floor grid"),
       sdk::text("rig_file", nullptr, "a scene whose rig frames are drawn instead of the running scene's"),
   };

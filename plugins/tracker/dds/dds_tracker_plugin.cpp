@@ -42,13 +42,14 @@ class DdsTrackerPlugin {
   static constexpr std::array kParams = sdk::join(
       dds::kEndpointParams,
       std::array{
-          sdk::number("max_position_m", "m", "20", "samples farther out, per coordinate, are refused", sdk::positive()),
-          sdk::number("max_age_s", "s", "0.1", "older samples are stale and refused", sdk::positive()),
+          sdk::number("max_position_m", "m", "20", "samples farther out, per coordinate, are refused",
+                      sdk::above_up_to(0, 1000)),
+          sdk::number("max_age_s", "s", "0.1", "older samples are stale and refused", sdk::above_up_to(0, 10)),
           sdk::number("max_future_s", "s", "0.01", "clock skew allowed for samples from the future",
-                      sdk::non_negative()),
+                      sdk::between(0, 10)),
           sdk::number("restart_after_s", "s", "0.25", "a silent writer may restart its sequence after this",
-                      sdk::positive()),
-          sdk::number("quaternion_tolerance", "", "0.001", "| |q| - 1 | allowed", sdk::positive()),
+                      sdk::above_up_to(0, 60)),
+          sdk::number("quaternion_tolerance", "", "0.001", "| |q| - 1 | allowed", sdk::above_up_to(0, 1)),
           sdk::boolean("publish_sim_world", "false", "publish the scene's simulated world (mhd_sim_world topic)"),
       });
 
