@@ -10,6 +10,7 @@
 #include "load_progress.h"
 
 #include "command_exit.h"
+#include "output_path_check.h"
 #include "staged_output_file.h"
 
 #include "proxy/moving_world.h"
@@ -111,6 +112,12 @@ int proxy_replay(const ProxyReplayOptions& opt) {
     return 1;
   }
 
+  std::vector<std::filesystem::path> inputs = mhd::cli::scene_inputs(*read);
+  inputs.emplace_back(opt.hip_csv);
+  if (const auto problem = mhd::cli::output_path_problem(opt.out, inputs)) {
+    fmt::print(stderr, "mhd proxy-replay: error: --out {}\n", *problem);
+    return 1;
+  }
   mhd::cli::StagedOutputFile out(opt.out);
   if (!out.ok()) {
     fmt::print(stderr, "mhd proxy-replay: error: {}\n", out.error());

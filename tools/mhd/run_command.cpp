@@ -13,6 +13,7 @@
 #include "load_progress.h"
 
 #include "command_exit.h"
+#include "output_path_check.h"
 #include "run_signals.h"
 #include "haptic_server/haptic_server.h"
 #include "scene_compiler/scene_compiler.h"
@@ -98,6 +99,15 @@ int run(const RunOptions& opt) {
   const mhd::Result<mhd::SceneDescription> read = mhd::read_scene_file(opt.scene);
   for (const auto& d : read.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
   if (!read.ok()) return 1;
+  if (!opt.record.empty()) {
+    // The recording and its .meta beside it.
+    for (const std::string& out : {opt.record, opt.record + ".meta"}) {
+      if (const auto problem = mhd::cli::output_path_problem(out, mhd::cli::scene_inputs(*read))) {
+        fmt::print(stderr, "mhd run: error: --record {}\n", *problem);
+        return 1;
+      }
+    }
+  }
 
   mhd::CompileOptions compile_options;
   compile_options.use_cache = !opt.no_cache;
