@@ -23,6 +23,7 @@
 #include <functional>
 #include <map>
 #include <numbers>
+#include <set>
 #include <string>
 #include <system_error>
 #include <utility>
@@ -233,6 +234,7 @@ class SceneReader {
       ctx.sink.error(root->GetLineNum(), concat("root element must be <scene>, found ", tag(*root)));
       return;
     }
+    read_files_.insert(identity);
     open_files_.push_back({std::move(identity), display});
     read_scene_element(*root, ctx, is_root);
     open_files_.pop_back();
@@ -311,6 +313,9 @@ class SceneReader {
       ctx.sink.error(line, concat("include cycle: ", include_chain(i, display)));
       return;
     }
+    // A file is read once per scene: a second include of it (two parts sharing the
+    // materials, or a diamond of includes) adds nothing, so the cost stays linear.
+    if (read_files_.count(identity) != 0) return;
     // Each level costs stack (a parsed document per file): refuse before recursing.
     if (open_files_.size() > kMaxIncludeDepth) {
       ctx.sink.error(line, concat("includes nested deeper than ", kMaxIncludeDepth, ": ", include_chain(0, display)));
@@ -805,6 +810,7 @@ class SceneReader {
   SceneDescription scene_;
   Diagnostics diagnostics_;
   std::vector<OpenFile> open_files_;  ///< the include chain being read, root first
+  std::set<fs::path> read_files_;     ///< every file read, by identity
   std::vector<MaterialReference> material_references_;
   std::map<std::string, SourceLocation, std::less<>> material_where_;
   std::map<std::string, SourceLocation, std::less<>> object_where_;

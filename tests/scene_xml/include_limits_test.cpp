@@ -54,6 +54,40 @@ TEST(IncludeLimits, FourThousandLevelsStopAtSixtyFourWithTheChain) {
             (Lines{(dir / level(64)).string() + ":2: error: includes nested deeper than 64: " + chain}));
 }
 
+// A diamond: each of 40 files includes the next twice (2^40 paths through it). Each file is
+// read once, so it is read at once, and the material at its bottom is defined once.
+TEST(IncludeLimits, ADiamondOfFortyLevelsIsReadOnceAFile) {
+  TempDir dir;
+  constexpr int kLevels = 40;
+  for (int i = 0; i < kLevels; ++i) {
+    std::string xml = "<scene version=\"1\">\n  <include file=\"" + level(i + 1) + "\"/>\n  <include file=\"" +
+                      level(i + 1) + "\"/>\n</scene>\n";
+    test::write_text(dir / level(i), xml);
+  }
+  test::write_text(dir / level(kLevels),
+                   "<scene version=\"1\">\n  <material name=\"bottom\" stiffness_N_per_m=\"500\"/>\n</scene>\n");
+  const Result<SceneDescription> r = read_scene_file(dir / level(0));
+  ASSERT_TRUE(r.ok()) << ::testing::PrintToString(messages(r));
+  EXPECT_EQ(r->materials.count("bottom"), 1u);
+}
+
+// The dual: a file included once, and one included by two parts, still defines what it
+// defines (once), and a part that is not read twice still counts everything it holds.
+TEST(IncludeLimits, AFileTwoPartsIncludeDefinesItsMaterialOnce) {
+  TempDir dir;
+  test::write_text(dir / "materials.xml",
+                   "<scene version=\"1\">\n  <material name=\"shared\" stiffness_N_per_m=\"500\"/>\n</scene>\n");
+  test::write_text(dir / "a.xml", including("materials.xml"));
+  test::write_text(dir / "b.xml", including("materials.xml"));
+  test::write_text(dir / "root.xml",
+                   "<scene version=\"1\">\n  <include file=\"a.xml\"/>\n  <include file=\"b.xml\"/>\n"
+                   "  <object name=\"ball\" material=\"shared\"><sphere radius=\"0.1\"/></object>\n</scene>\n");
+  const Result<SceneDescription> r = read_scene_file(dir / "root.xml");
+  ASSERT_TRUE(r.ok()) << ::testing::PrintToString(messages(r));
+  EXPECT_EQ(r->materials.count("shared"), 1u);
+  ASSERT_EQ(r->objects.size(), 1u);
+}
+
 TEST(IncludeLimits, SixtyFourLevelsAreAllowed) {
   TempDir dir;
   for (int i = 0; i < 64; ++i) {
