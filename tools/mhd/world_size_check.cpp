@@ -4,18 +4,23 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <string_view>
+#include <unordered_map>
 
 namespace mhd::cli {
 
 WorldSize check_world_size(const SceneDescription& description, const CompiledScene& scene) {
   WorldSize result;
+  // Each object's line by its name, looked up once each: linear in the objects.
+  std::unordered_map<std::string_view, const SourceLocation*> where_of;
+  where_of.reserve(description.objects.size());
+  for (const ObjectDescription& o : description.objects) where_of.emplace(o.name, &o.where);
+  result.objects.reserve(static_cast<std::size_t>(scene.world.object_count()));
   for (int i = 0; i < scene.world.object_count(); ++i) {
     ObjectExtents e;
     e.name = scene.object_names[static_cast<std::size_t>(i)];
     e.size_m = scene.world.shape(i).bounds().sizes();
-    const auto named = std::find_if(description.objects.begin(), description.objects.end(),
-                                    [&](const ObjectDescription& o) { return o.name == e.name; });
-    if (named != description.objects.end()) e.where = named->where;
+    if (const auto named = where_of.find(e.name); named != where_of.end()) e.where = *named->second;
     result.objects.push_back(std::move(e));
   }
   if (result.objects.empty()) return result;
