@@ -6,13 +6,18 @@
 #include <cmath>
 #include <fstream>
 #include <map>
-#include <sstream>
+#include <filesystem>
+#include <system_error>
 #include <string>
 #include <string_view>
 #include <utility>
 
 namespace mhd {
 namespace {
+
+/// A recording's line is a few hundred bytes; anything this long is not one.
+constexpr std::size_t kMaxLineBytes = 64 * 1024;
+constexpr std::size_t kReadBlockBytes = 1 << 20;
 
 std::vector<std::string_view> split(std::string_view line) {
   std::vector<std::string_view> cells;
@@ -52,21 +57,41 @@ Diagnostic at(const std::string& file, int line, std::string message) {
 
 Result<std::vector<RecordingRow>> read_recording(const std::filesystem::path& file) {
   const std::string name = file.string();
+  // Never opened unless a regular file: a FIFO would block, a device never end.
+  std::error_code ec;
+  const std::filesystem::file_status status = std::filesystem::status(file, ec);
+  if (ec || !std::filesystem::exists(status)) return at(name, 0, "cannot read the recording: file not found");
+  if (!std::filesystem::is_regular_file(status)) {
+    return at(name, 0, "cannot read the recording: not a regular file (a device, a FIFO or a folder)");
+  }
   std::ifstream in(file, std::ios::binary);
   if (!in) return at(name, 0, "cannot read the recording");
   std::vector<RecordingRow> rows;
   Diagnostics errors;
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string text = buffer.str();
 
   std::map<std::string, std::size_t, std::less<>> column;
   const std::vector<std::string_view> expected = split(recording_csv_header());
+  // Read a block at a time, each line within kMaxLineBytes: memory stays bounded by the
+  // rows, whatever the file holds.
+  std::string text;
   std::size_t line_start = 0;
   int line_number = 0;
-  while (line_start < text.size()) {
-    const std::size_t newline = text.find('\n', line_start);
-    if (newline == std::string::npos) break;  // a line cut short by a crash: not read
+  std::vector<char> block(kReadBlockBytes);
+  for (;;) {
+    std::size_t newline = text.find('\n', line_start);
+    if (newline == std::string::npos) {
+      if (text.size() - line_start > kMaxLineBytes) {
+        return at(name, line_number + 1,
+                  "a line longer than " + std::to_string(kMaxLineBytes) + " bytes: not a recording");
+      }
+      text.erase(0, line_start);
+      line_start = 0;
+      in.read(block.data(), static_cast<std::streamsize>(block.size()));
+      const auto got = static_cast<std::size_t>(in.gcount());
+      if (got == 0) break;  // the end; a line cut short by a crash is not read
+      text.append(block.data(), got);
+      continue;
+    }
     const std::string_view line(text.data() + line_start, newline - line_start);
     line_start = newline + 1;
     ++line_number;

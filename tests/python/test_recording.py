@@ -1,6 +1,8 @@
 """Recordings as NumPy structured arrays: a field per CSV column with the column's name,
 the very numbers of the file, and bad files as MhdError at file:line."""
 
+import os
+
 import numpy as np
 import pytest
 
@@ -44,3 +46,12 @@ def test_a_bad_number_is_an_mhd_error_at_its_line(tmp_path):
 def test_a_missing_file_is_an_mhd_error(tmp_path):
     with pytest.raises(mhd.MhdError, match=rf"{tmp_path}/none\.csv"):
         mhd.read_recording(tmp_path / "none.csv")
+
+
+def test_a_device_or_a_fifo_is_refused_unread(tmp_path):
+    # /dev/zero would grow without end and a FIFO block for ever: the CLI's bounds.
+    fifo = tmp_path / "pipe.csv"
+    os.mkfifo(fifo)
+    for path in ("/dev/zero", str(fifo)):
+        with pytest.raises(mhd.MhdError, match="not a regular file"):
+            mhd.read_recording(path)
