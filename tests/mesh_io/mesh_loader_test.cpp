@@ -63,6 +63,22 @@ void expect_unit_normals(const TriangleMesh& m) {
   for (const auto& n : m.vertex_normals) EXPECT_NEAR(n.norm(), 1.0, 1e-12);
 }
 
+// A UTF-8 byte order mark before the first vertex (as editors on Windows write it) is
+// skipped: the mesh loads as the same file without it does, first vertex included.
+TEST(MeshLoader, AnObjWithAByteOrderMarkLoadsAsWithoutIt) {
+  TempDir dir;
+  const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+  test::write_text(dir / "plain.obj", obj);
+  test::write_text(dir / "marked.obj", "\xEF\xBB\xBF" + obj);
+  const Result<LoadedMesh, MeshLoadError> plain = load_mesh_file(dir / "plain.obj", Eigen::Vector3d::Ones());
+  const Result<LoadedMesh, MeshLoadError> marked = load_mesh_file(dir / "marked.obj", Eigen::Vector3d::Ones());
+  ASSERT_TRUE(plain.ok()) << plain.error_text();
+  ASSERT_TRUE(marked.ok()) << marked.error_text();
+  EXPECT_EQ(marked->mesh.triangle_count(), 4u);
+  EXPECT_EQ(marked->mesh.vertices_m, plain->mesh.vertices_m);
+  EXPECT_EQ(marked->mesh.triangles, plain->mesh.triangles);
+}
+
 TEST(MeshLoader, ObjQuadsAreTriangulatedIntoAClosedOutwardBox) {
   TempDir dir;
   const Eigen::Vector3d lo(-0.1, -0.2, 0.0), hi(0.3, 0.2, 0.25);
