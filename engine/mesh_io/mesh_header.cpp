@@ -14,6 +14,15 @@ MeshHeaderCheck check_mesh_header(std::string_view head, std::uint64_t file_size
   std::string ext(extension);
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (ext == ".stl") return check_stl_header(head, file_size);
+  // The kind before assimp sees the file: a PLY starts with its magic word, and an OBJ is
+  // text, so a NUL in its first bytes means a binary file under the wrong name (assimp
+  // would read all of it before saying so).
+  if (ext == ".ply") return std::string("not a PLY file: it does not start with 'ply'");
+  if (ext == ".obj") {
+    if (const std::size_t nul = head.find('\0'); nul != std::string_view::npos) {
+      return "not an OBJ file: byte " + std::to_string(nul) + " is a NUL, and an OBJ is text";
+    }
+  }
   return MeshHeaderClaims{};
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // What a mesh file's header claims, checked against the file's size before anything is
 // allocated: a PLY's element counts, a binary STL's triangle count. OBJ and ASCII STL
-// carry no counts (their size bounds what they can hold).
+// carry no counts (their size bounds what they can hold). The file's kind is checked too:
+// a .ply without PLY's magic word and a .obj with a NUL byte are refused here.
 
 #include "diagnostics/result.h"
 

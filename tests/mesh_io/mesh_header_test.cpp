@@ -26,6 +26,16 @@ MeshHeaderCheck check(const std::string& bytes, std::string_view extension) {
   return check_mesh_header(std::string_view(bytes).substr(0, kMeshHeaderBytes), bytes.size(), extension);
 }
 
+// The kind before assimp: zeros named .ply or .obj are refused from their first bytes.
+// The dual: a text OBJ and a real PLY header pass.
+TEST(MeshHeader, ZerosNamedPlyOrObjAreRefusedByKind) {
+  const std::string zeros(1 << 20, '\0');
+  EXPECT_EQ(check(zeros, ".ply").error(), "not a PLY file: it does not start with 'ply'");
+  EXPECT_EQ(check(zeros, ".PLY").error(), "not a PLY file: it does not start with 'ply'");
+  EXPECT_EQ(check(zeros, ".obj").error(), "not an OBJ file: byte 0 is a NUL, and an OBJ is text");
+  EXPECT_TRUE(check("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", ".obj").ok());
+}
+
 TEST(MeshHeader, BinaryPlyCountsMustFitTheFile) {
   const MeshHeaderCheck c = check(kHugeBinaryPly, ".ply");
   EXPECT_EQ(c.error(),
