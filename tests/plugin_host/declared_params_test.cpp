@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <cstdlib>
 #include <set>
 #include <string>
@@ -23,6 +24,23 @@ namespace {
 using namespace mhd;
 
 PluginSearchPath in_tree_plugins() { return PluginSearchPath({{MHD_BUILD_PLUGIN_DIR, PluginFolderSource::Given}}); }
+
+/// Each plugin in the build tree with its loaded table.
+struct InTreePlugin {
+  PluginInfo info;
+  std::shared_ptr<const PluginLibrary> library;
+};
+
+std::vector<InTreePlugin> in_tree_plugin_tables(const PluginSearchPath& search) {
+  std::vector<InTreePlugin> out;
+  for (const PluginListing& listing : search.list()) {
+    EXPECT_TRUE(listing.loaded.ok());
+    auto library = PluginLibrary::load(listing.path);
+    EXPECT_TRUE(library.ok());
+    if (listing.loaded.ok() && library.ok()) out.push_back({listing.loaded.value(), std::move(library).value()});
+  }
+  return out;
+}
 
 /// A value `d` refuses, chosen from its type and range.
 std::string bad_value(const mhd_param_decl& d) {
@@ -108,12 +126,9 @@ TEST(DeclaredParams, EveryNumberHasTwoBoundsAndTheEnvelopeIsJudgedByThemAlikeAtO
   const std::vector<std::string> envelope = {"nan", "inf", "-inf", "0", "-1", "1e308", "-1e308", "4.9e-324", "-4.9e-324"};
   std::size_t walked = 0;
   std::size_t opened = 0;
-  for (const PluginListing& listing : search.list()) {
-    ASSERT_TRUE(listing.loaded.ok());
-    const PluginInfo& info = listing.loaded.value();
-    const auto library = PluginLibrary::load(listing.path);
-    ASSERT_TRUE(library.ok());
-    const mhd_plugin_api& api = library.value()->api();
+  for (const InTreePlugin& plugin : in_tree_plugin_tables(search)) {
+    const PluginInfo& info = plugin.info;
+    const mhd_plugin_api& api = plugin.library->api();
     for (std::size_t i = 0; i < api.param_count; ++i) {
       const mhd_param_decl& d = api.params[i];
       if (d.type != MHD_PARAM_NUMBER && d.type != MHD_PARAM_INTEGER && d.type != MHD_PARAM_VECTOR3) continue;
@@ -154,12 +169,9 @@ TEST(DeclaredParams, EveryNumberHasTwoBoundsAndTheEnvelopeIsJudgedByThemAlikeAtO
 
 TEST(DeclaredParams, EveryDeclaredDefaultGivenExplicitlyPasses) {
   const PluginSearchPath search = in_tree_plugins();
-  for (const PluginListing& listing : search.list()) {
-    ASSERT_TRUE(listing.loaded.ok());
-    const PluginInfo& info = listing.loaded.value();
-    const auto library = PluginLibrary::load(listing.path);
-    ASSERT_TRUE(library.ok());
-    const mhd_plugin_api& api = library.value()->api();
+  for (const InTreePlugin& plugin : in_tree_plugin_tables(search)) {
+    const PluginInfo& info = plugin.info;
+    const mhd_plugin_api& api = plugin.library->api();
     std::map<std::string, std::string> defaults;
     for (std::size_t i = 0; i < api.param_count; ++i) {
       if (api.params[i].default_value != nullptr) defaults[api.params[i].name] = api.params[i].default_value;
