@@ -12,8 +12,9 @@
 //
 // Invariants (a violation traps; an allocation over -malloc_limit_mb is a crash too, so
 // header counts that do not fit the file can never reach assimp):
-//  - a refused header says why ("PLY header..." or "binary STL..."), claims nothing, and
-//    the loader refuses the file with that same reason;
+//  - a refused header says why ("PLY header...", "binary STL...", or the wrong kind: "not a
+//    PLY file" for a .ply without the magic word, "not an OBJ file" for a .obj with a NUL
+//    in its head), claims nothing, and the loader refuses the file with that same reason;
 //  - an accepted binary STL is exactly 84 + 50 * its count bytes; an accepted PLY claims
 //    no more faces than it has bytes;
 //  - the loader returns a mesh or an error, never both; an error names the file and says
@@ -91,8 +92,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const mhd::MeshHeaderCheck header =
       mhd::check_mesh_header(bytes.substr(0, mhd::kMeshHeaderBytes), bytes.size(), file.extension().string());
   if (!header.ok()) {
-    if (!header.error().starts_with("PLY header") && !header.error().starts_with("binary STL")) {
+    if (!header.error().starts_with("PLY header") && !header.error().starts_with("binary STL") &&
+        !header.error().starts_with("not a PLY file") && !header.error().starts_with("not an OBJ file")) {
       violated("a header refusal without its format: " + header.error());
+    }
+    // A kind refusal only where the kind is wrong: a .ply without the magic word, a .obj
+    // with a NUL in the bytes the check reads.
+    if (header.error().starts_with("not a PLY file") && (file.extension() != ".ply" || mhd::has_ply_magic(bytes))) {
+      violated("a PLY kind refusal of " + file.filename().string() + " with the magic word or another name");
+    }
+    if (header.error().starts_with("not an OBJ file") &&
+        (file.extension() != ".obj" || bytes.substr(0, mhd::kMeshHeaderBytes).find('\0') == std::string_view::npos)) {
+      violated("an OBJ kind refusal of " + file.filename().string() + " without a NUL in its head");
     }
   } else if (header->claimed_faces) {
     // The PLY magic wins over the name, as in assimp.
