@@ -11,7 +11,7 @@ namespace mhd {
 // Eigen 3.4's PartialPivLU<Matrix3d>(N).solve(d) written out: the same pivots, the same
 // operations in the same order, so the same bits (ProjectOntoHalfSpaces.
 // ThreePlanesSolveBitForBitAsPartialPivLU), without its out-of-line factorization, its L1
-// norm and its permutation matrix (about a third of the projection's cost, issue 13).
+// norm and its permutation matrix (about a third of the projection's cost).
 Eigen::Vector3d solve_three_planes_like_lu(Eigen::Matrix3d lu, Eigen::Vector3d x) {
   for (int k = 0; k < 2; ++k) {
     // Pivot: the largest magnitude in column k from row k down, the first of equals.

@@ -58,7 +58,7 @@ struct ObjectDescription {
   SourceLocation where;
 };
 
-/// A rig frame: the pose of `name` in its `parent` frame (issue: plugins and rig).
+/// A rig frame: the pose of `name` in its `parent` frame.
 struct FrameDescription {
   std::string name;
   std::string parent;

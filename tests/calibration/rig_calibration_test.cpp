@@ -83,7 +83,7 @@ TEST(RigCalibration, LargePsiConvergesFromZero) {
   EXPECT_LT(outcome->residuals_after.rmse_3d_m, 1e-9);
 }
 
-// The acceptance test: thesis-like samples (bases within +-1 m, random heading and
+// The acceptance test: thesis-like samples (bases within +-1 m, random heading and
 // joint angles) with 2 mm tracker noise on both the station and the HIP marker. psi is seen
 // only through the arm's reach (~0.1 m levers), so 100 samples leave it a standard deviation
 // of about 0.1 deg (next test); 1000 samples bring that to about 0.03 deg.

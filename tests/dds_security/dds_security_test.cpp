@@ -3,7 +3,7 @@
 // haptic side is the `dds` tracker plugin through dlopen, as haptic-rig1; `mhd
 // tracker-server` publishes as tracker-rig1; intruders are dds_security_rig_writer
 // processes writing rig 1's base sensor at a marker position with higher sequence
-// numbers (the attack of issue 14). Each test takes a domain of its own.
+// numbers (a rig takeover). Each test takes a domain of its own.
 
 #include "../sim_backends/plugin_file.h"
 #include "dds_common/participant_security.h"

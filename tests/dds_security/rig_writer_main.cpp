@@ -6,7 +6,7 @@
 //
 // Writes sensor 0 of rig R in R's partition at 200 Hz for T seconds, every sample at
 // p_T = (X, 1, 0) with sequence numbers from 1e9 up (higher than any real tracker's:
-// the attack of issue 14). "none": no identity (unsecured). Prints one line,
+// a rig takeover). "none": no identity (unsecured). Prints one line,
 //   refused: WHAT                       exit 3: the identity may not write (DDS Security)
 //   wrote N samples, matched readers: M exit 0: M the most readers matched at once
 

@@ -1,4 +1,4 @@
-// The haptic server over DDS with real processes on loopback (issue 5's acceptance
+// The haptic server over DDS with real processes on loopback (end-to-end
 // tests): a tracker server process (tests/dds's dds_test_tracker_server playing a replay)
 // feeds an in-process HapticServer whose tracker is the `dds` plugin, whose device is
 // fault_device (joint angles held still) and whose display is `dds_state`; this process

@@ -1,4 +1,4 @@
-// ROS 2 interop without ROS (issue 16, item 6): the haptic server of dds_server_test's
+// ROS 2 interop without ROS: the haptic server of dds_server_test's
 // pipeline (a tracker server process replaying the base's approach into a wall, the
 // server in this process) with the `ros2_state` display, and a plain Cyclone subscriber
 // on its own participant that knows only ROS 2's topic and type names

@@ -1,5 +1,5 @@
-// The README's "three processes on loopback" example, secured as written (issue 16, item
-// 5): `mhd tracker-server scenes/network/tracker_rig1.xml --shared-world` as tracker-rig1
+// The README's "three processes on loopback" example, secured as written:
+// `mhd tracker-server scenes/network/tracker_rig1.xml --shared-world` as tracker-rig1
 // (a process) and scenes/network/haptic_rig1.xml's haptic server as haptic-rig1 (in this
 // process, the scene as shipped but for the test's domain and identity folder). The
 // haptic server's simulated user walks up to the dolphin, its planner drives the base,

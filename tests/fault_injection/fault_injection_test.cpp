@@ -1,9 +1,9 @@
-// Fault injection (issue 8, part 3): each fault, injected through the real dlopen path
+// Fault injection: each fault, injected through the real dlopen path
 // into mhd::HapticServer (or into `mhd run`, killed with SIGKILL), must end in the safe
 // state: zero torque last written to the device, the base commanded to stop, and a
 // message naming the plugin and its scene line. The safe state is checked from the
 // hardware's side: fi_device and fi_base log every command they get, with its time.
-// The timing bounds are the issue's and docs/haptic_server.md's (force 0 at 50 ms of
+// The timing bounds are those of docs/haptic_server.md (force 0 at 50 ms of
 // tracker silence, base stopped within 100 ms, a killed run's recording <= 100 ms old),
 // measured on the host clock the server stamps its commands and rows with; each test
 // prints its figures ("figure: ...") for docs/reliability/fault_injection.md.

@@ -1,4 +1,4 @@
-// Keep-out on fresh data only, seen from the hardware's side (issue 14, item 1): `mhd run`
+// Keep-out on fresh data only, seen from the hardware's side: `mhd run`
 // on tests/data/fault_injection/head_dropout.xml, where sim_is900 stops measuring the head
 // 3 s after its start for 1.5 s. In sim_omni3's command log every base command is zero
 // from 100 ms after the head data went stale (the tracker timeout after the dropout start)

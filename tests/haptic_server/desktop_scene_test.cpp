@@ -1,5 +1,5 @@
-// The desktop scenes through the server with their real plugins (issue 15, item 3;
-// docs/desktop.md): a device and nothing else. The seated simulated user strokes the
+// The desktop scenes through the server with their real plugins
+// (docs/desktop.md): a device and nothing else. The seated simulated user strokes the
 // bunny: forces are rendered in contact and stay below the device's limit, free space gets
 // zero force, and the recorded proxy never crosses the surface (the exact oracle of
 // tools/verification on every leg of every tick, as the proxy tests use it). No tracker, base or planner runs.

@@ -1,4 +1,4 @@
-// No mutex, allocation or I/O on the haptic thread (issue 14, item 7), in the whole
+// No mutex, allocation or I/O on the haptic thread, in the whole
 // server on simulated hardware: sim_phantom, sim_is900 and sim_omni3 logging their
 // commands, the predictive planner following a simulated user, a recording and a display.
 //

@@ -1,4 +1,4 @@
-// The dolphin demo with the impedance hand (issue 17, item 3): the scene as shipped,
+// The dolphin demo with the impedance hand: the scene as shipped,
 // with the walk-in shortened (the user starts 0.3 m before the dolphin, the base where the
 // 20 s demo leaves it) so that a few seconds hold a stroke. The rendered force pushes the
 // hand back: forces stay well below the 8.5 N clamp and penetrations are millimetres,

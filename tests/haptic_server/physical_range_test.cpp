@@ -1,4 +1,4 @@
-// The physical-range checks (issue 14, item 5) on both sides of each bound: a reading
+// The physical-range checks on both sides of each bound: a reading
 // just inside the device's workspace plus the margin, or the tracking range, passes; just
 // outside, or not finite, fails.
 #include "haptic_server/physical_range.h"

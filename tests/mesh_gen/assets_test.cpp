@@ -67,7 +67,7 @@ TEST(MeshGenAssets, GeneratedMeshesOnceBuilt) {
   EXPECT_EQ(edges.manifold_oriented, edges.edges);
 }
 
-// The open range scans of issue 13: over 200k triangles, open, in several pieces, and
+// The open range scans: over 200k triangles, open, in several pieces, and
 // the size of what was scanned.
 TEST(MeshGenAssets, GeneratedRangeScansOnceBuilt) {
   struct Scan {

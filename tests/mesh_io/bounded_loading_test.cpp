@@ -1,4 +1,4 @@
-// Loading within bounds (issue 14, item 6), through load_mesh_file and real files: each
+// Loading within bounds, through load_mesh_file and real files: each
 // hostile input is refused at once with its exact message, and good meshes still load.
 #include "mesh_io/available_memory.h"
 #include "mesh_io/mesh_loader.h"

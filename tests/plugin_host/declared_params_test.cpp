@@ -1,4 +1,4 @@
-// `mhd validate` refuses every plugin-parameter error that `mhd run` would (issue 15): for
+// `mhd validate` refuses every plugin-parameter error that `mhd run` would: for
 // each in-tree plugin, each declared parameter gets one value its declaration refuses,
 // and the host's check (check_scene_plugin, what validate and run both call before
 // open) must refuse it naming that parameter. The dual: every declared default, given

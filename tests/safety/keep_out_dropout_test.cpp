@@ -1,4 +1,4 @@
-// Keep-out on fresh data only (issue 14, item 1): the predictive planner and the
+// Keep-out on fresh data only: the predictive planner and the
 // BaseCommandGuard, stepped as the server's io thread steps them (guard every 1 ms, plan
 // every 0.1 s), on random users (mhd::simulation::SimulatedUser) whose head and base
 // tracker samples (120 Hz each) drop out for random windows of 5 ms to 2 s.

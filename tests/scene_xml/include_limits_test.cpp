@@ -1,4 +1,4 @@
-// Includes within bounds (issue 14, item 6): nesting deeper than 64 is refused with the
+// Includes within bounds: nesting deeper than 64 is refused with the
 // chain (4,000 levels give that error, not a stack overflow), a symlink loop is named as
 // one, and a FIFO is refused without being opened.
 #include "scene_xml/scene_reader.h"

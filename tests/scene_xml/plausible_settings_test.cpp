@@ -1,4 +1,4 @@
-// Absurd settings are refused at their file:line (issue 14, item 5), each from its own
+// Absurd settings are refused at their file:line, each from its own
 // small file under tests/data/scenes/malformed/; every scene the repository ships passes.
 
 #include "scene/plausible_bounds.h"

@@ -1,5 +1,5 @@
 // <rig kind="...">: what a desktop rig refuses, each at its file:line, and what both kinds
-// accept (issue 15, item 3; docs/desktop.md).
+// accept (docs/desktop.md).
 #include "scene/rig_kind_check.h"
 #include "scene_xml/scene_reader.h"
 

@@ -1,5 +1,5 @@
 #pragma once
-// The stress with a moving target (issue 17): each stroke chain gives one object of a
+// The stress with a moving target: each stroke chain gives one object of a
 // compiled scene a random motion (stress_motion.h) and throws the usual stress strokes
 // (stress_strokes.h: chains, tours, free-space joins) at it while it moves. Each stroke is
 // drawn for the object at its starting pose and carried by the object's motion (the

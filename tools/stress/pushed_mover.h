@@ -1,5 +1,5 @@
 #pragma once
-// The pushed-body mover of the moving-object stress (issue 17 item 2): the stressed object
+// The pushed-body mover of the moving-object stress: the stressed object
 // is a rigid body (RigidBodyWorld, through MovingWorld exactly as the haptic tick drives
 // it), thrown at each proxy reset with a random twist and pushed every tick by the
 // reaction to the force the proxy gave the hand on the tick before

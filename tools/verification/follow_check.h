@@ -1,5 +1,5 @@
 #pragma once
-// The other half of the god-object contract (issue 13, docs/reliability/pop_through.md):
+// The other half of the god-object contract (docs/reliability/pop_through.md):
 // where nothing is in the way, the proxy goes to the hand. A tick is a *follow failure*
 // when, judged by the exact oracle alone (segment_touches_surface):
 //   F1 (Stuck): the straight segment from the previous tick's proxy to this tick's HIP

@@ -92,7 +92,7 @@ struct FollowFailure {
 struct FollowCheck {
   std::vector<FollowFailure> failures;
   /// The largest |proxy - HIP| on a tick whose segment proxy -> HIP was free, and the
-  /// force on that tick (issue 13: no such gap over 10 mm).
+  /// force on that tick (the follow contract: no such gap over 10 mm).
   double max_free_gap_m = 0.0;
   double force_at_max_free_gap_N = 0.0;
 };

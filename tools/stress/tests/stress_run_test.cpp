@@ -3,8 +3,8 @@
 // replays the failure; a proxy frozen while the HIP moves away in free space is counted
 // as follow failures, one on the HIP never. Plus the stroke generator's promises (free
 // starts, speed, determinism, tours: continuous, free transits, deep pushes) and feature
-// finding. Follow failures of the real proxy are not asserted here: the proxy is being
-// fixed for them (issue 13); the stress tool reports them.
+// finding. Follow failures of the real proxy are not asserted here: the stress tool
+// reports them.
 
 #include "stress/stress_run.h"
 
