@@ -4,6 +4,7 @@
 #include "haptic_server/server_settings.h"
 #include "kinematics/rig.h"
 #include "plugin_host/plugin_kind.h"
+#include "plugin_host/scene_plugin_check.h"
 #include "scene/rig_kind_check.h"
 #include "simulation/simulated_user_params.h"
 
@@ -18,6 +19,18 @@ Diagnostics check_scene_settings(const SceneDescription& scene) {
   if (scene.simulated_user) {
     auto u = simulation::simulated_user_config_from(*scene.simulated_user);
     if (!u.ok()) errors.insert(errors.end(), u.error().begin(), u.error().end());
+  }
+  return errors;
+}
+
+Diagnostics check_scene_for_validate(const SceneDescription& scene, const PluginSearchPath& search) {
+  Diagnostics errors = check_scene_settings(scene);
+  // Settings first, alone: a scene whose settings are wrong is not worth loading plugins for.
+  if (!errors.empty()) return errors;
+  for (const PluginDescription& plugin : scene.plugins) {
+    if (const Status<PluginError> s = check_scene_plugin(search, plugin); !s) {
+      errors.push_back({plugin.where, s.error().to_string()});
+    }
   }
   return errors;
 }

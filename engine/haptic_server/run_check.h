@@ -5,12 +5,19 @@
 // disagree on a scene.
 
 #include "diagnostics/diagnostic.h"
+#include "plugin_host/plugin_search_path.h"
 #include "scene/scene_description.h"
 
 namespace mhd {
 
 /// The settings every scene is judged by, run or not: <server> and <simulated_user>.
 [[nodiscard]] Diagnostics check_scene_settings(const SceneDescription& scene);
+
+/// What `mhd validate` and Python's `mhd.validate` judge before any mesh loads: the
+/// settings (check_scene_settings); when they pass, each <plugin> found in `search`, of
+/// its kind, and given only parameters its declarations allow, each problem at the
+/// <plugin>'s line. Nothing is opened, so no hardware moves.
+[[nodiscard]] Diagnostics check_scene_for_validate(const SceneDescription& scene, const PluginSearchPath& search);
 
 /// Every problem, each at its file:line; empty when the scene can be run. With
 /// `custom_planner`, the caller plans the base itself and the scene's planner is not built.

@@ -8,6 +8,7 @@
 #include "plan_sim.h"
 #include "planner/planner_settings.h"
 
+#include <fmt/core.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
@@ -63,6 +64,11 @@ py::dict simulate_cases(const py::array_t<double, py::array::c_style | py::array
   py::array_t<double> time_s(n);
   py::array_t<bool> base_entered(n);
   const double* user = next_user_W_m.data();
+  for (py::ssize_t k = 0; k < n; ++k) {
+    if (!(std::isfinite(user[2 * k]) && std::isfinite(user[2 * k + 1]))) {
+      throw py::value_error(fmt::format("next_user_W_m[{}] = ({}, {}) is not finite", k, user[2 * k], user[2 * k + 1]));
+    }
+  }
   bool* f = followed.mutable_data();
   double* t = time_s.mutable_data();
   bool* e = base_entered.mutable_data();

@@ -28,7 +28,9 @@ using InputArray = py::array_t<double, py::array::c_style | py::array::forcecast
 /// A point given as 3 numbers (a list, a tuple or a (3,) array).
 Eigen::Vector3d point3(const InputArray& p, const char* name) {
   if (p.ndim() != 1 || p.shape(0) != 3) throw py::value_error(std::string(name) + " must have shape (3,)");
-  return Eigen::Vector3d(p.data()[0], p.data()[1], p.data()[2]);
+  const Eigen::Vector3d v(p.data()[0], p.data()[1], p.data()[2]);
+  if (!v.allFinite()) throw py::value_error(fmt::format("{} = ({}, {}, {}) is not finite", name, v.x(), v.y(), v.z()));
+  return v;
 }
 
 /// What N steps did, one row per step.
@@ -67,6 +69,15 @@ class Proxy {
       throw py::value_error("dt_s must be a number or have shape (N,) like p_W_hip_m's rows");
     }
     const double* hip = p_W_hip_m.data();
+    // A NaN or infinite HIP would be stepped as a position: refuse the whole array, naming
+    // the first such row, before any step changes the proxy.
+    for (py::ssize_t k = 0; k < n; ++k) {
+      const double* row = hip + 3 * k;
+      if (!(std::isfinite(row[0]) && std::isfinite(row[1]) && std::isfinite(row[2]))) {
+        throw py::value_error(
+            fmt::format("p_W_hip_m[{}] = ({}, {}, {}) is not finite", k, row[0], row[1], row[2]));
+      }
+    }
     const double* dt = dt_s.data();
     for (py::ssize_t k = 0; k < (dt_per_row ? n : 1); ++k) {
       if (!(std::isfinite(dt[k]) && dt[k] > 0.0)) {

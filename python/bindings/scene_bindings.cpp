@@ -1,11 +1,13 @@
-// Scenes from Python: read (XML file or text), validate (every problem as a list, as
-// `mhd validate` prints them) and compile (meshes, BVHs, the on-disk cache). Reading and
+// Scenes from Python: read (XML file or text), validate (every problem as a list, by the
+// functions `mhd validate` calls, so the two agree) and compile (meshes, BVHs, the on-disk cache). Reading and
 // compiling run without the GIL: a large mesh takes seconds.
 
 #include "bindings.h"
 #include "engine_error.h"
 #include "scene_handles.h"
 
+#include "haptic_server/run_check.h"
+#include "plugin_host/plugin_search_path.h"
 #include "scene_compiler/scene_compiler.h"
 #include "scene_xml/scene_reader.h"
 
@@ -118,14 +120,19 @@ void bind_scene(py::module_& m) {
       "Reads scene XML text; relative paths resolve against file's folder and messages name file.");
   m.def(
       "validate",
-      [](const std::filesystem::path& file, bool meshes, bool use_cache) {
+      [](const std::filesystem::path& file, bool meshes, bool use_cache,
+         const std::vector<std::filesystem::path>& plugin_path) {
         py::gil_scoped_release unlocked;
         Result<SceneDescription> read = read_scene_file(file);
-        if (!read.ok() || !meshes) return read.diagnostics();
+        if (!read.ok()) return read.diagnostics();
+        Diagnostics problems = check_scene_for_validate(*read, PluginSearchPath::standard(plugin_path));
+        if (!problems.empty() || !meshes) return problems;
         return compile(*read, compile_options(use_cache, std::nullopt)).diagnostics();
       },
       py::arg("file"), py::arg("meshes") = true, py::arg("use_cache") = true,
-      "Every problem of a scene file, as `mhd validate` finds them: read, then (meshes=True) compile. "
+      py::arg("plugin_path") = std::vector<std::filesystem::path>{},
+      "Every problem of a scene file, exactly as `mhd validate` finds them: read, the settings and "
+      "plugins (plugin_path: folders searched first, as --plugin-path), then (meshes=True) compile. "
       "An empty list: the scene is good.");
   m.def(
       "compile_scene",

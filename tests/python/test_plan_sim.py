@@ -59,3 +59,5 @@ def test_bad_settings_are_value_errors_with_the_planners_message():
         mhd.plan_sim_map("thesis")
     with pytest.raises(ValueError, match=r"shape \(N, 2\)"):
         mhd.plan_sim_cases([0.0, 0.0])
+    with pytest.raises(ValueError, match=r"next_user_W_m\[1\] = \(0\.5, nan\) is not finite"):
+        mhd.plan_sim_cases([[0.0, 0.0], [0.5, float("nan")]])

@@ -2,6 +2,7 @@
 writes for the same path, the proxy never through the wall, state kept between calls,
 and the GIL free while it steps."""
 
+import re
 import threading
 
 import numpy as np
@@ -77,12 +78,22 @@ def test_bad_input_is_a_value_error(cube_wall):
         mhd.replay_proxy(cube_wall, [0.0, 0.001, 0.001], hip[:3])
 
 
-def test_a_non_finite_hip_leaves_the_proxy_with_zero_force(cube_wall):
-    t_s, hip = push_path(3)
-    hip[1] = np.nan
-    trace = mhd.Proxy(cube_wall, hip[0]).step(hip)
-    np.testing.assert_array_equal(trace.force_W_N[1], 0.0)
-    np.testing.assert_array_equal(trace.proxy_W_m[1], hip[0])
+def test_a_non_finite_hip_is_refused_naming_its_row_and_nothing_is_stepped(cube_wall):
+    t_s, hip = push_path(40)
+    proxy = mhd.Proxy(cube_wall, hip[0])
+    before = proxy.proxy_W_m.copy()
+    for bad in (np.nan, np.inf, -np.inf):
+        broken = hip.copy()
+        broken[7, 1] = bad
+        with pytest.raises(ValueError, match=rf"p_W_hip_m\[7\] = \([^,]+, {re.escape(repr(bad))}, [^,]+\) is not finite"):
+            proxy.step(broken)
+        with pytest.raises(ValueError, match=r"p_W_hip_m\[7\] = "):
+            mhd.replay_proxy(cube_wall, t_s, broken)
+        np.testing.assert_array_equal(proxy.proxy_W_m, before)  # no row was stepped
+    with pytest.raises(ValueError, match=r"p_W_hip_m = \(nan, 1, 0\) is not finite"):
+        mhd.Proxy(cube_wall, [np.nan, 1.0, 0.0])
+    # The dual: the same path without the bad value steps as a fresh proxy does.
+    np.testing.assert_array_equal(proxy.step(hip).force_W_N, mhd.Proxy(cube_wall, hip[0]).step(hip).force_W_N)
 
 
 def test_stepping_releases_the_gil(cube_wall):

@@ -2,6 +2,7 @@
 that `mhd validate` prints, arrive as MhdError / Diagnostic with file:line."""
 
 import os
+import re
 
 import pytest
 
@@ -38,6 +39,29 @@ def test_validate_lists_every_problem_without_raising():
     assert [str(d) for d in problems] == run_cli("validate", path).stderr.strip().splitlines()
     assert problems and all(d.line > 0 for d in problems)
     assert mhd.validate(repo_path("scenes", "cube_wall.xml")) == []
+
+
+@pytest.mark.parametrize("path", ["tests/data/scenes/plugin_errors/typos.xml",
+                                  "tests/data/scenes/absurd_settings/server.xml"])
+def test_validate_judges_settings_and_plugins_as_the_cli_does(path):
+    cli = run_cli("validate", "--no-meshes", path)
+    assert cli.returncode == 1
+    problems = mhd.validate(path, meshes=False)
+    # The folders a missing plugin was looked for in differ by program: mhd's own folder
+    # (its installed plugins) is not python's.
+    def same(line):
+        return re.sub(r"\(looked for (\S+) in [^)]*\)", r"(looked for \1 in ...)", line)
+    assert [same(str(d)) for d in problems] == [same(line) for line in cli.stderr.strip().splitlines()]
+    assert problems and all(d.line > 0 for d in problems)
+
+
+def test_validate_finds_plugins_where_the_cli_does():
+    # The dual: a scene whose plugins are all found and take their parameters is good to
+    # both, with or without meshes.
+    path = repo_path("scenes", "dolphin.xml")
+    assert run_cli("validate", "--no-meshes", path).returncode == 0
+    assert mhd.validate(path, meshes=False) == []
+    assert mhd.validate(path, meshes=False, plugin_path=["/nonexistent"]) == []
 
 
 def test_compile_problems_are_mhd_errors_naming_the_file():

@@ -4,10 +4,10 @@
 
 #include "command_exit.h"
 #include "haptic_server/run_check.h"
-#include "plugin_host/scene_plugin_check.h"
 #include "plugin_host/plugin_search_path.h"
 #include "scene_compiler/scene_compiler.h"
 #include "scene_xml/scene_reader.h"
+#include "rig_scale_check.h"
 #include "world_size_check.h"
 
 #include <fmt/core.h>
@@ -17,6 +17,7 @@
 #include <exception>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -30,23 +31,14 @@ struct ValidateOptions {
   bool no_cache = false;
 };
 
-/// Each <plugin>: found, loads, of its kind, parameters as its declarations allow (what
-/// `run` refuses before it opens anything). Errors at the <plugin>'s line.
-bool check_plugins(const mhd::SceneDescription& scene, const ValidateOptions& options) {
-  const std::vector<std::filesystem::path> command_line(options.plugin_paths.begin(), options.plugin_paths.end());
-  const mhd::PluginSearchPath search = mhd::PluginSearchPath::standard(command_line);
-  bool good = true;
-  for (const mhd::PluginDescription& plugin : scene.plugins) {
-    if (const mhd::Status<mhd::PluginError> s = mhd::check_scene_plugin(search, plugin); !s) {
-      fmt::print(stderr, "{}\n", mhd::Diagnostic{plugin.where, s.error().to_string()}.to_string());
-      good = false;
-    }
-  }
-  return good;
-}
-
 void print_diagnostics(const mhd::Diagnostics& diagnostics) {
   for (const mhd::Diagnostic& d : diagnostics) fmt::print(stderr, "{}\n", d.to_string());
+}
+
+/// Diagnostic::to_string says "error"; a warning leaves the scene good.
+void print_warning(const mhd::Diagnostic& w) {
+  fmt::print(stderr, "{}{}: warning: {}\n", w.where.file, w.where.line > 0 ? fmt::format(":{}", w.where.line) : "",
+             w.message);
 }
 
 /// Loads meshes and builds the collision scene; prints the ok line or the problems.
@@ -65,12 +57,7 @@ bool compile_and_report(const std::string& file, const mhd::SceneDescription& sc
     fmt::print("  {}: {:.4g} x {:.4g} x {:.4g} m (x, y, z in its own frame)\n", o.name, o.size_m.x(), o.size_m.y(),
                o.size_m.z());
   }
-  if (size.warning) {
-    // Diagnostic::to_string says "error"; this one only warns.
-    const mhd::Diagnostic& w = *size.warning;
-    fmt::print(stderr, "{}{}: warning: {}\n", w.where.file, w.where.line > 0 ? fmt::format(":{}", w.where.line) : "",
-               w.message);
-  }
+  if (size.warning) print_warning(*size.warning);
   return true;
 }
 
@@ -79,15 +66,17 @@ bool validate_file(const std::string& file, const ValidateOptions& options) {
   const mhd::Result<mhd::SceneDescription> read = mhd::read_scene_file(file);
   print_diagnostics(read.diagnostics());
   if (!read.ok()) return false;
-  // The settings (<server>, <simulated_user>) by run's own function. What a file may leave
-  // to the scene that includes it (the rig's frames, the plugins a run needs) is run's to
-  // refuse.
-  const mhd::Diagnostics problems = mhd::check_scene_settings(*read);
+  // The settings (<server>, <simulated_user>) by run's own function, then the plugins, by
+  // the function Python's mhd.validate calls too. What a file may leave to the scene that
+  // includes it (the rig's frames, the plugins a run needs) is run's to refuse.
+  const std::vector<std::filesystem::path> command_line(options.plugin_paths.begin(), options.plugin_paths.end());
+  const mhd::Diagnostics problems =
+      mhd::check_scene_for_validate(*read, mhd::PluginSearchPath::standard(command_line));
   if (!problems.empty()) {
     print_diagnostics(problems);
     return false;
   }
-  if (!check_plugins(*read, options)) return false;
+  if (const std::optional<mhd::Diagnostic> w = mhd::cli::check_rig_scale(*read)) print_warning(*w);
   if (options.no_meshes) {
     fmt::print("{}: ok ({} objects, meshes not loaded)\n", file, read->objects.size());
     return true;
