@@ -2,7 +2,7 @@
 // One plugin file, loaded and checked: dlopen (RTLD_NOW | RTLD_LOCAL), then
 // mhd_plugin_entry(MHD_PLUGIN_ABI_VERSION), then the table is checked in this order:
 // abi_version, struct_size, kind, name (non-empty; equal to N for a file libmhd_N.so),
-// lifecycle pointers and the kind's mandatory calls (device: device_limits,
+// lifecycle pointers and the kind's mandatory calls (device: device_info,
 // device_read, device_write; tracker: tracker_read; base: base_read, base_write;
 // display: display_write). Any failure unloads the file and returns the reason.
 // The library stays loaded while a PluginLibrary exists; instances share it.
