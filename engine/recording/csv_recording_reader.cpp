@@ -97,7 +97,15 @@ Result<std::vector<RecordingRow>> read_recording(const std::filesystem::path& fi
     ++line_number;
     const std::vector<std::string_view> cells = split(line);
     if (line_number == 1) {
-      for (std::size_t i = 0; i < cells.size(); ++i) column.emplace(std::string(cells[i]), i);
+      for (std::size_t i = 0; i < cells.size(); ++i) {
+        // A name given twice would leave fewer names than fields, and a row is checked
+        // against the names: refuse it here.
+        if (const auto [it, added] = column.emplace(std::string(cells[i]), i); !added) {
+          errors.push_back(at(name, 1, "column '" + std::string(cells[i]) + "' named twice (fields " +
+                                           std::to_string(it->second + 1) + " and " + std::to_string(i + 1) + ")"));
+          return errors;
+        }
+      }
       for (const std::string_view name_expected : expected) {
         if (column.find(name_expected) == column.end()) {
           errors.push_back(at(name, 1, "missing column '" + std::string(name_expected) + "'"));

@@ -124,6 +124,25 @@ TEST(RecordingReader, RefusesAMissingColumnAndABadNumberAtTheirLines) {
       << b.diagnostics().front().to_string();
 }
 
+TEST(RecordingReader, RefusesAHeaderNamingAColumnTwice) {
+  // A good recording whose header names t_s twice, in place of the first column's name
+  // being dropped: each data row then has the header's count of fields, and a column
+  // looked up by name must never index past them.
+  std::ifstream in(std::string(MHD_SOURCE_DIR) + "/tests/data/server/recording_head.csv");
+  std::string header, rest, line;
+  std::getline(in, header);
+  while (std::getline(in, line)) rest += line + "\n";
+  const fs::path twice = temp_file("twice.csv");
+  std::ofstream(twice) << "t_s," << header << "\n" << rest;
+  const auto r = read_recording(twice);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.diagnostics().front().to_string(), twice.string() + ":1: error: column 't_s' named twice (fields 1 and 2)");
+  // The dual: the header as written reads.
+  const fs::path once = temp_file("once.csv");
+  std::ofstream(once) << header << "\n" << rest;
+  EXPECT_TRUE(read_recording(once).ok());
+}
+
 TEST(RecordingReader, ALineCutShortByACrashIsLeftOutAndTheRestIsRead) {
   std::ifstream in(std::string(MHD_SOURCE_DIR) + "/tests/data/server/recording_head.csv");
   std::stringstream buffer;
