@@ -5,6 +5,7 @@ namespace mhd {
 std::string_view to_string(PluginErrorKind kind) {
   switch (kind) {
     case PluginErrorKind::NotFound: return "not-found";
+    case PluginErrorKind::Untrusted: return "untrusted";
     case PluginErrorKind::NotALibrary: return "not-a-library";
     case PluginErrorKind::NoEntryPoint: return "no-entry-point";
     case PluginErrorKind::EntryReturnedNull: return "entry-returned-null";

@@ -11,6 +11,7 @@ namespace mhd {
 
 enum class PluginErrorKind {
   NotFound,            ///< no file of that name in any plugin folder (or an invalid name)
+  Untrusted,           ///< the file or its folder is writable by other users (plugin_file_trust.h)
   NotALibrary,         ///< dlopen failed (not ELF, wrong architecture, missing dependency)
   NoEntryPoint,        ///< the library exports no mhd_plugin_entry
   EntryReturnedNull,   ///< the plugin refused this host's ABI version

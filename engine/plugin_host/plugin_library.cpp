@@ -1,5 +1,6 @@
 #include "plugin_host/plugin_library.h"
 
+#include "plugin_host/plugin_file_trust.h"
 #include "plugin_host/plugin_kind.h"
 #include "plugin_host/plugin_name.h"
 
@@ -89,6 +90,9 @@ Result<std::shared_ptr<const PluginLibrary>, PluginError> PluginLibrary::load(co
   std::error_code ec;
   if (!fs::exists(path, ec)) return fail(PluginErrorKind::NotFound, "no such file");
   const fs::path absolute = fs::absolute(path, ec);
+  if (std::optional<std::string> untrusted = untrusted_plugin_file_reason(absolute)) {
+    return fail(PluginErrorKind::Untrusted, std::move(*untrusted));
+  }
 
   dlerror();
   DlHandle handle(dlopen(absolute.c_str(), RTLD_NOW | RTLD_LOCAL));

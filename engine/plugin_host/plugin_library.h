@@ -1,5 +1,6 @@
 #pragma once
-// One plugin file, loaded and checked: dlopen (RTLD_NOW | RTLD_LOCAL), then
+// One plugin file, loaded and checked: refused when other users may write it or its
+// folder (plugin_file_trust.h), else dlopen (RTLD_NOW | RTLD_LOCAL), then
 // mhd_plugin_entry(MHD_PLUGIN_ABI_VERSION), then the table is checked in this order:
 // abi_version, struct_size, kind, name (non-empty; equal to N for a file libmhd_N.so),
 // lifecycle pointers and the kind's mandatory calls (device: device_info,

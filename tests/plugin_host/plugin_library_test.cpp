@@ -8,6 +8,10 @@
 #include <gtest/gtest.h>
 
 #include <dlfcn.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
 
 #include <string>
 
@@ -193,6 +197,77 @@ TEST(PluginError, MessageWithAndWithoutPath) {
   e.path.clear();
   EXPECT_EQ(e.to_string(), "plugin 'sim_phantom': ABI version 2, this host speaks 1");
   EXPECT_EQ(to_string(PluginErrorKind::StructSizeMismatch), "struct-size-mismatch");
+}
+
+// A plugin runs with the user's rights, so a file or folder others may write is a way for
+// them to run code as this user: refused before dlopen, unless the user opts in.
+class WritablePluginTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ::unsetenv("MHD_ALLOW_WRITABLE_PLUGINS");
+    dir_ = std::filesystem::temp_directory_path() / ("mhd_writable_plugin_" + std::to_string(::getpid()));
+    std::filesystem::remove_all(dir_);
+    std::filesystem::create_directories(dir_ / "folder");
+    std::filesystem::permissions(dir_ / "folder", std::filesystem::perms(0755));
+    file_ = dir_ / "folder" / "libmhd_good_device.so";
+    std::filesystem::copy_file(test_plugin("good_device"), file_);
+    std::filesystem::permissions(file_, std::filesystem::perms(0755));
+  }
+  void TearDown() override {
+    ::unsetenv("MHD_ALLOW_WRITABLE_PLUGINS");
+    std::filesystem::remove_all(dir_);
+  }
+  std::filesystem::path dir_;
+  std::filesystem::path file_;
+};
+
+TEST_F(WritablePluginTest, AFileOthersMayWriteIsRefusedBeforeItIsLoaded) {
+  ASSERT_TRUE(PluginLibrary::load(file_).ok()) << "the same file, 0755, loads";
+  std::filesystem::permissions(file_, std::filesystem::perms(0757));
+  auto loaded = PluginLibrary::load(file_);
+  ASSERT_FALSE(loaded.ok());
+  EXPECT_EQ(loaded.error().kind, PluginErrorKind::Untrusted);
+  EXPECT_EQ(loaded.error().to_string(),
+            "plugin 'good_device' (" + file_.string() + "): the file " + file_.string() +
+                " is writable by other users (mode 0757), so they could run code as you: remove their write "
+                "permission (chmod o-w), or set MHD_ALLOW_WRITABLE_PLUGINS=1 to load it anyway");
+  EXPECT_FALSE(is_loaded(file_)) << "refused before dlopen";
+}
+
+TEST_F(WritablePluginTest, AFolderOthersMayWriteIsRefusedEvenWithTheStickyBit) {
+  for (const unsigned mode : {0777U, 01777U, 0703U}) {
+    std::filesystem::permissions(dir_ / "folder", std::filesystem::perms(mode));
+    auto loaded = PluginLibrary::load(file_);
+    ASSERT_FALSE(loaded.ok()) << std::oct << mode;
+    EXPECT_EQ(loaded.error().kind, PluginErrorKind::Untrusted);
+    EXPECT_NE(loaded.error().message.find("the folder " + (dir_ / "folder").string() + " is writable by other users"),
+              std::string::npos)
+        << loaded.error().message;
+  }
+  std::filesystem::permissions(dir_ / "folder", std::filesystem::perms(0775));
+  EXPECT_TRUE(PluginLibrary::load(file_).ok()) << "a group-writable folder is the user's own choice";
+}
+
+TEST_F(WritablePluginTest, ALinkToAFileOthersMayWriteIsRefused) {
+  const std::filesystem::path outside = dir_ / "outside";
+  std::filesystem::create_directories(outside);
+  std::filesystem::permissions(outside, std::filesystem::perms(0777));
+  std::filesystem::rename(file_, outside / "libmhd_good_device.so");
+  std::filesystem::create_symlink(outside / "libmhd_good_device.so", file_);
+  auto loaded = PluginLibrary::load(file_);
+  ASSERT_FALSE(loaded.ok());
+  EXPECT_EQ(loaded.error().kind, PluginErrorKind::Untrusted);
+  EXPECT_NE(loaded.error().message.find("the folder " + outside.string()), std::string::npos) << loaded.error().message;
+}
+
+TEST_F(WritablePluginTest, TheUserMayOptIn) {
+  std::filesystem::permissions(file_, std::filesystem::perms(0777));
+  std::filesystem::permissions(dir_ / "folder", std::filesystem::perms(0777));
+  ::setenv("MHD_ALLOW_WRITABLE_PLUGINS", "1", 1);
+  auto loaded = PluginLibrary::load(file_);
+  EXPECT_TRUE(loaded.ok()) << loaded.error().to_string();
+  ::setenv("MHD_ALLOW_WRITABLE_PLUGINS", "0", 1);
+  EXPECT_FALSE(PluginLibrary::load(file_).ok()) << "only 1 opts in";
 }
 
 }  // namespace
