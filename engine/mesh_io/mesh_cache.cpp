@@ -1,6 +1,7 @@
 #include "mesh_io/mesh_cache.h"
 
 #include "mesh_io/byte_count_text.h"
+#include "mesh_io/mesh_cache_entry.h"
 #include "mesh_io/mesh_cache_eviction.h"
 #include "mesh_io/regular_file.h"
 
@@ -32,71 +33,8 @@
 namespace mhd {
 namespace {
 
-static_assert(sizeof(Eigen::Vector3d) == 3 * sizeof(double), "vertices are stored as packed doubles");
-static_assert(sizeof(TriangleIndices) == 3 * sizeof(std::uint32_t));
-static_assert(std::is_trivially_copyable_v<TriangleIndices>);
+using namespace mesh_cache_entry;  // NOLINT(google-build-using-namespace): the format this file reads and writes
 
-constexpr std::array<char, 8> kMagic = {'M', 'H', 'D', 'B', 'V', 'H', '\0', '\0'};
-constexpr std::uint32_t kEndianTag = 0x01020304u;
-constexpr std::size_t kAlign = 16;
-constexpr const char* kExtension = ".mhdbvh";
-
-/// The first 128 bytes of a cache file (native byte order; the endian tag, scalar and
-/// pointer sizes and Bullet version make a file from another platform a mismatch).
-struct FileHeader {
-  std::array<char, 8> magic;
-  std::uint32_t format_version;
-  std::uint32_t header_bytes;
-  std::uint32_t endian_tag;
-  std::uint32_t scalar_bytes;
-  std::uint32_t pointer_bytes;
-  std::uint32_t bullet_version;
-  std::uint64_t key_low, key_high;
-  std::uint64_t vertex_count;
-  std::uint64_t triangle_count;
-  std::uint64_t normal_count;
-  std::uint64_t bvh_bytes;
-  std::uint64_t payload_bytes;
-  std::uint64_t payload_hash_low, payload_hash_high;  ///< XXH3-128 of everything after the header
-  std::uint64_t source_bytes;  ///< length of the mesh file's path, the last section
-  std::uint64_t reserved;
-  std::uint64_t header_hash;  ///< XXH3-64 of this header with header_hash = 0
-};
-static_assert(sizeof(FileHeader) == 128);
-static_assert(std::is_trivially_copyable_v<FileHeader>);
-
-constexpr std::size_t align_up(std::size_t n) { return (n + kAlign - 1) / kAlign * kAlign; }
-
-/// Byte offsets of the payload sections, relative to the file start.
-struct Layout {
-  std::size_t vertices, triangles, normals, bvh, source, end;
-};
-
-/// Longest mesh file path an entry records (Linux's PATH_MAX).
-constexpr std::uint64_t kMaxSourceBytes = 4096;
-/// Layout for the given counts; nullopt if it would not fit in `limit` bytes (checked
-/// before multiplying, so hostile counts cannot overflow).
-std::optional<Layout> layout_for(std::uint64_t vertices, std::uint64_t triangles, std::uint64_t normals,
-                                 std::uint64_t bvh_bytes, std::uint64_t source_bytes, std::uint64_t limit) {
-  if (vertices > limit / sizeof(Eigen::Vector3d) || triangles > limit / sizeof(TriangleIndices) ||
-      normals > limit / sizeof(Eigen::Vector3d) || bvh_bytes > limit || source_bytes > kMaxSourceBytes) {
-    return std::nullopt;
-  }
-  Layout l{};
-  l.vertices = sizeof(FileHeader);
-  l.triangles = align_up(l.vertices + static_cast<std::size_t>(vertices) * sizeof(Eigen::Vector3d));
-  l.normals = align_up(l.triangles + static_cast<std::size_t>(triangles) * sizeof(TriangleIndices));
-  l.bvh = align_up(l.normals + static_cast<std::size_t>(normals) * sizeof(Eigen::Vector3d));
-  l.source = l.bvh + static_cast<std::size_t>(bvh_bytes);
-  l.end = l.source + static_cast<std::size_t>(source_bytes);
-  if (l.end > limit) return std::nullopt;
-  return l;
-}
-
-std::uint64_t header_hash(FileHeader h) {
-  h.header_hash = 0;
-  return XXH3_64bits(&h, sizeof h);
-}
 
 /// Closes a file descriptor on scope exit.
 struct Fd {

@@ -3,11 +3,8 @@
 // skips both assimp and the BVH build.
 //
 // Key: XXH3-128 of the mesh file's bytes, the scale, the cache format version and the
-// Bullet version. One file per key, "<32 hex digits>.mhdbvh" in the cache folder:
-// a 128-byte header (magic "MHDBVH", versions, key, counts, payload checksum, header
-// checksum), then vertices (double), triangles (uint32), vertex normals (double) and
-// Bullet's serialized BVH, each section 16-byte aligned, then the path of the mesh file
-// that wrote it. Files are written to a temp
+// Bullet version. One file per key, "<32 hex digits>.mhdbvh" in the cache folder, laid
+// out as mesh_cache_entry.h says. Files are written to a temp
 // file and renamed into place; a file that fails any check (size, counts, checksums,
 // key, index ranges, BVH leaves) is ignored and rebuilt, never trusted. The folder is kept
 // under a size limit (mesh_cache_eviction.h): a hit touches its file, and each write
