@@ -6,8 +6,10 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <span>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace mhd {
 namespace {
@@ -22,6 +24,44 @@ constexpr double kBvhExtentUnits = 1e4;
 void free_aligned(std::byte* p) { std::free(p); }
 
 btVector3 to_bt(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+
+/// Bullet's stackless layout, checked node by node: each inner node is followed by its
+/// two subtrees and its escape index spans exactly them, the root spans the whole array,
+/// and the leaves name every one of `triangles` triangles once. A tree a file hands us is
+/// walked by escape indices, so one wrong index would read past the array or skip faces.
+bool is_whole_tree_over(std::span<const btQuantizedBvhNode> nodes, std::size_t triangles) {
+  struct Open {
+    std::size_t end;   // one past the inner node's last node
+    int children = 0;  // of its two subtrees, how many have begun
+  };
+  std::vector<Open> open;
+  std::vector<bool> named(triangles, false);
+  std::size_t leaves = 0;
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    const btQuantizedBvhNode& node = nodes[i];
+    const std::size_t limit = open.empty() ? nodes.size() : open.back().end;
+    if (open.empty() ? i != 0 : ++open.back().children > 2) return false;
+    if (node.isLeafNode()) {
+      const std::uint64_t triangle = MeshBvh::leaf_triangle(node);
+      if (triangle >= triangles || named[triangle]) return false;
+      named[triangle] = true;
+      ++leaves;
+      if (open.empty() && nodes.size() != 1) return false;  // a leaf root is the whole tree
+      // Every subtree ends with a leaf: close the inner nodes that end here.
+      while (!open.empty() && open.back().end == i + 1) {
+        if (open.back().children != 2) return false;
+        open.pop_back();
+      }
+    } else {
+      // Stored negated; INT_MIN has no positive counterpart.
+      const std::int64_t span = -static_cast<std::int64_t>(node.m_escapeIndexOrTriangleIndex);
+      if (span < 3 || static_cast<std::uint64_t>(span) > limit - i) return false;
+      if (open.empty() && static_cast<std::size_t>(span) != nodes.size()) return false;
+      open.push_back(Open{i + static_cast<std::size_t>(span)});
+    }
+  }
+  return open.empty() && leaves == triangles;
+}
 
 }  // namespace
 
@@ -105,13 +145,14 @@ std::unique_ptr<MeshBvh> MeshBvh::adopt_serialized(std::shared_ptr<const Triangl
   auto* tree = reinterpret_cast<btQuantizedBvh*>(adopted);
   out->adopted_tree_ = tree;  // from here on the destructor releases it
   if (!tree->isQuantized()) return nullptr;
-  // The tree must cover exactly this mesh: every leaf names a triangle that exists.
-  const auto& leaves = tree->getQuantizedNodeArray();
-  for (int i = 0; i < leaves.size(); ++i) {
-    const auto& node = leaves[i];
-    if (node.isLeafNode() && leaf_triangle(node) >= out->mesh_->triangles.size()) return nullptr;
+  const auto& nodes = tree->getQuantizedNodeArray();
+  if (nodes.size() <= 0 || !is_whole_tree_over({&nodes[0], static_cast<std::size_t>(nodes.size())},
+                                              out->mesh_->triangles.size())) {
+    return nullptr;
   }
-  if (leaves.size() == 0 || (!leaves[0].isLeafNode() && leaves[0].getEscapeIndex() > leaves.size())) return nullptr;
+  // The subtree headers and the other walks would trust the file's other fields; the
+  // stackless walk needs only the nodes checked above.
+  tree->setTraversalMode(btQuantizedBvh::TRAVERSAL_STACKLESS);
   out->adopt_tree(tree);
   out->shape_ = std::make_unique<btBvhTriangleMeshShape>(out->interface_.get(), true, /*buildBvh=*/false);
   // Same scaling as the interface, or Bullet resets it and re-walks the tree.

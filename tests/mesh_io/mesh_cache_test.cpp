@@ -1,5 +1,7 @@
 #include "mesh_io/mesh_cache.h"
 
+#include "mesh_io/mesh_cache_entry.h"
+
 #include "geometry/primitive_mesh.h"
 #include "support/large_mesh.h"
 #include "test_mesh_files.h"
@@ -9,6 +11,9 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <climits>
+#include <cstring>
+#include <functional>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
@@ -405,6 +410,85 @@ TEST_F(MeshCacheTest, AMeshPastOneBulletPartRoundTripsAndIsTouchedWhereItsLastTr
   EXPECT_EQ(from_cache, query(*cold->bvh, patch));
   EXPECT_TRUE(std::includes(from_cache.begin(), from_cache.end(), must.begin(), must.end()));
   EXPECT_GE(from_cache.front(), test::kPatchFirstTriangle);
+}
+
+/// An entry's checksums say only that the bytes are the ones written, not that a careful
+/// writer wrote them: a tree that names a triangle twice, or skips one, or whose escape
+/// indices lead out of it, must be refused even when the entry is sealed.
+class HostileTreeTest : public MeshCacheTest {
+ protected:
+  /// The cold entry with `edit` applied to its tree's nodes (Bullet's array, in the
+  /// entry's bytes), then sealed: the load must reject it and rebuild a correct tree.
+  void expect_rejected(const std::function<void(std::span<btQuantizedBvhNode>)>& edit) {
+    MeshCache cache(cache_dir_);
+    const Result<CachedMesh, MeshLoadError> cold = cache.load(mesh_file_, Eigen::Vector3d::Ones());
+    ASSERT_TRUE(cold.ok());
+    auto bytes = read_bytes(cold->cache_file);
+    mesh_cache_entry::FileHeader h;
+    std::memcpy(&h, bytes.data(), sizeof h);
+    const auto layout = mesh_cache_entry::layout_for(h.vertex_count, h.triangle_count, h.normal_count, h.bvh_bytes,
+                                                     h.source_bytes, bytes.size());
+    ASSERT_TRUE(layout.has_value());
+    // The node array lies in the tree's section exactly as the built tree holds it.
+    auto& built = const_cast<btBvhTriangleMeshShape&>(cold->bvh->shape()).getOptimizedBvh()->getQuantizedNodeArray();  // NOLINT
+    const auto* first = reinterpret_cast<const char*>(&built[0]);
+    // Bullet sizes the built array 2n; the entry holds the tree's nodes, the root's span.
+    const auto node_count = static_cast<std::size_t>(built[0].isLeafNode() ? 1 : built[0].getEscapeIndex());
+    const std::size_t node_bytes = node_count * sizeof(btQuantizedBvhNode);
+    const auto tree_begin = bytes.begin() + static_cast<std::ptrdiff_t>(layout->bvh);
+    const auto at = std::search(tree_begin, tree_begin + static_cast<std::ptrdiff_t>(h.bvh_bytes), first, first + node_bytes);
+    ASSERT_NE(at, tree_begin + static_cast<std::ptrdiff_t>(h.bvh_bytes)) << "the nodes are in the entry";
+    std::vector<btQuantizedBvhNode> nodes(node_count);
+    std::memcpy(static_cast<void*>(nodes.data()), &*at, node_bytes);
+    edit(nodes);
+    std::memcpy(&*at, nodes.data(), node_bytes);
+    mesh_cache_entry::seal(std::as_writable_bytes(std::span(bytes)));
+    write_bytes(cold->cache_file, bytes);
+
+    const Result<CachedMesh, MeshLoadError> again = cache.load(mesh_file_, Eigen::Vector3d::Ones());
+    ASSERT_TRUE(again.ok());
+    EXPECT_EQ(again->outcome, CacheOutcome::Rejected);
+    EXPECT_NE(again->rejected_reason.find("BVH"), std::string::npos) << again->rejected_reason;
+    for (const auto& box : random_boxes(mesh_bounds(again->mesh()), 50)) {
+      const auto found = query(*again->bvh, box);
+      const auto must = brute_force(again->mesh(), box);
+      EXPECT_TRUE(std::includes(found.begin(), found.end(), must.begin(), must.end()));
+    }
+  }
+  /// Index of the first leaf of `nodes` from `from` on.
+  static std::size_t leaf_from(std::span<const btQuantizedBvhNode> nodes, std::size_t from) {
+    while (!nodes[from].isLeafNode()) ++from;
+    return from;
+  }
+};
+
+TEST_F(HostileTreeTest, ALeafNamingAnotherLeafsTriangleIsRejected) {
+  // Far from the triangles the spot check samples: only a check of every leaf sees it.
+  expect_rejected([](std::span<btQuantizedBvhNode> nodes) {
+    const std::size_t a = leaf_from(nodes, nodes.size() / 2 + 7);
+    const std::size_t b = leaf_from(nodes, a + 1);
+    nodes[a].m_escapeIndexOrTriangleIndex = nodes[b].m_escapeIndexOrTriangleIndex;
+  });
+}
+
+TEST_F(HostileTreeTest, AnEscapeIndexPastItsParentIsRejected) {
+  expect_rejected([](std::span<btQuantizedBvhNode> nodes) {
+    std::size_t inner = nodes.size() / 2;
+    while (nodes[inner].isLeafNode()) ++inner;
+    nodes[inner].m_escapeIndexOrTriangleIndex -= 2;  // stored negated: two nodes further
+  });
+}
+
+TEST_F(HostileTreeTest, TheSmallestEscapeIndexIsRejected) {
+  expect_rejected([](std::span<btQuantizedBvhNode> nodes) { nodes[0].m_escapeIndexOrTriangleIndex = INT_MIN; });
+}
+
+TEST_F(HostileTreeTest, AnInnerNodeTurnedLeafIsRejected) {
+  expect_rejected([](std::span<btQuantizedBvhNode> nodes) {
+    std::size_t inner = nodes.size() / 3;
+    while (nodes[inner].isLeafNode()) ++inner;
+    nodes[inner].m_escapeIndexOrTriangleIndex = 0;
+  });
 }
 
 /// Sets an environment variable for the scope (nullptr unsets it).
