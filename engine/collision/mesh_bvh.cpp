@@ -151,13 +151,47 @@ std::unique_ptr<MeshBvh> MeshBvh::adopt_serialized(std::shared_ptr<const Triangl
     return nullptr;
   }
   // The subtree headers and the other walks would trust the file's other fields; the
-  // stackless walk needs only the nodes checked above.
+  // stackless walk needs only the nodes checked above. The quantization is this mesh's,
+  // set as the build sets it, not the file's.
   tree->setTraversalMode(btQuantizedBvh::TRAVERSAL_STACKLESS);
+  tree->setQuantizationValues(to_bt(out->bounds_.min() * out->bvh_scale_), to_bt(out->bounds_.max() * out->bvh_scale_));
   out->adopt_tree(tree);
+  if (!out->boxes_hold_their_triangles()) return nullptr;
   out->shape_ = std::make_unique<btBvhTriangleMeshShape>(out->interface_.get(), true, /*buildBvh=*/false);
   // Same scaling as the interface, or Bullet resets it and re-walks the tree.
   out->shape_->setOptimizedBvh(adopted, btVector3(out->bvh_scale_, out->bvh_scale_, out->bvh_scale_));
   return out;
+}
+
+bool MeshBvh::boxes_hold_their_triangles() const {
+  auto holds = [](const btQuantizedBvhNode& outer, const unsigned short* min, const unsigned short* max) {
+    for (int k = 0; k < 3; ++k) {
+      if (outer.m_quantizedAabbMin[k] > min[k] || outer.m_quantizedAabbMax[k] < max[k]) return false;
+    }
+    return true;
+  };
+  // The tree's shape is checked (is_whole_tree_over): each node's parent is the nearest
+  // inner node whose span still holds it.
+  std::vector<std::ptrdiff_t> ends;
+  std::vector<const btQuantizedBvhNode*> parents;
+  for (std::ptrdiff_t i = 0; i < node_count_; ++i) {
+    const btQuantizedBvhNode& node = nodes_[i];
+    while (!ends.empty() && ends.back() <= i) {
+      ends.pop_back();
+      parents.pop_back();
+    }
+    if (!parents.empty() && !holds(*parents.back(), node.m_quantizedAabbMin, node.m_quantizedAabbMax)) return false;
+    if (node.isLeafNode()) {
+      Eigen::AlignedBox3d box_O;
+      for (const auto v : mesh_->triangles[leaf_triangle(node)]) box_O.extend(mesh_->vertices_m[v]);
+      const QuantizedBox q = quantize(box_O);
+      if (!holds(node, q.min.data(), q.max.data())) return false;
+    } else {
+      ends.push_back(i + node.getEscapeIndex());
+      parents.push_back(&node);
+    }
+  }
+  return true;
 }
 
 MeshBvh::~MeshBvh() {

@@ -141,6 +141,7 @@ class MeshBvh {
   MeshBvh() = default;
   void make_interface();
   void adopt_tree(btQuantizedBvh* tree);
+  [[nodiscard]] bool boxes_hold_their_triangles() const;
 
   std::shared_ptr<const TriangleMesh> mesh_;
   std::vector<Eigen::Vector3d> face_normals_O_;

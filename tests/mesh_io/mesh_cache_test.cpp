@@ -417,9 +417,10 @@ TEST_F(MeshCacheTest, AMeshPastOneBulletPartRoundTripsAndIsTouchedWhereItsLastTr
 /// indices lead out of it, must be refused even when the entry is sealed.
 class HostileTreeTest : public MeshCacheTest {
  protected:
-  /// The cold entry with `edit` applied to its tree's nodes (Bullet's array, in the
-  /// entry's bytes), then sealed: the load must reject it and rebuild a correct tree.
-  void expect_rejected(const std::function<void(std::span<btQuantizedBvhNode>)>& edit) {
+  /// The cold entry with `edit` applied to its bytes, then sealed: the load must reject it
+  /// and rebuild a correct tree.
+  void expect_rejected_entry(const std::function<void(std::vector<char>&, const mesh_cache_entry::Layout&,
+                                                      const CachedMesh&)>& edit) {
     MeshCache cache(cache_dir_);
     const Result<CachedMesh, MeshLoadError> cold = cache.load(mesh_file_, Eigen::Vector3d::Ones());
     ASSERT_TRUE(cold.ok());
@@ -429,19 +430,8 @@ class HostileTreeTest : public MeshCacheTest {
     const auto layout = mesh_cache_entry::layout_for(h.vertex_count, h.triangle_count, h.normal_count, h.bvh_bytes,
                                                      h.source_bytes, bytes.size());
     ASSERT_TRUE(layout.has_value());
-    // The node array lies in the tree's section exactly as the built tree holds it.
-    auto& built = const_cast<btBvhTriangleMeshShape&>(cold->bvh->shape()).getOptimizedBvh()->getQuantizedNodeArray();  // NOLINT
-    const auto* first = reinterpret_cast<const char*>(&built[0]);
-    // Bullet sizes the built array 2n; the entry holds the tree's nodes, the root's span.
-    const auto node_count = static_cast<std::size_t>(built[0].isLeafNode() ? 1 : built[0].getEscapeIndex());
-    const std::size_t node_bytes = node_count * sizeof(btQuantizedBvhNode);
-    const auto tree_begin = bytes.begin() + static_cast<std::ptrdiff_t>(layout->bvh);
-    const auto at = std::search(tree_begin, tree_begin + static_cast<std::ptrdiff_t>(h.bvh_bytes), first, first + node_bytes);
-    ASSERT_NE(at, tree_begin + static_cast<std::ptrdiff_t>(h.bvh_bytes)) << "the nodes are in the entry";
-    std::vector<btQuantizedBvhNode> nodes(node_count);
-    std::memcpy(static_cast<void*>(nodes.data()), &*at, node_bytes);
-    edit(nodes);
-    std::memcpy(&*at, nodes.data(), node_bytes);
+    edit(bytes, *layout, *cold);
+    if (::testing::Test::HasFatalFailure()) return;
     mesh_cache_entry::seal(std::as_writable_bytes(std::span(bytes)));
     write_bytes(cold->cache_file, bytes);
 
@@ -449,11 +439,33 @@ class HostileTreeTest : public MeshCacheTest {
     ASSERT_TRUE(again.ok());
     EXPECT_EQ(again->outcome, CacheOutcome::Rejected);
     EXPECT_NE(again->rejected_reason.find("BVH"), std::string::npos) << again->rejected_reason;
+    EXPECT_EQ(again->mesh().vertices_m, cold->mesh().vertices_m);
     for (const auto& box : random_boxes(mesh_bounds(again->mesh()), 50)) {
       const auto found = query(*again->bvh, box);
       const auto must = brute_force(again->mesh(), box);
       EXPECT_TRUE(std::includes(found.begin(), found.end(), must.begin(), must.end()));
     }
+  }
+
+  /// The cold entry with `edit` applied to its tree's nodes (Bullet's array, in the
+  /// entry's bytes), then sealed: as expect_rejected_entry.
+  void expect_rejected(const std::function<void(std::span<btQuantizedBvhNode>)>& edit) {
+    expect_rejected_entry([&](std::vector<char>& bytes, const mesh_cache_entry::Layout& layout, const CachedMesh& cold) {
+      // The node array lies in the tree's section exactly as the built tree holds it;
+      // Bullet sizes the built array 2n, the entry holds the root's span.
+      auto& built = const_cast<btBvhTriangleMeshShape&>(cold.bvh->shape()).getOptimizedBvh()->getQuantizedNodeArray();  // NOLINT
+      const auto node_count = static_cast<std::size_t>(built[0].isLeafNode() ? 1 : built[0].getEscapeIndex());
+      const auto* first = reinterpret_cast<const char*>(&built[0]);
+      const std::size_t node_bytes = node_count * sizeof(btQuantizedBvhNode);
+      const auto tree_begin = bytes.begin() + static_cast<std::ptrdiff_t>(layout.bvh);
+      const auto tree_end = bytes.begin() + static_cast<std::ptrdiff_t>(layout.source);
+      const auto at = std::search(tree_begin, tree_end, first, first + node_bytes);
+      ASSERT_NE(at, tree_end) << "the nodes are in the entry";
+      std::vector<btQuantizedBvhNode> nodes(node_count);
+      std::memcpy(static_cast<void*>(nodes.data()), &*at, node_bytes);
+      edit(nodes);
+      std::memcpy(&*at, nodes.data(), node_bytes);
+    });
   }
   /// Index of the first leaf of `nodes` from `from` on.
   static std::size_t leaf_from(std::span<const btQuantizedBvhNode> nodes, std::size_t from) {
@@ -476,6 +488,26 @@ TEST_F(HostileTreeTest, AnEscapeIndexPastItsParentIsRejected) {
     std::size_t inner = nodes.size() / 2;
     while (nodes[inner].isLeafNode()) ++inner;
     nodes[inner].m_escapeIndexOrTriangleIndex -= 2;  // stored negated: two nodes further
+  });
+}
+
+TEST_F(HostileTreeTest, AVertexMovedOutOfItsTrianglesBoxesIsRejected) {
+  // The sphere is symmetric: a vertex moved to its opposite keeps the mesh's bounds, and
+  // its triangles now cross the sphere, far outside their leaves' boxes.
+  expect_rejected_entry([](std::vector<char>& bytes, const mesh_cache_entry::Layout& layout, const CachedMesh& cold) {
+    const std::size_t vertex = cold.mesh().vertices_m.size() / 2 + 3;
+    Eigen::Vector3d v;
+    char* at = bytes.data() + layout.vertices + vertex * sizeof(Eigen::Vector3d);
+    std::memcpy(v.data(), at, sizeof v);
+    v = -v;
+    std::memcpy(at, v.data(), sizeof v);
+  });
+}
+
+TEST_F(HostileTreeTest, ALeafBoxShrunkOffItsTriangleIsRejected) {
+  expect_rejected([](std::span<btQuantizedBvhNode> nodes) {
+    btQuantizedBvhNode& leaf = nodes[leaf_from(nodes, nodes.size() / 2 + 11)];
+    leaf.m_quantizedAabbMax[0] = leaf.m_quantizedAabbMin[0];
   });
 }
 
