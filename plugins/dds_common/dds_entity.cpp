@@ -1,8 +1,12 @@
 #include "dds_common/dds_entity.h"
 
 #include "dds_common/participant_security.h"
+#include "dds_common/security_refusal_log.h"
 
+#include <algorithm>
 #include <filesystem>
+#include <initializer_list>
+#include <string>
 
 namespace mhd::dds {
 
@@ -63,24 +67,60 @@ Qos& Qos::automatic_liveliness(dds_duration_t lease_ns) {
   return *this;
 }
 
+namespace {
+
+/// What Cyclone logged since `mark`, as "; Cyclone DDS said: A; B" ("" when nothing).
+std::string cyclone_said(std::uint64_t mark) {
+  std::string said;
+  for (const std::string& line : SecurityRefusalLog::errors_since(mark)) said += (said.empty() ? "" : "; ") + line;
+  return said.empty() ? said : "; Cyclone DDS said: " + said;
+}
+
+bool mentions(const std::string& text, std::initializer_list<const char*> words) {
+  return std::any_of(words.begin(), words.end(), [&](const char* w) { return text.find(w) != std::string::npos; });
+}
+
+/// A participant or domain Cyclone would not create, with the cause it logged and what
+/// to do about it; `identity_hint` is said only when nothing points elsewhere.
+[[noreturn]] void refuse(const std::string& what, dds_return_t rc, std::uint64_t mark, const std::string& identity_hint) {
+  const std::string said = cyclone_said(mark);
+  std::string hint;
+  if (mentions(said, {"participant index"})) {
+    hint = " (every participant index this configuration allows on this host is held by another DDS process in "
+           "this domain, even an idle one: stop those processes, or raise Discovery/MaxAutoParticipantIndex in "
+           "the Cyclone configuration, docs/networking.md)";
+  } else if (mentions(said, {"ddress in use", "bind"})) {
+    hint = " (another process holds the ports of this domain: use another domain id)";
+  } else if (said.empty() || mentions(said, {"ertificate", "ermission", "overnance", "dentity", "CA", "sign", "xpired",
+                                             "ecurity", "uthenticat"})) {
+    hint = identity_hint;
+  }
+  throw DdsError(what + ": " + dds_strretcode(rc) + said + hint, rc);
+}
+
+}  // namespace
+
 Participant::Participant(dds_domainid_t domain_id, const std::string& config,
                          const std::optional<std::filesystem::path>& identity_dir) {
+  // Cyclone reports most failures as a bare "Error" and logs the cause: keep the log.
+  const SecurityRefusalLog log;
+  const std::uint64_t mark = SecurityRefusalLog::error_count();
   if (!config.empty()) {
     if (domain_id == DDS_DOMAIN_DEFAULT) {
       throw DdsError("a DDS configuration needs an explicit domain id", DDS_RETCODE_BAD_PARAMETER);
     }
     const dds_entity_t domain = dds_create_domain(domain_id, config.c_str());
     // PRECONDITION_NOT_MET: this process already has the domain; use it as it is.
-    if (domain != DDS_RETCODE_PRECONDITION_NOT_MET) check(domain, "dds_create_domain");
+    if (domain < 0 && domain != DDS_RETCODE_PRECONDITION_NOT_MET) refuse("dds_create_domain", domain, mark, "");
   }
   const std::optional<std::filesystem::path> identity = resolve_identity_dir(identity_dir);
   if (!identity) {
     const dds_entity_t participant = dds_create_participant(domain_id, nullptr, nullptr);
     if (participant < 0) {
-      throw DdsError(std::string("dds_create_participant: ") + dds_strretcode(participant) +
-                         " (no DDS identity given: if the Cyclone configuration has a Security section, such as "
-                         "config/cyclonedds-secure.xml, set " + kIdentityEnv + ")",
-                     participant);
+      refuse("dds_create_participant", participant, mark,
+             std::string(" (no DDS identity given: if the Cyclone configuration has a Security section, such as "
+                         "config/cyclonedds-secure.xml, set ") +
+                 kIdentityEnv + ")");
     }
     participant_ = Entity(participant);
     warn_unsecured_once();
@@ -92,11 +132,8 @@ Participant::Participant(dds_domainid_t domain_id, const std::string& config,
   apply_identity(qos.get_mutable(), files);
   const dds_entity_t participant = dds_create_participant(domain_id, qos.get(), nullptr);
   if (participant < 0) {
-    throw DdsError("dds_create_participant with DDS identity '" + identity->string() + "': " +
-                       dds_strretcode(participant) +
-                       " (Cyclone refused it; its log above says why: a certificate or permissions not signed by "
-                       "the CA, or expired)",
-                   participant);
+    refuse("dds_create_participant with DDS identity '" + identity->string() + "'", participant, mark,
+           " (Cyclone refused the identity: a certificate or permissions not signed by the CA, or expired)");
   }
   participant_ = Entity(participant);
   identity_dir_ = *identity;

@@ -6,9 +6,12 @@
 // is written to stderr exactly as Cyclone's default sink writes it, and those that
 // report a refused remote participant are counted. Process-wide, since Cyclone's log
 // sink is; the last instance to go restores Cyclone's default sink, so no sink outlives
-// the plugin that installed it.
+// the plugin that installed it. The sink also keeps Cyclone's latest error messages, so
+// that a failure Cyclone reports only as "Error" can be given its real cause.
 
 #include <cstdint>
+#include <string>
+#include <vector>
 
 namespace mhd::dds {
 
@@ -21,6 +24,12 @@ class SecurityRefusalLog {
 
   /// Refusal messages Cyclone logged in this process while an instance lived.
   [[nodiscard]] static std::uint64_t refusals();
+  /// How many error messages Cyclone has logged in this process while an instance lived:
+  /// a mark for errors_since().
+  [[nodiscard]] static std::uint64_t error_count();
+  /// The error messages logged after `mark` (the latest few, oldest first, each without
+  /// its header and line end).
+  [[nodiscard]] static std::vector<std::string> errors_since(std::uint64_t mark);
   /// Whether a Cyclone log message reports a refused remote participant (exposed for tests).
   [[nodiscard]] static bool is_refusal(const char* message, std::uint64_t size);
 };

@@ -6,7 +6,14 @@
 
 #include <gtest/gtest.h>
 
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
 #include <chrono>
+#include <cstdint>
+#include <memory>
 #include <string>
 #include <thread>
 #include <vector>
@@ -48,6 +55,66 @@ TEST(DdsEntity, ABrokenConfigurationFailsToCreateTheDomain) {
     EXPECT_EQ(std::string(e.what()).rfind("dds_create_domain: ", 0), 0u) << e.what();
   }
   EXPECT_THROW(Participant(DDS_DOMAIN_DEFAULT, "file:///x.xml"), DdsError);
+}
+
+/// A UDP port held as another process's participant would hold it.
+class HeldPort {
+ public:
+  explicit HeldPort(std::uint16_t port) : fd_(::socket(AF_INET, SOCK_DGRAM, 0)) {
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_addr.s_addr = htonl(INADDR_ANY);
+    address.sin_port = htons(port);
+    bound_ = fd_ >= 0 && ::bind(fd_, reinterpret_cast<const sockaddr*>(&address), sizeof address) == 0;
+  }
+  ~HeldPort() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  HeldPort(const HeldPort&) = delete;
+  HeldPort& operator=(const HeldPort&) = delete;
+  [[nodiscard]] bool bound() const { return bound_; }
+
+ private:
+  int fd_;
+  bool bound_ = false;
+};
+
+TEST(DdsEntity, AllParticipantIndicesTakenIsNamedAsTheCause) {
+  // One participant index allowed; a stranger holds its discovery port (RTPS: 7400 +
+  // 250 domain + 10 + 2 index). Cyclone says only "Error"; the cause is in its log.
+  const std::uint32_t domain = test::use_loopback_and_unique_domain(17);
+  const std::string config =
+      "<CycloneDDS><Domain><General><Interfaces><NetworkInterface address=\"127.0.0.1\"/></Interfaces>"
+      "<AllowMulticast>false</AllowMulticast></General><Discovery><ParticipantIndex>auto</ParticipantIndex>"
+      "<MaxAutoParticipantIndex>0</MaxAutoParticipantIndex><Peers><Peer address=\"127.0.0.1\"/></Peers>"
+      "</Discovery></Domain></CycloneDDS>";
+  {
+    const HeldPort stranger(static_cast<std::uint16_t>(7400 + 250 * domain + 10));
+    ASSERT_TRUE(stranger.bound());
+    try {
+      const Participant p(domain, config);
+      FAIL() << "created with its only index taken";
+    } catch (const DdsError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("participant index"), std::string::npos) << what;
+      EXPECT_NE(what.find("MaxAutoParticipantIndex"), std::string::npos) << what;
+      EXPECT_EQ(what.find("ertificate"), std::string::npos) << what;
+      EXPECT_EQ(what.find("identity"), std::string::npos) << what;
+    }
+  }
+}
+
+TEST(DdsEntity, TwentyIdleStrangersOnThisHostDoNotLockTheRigOut) {
+  // Each stranger holds one participant index: its discovery and data ports.
+  const std::uint32_t domain = test::use_loopback_and_unique_domain(23);
+  std::vector<std::unique_ptr<HeldPort>> strangers;
+  for (std::uint32_t index = 0; index < 20; ++index) {
+    for (std::uint32_t port : {10u, 11u}) {
+      strangers.push_back(std::make_unique<HeldPort>(static_cast<std::uint16_t>(7400 + 250 * domain + port + 2 * index)));
+      ASSERT_TRUE(strangers.back()->bound()) << "index " << index;
+    }
+  }
+  EXPECT_NO_THROW(const Participant p(domain)) << "config/cyclonedds-loopback.xml";
 }
 
 TEST(DdsEntity, RigStateGoesFromWriterToReader) {
