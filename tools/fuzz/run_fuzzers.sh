@@ -8,7 +8,8 @@
 #   --seconds N     run each target for N seconds (default 20)
 #   --build-dir DIR build folder (default build/fuzz); the corpora, crash files and logs
 #                   go under DIR/fuzz/
-#   --only NAME     one target: scene, mesh-header, replay-csv, dds-sample or recording (default: all)
+#   --only NAME     one target: scene, mesh-header, mesh-cache, replay-csv, dds-sample or
+#                   recording (default: all)
 #   --jobs J        build jobs, and targets fuzzed at once (default 2)
 #   --fresh         start from the seeds only (drop what earlier runs added to the corpus)
 #   --no-build      run what is already built
@@ -43,7 +44,7 @@ done
 [[ "$jobs" =~ ^[0-9]+$ && "$jobs" -gt 0 ]] || { echo "run_fuzzers.sh: error: --jobs must be a positive integer, got '$jobs'" >&2; exit 2; }
 [[ "$build_dir" = /* ]] || build_dir="$PWD/$build_dir"
 
-all_targets=(scene mesh-header replay-csv dds-sample recording)
+all_targets=(scene mesh-header mesh-cache replay-csv dds-sample recording)
 if [[ -n "$only" ]]; then
   case " ${all_targets[*]} " in
     *" $only "*) targets=("$only") ;;
@@ -59,6 +60,7 @@ max_len_of() {
   case "$1" in
     scene) echo 16384 ;;
     mesh-header) echo 8192 ;;
+    mesh-cache) echo 4096 ;;
     replay-csv) echo 8192 ;;
     dds-sample) echo 4096 ;;
   esac
@@ -69,6 +71,7 @@ dict_of() {
     mesh-header) echo "$repo/tools/fuzz/dict/mesh_header.dict" ;;
     replay-csv) echo "$repo/tools/fuzz/dict/replay_csv.dict" ;;
     dds-sample) echo "" ;;
+    mesh-cache) echo "" ;;
   esac
 }
 # Seed files, one per line: the repository's own data plus tools/fuzz/corpus/<name> and
@@ -80,6 +83,7 @@ seeds_of() {
     mesh-header) ;;  # seeds carry a leading format byte: tools/fuzz/corpus/mesh-header
     replay-csv) find "$repo/tests/data" -type f -name '*.csv' -size -64k ;;
     dds-sample) ;;
+    mesh-cache) ;;  # seeds carry a leading mode byte: tools/fuzz/corpus/mesh-cache
     recording) find "$repo/tests/data" -type f -name '*.csv' -size -64k ;;
   esac
   for extra in "$repo/tools/fuzz/corpus/$name" "$repo/tools/fuzz/regressions/$name"; do
