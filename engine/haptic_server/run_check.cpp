@@ -3,6 +3,7 @@
 #include "haptic_server/scene_planner.h"
 #include "haptic_server/server_settings.h"
 #include "kinematics/rig.h"
+#include "plugin_host/isolated_load.h"
 #include "plugin_host/plugin_kind.h"
 #include "plugin_host/scene_plugin_check.h"
 #include "scene/rig_kind_check.h"
@@ -28,7 +29,8 @@ Diagnostics check_scene_for_validate(const SceneDescription& scene, const Plugin
   // Settings first, alone: a scene whose settings are wrong is not worth loading plugins for.
   if (!errors.empty()) return errors;
   for (const PluginDescription& plugin : scene.plugins) {
-    if (const Status<PluginError> s = check_scene_plugin(search, plugin); !s) {
+    // In a child process: looking at a plugin must not let its library crash or end this one.
+    if (const Status<PluginError> s = check_scene_plugin_isolated(search, plugin); !s) {
       errors.push_back({plugin.where, s.error().to_string()});
     }
   }

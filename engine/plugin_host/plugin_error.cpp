@@ -7,6 +7,7 @@ std::string_view to_string(PluginErrorKind kind) {
     case PluginErrorKind::NotFound: return "not-found";
     case PluginErrorKind::Untrusted: return "untrusted";
     case PluginErrorKind::NotALibrary: return "not-a-library";
+    case PluginErrorKind::CrashedWhileLoading: return "crashed-while-loading";
     case PluginErrorKind::NoEntryPoint: return "no-entry-point";
     case PluginErrorKind::EntryReturnedNull: return "entry-returned-null";
     case PluginErrorKind::AbiVersionMismatch: return "abi-version-mismatch";

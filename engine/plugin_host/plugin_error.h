@@ -13,6 +13,7 @@ enum class PluginErrorKind {
   NotFound,            ///< no file of that name in any plugin folder (or an invalid name)
   Untrusted,           ///< the file or its folder is writable by other users (plugin_file_trust.h)
   NotALibrary,         ///< dlopen failed (not ELF, wrong architecture, missing dependency)
+  CrashedWhileLoading, ///< loading it in a child process crashed, ended or hung it (isolated_load.h)
   NoEntryPoint,        ///< the library exports no mhd_plugin_entry
   EntryReturnedNull,   ///< the plugin refused this host's ABI version
   AbiVersionMismatch,  ///< the table's abi_version is not MHD_PLUGIN_ABI_VERSION

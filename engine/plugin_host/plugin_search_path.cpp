@@ -1,5 +1,6 @@
 #include "plugin_host/plugin_search_path.h"
 
+#include "plugin_host/isolated_load.h"
 #include "plugin_host/plugin_name.h"
 
 #include <fmt/core.h>
@@ -129,10 +130,7 @@ std::vector<PluginListing> PluginSearchPath::list() const {
     std::sort(files.begin(), files.end());
     for (const fs::path& file : files) {
       const bool shadowed = !names_seen.insert(plugin_name_from_file(file)).second;
-      Result<std::shared_ptr<const PluginLibrary>, PluginError> library = PluginLibrary::load(file);
-      Result<PluginInfo, PluginError> loaded = library ? Result<PluginInfo, PluginError>(library.value()->info())
-                                                : Result<PluginInfo, PluginError>(library.error());
-      listings.push_back(PluginListing{file, std::move(loaded), shadowed});
+      listings.push_back(PluginListing{file, probe_plugin_isolated(file), shadowed});
     }
   }
   return listings;

@@ -73,8 +73,8 @@ class PluginSearchPath {
   [[nodiscard]] Result<std::shared_ptr<const PluginLibrary>, PluginError> load(std::string_view name) const;
 
   /// Every libmhd_*.so in every folder, folder by folder in search order and by file
-  /// name within a folder; each is loaded (and unloaded) to read what it says. A file
-  /// that does not load is listed with its error.
+  /// name within a folder; each is loaded in a child process (isolated_load.h) to read
+  /// what it says. A file that does not load is listed with its error.
   [[nodiscard]] std::vector<PluginListing> list() const;
 
  private:
