@@ -57,72 +57,80 @@ HapticTickOutput HapticTick::render(double t_s, double dt_s, const Eigen::Vector
   // Without a tracker the device's own reading is the whole pose: never stale.
   safety_in.tracker_age_s = std::isnan(tracker_age_s) ? 0.0 : tracker_age_s;
 
+  move_objects(t_s);
+  if (base.has_value() && p_D_tool_m.allFinite()) {
+    out.base = *base;
+    render_hand(dt_s, safety_in, out);
+  } else {
+    render_no_hand(base.has_value(), safety_in, out);
+  }
+  return out;
+}
+
+void HapticTick::move_objects(double t_s) noexcept {
   // Objects move on their own clock from the first tick, whether or not a hand is known;
   // a proxy being rendered is carried by what moved.
   if (!t0_s_) t0_s_ = t_s;
   if (moving_.moves() && std::isfinite(t_s)) {
     if (moving_.advance(t_s - *t0_s_, proxy_, proxy_settings_.skin_m).squeezed) ++squeeze_ticks_;
   }
+}
 
-  const bool can_render = base.has_value() && p_D_tool_m.allFinite();
-  if (can_render) {
-    out.base = *base;
-    const Pose X_W_robot = rig_.X_W_robot_from_base(out.base);
-    out.p_W_hip = rig_.p_W_from_device(X_W_robot, p_D_tool_m);
-    if (!proxy_.initialised) {
-      // The proxy starts only with the hand in free space: started inside an object it
-      // would render the object inside out and pull the hand in. Until then, no force.
-      if (point_inside_surface(moving_.world(), out.p_W_hip)) {
-        out.hip_inside_object = true;
-        out.proxy_W_m = out.p_W_hip;
-        safety_in.force_W_N.setConstant(std::numeric_limits<double>::quiet_NaN());  // no force known
-        (void)safety_.apply(safety_in);  // zero force; the fade-in starts once the proxy does
-        moving_.apply_reaction(proxy_, Eigen::Vector3d::Zero());
-        return out;
-      }
-      reset_proxy(proxy_, out.p_W_hip);
+void HapticTick::render_hand(double dt_s, ForceSafetyInput& safety_in, HapticTickOutput& out) noexcept {
+  const Pose X_W_robot = rig_.X_W_robot_from_base(out.base);
+  out.p_W_hip = rig_.p_W_from_device(X_W_robot, out.p_D_tool_m);
+  if (!proxy_.initialised) {
+    // The proxy starts only with the hand in free space: started inside an object it
+    // would render the object inside out and pull the hand in. Until then, no force.
+    if (point_inside_surface(moving_.world(), out.p_W_hip)) {
+      out.hip_inside_object = true;
+      out.proxy_W_m = out.p_W_hip;
+      safety_in.force_W_N.setConstant(std::numeric_limits<double>::quiet_NaN());  // no force known
+      (void)safety_.apply(safety_in);  // zero force; the fade-in starts once the proxy does
+      moving_.apply_reaction(proxy_, Eigen::Vector3d::Zero());
+      return;
     }
-    const ProxyOutput p =
-        step_proxy(moving_.world(), scene_.materials, proxy_settings_, proxy_, out.p_W_hip, dt_s, moving_.twists());
-    rendered_last_tick_ = true;
-    last_rendered_dt_s_ = dt_s;
-    out.proxy_W_m = p.proxy_W;
-    out.proxy_force_W_N = p.force_W;
-    out.in_contact = p.in_contact;
-    out.contact_object = p.contact_object;
-    out.proxy_budget_exhausted = p.budget_exhausted;
-    safety_in.force_W_N = p.force_W;
-    safety_in.p_W_hip = out.p_W_hip;
-    const ForceSafetyOutput s = safety_.apply(safety_in);
-    out.force_W_N = s.force_W_N;
-    out.safety_gain = s.gain;
-    out.stale = s.stale;
-    out.jump = s.jump;
-    out.clamped = s.clamped;
-    out.force_D_N = rig_.force_P_from_W(X_W_robot, out.force_W_N);
-    if (!out.force_D_N.allFinite()) out.force_D_N.setZero();
-    // The bodies the proxy touches are pushed back by what the hand is sent to feel.
-    moving_.apply_reaction(proxy_, out.force_W_N);
-    return out;
-  } else if (!base.has_value() && p_D_tool_m.allFinite()) {
+    reset_proxy(proxy_, out.p_W_hip);
+  }
+  const ProxyOutput p =
+      step_proxy(moving_.world(), scene_.materials, proxy_settings_, proxy_, out.p_W_hip, dt_s, moving_.twists());
+  rendered_last_tick_ = true;
+  last_rendered_dt_s_ = dt_s;
+  out.proxy_W_m = p.proxy_W;
+  out.proxy_force_W_N = p.force_W;
+  out.in_contact = p.in_contact;
+  out.contact_object = p.contact_object;
+  out.proxy_budget_exhausted = p.budget_exhausted;
+  safety_in.force_W_N = p.force_W;
+  safety_in.p_W_hip = out.p_W_hip;
+  const ForceSafetyOutput s = safety_.apply(safety_in);
+  out.force_W_N = s.force_W_N;
+  out.safety_gain = s.gain;
+  out.stale = s.stale;
+  out.jump = s.jump;
+  out.clamped = s.clamped;
+  out.force_D_N = rig_.force_P_from_W(X_W_robot, out.force_W_N);
+  if (!out.force_D_N.allFinite()) out.force_D_N.setZero();
+  // The bodies the proxy touches are pushed back by what the hand is sent to feel.
+  moving_.apply_reaction(proxy_, out.force_W_N);
+}
+
+void HapticTick::render_no_hand(bool base_known, ForceSafetyInput& safety_in, HapticTickOutput& out) noexcept {
+  if (!base_known && out.p_D_tool_m.allFinite()) {
     // Start-up: no base pose yet, so no HIP and no force. Normal, not a fault; the safety
     // stage starts from zero gain when the first pose arrives.
     ++startup_ticks_;
     safety_.reset();
     out.startup = true;
-    out.p_W_hip.setConstant(std::numeric_limits<double>::quiet_NaN());
-    out.proxy_W_m = out.p_W_hip;
   } else {
     // The device gave no position: nothing is known, nothing is pushed; a fault.
     safety_in.force_W_N.setConstant(std::numeric_limits<double>::quiet_NaN());
     safety_in.p_W_hip.setConstant(std::numeric_limits<double>::quiet_NaN());
-    const ForceSafetyOutput s = safety_.apply(safety_in);
-    out.stale = s.stale;
-    out.p_W_hip.setConstant(std::numeric_limits<double>::quiet_NaN());
-    out.proxy_W_m = out.p_W_hip;
+    out.stale = safety_.apply(safety_in).stale;
   }
+  out.p_W_hip.setConstant(std::numeric_limits<double>::quiet_NaN());
+  out.proxy_W_m = out.p_W_hip;
   moving_.apply_reaction(proxy_, Eigen::Vector3d::Zero());  // no hand: nothing pushes
-  return out;
 }
 
 LookAheadReport HapticTick::look_ahead() noexcept {

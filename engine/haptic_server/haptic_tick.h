@@ -97,6 +97,11 @@ class HapticTick {
   [[nodiscard]] std::uint64_t squeeze_ticks() const noexcept { return squeeze_ticks_; }
 
  private:
+  // render()'s steps.
+  void move_objects(double t_s) noexcept;
+  void render_hand(double dt_s, ForceSafetyInput& safety_in, HapticTickOutput& out) noexcept;
+  void render_no_hand(bool base_known, ForceSafetyInput& safety_in, HapticTickOutput& out) noexcept;
+
   const CompiledScene& scene_;
   ProxySettings proxy_settings_;  // the scene's, clamped to the run's force limit
   Rig rig_;

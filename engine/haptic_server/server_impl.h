@@ -14,6 +14,7 @@
 #include "kinematics/rig.h"
 #include "plugin_host/host_services.h"
 #include "plugin_host/plugin_error.h"
+#include "realtime/periodic_timer.h"
 #include "realtime/spsc_ring.h"
 #include "realtime/triple_buffer.h"
 #include "realtime/wake_event.h"
@@ -33,6 +34,9 @@
 #include <vector>
 
 namespace mhd {
+
+class HapticTick;
+struct HapticTickOutput;
 
 struct HapticServer::Impl {
   struct BaseSensorSample {
@@ -157,6 +161,14 @@ struct HapticServer::Impl {
 
   // Each thread's body, in its own file (<name>.cpp).
   void haptic_thread();
+  // The haptic thread's steps, in tick order; a false return ends the run.
+  void drain_into(HapticTick& tick);
+  bool read_device(double t_s, const mhd_device_info& info, Eigen::Vector3d& p_D_tool_m);
+  bool write_device(double t_s, const HapticTickOutput& out);
+  void publish(double t_s, const HapticTickOutput& out);
+  void record(double t_s, double dt_s, const HapticTickOutput& out);
+  void count(const HapticTickOutput& out, const realtime::TimerStats& timer);
+
   void io_thread();
   void planner_thread();
   void display_thread();
