@@ -45,6 +45,57 @@ HapticServer::~HapticServer() {
 
 const ServerSettings& HapticServer::settings() const noexcept { return impl_->settings; }
 
+namespace {
+
+/// The scene's plugins by role, in the order they are opened (and started, but for the
+/// device, which starts last): device, tracker, base, displays.
+struct PluginRoles {
+  const PluginDescription* device = nullptr;
+  const PluginDescription* tracker = nullptr;
+  const PluginDescription* base = nullptr;
+  std::vector<const PluginDescription*> displays;
+
+  explicit PluginRoles(const SceneDescription& scene) {
+    for (const PluginDescription& p : scene.plugins) {
+      if (p.kind == PluginKind::Device) {
+        device = &p;
+      } else if (p.kind == PluginKind::Tracker) {
+        tracker = &p;
+      } else if (p.kind == PluginKind::Base) {
+        base = &p;
+      } else {
+        displays.push_back(&p);
+      }
+    }
+  }
+  [[nodiscard]] std::vector<const PluginDescription*> open_order() const {
+    std::vector<const PluginDescription*> order = {device};
+    if (tracker != nullptr) order.push_back(tracker);
+    if (base != nullptr) order.push_back(base);
+    order.insert(order.end(), displays.begin(), displays.end());
+    return order;
+  }
+};
+
+/// The scene's own base planner, into `settings` and `options`: none on a desktop rig or
+/// when the caller brings one. True when the scene plans.
+Result<bool> plan_from_scene(const SceneDescription& scene, const Rig& rig, ServerSettings& settings,
+                             ServerOptions& options) {
+  if (scene.rig_kind.kind == RigKind::Desktop || options.plan_base) return false;
+  Result<ScenePlanner> made = scene_planner(scene, rig);
+  if (!made.ok()) return made.error();
+  if (!made->plan) return false;
+  settings.planner_usable_B = made->usable_B;
+  options.plan_base = std::move(made->plan);
+  // The guard's keep-out is the planner's user cylinder unless <server> says otherwise.
+  if (!(scene.server && scene.server->params.count("keep_out_m") != 0)) {
+    settings.base_guard.keep_out_m = made->collision_radius_m;
+  }
+  return true;
+}
+
+}  // namespace
+
 Result<OpenedServer> HapticServer::open(const SceneDescription& scene, const CompiledScene& compiled,
                                         ServerOptions options) {
   // What `mhd validate` checks too: the verdict is the same function's.
@@ -54,86 +105,62 @@ Result<OpenedServer> HapticServer::open(const SceneDescription& scene, const Com
   Result<Rig, std::vector<RigError>> rig = Rig::from_scene(scene);
   if (!settings.ok() || !rig.ok()) throw std::logic_error("check_scene_for_run passed a scene it cannot run");
 
-  const PluginDescription* device = nullptr;
-  const PluginDescription* tracker = nullptr;
-  const PluginDescription* base = nullptr;
-  std::vector<const PluginDescription*> displays;
-  for (const PluginDescription& p : scene.plugins) {
-    if (p.kind == PluginKind::Device) {
-      device = &p;
-    } else if (p.kind == PluginKind::Tracker) {
-      tracker = &p;
-    } else if (p.kind == PluginKind::Base) {
-      base = &p;
-    } else {
-      displays.push_back(&p);
-    }
-  }
-  const bool desktop = scene.rig_kind.kind == RigKind::Desktop;
-  ScenePlanner planner;
-  if (!desktop && !options.plan_base) {
-    Result<ScenePlanner> made = scene_planner(scene, *rig);
-    if (!made.ok()) return made.error();
-    planner = std::move(made).value();
-  }
-
-  const bool scene_plans = static_cast<bool>(planner.plan);
-  if (planner.plan) {
-    settings->planner_usable_B = planner.usable_B;
-    options.plan_base = std::move(planner.plan);
-    // The guard's keep-out is the planner's user cylinder unless <server> says otherwise.
-    if (!(scene.server && scene.server->params.count("keep_out_m") != 0)) {
-      settings->base_guard.keep_out_m = planner.collision_radius_m;
-    }
-  }
+  const PluginRoles roles(scene);
+  const Result<bool> scene_plans = plan_from_scene(scene, *rig, *settings, options);
+  if (!scene_plans.ok()) return scene_plans.error();
   auto impl = std::make_unique<Impl>(compiled, *settings, std::move(options), std::move(*rig));
   impl->host.set_scene_file(scene.file);
-  const PluginSearchPath search = PluginSearchPath::standard(impl->options.plugin_path);
-
-  std::vector<const PluginDescription*> order = {device};
-  if (tracker != nullptr) order.push_back(tracker);
-  if (base != nullptr) order.push_back(base);
-  order.insert(order.end(), displays.begin(), displays.end());
-  impl->plugins.reserve(order.size());  // pointers into it stay valid
-  for (const PluginDescription* d : order) {
-    auto opened = open_plugin(search, *d, impl->host.abi());
-    if (!opened.ok()) {
-      errors.push_back({d->where, opened.error().to_string()});
-      continue;
-    }
-    impl->plugins.push_back({*d, std::move(opened).value()});
-  }
+  errors = impl->open_plugins(roles.open_order());
   if (!errors.empty()) return errors;  // the opened ones close with impl
 
   OpenedServer out;
   impl->device = &impl->plugins[0];
-  // One source for the force limit: the device's, lowered by the scene's when smaller.
-  if (auto info = impl->device->instance.device_info(); info.ok()) {
-    double& max_force_N = impl->settings.tick.safety.max_force_N;
-    ForceLimit limit = force_limit_for(scene.haptics.max_force_N, info.value().max_force_N, device->name);
-    max_force_N = limit.max_force_N;
-    if (limit.warning) out.warnings.push_back({device->where, std::move(*limit.warning)});
-    // The scene's planner keeps the HIP in this device's own workspace, not the rig
-    // model's (which describes a PHANToM): checked above with the rig's, made again here.
-    if (scene_plans) {
-      const std::optional<WorkspaceBox> usable_P =
-          usable_device_workspace(info.value(), impl->rig.device().usable_margin_m);
-      if (!usable_P) {
-        return Diagnostics{{device->where, "device '" + device->name + "' reports no workspace box larger than the "
-                                               "rig's usable margin: the base planner has nowhere to keep the hand"}};
-      }
-      Result<ScenePlanner> made = scene_planner(scene, impl->rig, usable_P);
-      if (!made.ok()) return made.error();
-      impl->settings.planner_usable_B = made->usable_B;
-      impl->options.plan_base = std::move(made->plan);
-    }
-  }
+  errors = impl->fit_to_device(scene, *roles.device, scene_plans.value(), out.warnings);
+  if (!errors.empty()) return errors;
   std::size_t next = 1;
-  if (tracker != nullptr) impl->tracker = &impl->plugins[next++];
-  if (base != nullptr) impl->base = &impl->plugins[next++];
+  if (roles.tracker != nullptr) impl->tracker = &impl->plugins[next++];
+  if (roles.base != nullptr) impl->base = &impl->plugins[next++];
   for (; next < impl->plugins.size(); ++next) impl->displays.push_back(&impl->plugins[next]);
   out.server = std::unique_ptr<HapticServer>(new HapticServer(std::move(impl)));
   return out;
+}
+
+Diagnostics HapticServer::Impl::open_plugins(const std::vector<const PluginDescription*>& order) {
+  const PluginSearchPath search = PluginSearchPath::standard(options.plugin_path);
+  Diagnostics errors;
+  plugins.reserve(order.size());  // pointers into it stay valid
+  for (const PluginDescription* d : order) {
+    auto opened = open_plugin(search, *d, host.abi());
+    if (!opened.ok()) {
+      errors.push_back({d->where, opened.error().to_string()});
+      continue;
+    }
+    plugins.push_back({*d, std::move(opened).value()});
+  }
+  return errors;
+}
+
+Diagnostics HapticServer::Impl::fit_to_device(const SceneDescription& description, const PluginDescription& described,
+                                              bool scene_plans, Diagnostics& warnings) {
+  auto info = device->instance.device_info();
+  if (!info.ok()) return {};
+  // One source for the force limit: the device's, lowered by the scene's when smaller.
+  ForceLimit limit = force_limit_for(description.haptics.max_force_N, info.value().max_force_N, described.name);
+  settings.tick.safety.max_force_N = limit.max_force_N;
+  if (limit.warning) warnings.push_back({described.where, std::move(*limit.warning)});
+  if (!scene_plans) return {};
+  // The scene's planner keeps the HIP in this device's own workspace, not the rig
+  // model's (which describes a PHANToM): checked with the rig's, made again here.
+  const std::optional<WorkspaceBox> usable_P = usable_device_workspace(info.value(), rig.device().usable_margin_m);
+  if (!usable_P) {
+    return {{described.where, "device '" + described.name + "' reports no workspace box larger than the "
+                                                              "rig's usable margin: the base planner has nowhere to keep the hand"}};
+  }
+  Result<ScenePlanner> made = scene_planner(description, rig, usable_P);
+  if (!made.ok()) return made.error();
+  settings.planner_usable_B = made->usable_B;
+  options.plan_base = std::move(made->plan);
+  return {};
 }
 
 // ---- running -------------------------------------------------------------------------

@@ -159,6 +159,12 @@ struct HapticServer::Impl {
   /// (io_thread.cpp).
   void stop_base();
 
+  // Opening (haptic_server.cpp): the plugins in `order`, then the settings that depend on
+  // the device's own report. Each returns the problems at their scene lines.
+  Diagnostics open_plugins(const std::vector<const PluginDescription*>& order);
+  Diagnostics fit_to_device(const SceneDescription& description, const PluginDescription& described, bool scene_plans,
+                            Diagnostics& warnings);
+
   // Each thread's body, in its own file (<name>.cpp).
   void haptic_thread();
   // The haptic thread's steps, in tick order; a false return ends the run.
@@ -170,6 +176,17 @@ struct HapticServer::Impl {
   void count(const HapticTickOutput& out, const realtime::TimerStats& timer);
 
   void io_thread();
+  // The io thread's steps, in period order (io_thread.cpp); a false return (or nullopt)
+  // ends the run.
+  struct IoThreadState;
+  bool take_samples_until_deadline(IoThreadState& io, const realtime::PeriodicTimer& timer);
+  bool simulate_io_plugins(double t_s);
+  std::optional<std::size_t> read_tracker(IoThreadState& io);
+  bool take_sample(IoThreadState& io, const mhd_tracker_sample& s, double read_at_s, bool& base_sample);
+  bool read_tracker_counters(IoThreadState& io, double t_s);
+  bool read_base(double t_s);
+  BaseGuardDecision guard_plan(IoThreadState& io, double t_s, bool& new_plan);
+  bool send_base_command(IoThreadState& io, double t_s, bool new_plan, const BaseGuardDecision& guarded);
   void planner_thread();
   void display_thread();
   void recorder_thread();
