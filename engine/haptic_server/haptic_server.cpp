@@ -168,185 +168,212 @@ Diagnostics HapticServer::Impl::fit_to_device(const SceneDescription& descriptio
 ServerReport HapticServer::run() {
   Impl& m = *impl_;
   ServerReport report;
-
-  // Start: device last, so force starts only once the rest is running.
-  std::vector<OpenedPlugin*> start_order;
-  for (auto& p : m.plugins) {
-    if (&p != m.device) start_order.push_back(&p);
-  }
-  start_order.push_back(m.device);
-  m.gasp_state.store(Impl::kGaspArmed);
-  for (OpenedPlugin* p : start_order) {
-    const InCall in_call(*p, "start", m.host.now_s());
-    auto r = p->instance.start();
-    if (!r.ok()) {
-      m.fail(Impl::plugin_failure(p->description, r.error()));
-      break;
-    }
-  }
-
-  if (!m.options.recording.empty()) {
-    try {
-      m.recording.emplace(m.options.recording, m.settings.record_flush_s);
-    } catch (const std::exception& e) {
-      m.fail(e.what());
-    }
-  }
+  const std::vector<OpenedPlugin*> start_order = m.start_plugins();
+  if (!m.options.recording.empty()) m.open_recording();
 
   const bool desktop = m.rig.kind() == RigKind::Desktop;
   m.tick_on_tracker_sample = m.tracker != nullptr && m.settings.tick_on_tracker_sample && m.tracker->instance.waits();
   if (desktop) m.stop_base();  // no base: nothing to stop, and that is confirmed now
   const double t0_s = m.host.now_s();
-  if (!m.stop.load()) {
-    std::vector<std::thread> threads;
-    auto spawn = [&](void (Impl::*body)(), const char* name) {
-      m.running_threads.fetch_add(1);
-      threads.emplace_back([&m, body, name] {
-        t_server_thread = true;
-        // The last gasp must run even when this thread's own stack overflowed.
-        const realtime::AlternateSignalStack signal_stack;
-        // Runs on a return and on the unwinding of pthread_exit alike.
-        struct ThreadEnd {
-          Impl& m;
-          void (Impl::*body)();
-          const char* name;
-          bool returned = false;
-          ~ThreadEnd() {
-            if (!returned) m.thread_vanished(body, name);
-            m.running_threads.fetch_sub(1);
-          }
-        } end{m, body, name};
-        (m.*body)();
-        end.returned = true;
-      });
-    };
-    // A desktop rig has no tracker, base or planner: the haptic thread (and the displays).
-    if (!desktop) spawn(&Impl::io_thread, "io");
-    spawn(&Impl::haptic_thread, "haptic");
-    if (!desktop) spawn(&Impl::planner_thread, "planner");
-    if (!m.displays.empty()) spawn(&Impl::display_thread, "display");
-    std::thread recorder;
-    if (m.recording) recorder = std::thread([&] { m.recorder_thread(); });
-
-    double last_status_t_s = t0_s;
-    std::uint64_t last_status_ticks = 0;
-    // A plugin call that does not come back within plugin_call_timeout_s ends the run.
-    // The other threads then reach their safe state; the base gets its stop from here
-    // when its own (io) thread is the one stuck, inside the tracker.
-    PluginWatchdog watchdog(m.settings.plugin_call_timeout_s);
-    std::vector<OpenedPlugin*> watched;
-    for (OpenedPlugin* p : {m.device, m.tracker, m.base}) {
-      if (p == nullptr) continue;
-      (void)watchdog.watch(*p->watch);
-      watched.push_back(p);
-    }
-    auto watch_calls = [&](double now_s) {
-      const std::optional<StuckCall> stuck = watchdog.check(now_s);
-      if (!stuck) return;
-      const OpenedPlugin& plugin = *watched[stuck->index];
-      m.fail(Diagnostic{plugin.description.where, stuck_call_message(plugin.description.name, *stuck)}.to_string());
-      if (&plugin == m.tracker) m.stop_base();
-    };
-    while (!m.stop.load()) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
-      const double now_s = m.host.now_s();
-      watch_calls(now_s);
-      if (stop_requested_.load(std::memory_order_relaxed)) {
-        report.ended_by = RunEnd::StopRequested;
-        m.stop.store(true);
-      } else if (m.options.duration_s > 0.0 && now_s - t0_s >= m.options.duration_s) {
-        report.ended_by = RunEnd::Duration;
-        m.stop.store(true);
-      }
-      if (m.options.on_status && now_s - last_status_t_s >= m.options.status_interval_s) {
-        ServerStatus s = m.status_counters.snapshot(now_s - t0_s, last_status_ticks, now_s - last_status_t_s);
-        s.rig_kind = m.rig.kind();
-        m.options.on_status(s);
-        last_status_t_s = now_s;
-        last_status_ticks = s.ticks;
-      }
-    }
-    // Wait for the threads, watching calls still; one that never leaves a plugin call is
-    // left behind (and the plugins with it: nothing may unload code a thread is in).
-    const double give_up_s = m.host.now_s() + m.settings.plugin_call_timeout_s + 2.0;
-    while (m.running_threads.load() > 0 && m.host.now_s() < give_up_s) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(1));
-      watch_calls(m.host.now_s());
-    }
-    if (m.running_threads.load() > 0) {
-      m.abandoned = true;
-      for (auto& t : threads) t.detach();
-    } else {
-      for (auto& t : threads) t.join();
-    }
-    m.recorder_stop.store(true, std::memory_order_release);
-    if (recorder.joinable()) recorder.join();
-    // A vanished thread never sent its safe state: this thread does, now that none of
-    // the server's threads calls the plugins any more.
-    if (!m.abandoned && m.haptic_thread_vanished.load()) {
-      const InCall in_call(*m.device, "device_write", m.host.now_s());
-      m.zero_force_sent = send_zero_torque(m.device->instance, m.host);
-    }
-    if (!m.abandoned && m.io_thread_vanished.load()) m.stop_base();
-  }
-
-  // The tracker's final counts (its thread has ended, so this thread may call it).
-  if (!m.abandoned && m.tracker != nullptr && m.tracker->instance.counts() && m.tracker->instance.state() != PluginState::Loaded) {
-    std::array<mhd_counter, 32> buffer{};
-    if (auto n = m.tracker->instance.counters(buffer); n.ok()) {
-      std::vector<PluginCounter> out;
-      for (std::size_t i = 0; i < n.value(); ++i) out.push_back({buffer[i].name, buffer[i].value});
-      m.status_counters.tracker_plugin_counters.set(out);
-    }
-  }
+  if (!m.stop.load()) m.run_threads(report, t0_s, stop_requested_);
+  if (!m.abandoned) m.read_final_tracker_counts();
 
   // A dying thread is sending its last gasp through the plugins: leave them open; the
   // process ends from that thread.
   if (int armed = Impl::kGaspArmed; !m.gasp_state.compare_exchange_strong(armed, Impl::kGaspIdle)) {
     for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));
   }
+  if (!m.abandoned) m.stop_and_close(start_order);
+  m.fill_report(report, m.host.now_s() - t0_s);
+  return report;
+}
 
-  // Stop and close everything (device first: no force while the rest shuts down).
-  std::vector<OpenedPlugin*> stop_order(start_order.rbegin(), start_order.rend());
-  if (m.abandoned) stop_order.clear();
-  for (OpenedPlugin* p : stop_order) {
-    if (p->instance.state() == PluginState::Running) {
-      const InCall in_call(*p, "stop", m.host.now_s());
-      if (auto r = p->instance.stop(); !r.ok()) m.fail(Impl::plugin_failure(p->description, r.error()));
-    }
-    const InCall in_call(*p, "close", m.host.now_s());
-    (void)p->instance.close();
+void HapticServer::Impl::run_threads(ServerReport& report, double t0_s, const std::atomic<bool>& stop_requested) {
+  const bool desktop = rig.kind() == RigKind::Desktop;
+  std::vector<std::thread> threads;
+  // A desktop rig has no tracker, base or planner: the haptic thread (and the displays).
+  if (!desktop) spawn(threads, &Impl::io_thread, "io");
+  spawn(threads, &Impl::haptic_thread, "haptic");
+  if (!desktop) spawn(threads, &Impl::planner_thread, "planner");
+  if (!displays.empty()) spawn(threads, &Impl::display_thread, "display");
+  std::thread recorder;
+  if (recording) recorder = std::thread([this] { recorder_thread(); });
+
+  // A plugin call that does not come back within plugin_call_timeout_s ends the run.
+  // The other threads then reach their safe state; the base gets its stop from here
+  // when its own (io) thread is the one stuck, inside the tracker.
+  PluginWatchdog watchdog(settings.plugin_call_timeout_s);
+  std::vector<OpenedPlugin*> watched;
+  for (OpenedPlugin* p : {device, tracker, base}) {
+    if (p == nullptr) continue;
+    (void)watchdog.watch(*p->watch);
+    watched.push_back(p);
   }
+  supervise(report, t0_s, stop_requested, watchdog, watched);
+  join_threads(threads, watchdog, watched);
+  recorder_stop.store(true, std::memory_order_release);
+  if (recorder.joinable()) recorder.join();
+  // A vanished thread never sent its safe state: this thread does, now that none of
+  // the server's threads calls the plugins any more.
+  if (!abandoned && haptic_thread_vanished.load()) {
+    const InCall in_call(*device, "device_write", host.now_s());
+    zero_force_sent = send_zero_torque(device->instance, host);
+  }
+  if (!abandoned && io_thread_vanished.load()) stop_base();
+}
 
-  const double elapsed_s = m.host.now_s() - t0_s;
-  report.status = m.status_counters.snapshot(elapsed_s, 0, elapsed_s);
-  report.status.rig_kind = m.rig.kind();
-  report.missed_deadlines = m.missed.load();
-  report.tick_median_us = m.tick_histogram.quantile_us(0.5);
-  report.tick_p99_us = m.tick_histogram.quantile_us(0.99);
-  report.tick_p999_us = m.tick_histogram.quantile_us(0.999);
-  report.tick_max_us = m.tick_histogram.max_us();
-  report.contact_ticks = m.contact_ticks.load();
-  report.proxy_budget_exhausted_ticks = m.proxy_budget_exhausted_ticks.load();
-  report.startup_ticks = m.startup_ticks;
-  report.stale_ticks = m.safety_counters.stale_ticks;
-  report.fault_ticks = m.safety_counters.fault_ticks;
-  report.hip_jumps = m.safety_counters.jumps;
-  report.clamped_ticks = m.safety_counters.clamped_ticks;
-  report.base_commands = m.base_commands.load();
-  report.base_stops = m.base_stops.load();
-  report.base_stops_by_cause = m.base_stop_counts.get();
-  report.recording_rows = m.recording_rows_written;
-  report.recording_dropped = m.recording_dropped.load();
-  report.zero_force_sent = m.zero_force_sent;
-  report.haptic_scheduling = m.scheduling;
-  report.base_stop_sent = m.base_stop_sent.load();
+void HapticServer::Impl::supervise(ServerReport& report, double t0_s, const std::atomic<bool>& stop_requested,
+                                   PluginWatchdog& watchdog, const std::vector<OpenedPlugin*>& watched) {
+  double last_status_t_s = t0_s;
+  std::uint64_t last_status_ticks = 0;
+  while (!stop.load()) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    const double now_s = host.now_s();
+    watch_calls(watchdog, watched, now_s);
+    if (stop_requested.load(std::memory_order_relaxed)) {
+      report.ended_by = RunEnd::StopRequested;
+      stop.store(true);
+    } else if (options.duration_s > 0.0 && now_s - t0_s >= options.duration_s) {
+      report.ended_by = RunEnd::Duration;
+      stop.store(true);
+    }
+    if (options.on_status && now_s - last_status_t_s >= options.status_interval_s) {
+      ServerStatus s = status_counters.snapshot(now_s - t0_s, last_status_ticks, now_s - last_status_t_s);
+      s.rig_kind = rig.kind();
+      options.on_status(s);
+      last_status_t_s = now_s;
+      last_status_ticks = s.ticks;
+    }
+  }
+}
+
+std::vector<OpenedPlugin*> HapticServer::Impl::start_plugins() {
+  // Device last, so force starts only once the rest is running.
+  std::vector<OpenedPlugin*> start_order;
+  for (auto& p : plugins) {
+    if (&p != device) start_order.push_back(&p);
+  }
+  start_order.push_back(device);
+  gasp_state.store(kGaspArmed);
+  for (OpenedPlugin* p : start_order) {
+    const InCall in_call(*p, "start", host.now_s());
+    auto r = p->instance.start();
+    if (!r.ok()) {
+      fail(plugin_failure(p->description, r.error()));
+      break;
+    }
+  }
+  return start_order;
+}
+
+void HapticServer::Impl::open_recording() {
+  try {
+    recording.emplace(options.recording, settings.record_flush_s);
+  } catch (const std::exception& e) {
+    fail(e.what());
+  }
+}
+
+void HapticServer::Impl::spawn(std::vector<std::thread>& threads, void (Impl::*body)(), const char* name) {
+  running_threads.fetch_add(1);
+  threads.emplace_back([this, body, name] {
+    t_server_thread = true;
+    // The last gasp must run even when this thread's own stack overflowed.
+    const realtime::AlternateSignalStack signal_stack;
+    // Runs on a return and on the unwinding of pthread_exit alike.
+    struct ThreadEnd {
+      Impl& m;
+      void (Impl::*body)();
+      const char* name;
+      bool returned = false;
+      ~ThreadEnd() {
+        if (!returned) m.thread_vanished(body, name);
+        m.running_threads.fetch_sub(1);
+      }
+    } end{*this, body, name};
+    (this->*body)();
+    end.returned = true;
+  });
+}
+
+void HapticServer::Impl::watch_calls(PluginWatchdog& watchdog, const std::vector<OpenedPlugin*>& watched,
+                                     double now_s) {
+  const std::optional<StuckCall> stuck = watchdog.check(now_s);
+  if (!stuck) return;
+  const OpenedPlugin& plugin = *watched[stuck->index];
+  fail(Diagnostic{plugin.description.where, stuck_call_message(plugin.description.name, *stuck)}.to_string());
+  if (&plugin == tracker) stop_base();
+}
+
+void HapticServer::Impl::join_threads(std::vector<std::thread>& threads, PluginWatchdog& watchdog,
+                                      const std::vector<OpenedPlugin*>& watched) {
+  // Wait for the threads, watching calls still; one that never leaves a plugin call is
+  // left behind (and the plugins with it: nothing may unload code a thread is in).
+  const double give_up_s = host.now_s() + settings.plugin_call_timeout_s + 2.0;
+  while (running_threads.load() > 0 && host.now_s() < give_up_s) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    watch_calls(watchdog, watched, host.now_s());
+  }
+  if (running_threads.load() > 0) {
+    abandoned = true;
+    for (auto& t : threads) t.detach();
+  } else {
+    for (auto& t : threads) t.join();
+  }
+}
+
+void HapticServer::Impl::read_final_tracker_counts() {
+  // Its thread has ended, so this thread may call it.
+  if (tracker == nullptr || !tracker->instance.counts() || tracker->instance.state() == PluginState::Loaded) return;
+  std::array<mhd_counter, 32> buffer{};
+  if (auto n = tracker->instance.counters(buffer); n.ok()) {
+    std::vector<PluginCounter> out;
+    for (std::size_t i = 0; i < n.value(); ++i) out.push_back({buffer[i].name, buffer[i].value});
+    status_counters.tracker_plugin_counters.set(out);
+  }
+}
+
+void HapticServer::Impl::stop_and_close(const std::vector<OpenedPlugin*>& start_order) {
+  // Device first: no force while the rest shuts down.
+  for (auto p = start_order.rbegin(); p != start_order.rend(); ++p) {
+    OpenedPlugin& plugin = **p;
+    if (plugin.instance.state() == PluginState::Running) {
+      const InCall in_call(plugin, "stop", host.now_s());
+      if (auto r = plugin.instance.stop(); !r.ok()) fail(plugin_failure(plugin.description, r.error()));
+    }
+    const InCall in_call(plugin, "close", host.now_s());
+    (void)plugin.instance.close();
+  }
+}
+
+void HapticServer::Impl::fill_report(ServerReport& report, double elapsed_s) {
+  report.status = status_counters.snapshot(elapsed_s, 0, elapsed_s);
+  report.status.rig_kind = rig.kind();
+  report.missed_deadlines = missed.load();
+  report.tick_median_us = tick_histogram.quantile_us(0.5);
+  report.tick_p99_us = tick_histogram.quantile_us(0.99);
+  report.tick_p999_us = tick_histogram.quantile_us(0.999);
+  report.tick_max_us = tick_histogram.max_us();
+  report.contact_ticks = contact_ticks.load();
+  report.proxy_budget_exhausted_ticks = proxy_budget_exhausted_ticks.load();
+  report.startup_ticks = startup_ticks;
+  report.stale_ticks = safety_counters.stale_ticks;
+  report.fault_ticks = safety_counters.fault_ticks;
+  report.hip_jumps = safety_counters.jumps;
+  report.clamped_ticks = safety_counters.clamped_ticks;
+  report.base_commands = base_commands.load();
+  report.base_stops = base_stops.load();
+  report.base_stops_by_cause = base_stop_counts.get();
+  report.recording_rows = recording_rows_written;
+  report.recording_dropped = recording_dropped.load();
+  report.zero_force_sent = zero_force_sent;
+  report.haptic_scheduling = scheduling;
+  report.base_stop_sent = base_stop_sent.load();
   {
-    const std::lock_guard lock(m.error_mutex);
-    report.error = m.error;
+    const std::lock_guard lock(error_mutex);
+    report.error = error;
   }
   if (report.error) report.ended_by = RunEnd::Fault;  // a fault wins over a stop at the same moment
-  return report;
 }
 
 void HapticServer::Impl::thread_vanished(void (Impl::*body)(), const char* thread_name) {

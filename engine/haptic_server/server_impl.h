@@ -30,12 +30,14 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
 namespace mhd {
 
 class HapticTick;
+class PluginWatchdog;
 struct HapticTickOutput;
 
 struct HapticServer::Impl {
@@ -158,6 +160,20 @@ struct HapticServer::Impl {
   /// Sends the base a zero twist (under its call mutex) and notes whether it took it
   /// (io_thread.cpp).
   void stop_base();
+
+  // Running (haptic_server.cpp), in run()'s order.
+  std::vector<OpenedPlugin*> start_plugins();
+  void open_recording();
+  void run_threads(ServerReport& report, double t0_s, const std::atomic<bool>& stop_requested);
+  void spawn(std::vector<std::thread>& threads, void (Impl::*body)(), const char* name);
+  void supervise(ServerReport& report, double t0_s, const std::atomic<bool>& stop_requested, PluginWatchdog& watchdog,
+                 const std::vector<OpenedPlugin*>& watched);
+  void watch_calls(PluginWatchdog& watchdog, const std::vector<OpenedPlugin*>& watched, double now_s);
+  void join_threads(std::vector<std::thread>& threads, PluginWatchdog& watchdog,
+                    const std::vector<OpenedPlugin*>& watched);
+  void read_final_tracker_counts();
+  void stop_and_close(const std::vector<OpenedPlugin*>& start_order);
+  void fill_report(ServerReport& report, double elapsed_s);
 
   // Opening (haptic_server.cpp): the plugins in `order`, then the settings that depend on
   // the device's own report. Each returns the problems at their scene lines.
