@@ -62,6 +62,15 @@ struct PlannerOutput {
   bool guard_active = false;                           ///< the guard removed motion towards the user
 };
 
+/// What every planner reads first: the base and the hand in world (x, z), and its output
+/// with hip_in_usable set.
+struct PlanarStart {
+  PlannerOutput out;
+  Eigen::Vector2d base_W;
+  Eigen::Vector2d hand_W;
+};
+[[nodiscard]] PlanarStart planar_start(const PlannerInput& in, const PlannerSettings& settings) noexcept;
+
 class Planner {
  public:
   explicit Planner(const PlannerSettings& settings) : settings_(settings) {}

@@ -24,11 +24,7 @@ Eigen::Vector2d base_to_world_xz(double heading_rad, const Eigen::Vector2d& v_B)
 
 PlannerOutput PredictivePlanner::update(const PlannerInput& in) noexcept {
   const PlannerSettings& s = settings_;
-  PlannerOutput out;
-  const Eigen::Vector2d base(in.base.x_m, in.base.z_m);
-  const Eigen::Vector2d hand(in.p_W_hip.x(), in.p_W_hip.z());
-  const Eigen::Vector2d hip_B = g::hip_in_base(in.base, in.p_W_hip);
-  out.hip_in_usable = s.usable_B.contains(hip_B.x(), hip_B.y());
+  auto [out, base, hand] = planar_start(in, s);
 
   const double d_target = s.target_distance_m();
   const double r_collision = s.collision_radius_m();

@@ -11,11 +11,7 @@ namespace g = planner_geometry;
 
 PlannerOutput SeedPlanner::update(const PlannerInput& in) noexcept {
   const PlannerSettings& s = settings_;
-  PlannerOutput out;
-  const Eigen::Vector2d base(in.base.x_m, in.base.z_m);
-  const Eigen::Vector2d hand(in.p_W_hip.x(), in.p_W_hip.z());
-  const Eigen::Vector2d hip_B = g::hip_in_base(in.base, in.p_W_hip);
-  out.hip_in_usable = s.usable_B.contains(hip_B.x(), hip_B.y());
+  auto [out, base, hand] = planar_start(in, s);
 
   const Eigen::Vector2d rel = base - in.user_W;
   const double d = rel.norm();

@@ -17,14 +17,6 @@ class ExactPrimitivesScene : public SceneFixture {
  protected:
   void SetUp() override { ASSERT_NO_FATAL_FAILURE(load("scenes/exact_primitives.xml")); }
 
-  int object(const std::string& name) {
-    for (std::size_t i = 0; i < scene().object_names.size(); ++i) {
-      if (scene().object_names[i] == name) return static_cast<int>(i);
-    }
-    ADD_FAILURE() << "no object " << name;
-    return 0;
-  }
-
   // Comes down along -n onto `on_surface` from 20 mm out to `depth` in, holds still, and
   // returns the last tick; fails on any crossing or tick inside.
   TickSample press(const Eigen::Vector3d& on_surface, const Eigen::Vector3d& n, double depth) {

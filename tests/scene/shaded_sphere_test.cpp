@@ -16,14 +16,6 @@ namespace {
 
 class ShadedSphereScene : public SceneFixture {
  protected:
-  int object(const std::string& name) {
-    for (std::size_t i = 0; i < scene().object_names.size(); ++i) {
-      if (scene().object_names[i] == name) return static_cast<int>(i);
-    }
-    ADD_FAILURE() << "no object " << name;
-    return 0;
-  }
-
   struct Stroke {
     double angle_rms_rad = 0;  // force's angle to the true sphere normal at the HIP
     int contact_ticks = 0;

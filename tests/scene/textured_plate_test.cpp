@@ -19,16 +19,7 @@ namespace {
 constexpr double kRate_Hz = 1000.0;
 constexpr double kTop_m = 1.010;  // the plates' top faces (y), from the scene's comment
 
-class TexturedPlate : public SceneFixture {
- protected:
-  int object(const std::string& name) {
-    for (std::size_t i = 0; i < scene().object_names.size(); ++i) {
-      if (scene().object_names[i] == name) return static_cast<int>(i);
-    }
-    ADD_FAILURE() << "no object " << name;
-    return 0;
-  }
-};
+class TexturedPlate : public SceneFixture {};
 
 /// Amplitude of the DFT of `x` (mean removed) at bin k.
 double amplitude_at(const std::vector<double>& x, std::size_t k) {

@@ -53,6 +53,14 @@ void SceneFixture::load(const std::string& scene_path_relative_to_repo) {
   rebuild_oracle();
 }
 
+int SceneFixture::object(const std::string& name) {
+  for (std::size_t i = 0; i < scene().object_names.size(); ++i) {
+    if (scene().object_names[i] == name) return static_cast<int>(i);
+  }
+  ADD_FAILURE() << "no object " << name;
+  return 0;
+}
+
 void SceneFixture::rebuild_oracle() {
   if (scene_) oracle_ = std::make_unique<SurfaceCrossingOracle>(scene_->world);
 }

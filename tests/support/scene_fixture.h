@@ -51,6 +51,8 @@ class SceneFixture : public ::testing::Test {
   /// The loaded scene and its oracle; throw std::logic_error (a test failure) if none.
   [[nodiscard]] CompiledScene& scene();
   [[nodiscard]] const SurfaceCrossingOracle& oracle() const;
+  /// The index of the loaded scene's object `name`; a test failure (and 0) when it has none.
+  [[nodiscard]] int object(const std::string& name);
   /// Re-snapshots the world after objects were moved with set_pose().
   void rebuild_oracle();
 
