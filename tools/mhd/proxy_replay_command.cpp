@@ -7,7 +7,7 @@
 
 #include "proxy_replay_command.h"
 
-#include "load_progress.h"
+#include "command_scene.h"
 
 #include "command_exit.h"
 #include "output_path_check.h"
@@ -91,16 +91,11 @@ int proxy_replay(const ProxyReplayOptions& opt) {
     return 1;
   }
 
-  const mhd::Result<mhd::SceneDescription> read = mhd::read_scene_file(opt.scene);
-  for (const auto& d : read.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
-  if (!read.ok()) return 1;
-  mhd::CompileOptions compile_options;
-  compile_options.use_cache = !opt.no_cache;
-  compile_options.progress = mhd::cli::stderr_load_progress();
-  const mhd::Result<std::unique_ptr<mhd::CompiledScene>> compiled = mhd::compile_scene(*read, compile_options);
-  for (const auto& d : compiled.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
-  if (!compiled.ok()) return 1;
-  const mhd::CompiledScene& scene = *compiled.value();
+  const std::optional<mhd::SceneDescription> read = mhd::cli::read_command_scene(opt.scene);
+  if (!read) return 1;
+  const std::unique_ptr<mhd::CompiledScene> compiled = mhd::cli::compile_command_scene(*read, !opt.no_cache);
+  if (!compiled) return 1;
+  const mhd::CompiledScene& scene = *compiled;
 
   mhd::MovingWorld moving(scene.world, scene.motions, scene.dynamics);
   moving.place(0.0);

@@ -7,7 +7,7 @@
 
 #include "replay_command.h"
 
-#include "load_progress.h"
+#include "command_scene.h"
 
 #include "command_exit.h"
 #include "haptic_server/recording_replay.h"
@@ -51,14 +51,10 @@ int replay(const ReplayOptions& opt) {
   for (const auto& d : recording.diagnostics()) fmt::print(stderr, "mhd replay: error: {}\n", d.to_string());
   if (!recording.ok()) return 1;
 
-  const mhd::Result<mhd::SceneDescription> read = mhd::read_scene_file(scene_file);
-  for (const auto& d : read.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
-  if (!read.ok()) return 1;
-  mhd::CompileOptions compile_options;
-  compile_options.progress = mhd::cli::stderr_load_progress();
-  const mhd::Result<std::unique_ptr<mhd::CompiledScene>> compiled = mhd::compile_scene(*read, compile_options);
-  for (const auto& d : compiled.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
-  if (!compiled.ok()) return 1;
+  const std::optional<mhd::SceneDescription> read = mhd::cli::read_command_scene(scene_file);
+  if (!read) return 1;
+  const std::unique_ptr<mhd::CompiledScene> compiled = mhd::cli::compile_command_scene(*read);
+  if (!compiled) return 1;
   const mhd::Result<mhd::Rig, std::vector<mhd::RigError>> rig = mhd::Rig::from_scene(*read);
   if (!rig.ok()) fmt::print(stderr, "{}\n", rig.error_text());
   const mhd::Result<mhd::ServerSettings> settings = mhd::server_settings_from(*read);
@@ -66,7 +62,7 @@ int replay(const ReplayOptions& opt) {
   if (!rig.ok() || !settings.ok()) return 1;
 
   const mhd::ReplayComparison r =
-      mhd::replay_recording(*compiled.value(), *rig, settings->tick, recording.value());
+      mhd::replay_recording(*compiled, *rig, settings->tick, recording.value());
   fmt::print("replayed {} rows of {} on {}\n", r.rows, opt.recording, scene_file);
   fmt::print("max difference: force {:.3g} N, proxy {:.3g} m, device force {:.3g} N; {} rows differ\n",
              r.max_force_difference_N, r.max_proxy_difference_m, r.max_device_force_difference_N, r.differing_rows);

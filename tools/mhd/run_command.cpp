@@ -10,7 +10,7 @@
 
 #include "run_command.h"
 
-#include "load_progress.h"
+#include "command_scene.h"
 
 #include "command_exit.h"
 #include "output_path_check.h"
@@ -96,9 +96,8 @@ int run(const RunOptions& opt) {
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();
   mhd::cli::install_run_signal_handlers();
-  const mhd::Result<mhd::SceneDescription> read = mhd::read_scene_file(opt.scene);
-  for (const auto& d : read.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
-  if (!read.ok()) return 1;
+  const std::optional<mhd::SceneDescription> read = mhd::cli::read_command_scene(opt.scene);
+  if (!read) return 1;
   if (!opt.record.empty()) {
     // The recording and its .meta beside it.
     for (const std::string& out : {opt.record, opt.record + ".meta"}) {
@@ -109,13 +108,9 @@ int run(const RunOptions& opt) {
     }
   }
 
-  mhd::CompileOptions compile_options;
-  compile_options.use_cache = !opt.no_cache;
-  compile_options.progress = mhd::cli::stderr_load_progress();
-  const mhd::Result<std::unique_ptr<mhd::CompiledScene>> compiled = mhd::compile_scene(*read, compile_options);
-  for (const auto& d : compiled.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
-  if (!compiled.ok()) return 1;
-  const mhd::CompiledScene& scene = *compiled.value();
+  const std::unique_ptr<mhd::CompiledScene> compiled = mhd::cli::compile_command_scene(*read, !opt.no_cache);
+  if (!compiled) return 1;
+  const mhd::CompiledScene& scene = *compiled;
 
   mhd::ServerOptions options;
   options.duration_s = opt.duration_s;

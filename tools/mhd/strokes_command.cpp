@@ -6,7 +6,7 @@
 
 #include "strokes_command.h"
 
-#include "load_progress.h"
+#include "command_scene.h"
 
 #include "command_exit.h"
 #include "scene_compiler/scene_compiler.h"
@@ -59,18 +59,13 @@ mhd::verify::StrokeSet strokes_on_object(const mhd::CompiledScene& scene, int ob
 int run(const StrokesOptions& opt) {
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();
-  const mhd::Result<mhd::SceneDescription> read = mhd::read_scene_file(opt.scene);
-  for (const auto& d : read.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
-  if (!read.ok()) return 1;
+  const std::optional<mhd::SceneDescription> read = mhd::cli::read_command_scene(opt.scene);
+  if (!read) return 1;
 
-  mhd::CompileOptions compile_options;
-  compile_options.use_cache = !opt.no_cache;
-  compile_options.progress = mhd::cli::stderr_load_progress();
-  const mhd::Result<std::unique_ptr<mhd::CompiledScene>> compiled = mhd::compile_scene(*read, compile_options);
-  for (const auto& d : compiled.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
-  if (!compiled.ok()) return 1;
+  const std::unique_ptr<mhd::CompiledScene> compiled = mhd::cli::compile_command_scene(*read, !opt.no_cache);
+  if (!compiled) return 1;
   const double load_s = std::chrono::duration<double>(Clock::now() - t0).count();
-  const mhd::CompiledScene& scene = *compiled.value();
+  const mhd::CompiledScene& scene = *compiled;
   fmt::print("scene {}: {} objects, {} triangles, touchable after {:.3f} s\n", opt.scene,
              scene.world.object_count(), scene.triangle_count, load_s);
 
