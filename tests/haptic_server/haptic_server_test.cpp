@@ -3,6 +3,7 @@
 // safe state with a message naming the plugin and its scene line.
 #include "haptic_server/haptic_server.h"
 
+#include "fault_plugin_log.h"
 #include "kinematics/rig.h"
 #include "recording/csv_recording.h"
 #include "scene_compiler/scene_compiler.h"
@@ -75,18 +76,8 @@ fs::path write_scene(const fs::path& dir, const std::string& plugins, const std:
   return file;
 }
 
-/// "count a b c" from a fault plugin's command log.
-struct CommandLog {
-  unsigned long count = 0;
-  double a = 1, b = 1, c = 1;
-};
-
-CommandLog read_log(const fs::path& file) {
-  CommandLog log;
-  std::ifstream in(file);
-  in >> log.count >> log.a >> log.b >> log.c;
-  return log;
-}
+using CommandLog = mhd::test::FaultPluginLog;
+CommandLog read_log(const fs::path& file) { return mhd::test::read_fault_plugin_log(file); }
 
 int scene_line_of(const fs::path& file, const std::string& text) {
   std::ifstream in(file);

@@ -4,6 +4,7 @@
 // gets nothing and the call says so; no base counts as a stopped base.
 #include "haptic_server/safe_stop.h"
 
+#include "fault_plugin_log.h"
 #include "plugin_host/open_plugin.h"
 #include "plugin_host/plugin_search_path.h"
 
@@ -19,18 +20,8 @@ namespace {
 using namespace mhd;
 namespace fs = std::filesystem;
 
-/// "count a b c" from a fault plugin's command log.
-struct CommandLog {
-  unsigned long count = 0;
-  double a = 1, b = 1, c = 1;
-};
-
-CommandLog read_log(const fs::path& file) {
-  CommandLog log;
-  std::ifstream in(file);
-  in >> log.count >> log.a >> log.b >> log.c;
-  return log;
-}
+using CommandLog = mhd::test::FaultPluginLog;
+CommandLog read_log(const fs::path& file) { return mhd::test::read_fault_plugin_log(file); }
 
 class SafeStopTest : public ::testing::Test {
  protected:
