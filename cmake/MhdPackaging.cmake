@@ -1,7 +1,8 @@
 # cpack -G DEB (run in the build folder): two Debian packages from the install
 # components of MhdInstall.cmake, installed under /usr:
 #   mhd      the runtime component; Depends computed by dpkg-shlibdeps (dpkg-dev) from the
-#            shared libraries the programs and plugins load.
+#            shared libraries the programs and plugins load; Recommends what its scenes
+#            and scripts use.
 #   mhd-dev  the dev component (headers, static engine libraries, CMake package,
 #            pkg-config); Depends on mhd of the same version and on the -dev packages of
 #            the libraries the engine links, which MHDConfig.cmake finds.
@@ -26,6 +27,9 @@ set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_NAME mhd)
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_SHLIBDEPS ON)
+# Used by what the package ships but not linked: the bunny scenes' mesh and the
+# installed plot scripts' matplotlib. Recommended, so that a plain install has them.
+set(CPACK_DEBIAN_RUNTIME_PACKAGE_RECOMMENDS "glmark2-data, python3-matplotlib")
 set(CPACK_DEBIAN_RUNTIME_DESCRIPTION "${PROJECT_DESCRIPTION}: mhd, tools, plugins, scenes and docs")
 set(CPACK_DEBIAN_DEV_PACKAGE_NAME mhd-dev)
 set(CPACK_DEBIAN_DEV_PACKAGE_SECTION libdevel)

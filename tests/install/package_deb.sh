@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # cpack -G DEB makes the two packages of cmake/MhdPackaging.cmake, and each says what
 # it needs: mhd's Depends (from dpkg-shlibdeps) name the shared libraries its programs
-# and plugins load; mhd-dev's name mhd of the same version and the -dev packages
-# MHDConfig.cmake finds. Their contents sit where the installed mhd looks.
+# and plugins load, its Recommends what its scenes and scripts use; mhd-dev's Depends
+# name mhd of the same version and the -dev packages MHDConfig.cmake finds. Their
+# contents sit where the installed mhd looks.
 # Usage: package_deb.sh <cpack> <build dir> <version> <libdir>
 set -euo pipefail
 cpack_exe="$1" build="$2" version="$3" libdir="$4"
@@ -21,6 +22,13 @@ depends="$(dpkg-deb -f "$runtime" Depends)"
 echo "mhd Depends: $depends"
 for lib in libc6 libstdc\\+\\+6 libassimp5 libtinyxml2-9 libspdlog1 libfmt9 libbullet; do
   grep -qE "(^|, )$lib" <<<"$depends" || fail "mhd's Depends lacks $lib"
+done
+# What its scenes and scripts use without linking it: the bunny scenes' mesh
+# (glmark2-data) and the installed plot scripts' matplotlib.
+recommends="$(dpkg-deb -f "$runtime" Recommends)"
+echo "mhd Recommends: $recommends"
+for pkg in glmark2-data python3-matplotlib; do
+  grep -qE "(^|, )$pkg(,|$)" <<<"$recommends" || fail "mhd's Recommends lacks $pkg"
 done
 dev_depends="$(dpkg-deb -f "$dev" Depends)"
 echo "mhd-dev Depends: $dev_depends"
