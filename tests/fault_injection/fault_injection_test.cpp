@@ -520,10 +520,11 @@ InContactRun run_fault_in_contact(const std::string& device_params, const std::s
 void expect_safe_end(const InContactRun& f, double fault_s, const std::string& what) {
   const ServerReport& r = f.run.report;
   EXPECT_EQ(r.ended_by, RunEnd::Fault);
-  // Pushing when the fault struck.
+  // Pushing when the fault struck: every tick of the 50 ms before it. (Over 20 ms, a
+  // loaded 2-core CI machine once ran only 2 of the haptic thread's ticks.)
   std::size_t before = 0, pushing = 0;
   for (const RecordingRow& row : f.rows) {
-    if (row.t_s >= fault_s - 0.02 && row.t_s < fault_s) {
+    if (row.t_s >= fault_s - 0.05 && row.t_s < fault_s) {
       ++before;
       if (force_N(row) > kContactForce_N) ++pushing;
     }
