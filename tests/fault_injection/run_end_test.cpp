@@ -4,6 +4,7 @@
 // way (tests/fault_injection/plugins/fi_crash.cpp), and a frozen process, whose
 // simulated hardware's command watchdog fires.
 #include "command_log_file.h"
+#include "support/mhd_run_process.h"
 
 #include <gtest/gtest.h>
 
@@ -28,7 +29,6 @@ namespace {
 namespace fs = std::filesystem;
 using mhd::test::CommandLogRow;
 using mhd::test::read_command_log;
-using Clock = std::chrono::steady_clock;
 
 fs::path fresh_dir(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("mhd_run_end_" + std::to_string(::getpid())) / name;
@@ -56,85 +56,19 @@ fs::path write_scene(const fs::path& dir, const std::string& extra_plugin, const
 
 /// `mhd run` on the scene in `dir` for `duration_s`; stdout and stderr into output.txt,
 /// or stdout into a pipe whose reading end is already closed.
-class MhdRun {
+class MhdRun : public mhd::test::MhdRunProcess {
  public:
-  MhdRun(const fs::path& dir, double duration_s, bool stdout_to_closed_pipe = false) : dir_(dir) {
-    const std::vector<std::string> argv = {MHD_CLI, "run", (dir / "scene.xml").string(), "--duration",
-                                           std::to_string(duration_s), "-q", "--plugin-path",
-                                           MHD_FAULT_INJECTION_PLUGIN_DIR, "--plugin-path", MHD_SIM_PLUGIN_DIR};
-    int pipe_fds[2] = {-1, -1};
-    if (stdout_to_closed_pipe && ::pipe(pipe_fds) != 0) throw std::runtime_error("pipe failed");
-    pid_ = ::fork();
-    if (pid_ < 0) throw std::runtime_error("fork failed");
-    if (pid_ == 0) {
-      const int fd = ::open((dir / "output.txt").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-      ::dup2(fd, 2);
-      ::dup2(stdout_to_closed_pipe ? pipe_fds[1] : fd, 1);
-      if (stdout_to_closed_pipe) {
-        ::close(pipe_fds[0]);
-        ::close(pipe_fds[1]);
-      }
-      ::close(fd);
-      if (::chdir(dir.c_str()) != 0) ::_exit(126);
-      ::signal(SIGPIPE, SIG_DFL);  // as a shell leaves it
-      std::vector<char*> args;
-      for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-      args.push_back(nullptr);
-      ::execv(args[0], args.data());
-      ::_exit(127);
-    }
-    if (stdout_to_closed_pipe) {
-      ::close(pipe_fds[0]);  // nobody reads: every write to stdout is EPIPE / SIGPIPE
-      ::close(pipe_fds[1]);
-    }
-  }
-  ~MhdRun() {
-    if (!status_) {
-      ::kill(pid_, SIGKILL);
-      (void)wait_for(std::chrono::seconds(5));
-    }
-  }
-  MhdRun(const MhdRun&) = delete;
-  MhdRun& operator=(const MhdRun&) = delete;
+  MhdRun(const fs::path& dir, double duration_s, bool stdout_to_closed_pipe = false)
+      : MhdRunProcess({.argv = {MHD_CLI, "run", (dir / "scene.xml").string(), "--duration", std::to_string(duration_s),
+                                "-q", "--plugin-path", MHD_FAULT_INJECTION_PLUGIN_DIR, "--plugin-path",
+                                MHD_SIM_PLUGIN_DIR},
+                       .dir = dir,
+                       .stdout_to_closed_pipe = stdout_to_closed_pipe}) {}
 
   /// Waits (generously) until the device has logged `rows` rows, i.e. the run is under way.
   void wait_until_running(std::size_t rows = 300) {
-    const auto give_up = Clock::now() + std::chrono::seconds(30);
-    while (Clock::now() < give_up && !wait_for(std::chrono::milliseconds(10))) {
-      try {
-        if (fs::exists(dir_ / "device.csv") && read_command_log(dir_ / "device.csv").size() >= rows) return;
-      } catch (const std::exception&) {
-        // a row being written
-      }
-    }
-    FAIL() << "mhd run did not get going: " << output();
+    if (!wait_until_logged("device.csv", rows)) FAIL() << "mhd run did not get going: " << output();
   }
-  void signal(int s) const { ::kill(pid_, s); }
-  /// The raw wait status once the process has ended.
-  std::optional<int> wait_for(std::chrono::milliseconds timeout) {
-    const auto give_up = Clock::now() + timeout;
-    while (!status_) {
-      int status = 0;
-      if (::waitpid(pid_, &status, WNOHANG) == pid_) {
-        status_ = status;
-        break;
-      }
-      if (Clock::now() >= give_up) break;
-      std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    }
-    return status_;
-  }
-  [[nodiscard]] std::string output() const {
-    std::ifstream in(dir_ / "output.txt");
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-  }
-
- private:
-  fs::path dir_;
-  pid_t pid_ = -1;
-  std::optional<int> status_;
 };
 
 std::vector<CommandLogRow> commands_in(const std::vector<CommandLogRow>& rows) {

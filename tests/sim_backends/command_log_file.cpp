@@ -15,8 +15,8 @@ std::vector<CommandLogRow> read_command_log(const std::filesystem::path& file, s
   std::vector<CommandLogRow> rows;
   for (int number = 2; std::getline(in, line); ++number) {
     CommandLogRow row;
-    char event[16] = {};
-    if (std::sscanf(line.c_str(), "%lf,%15[a-z],%lf,%lf,%lf", &row.t_s, event, &row.values[0], &row.values[1],
+    char event[32] = {};
+    if (std::sscanf(line.c_str(), "%lf,%31[a-z_],%lf,%lf,%lf", &row.t_s, event, &row.values[0], &row.values[1],
                     &row.values[2]) != 5) {
       throw std::runtime_error(file.string() + ":" + std::to_string(number) + ": malformed row '" + line + "'");
     }
