@@ -5,6 +5,7 @@
 // process can protect itself in (docs/reliability/fault_injection.md, "The fault
 // matrix") are stated as such: the hardware's own command timeout covers them.
 #include "command_log_file.h"
+#include "support/mhd_run_process.h"
 
 #include <gtest/gtest.h>
 
@@ -75,26 +76,17 @@ fs::path fresh_dir(const std::string& name) {
 /// tests/data/fault_injection/safe_end.xml with its three backends wrapped, the one that
 /// owns `call` failing.
 void write_scene(const fs::path& dir, const std::string& fault, const std::string& call) {
-  std::ifstream in(fs::path(MHD_SOURCE_DIR) / "tests/data/fault_injection/safe_end.xml");
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string xml = text.str();
-  const auto replace = [&](const std::string& from, const std::string& to) {
-    const auto at = xml.find(from);
-    ASSERT_NE(at, std::string::npos) << from;
-    xml.replace(at, from.size(), to);
-  };
   const std::string cue = "<param name=\"fault\" value=\"" + fault + "\"/><param name=\"fault_call\" value=\"" + call +
                           "\"/>";
   const auto wrap = [&](const char* kind, const char* plugin, const char* wrapper, bool fails) {
-    replace(std::string("<plugin kind=\"") + kind + "\" name=\"" + plugin + "\">",
-            std::string("<plugin kind=\"") + kind + "\" name=\"" + wrapper + "\">" + (fails ? cue : ""));
+    return std::pair{std::string("<plugin kind=\"") + kind + "\" name=\"" + plugin + "\">",
+                     std::string("<plugin kind=\"") + kind + "\" name=\"" + wrapper + "\">" + (fails ? cue : "")};
   };
-  replace("../../../scenes/rigs/pomhi.xml", (fs::path(MHD_SOURCE_DIR) / "scenes/rigs/pomhi.xml").string());
-  wrap("device", "sim_phantom", "fi_phantom", in_device(call));
-  wrap("tracker", "sim_is900", "fi_is900", call == "tracker_read");
-  wrap("base", "sim_omni3", "fi_omni3", in_base(call));
-  std::ofstream(dir / "scene.xml") << xml;
+  std::ofstream(dir / "scene.xml") << mhd::test::fill_scene_template(
+      fs::path(MHD_SOURCE_DIR) / "tests/data/fault_injection/safe_end.xml",
+      {wrap("device", "sim_phantom", "fi_phantom", in_device(call)),
+       wrap("tracker", "sim_is900", "fi_is900", call == "tracker_read"),
+       wrap("base", "sim_omni3", "fi_omni3", in_base(call))});
 }
 
 struct Ended {

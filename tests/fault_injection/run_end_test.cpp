@@ -40,17 +40,9 @@ fs::path fresh_dir(const std::string& name) {
 /// tests/data/fault_injection/<source> (safe_end.xml, the mobile rig, or desk_safe_end.xml, a
 /// desktop one) in `dir`, with `extra_plugin` in its <plugins>.
 fs::path write_scene(const fs::path& dir, const std::string& extra_plugin, const std::string& source = "safe_end.xml") {
-  std::ifstream in(fs::path(MHD_SOURCE_DIR) / "tests/data/fault_injection" / source);
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string xml = text.str();
-  const auto replace = [&](const std::string& from, const std::string& to) {
-    if (const auto at = xml.find(from); at != std::string::npos) xml.replace(at, from.size(), to);
-  };
-  replace("../../../scenes/rigs/pomhi.xml", (fs::path(MHD_SOURCE_DIR) / "scenes/rigs/pomhi.xml").string());
-  replace("<!--CRASH-->", extra_plugin);
   const fs::path file = dir / "scene.xml";
-  std::ofstream(file) << xml;
+  std::ofstream(file) << mhd::test::fill_scene_template(fs::path(MHD_SOURCE_DIR) / "tests/data/fault_injection" / source,
+                                                        {{"<!--CRASH-->", extra_plugin}});
   return file;
 }
 

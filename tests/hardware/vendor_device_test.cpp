@@ -103,20 +103,12 @@ fs::path fresh_dir(const Backend& b, const std::string& name) {
 /// tests/data/hardware/<source> in `dir` as scene.xml for backend `b`, each (placeholder,
 /// text) put in; `params` joins the backend's own device parameters.
 void write_scene(const fs::path& dir, const Backend& b, const std::string& source,
-                 const std::vector<std::pair<std::string, std::string>>& fills = {}, const std::string& params = "") {
-  std::ifstream in(fs::path(MHD_SOURCE_DIR) / "tests/data/hardware" / source);
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string xml = text.str();
-  const auto replace = [&](const std::string& from, const std::string& to) {
-    if (const auto at = xml.find(from); at != std::string::npos) xml.replace(at, from.size(), to);
-  };
-  replace("../../../scenes/rigs/pomhi.xml", (fs::path(MHD_SOURCE_DIR) / "scenes/rigs/pomhi.xml").string());
-  replace("name=\"openhaptics\"", std::string("name=\"") + b.plugin + "\"");
-  replace("rpy_deg=\"0 0 0\"", std::string("rpy_deg=\"") + b.frame_rpy_deg + "\"");
-  replace("<!--DEVICE-->", b.params + params);
-  for (const auto& [from, to] : fills) replace(from, to);
-  std::ofstream(dir / "scene.xml") << xml;
+                 std::vector<std::pair<std::string, std::string>> fills = {}, const std::string& params = "") {
+  fills.emplace_back("name=\"openhaptics\"", std::string("name=\"") + b.plugin + "\"");
+  if (source == "vendor_desk.xml") fills.emplace_back("rpy_deg=\"0 0 0\"", std::string("rpy_deg=\"") + b.frame_rpy_deg + "\"");
+  fills.emplace_back("<!--DEVICE-->", b.params + params);
+  std::ofstream(dir / "scene.xml") << mhd::test::fill_scene_template(
+      fs::path(MHD_SOURCE_DIR) / "tests/data/hardware" / source, fills);
 }
 
 /// The fake's configuration (fakes/fake_hardware.h).

@@ -18,6 +18,25 @@ namespace mhd::test {
 
 using Clock = std::chrono::steady_clock;
 
+std::string fill_scene_template(const std::filesystem::path& source,
+                                const std::vector<std::pair<std::string, std::string>>& fills) {
+  std::ifstream in(source);
+  if (!in) throw std::runtime_error("cannot read " + source.string());
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string xml = text.str();
+  const std::string rig = "../../../scenes/rigs/pomhi.xml";
+  if (const auto at = xml.find(rig); at != std::string::npos) {
+    xml.replace(at, rig.size(), (std::filesystem::path(MHD_SOURCE_DIR) / "scenes/rigs/pomhi.xml").string());
+  }
+  for (const auto& [from, to] : fills) {
+    const auto at = xml.find(from);
+    if (at == std::string::npos) throw std::runtime_error(source.string() + " has no '" + from + "'");
+    xml.replace(at, from.size(), to);
+  }
+  return xml;
+}
+
 MhdRunProcess::MhdRunProcess(const Options& options) : dir_(options.dir) {
   int pipe_fds[2] = {-1, -1};
   if (options.stdout_to_closed_pipe && ::pipe(pipe_fds) != 0) throw std::runtime_error("pipe failed");

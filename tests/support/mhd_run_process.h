@@ -13,6 +13,12 @@
 
 namespace mhd::test {
 
+/// The scene `source` (a file under the source tree) as text for a test folder: its
+/// include of scenes/rigs/pomhi.xml made absolute, then each (from, to) of `fills` put in
+/// where `from` first stands. A `from` that is not there throws std::runtime_error.
+std::string fill_scene_template(const std::filesystem::path& source,
+                                const std::vector<std::pair<std::string, std::string>>& fills);
+
 class MhdRunProcess {
  public:
   struct Options {

@@ -31,10 +31,7 @@ constexpr int kStatusForceOffCause = 14;
 constexpr int kForceOffWatchdog = 3;
 constexpr int kStatusCount = 16;
 
-struct Device {
-  mhd::fake::Config config = mhd::fake::Config::from_environment();
-  mhd::fake::HardwareLog log;
-  mhd::fake::FaultClock fault_clock;
+struct Device : mhd::fake::FakeBase {
   std::mutex mutex;  // the SDK's calls may come from several threads (the last gasp's)
 
   int last_error = 0;
@@ -52,7 +49,7 @@ struct Device {
   /// Every call: the failures configured, then the firmware watchdog. False: the call fails.
   bool call() {
     if (config.fault == Fault::ErrorEveryCall) return fail(kError);
-    if (config.fault == Fault::CommError && fault_clock.struck(config.fault_after_s) && !comm_lost) {
+    if (config.fault == Fault::CommError && struck() && !comm_lost) {
       comm_lost = true;
       motor_force_N = {};
       log.add("force");  // the controller cuts the motors when its USB link drops
@@ -175,7 +172,7 @@ FAKE_DHD_EXPORT int dhdGetPosition(double* x, double* y, double* z, char /*id*/)
   *x = d.hand.p_m()[0];
   *y = d.hand.p_m()[1];
   *z = d.hand.p_m()[2];
-  if (d.config.fault == Fault::NanPosition && d.fault_clock.struck(d.config.fault_after_s)) {
+  if (d.config.fault == Fault::NanPosition && d.struck()) {
     *z = std::numeric_limits<double>::quiet_NaN();
   }
   return 0;

@@ -85,6 +85,14 @@ class FaultClock {
   std::atomic<double> enabled_at_s_{0.0};
 };
 
+/// What every fake device holds: its configuration, its log and when its fault strikes.
+struct FakeBase {
+  Config config = Config::from_environment();
+  HardwareLog log;
+  FaultClock fault_clock;
+  [[nodiscard]] bool struck() const { return fault_clock.struck(config.fault_after_s); }
+};
+
 /// |f| of a 3-vector.
 double norm(const std::array<double, 3>& f);
 

@@ -30,11 +30,7 @@ constexpr double kWatchdogS = 0.02;
 constexpr double kMmPerM = 1000.0;
 
 /// The simulated device and the driver's state.
-struct Device {
-  mhd::fake::Config config = mhd::fake::Config::from_environment();
-  mhd::fake::HardwareLog log;
-  mhd::fake::FaultClock fault_clock;
-
+struct Device : mhd::fake::FakeBase {
   std::mutex errors_mutex;
   std::vector<HDErrorInfo> errors;
 
@@ -72,7 +68,6 @@ struct Device {
   void every_call() {
     if (config.fault == Fault::ErrorEveryCall) raise(hd::kDeviceFault, 99);
   }
-  [[nodiscard]] bool struck() const { return fault_clock.struck(config.fault_after_s); }
 
   /// The device's own command watchdog: no frame for kWatchdogS, zero force.
   void fire_watchdog_if_due(double t) {
