@@ -31,4 +31,11 @@ void* find_symbol(void* handle, const std::string& library, const char* symbol, 
   return address;
 }
 
+std::string describe_error(const std::string& what, const std::string& codes, const char* vendor_words,
+                           const char* advice) {
+  std::string out = what + " (" + codes + ")";
+  if (vendor_words != nullptr && *vendor_words != '\0') out += std::string(": ") + vendor_words;
+  return out + "; " + advice;
+}
+
 }  // namespace mhd::vendor

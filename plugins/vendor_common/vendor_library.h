@@ -30,4 +30,35 @@ struct Binder {
   }
 };
 
+/// A vendor's runtime: the library loaded, and its calls bound by `bind_all`; unloaded
+/// when it goes.
+template <class Calls>
+class Runtime {
+ public:
+  using BindAll = void (*)(const Binder& bind, Calls& calls);
+  Runtime(const std::string& library, const char* runtime, const char* install_hint, BindAll bind_all)
+      : handle_(open_library(library, runtime, install_hint)) {
+    try {
+      bind_all(Binder{handle_, library, runtime, install_hint}, calls_);
+    } catch (...) {
+      close_library(handle_);
+      throw;
+    }
+  }
+  ~Runtime() { close_library(handle_); }
+  Runtime(const Runtime&) = delete;
+  Runtime& operator=(const Runtime&) = delete;
+
+  [[nodiscard]] const Calls& calls() const noexcept { return calls_; }
+
+ private:
+  void* handle_;
+  Calls calls_{};
+};
+
+/// A vendor's error for the user: "<what> (<codes>): <vendor's words>; <advice>" (the
+/// vendor's words left out when it gives none).
+std::string describe_error(const std::string& what, const std::string& codes, const char* vendor_words,
+                           const char* advice);
+
 }  // namespace mhd::vendor

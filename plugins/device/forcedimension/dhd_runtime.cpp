@@ -1,7 +1,5 @@
 #include "dhd_runtime.h"
 
-#include "vendor_library.h"
-
 #include <array>
 #include <cstdio>
 #include <stdexcept>
@@ -15,29 +13,12 @@ constexpr const char* kInstallHint =
 
 // The SDK's documented error codes, in the order of its dhd_errors.
 constexpr std::array kErrorNames{
-    "DHD_NO_ERROR",
-    "DHD_ERROR",
-    "DHD_ERROR_COM",
-    "DHD_ERROR_DHC_BUSY",
-    "DHD_ERROR_NO_DRIVER_FOUND",
-    "DHD_ERROR_NO_DEVICE_FOUND",
-    "DHD_ERROR_NOT_AVAILABLE",
-    "DHD_ERROR_TIMEOUT",
-    "DHD_ERROR_GEOMETRY",
-    "DHD_ERROR_EXPERT_MODE_DISABLED",
-    "DHD_ERROR_NOT_IMPLEMENTED",
-    "DHD_ERROR_OUT_OF_MEMORY",
-    "DHD_ERROR_DEVICE_NOT_READY",
-    "DHD_ERROR_FILE_NOT_FOUND",
-    "DHD_ERROR_CONFIGURATION",
-    "DHD_ERROR_INVALID_INDEX",
-    "DHD_ERROR_DEPRECATED",
-    "DHD_ERROR_NULL_ARGUMENT",
-    "DHD_ERROR_REDUNDANT_FAIL",
-    "DHD_ERROR_NOT_ENABLED",
-    "DHD_ERROR_DEVICE_IN_USE",
-    "DHD_ERROR_INVALID",
-};
+    "DHD_NO_ERROR", "DHD_ERROR", "DHD_ERROR_COM", "DHD_ERROR_DHC_BUSY", "DHD_ERROR_NO_DRIVER_FOUND",
+    "DHD_ERROR_NO_DEVICE_FOUND", "DHD_ERROR_NOT_AVAILABLE", "DHD_ERROR_TIMEOUT", "DHD_ERROR_GEOMETRY",
+    "DHD_ERROR_EXPERT_MODE_DISABLED", "DHD_ERROR_NOT_IMPLEMENTED", "DHD_ERROR_OUT_OF_MEMORY",
+    "DHD_ERROR_DEVICE_NOT_READY", "DHD_ERROR_FILE_NOT_FOUND", "DHD_ERROR_CONFIGURATION", "DHD_ERROR_INVALID_INDEX",
+    "DHD_ERROR_DEPRECATED", "DHD_ERROR_NULL_ARGUMENT", "DHD_ERROR_REDUNDANT_FAIL", "DHD_ERROR_NOT_ENABLED",
+    "DHD_ERROR_DEVICE_IN_USE", "DHD_ERROR_INVALID"};
 
 const char* advice(int code) noexcept {
   switch (code) {
@@ -69,42 +50,34 @@ constexpr DeviceModel kFalcon{"Novint Falcon", 8.9, 1500.0, {0.05, 0.05, 0.05}};
 
 }  // namespace
 
-DhdRuntime::DhdRuntime(const std::string& library) {
-  handle_ = mhd::vendor::open_library(library, "the Force Dimension SDK", kInstallHint);
-  try {
-    mhd::vendor::Binder bind{handle_, library, "the Force Dimension SDK", kInstallHint};
-    bind("dhdOpen", calls_.dhdOpen);
-    bind("dhdOpenSerial", calls_.dhdOpenSerial);
-    bind("dhdClose", calls_.dhdClose);
-    bind("dhdStop", calls_.dhdStop);
-    bind("dhdGetSystemType", calls_.dhdGetSystemType);
-    bind("dhdGetSystemName", calls_.dhdGetSystemName);
-    bind("dhdEnableForce", calls_.dhdEnableForce);
-    bind("dhdSetGravityCompensation", calls_.dhdSetGravityCompensation);
-    bind("dhdSetWatchdog", calls_.dhdSetWatchdog);
-    bind("dhdGetPosition", calls_.dhdGetPosition);
-    bind("dhdGetLinearVelocity", calls_.dhdGetLinearVelocity);
-    bind("dhdGetButtonMask", calls_.dhdGetButtonMask);
-    bind("dhdGetStatus", calls_.dhdGetStatus);
-    bind("dhdSetForce", calls_.dhdSetForce);
-    bind("dhdErrorGetLast", calls_.dhdErrorGetLast);
-    bind("dhdErrorGetStr", calls_.dhdErrorGetStr);
-  } catch (...) {
-    mhd::vendor::close_library(handle_);
-    throw;
-  }
+std::unique_ptr<DhdRuntime> load_dhd(const std::string& library) {
+  return std::make_unique<DhdRuntime>(library, "the Force Dimension SDK", kInstallHint,
+                                      [](const mhd::vendor::Binder& bind, DhdCalls& calls) {
+                                        bind("dhdOpen", calls.dhdOpen);
+                                        bind("dhdOpenSerial", calls.dhdOpenSerial);
+                                        bind("dhdClose", calls.dhdClose);
+                                        bind("dhdStop", calls.dhdStop);
+                                        bind("dhdGetSystemType", calls.dhdGetSystemType);
+                                        bind("dhdGetSystemName", calls.dhdGetSystemName);
+                                        bind("dhdEnableForce", calls.dhdEnableForce);
+                                        bind("dhdSetGravityCompensation", calls.dhdSetGravityCompensation);
+                                        bind("dhdSetWatchdog", calls.dhdSetWatchdog);
+                                        bind("dhdGetPosition", calls.dhdGetPosition);
+                                        bind("dhdGetLinearVelocity", calls.dhdGetLinearVelocity);
+                                        bind("dhdGetButtonMask", calls.dhdGetButtonMask);
+                                        bind("dhdGetStatus", calls.dhdGetStatus);
+                                        bind("dhdSetForce", calls.dhdSetForce);
+                                        bind("dhdErrorGetLast", calls.dhdErrorGetLast);
+                                        bind("dhdErrorGetStr", calls.dhdErrorGetStr);
+                                      });
 }
-
-DhdRuntime::~DhdRuntime() { mhd::vendor::close_library(handle_); }
 
 std::string describe_last_error(const DhdCalls& dhd, const char* call) {
   const int code = dhd.dhdErrorGetLast();
-  std::string name = "DHD error " + std::to_string(code);
+  std::string name = "DHD error";
   if (code >= 0 && static_cast<std::size_t>(code) < kErrorNames.size()) name = kErrorNames[static_cast<std::size_t>(code)];
-  const char* vendor = dhd.dhdErrorGetStr(code);
-  std::string out = std::string(call) + ": " + name + " (" + std::to_string(code) + ")";
-  if (vendor != nullptr && *vendor != '\0') out += std::string(": ") + vendor;
-  return out + "; " + advice(code);
+  return mhd::vendor::describe_error(std::string(call) + ": " + name, std::to_string(code), dhd.dhdErrorGetStr(code),
+                                     advice(code));
 }
 
 const char* force_off_cause(int cause) noexcept {

@@ -5,6 +5,9 @@
 // when it is missing. The SDK speaks SI units: metres, m/s, newtons. The test fake of
 // libdhd (tests/hardware/fakes/fake_dhd.cpp) implements the same calls.
 
+#include "vendor_library.h"
+
+#include <memory>
 #include <string>
 
 namespace mhd_forcedimension {
@@ -23,28 +26,17 @@ constexpr int kStatusForceOffCause = 14;
 /// dhdSetWatchdog counts in these.
 constexpr double kWatchdogTickS = 125e-6;
 
-// dhdGetSystemType.
-constexpr int kDelta3 = 63;
-constexpr int kDelta6 = 64;
-constexpr int kOmega3 = 33;
-constexpr int kOmega33 = 34;
-constexpr int kOmega33Left = 36;
-constexpr int kOmega331 = 35;
-constexpr int kOmega331Left = 37;
-constexpr int kFalcon = 60;
-constexpr int kSigma331 = 104;
-constexpr int kSigma331Left = 105;
-constexpr int kSigma33p = 106;
-constexpr int kSigma33pLeft = 107;
+/// dhdGetSystemType's answers MHD knows.
+enum SystemType : int {
+  kOmega3 = 33, kOmega33 = 34, kOmega331 = 35, kOmega33Left = 36, kOmega331Left = 37, kFalcon = 60, kDelta3 = 63,
+  kDelta6 = 64, kSigma331 = 104, kSigma331Left = 105, kSigma33p = 106, kSigma33pLeft = 107
+};
 
-// dhdErrorGetLast (the SDK's dhd_errors, in order).
-constexpr int kErrorCom = 2;
-constexpr int kErrorNoDriverFound = 4;
-constexpr int kErrorNoDeviceFound = 5;
-constexpr int kErrorNotAvailable = 6;
-constexpr int kErrorTimeout = 7;
-constexpr int kErrorDeviceNotReady = 12;
-constexpr int kErrorDeviceInUse = 20;
+/// dhdErrorGetLast's answers the plugin advises on (the SDK's dhd_errors, by value).
+enum Error : int {
+  kErrorCom = 2, kErrorNoDriverFound = 4, kErrorNoDeviceFound = 5, kErrorNotAvailable = 6, kErrorTimeout = 7,
+  kErrorDeviceNotReady = 12, kErrorDeviceInUse = 20
+};
 
 }  // namespace dhd
 
@@ -67,21 +59,12 @@ struct DhdCalls {
   const char* (*dhdErrorGetStr)(int error);
 };
 
-class DhdRuntime {
- public:
-  /// dlopen(library) and every call; throws std::runtime_error naming the library, what
-  /// the loader said and how to install the SDK.
-  explicit DhdRuntime(const std::string& library);
-  ~DhdRuntime();
-  DhdRuntime(const DhdRuntime&) = delete;
-  DhdRuntime& operator=(const DhdRuntime&) = delete;
+using DhdRuntime = mhd::vendor::Runtime<DhdCalls>;
 
-  [[nodiscard]] const DhdCalls& calls() const noexcept { return calls_; }
-
- private:
-  void* handle_ = nullptr;
-  DhdCalls calls_{};
-};
+/// libdhd (`library`: a name the loader finds, or a path) with every call the plugin
+/// makes. Throws std::runtime_error naming the library, what the loader said and how to
+/// install the SDK.
+std::unique_ptr<DhdRuntime> load_dhd(const std::string& library);
 
 /// "<call>: DHD_ERROR_COM (2): <the SDK's text>; <what to do>" for the SDK's last error.
 std::string describe_last_error(const DhdCalls& dhd, const char* call);

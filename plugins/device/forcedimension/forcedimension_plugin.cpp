@@ -30,18 +30,18 @@ class ForceDimension {
  public:
   static constexpr std::array kParams{
       mhd::sdk::text("library", "libdhd.so", "the Force Dimension SDK's library (a name the loader finds, or a path)"),
-      mhd::sdk::integer("serial", "", "0", "the device's serial number; 0 for the first device found",
-                        mhd::sdk::between(0, 65535)),
       mhd::sdk::number("command_timeout_s", "s", "0.01",
                        "the device's firmware watchdog: no force within this time, forces off",
                        mhd::sdk::between(0.001, 0.03)),
+      mhd::sdk::integer("serial", "", "0", "the device's serial number; 0 for the first device found",
+                        mhd::sdk::between(0, 65535)),
       mhd::sdk::number("force_limit_N", "N", "100",
                        "the most force MHD sends; the device's nominal maximum when that is lower",
                        mhd::sdk::between(0.1, 100)),
   };
 
   ForceDimension(const mhd_host& host, const mhd::sdk::Params& params)
-      : host_(host), runtime_(std::make_unique<DhdRuntime>(params.text("library"))), dhd_(runtime_->calls()),
+      : host_(host), runtime_(load_dhd(params.text("library"))), dhd_(runtime_->calls()),
         watchdog_ticks_(static_cast<unsigned char>(
             std::lround(params.number("command_timeout_s") / dhd::kWatchdogTickS))) {
     const auto serial = params.integer("serial");

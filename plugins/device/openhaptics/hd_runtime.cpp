@@ -48,37 +48,31 @@ constexpr std::array kErrors{
 
 }  // namespace
 
-HdRuntime::HdRuntime(const std::string& library) {
-  handle_ = mhd::vendor::open_library(library, "the OpenHaptics runtime", kInstallHint);
-  try {
-    const mhd::vendor::Binder bind{handle_, library, "the OpenHaptics runtime", kInstallHint};
-    bind("hdInitDevice", calls_.hdInitDevice);
-    bind("hdDisableDevice", calls_.hdDisableDevice);
-    bind("hdMakeCurrentDevice", calls_.hdMakeCurrentDevice);
-    bind("hdGetError", calls_.hdGetError);
-    bind("hdGetErrorString", calls_.hdGetErrorString);
-    bind("hdBeginFrame", calls_.hdBeginFrame);
-    bind("hdEndFrame", calls_.hdEndFrame);
-    bind("hdEnable", calls_.hdEnable);
-    bind("hdDisable", calls_.hdDisable);
-    bind("hdGetDoublev", calls_.hdGetDoublev);
-    bind("hdGetIntegerv", calls_.hdGetIntegerv);
-    bind("hdGetString", calls_.hdGetString);
-    bind("hdSetDoublev", calls_.hdSetDoublev);
-    bind("hdCheckCalibration", calls_.hdCheckCalibration);
-    bind("hdUpdateCalibration", calls_.hdUpdateCalibration);
-    bind("hdStartScheduler", calls_.hdStartScheduler);
-    bind("hdStopScheduler", calls_.hdStopScheduler);
-    bind("hdScheduleAsynchronous", calls_.hdScheduleAsynchronous);
-    bind("hdScheduleSynchronous", calls_.hdScheduleSynchronous);
-    bind("hdUnschedule", calls_.hdUnschedule);
-  } catch (...) {
-    mhd::vendor::close_library(handle_);
-    throw;
-  }
+std::unique_ptr<HdRuntime> load_hd(const std::string& library) {
+  return std::make_unique<HdRuntime>(library, "the OpenHaptics runtime", kInstallHint,
+                                     [](const mhd::vendor::Binder& bind, HdCalls& calls) {
+                                       bind("hdInitDevice", calls.hdInitDevice);
+                                       bind("hdDisableDevice", calls.hdDisableDevice);
+                                       bind("hdMakeCurrentDevice", calls.hdMakeCurrentDevice);
+                                       bind("hdGetError", calls.hdGetError);
+                                       bind("hdGetErrorString", calls.hdGetErrorString);
+                                       bind("hdBeginFrame", calls.hdBeginFrame);
+                                       bind("hdEndFrame", calls.hdEndFrame);
+                                       bind("hdEnable", calls.hdEnable);
+                                       bind("hdDisable", calls.hdDisable);
+                                       bind("hdGetDoublev", calls.hdGetDoublev);
+                                       bind("hdGetIntegerv", calls.hdGetIntegerv);
+                                       bind("hdGetString", calls.hdGetString);
+                                       bind("hdSetDoublev", calls.hdSetDoublev);
+                                       bind("hdCheckCalibration", calls.hdCheckCalibration);
+                                       bind("hdUpdateCalibration", calls.hdUpdateCalibration);
+                                       bind("hdStartScheduler", calls.hdStartScheduler);
+                                       bind("hdStopScheduler", calls.hdStopScheduler);
+                                       bind("hdScheduleAsynchronous", calls.hdScheduleAsynchronous);
+                                       bind("hdScheduleSynchronous", calls.hdScheduleSynchronous);
+                                       bind("hdUnschedule", calls.hdUnschedule);
+                                     });
 }
-
-HdRuntime::~HdRuntime() { mhd::vendor::close_library(handle_); }
 
 std::string error_name(HDerror code) {
   for (const NamedError& e : kErrors) {
@@ -97,12 +91,10 @@ const char* error_advice(HDerror code) noexcept {
 }
 
 std::string describe(const HdCalls& hd, const HDErrorInfo& error) {
-  std::array<char, 64> codes{};
-  std::snprintf(codes.data(), codes.size(), " (0x%04x, device code %d)", error.errorCode, error.internalErrorCode);
-  const char* vendor = hd.hdGetErrorString(error.errorCode);
-  std::string out = error_name(error.errorCode) + codes.data();
-  if (vendor != nullptr && *vendor != '\0') out += std::string(": ") + vendor;
-  return out + "; " + error_advice(error.errorCode);
+  std::array<char, 48> codes{};
+  std::snprintf(codes.data(), codes.size(), "0x%04x, device code %d", error.errorCode, error.internalErrorCode);
+  return mhd::vendor::describe_error(error_name(error.errorCode), codes.data(), hd.hdGetErrorString(error.errorCode),
+                                     error_advice(error.errorCode));
 }
 
 }  // namespace mhd_openhaptics

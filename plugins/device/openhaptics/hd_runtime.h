@@ -3,7 +3,9 @@
 // library or symbol is one error line that names the library and how to install it.
 
 #include "hd_types.h"
+#include "vendor_library.h"
 
+#include <memory>
 #include <string>
 
 namespace mhd_openhaptics {
@@ -31,21 +33,12 @@ struct HdCalls {
   void (*hdUnschedule)(HDSchedulerHandle handle);
 };
 
-class HdRuntime {
- public:
-  /// dlopen(library) and every call. Throws std::runtime_error naming the library, what
-  /// the loader said and how to install the runtime.
-  explicit HdRuntime(const std::string& library);
-  ~HdRuntime();
-  HdRuntime(const HdRuntime&) = delete;
-  HdRuntime& operator=(const HdRuntime&) = delete;
+using HdRuntime = mhd::vendor::Runtime<HdCalls>;
 
-  [[nodiscard]] const HdCalls& calls() const noexcept { return calls_; }
-
- private:
-  void* handle_ = nullptr;
-  HdCalls calls_{};
-};
+/// libHD (`library`: a name the loader finds, or a path) with every call the plugin makes.
+/// Throws std::runtime_error naming the library, what the loader said and how to install
+/// the runtime.
+std::unique_ptr<HdRuntime> load_hd(const std::string& library);
 
 /// "HD_COMM_ERROR", or "HD error 0x1234" for a code HDAPI does not document.
 std::string error_name(HDerror code);

@@ -61,7 +61,7 @@ class OpenHaptics {
   };
 
   OpenHaptics(const mhd_host& host, const mhd::sdk::Params& params)
-      : host_(host), runtime_(std::make_unique<HdRuntime>(params.text("library"))), hd_(runtime_->calls()),
+      : host_(host), runtime_(load_hd(params.text("library"))), hd_(runtime_->calls()),
         calibration_auto_(params.text("calibration") == "auto") {
     const std::string name = params.text("device");
     device_ = hd_.hdInitDevice(name == "default" ? nullptr : name.c_str());
