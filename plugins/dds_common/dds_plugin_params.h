@@ -56,4 +56,16 @@ inline DdsEndpoint read_endpoint(const sdk::Params& params, const char* scene_fi
   return e;
 }
 
+/// A ROS name: letters, digits, '_' and '/' (ROS 2's rules, which DDS topic names take too).
+inline std::string checked_ros_name(const char* parameter, std::string value) {
+  for (const char c : value) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '/';
+    if (!ok) {
+      throw sdk::ParamError("parameter '" + std::string(parameter) + "' = '" + value +
+                            "': a ROS name has letters, digits, '_' and '/' only");
+    }
+  }
+  return value;
+}
+
 }  // namespace mhd::dds

@@ -24,18 +24,6 @@ struct Config {
   std::string frame_id;
 };
 
-/// A ROS name: letters, digits, '_' and '/' (ROS 2's rules, which DDS topic names take too).
-inline std::string checked_ros_name(const char* parameter, std::string value) {
-  for (const char c : value) {
-    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '/';
-    if (!ok) {
-      throw sdk::ParamError("parameter '" + std::string(parameter) + "' = '" + value +
-                            "': a ROS name has letters, digits, '_' and '/' only");
-    }
-  }
-  return value;
-}
-
 class Ros2StatePlugin {
  public:
   static constexpr std::array kParams =
@@ -74,9 +62,9 @@ class Ros2StatePlugin {
   static Config read_config(const sdk::Params& params, const char* scene_file) {
     Config c;
     c.endpoint = dds::read_endpoint(params, scene_file);
-    c.ros_namespace = checked_ros_name(
+    c.ros_namespace = dds::checked_ros_name(
         "namespace", params.optional_text("namespace").value_or(ros2::default_namespace(c.endpoint.rig_id)));
-    c.frame_id = checked_ros_name("frame_id", params.optional_text("frame_id").value_or(ros2::kDefaultFrameId));
+    c.frame_id = dds::checked_ros_name("frame_id", params.optional_text("frame_id").value_or(ros2::kDefaultFrameId));
     return c;
   }
 
