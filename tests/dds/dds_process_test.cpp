@@ -69,22 +69,10 @@ class OutputFile {
 /// steady clock.
 class DdsTrackerPlugin {
  public:
-  DdsTrackerPlugin(std::uint32_t domain, std::uint32_t rig) : file_(MHD_DDS_TRACKER_PLUGIN) {
-    const std::string d = std::to_string(domain);
-    const std::string r = std::to_string(rig);
-    host_.now_s = steady_s();
-    const mhd::test::Opened opened =
-        mhd::test::open_plugin(file_.api(), host_.host, {{"domain_id", d.c_str()}, {"rig_id", r.c_str()}});
-    if (opened.instance == nullptr) throw std::runtime_error(opened.error);
-    instance_ = opened.instance;
-    mhd_error err{};
-    if (file_.api().start(instance_, &err) != MHD_OK) throw std::runtime_error(err.message);
-  }
-  ~DdsTrackerPlugin() {
-    mhd_error err{};
-    file_.api().stop(instance_, &err);
-    file_.api().close(instance_);
-  }
+  DdsTrackerPlugin(std::uint32_t domain, std::uint32_t rig)
+      : file_(MHD_DDS_TRACKER_PLUGIN),
+        plugin_(file_.api(), clock_now(host_),
+                {{"domain_id", std::to_string(domain).c_str()}, {"rig_id", std::to_string(rig).c_str()}}) {}
   DdsTrackerPlugin(const DdsTrackerPlugin&) = delete;
   DdsTrackerPlugin& operator=(const DdsTrackerPlugin&) = delete;
 
@@ -98,7 +86,7 @@ class DdsTrackerPlugin {
       host_.now_s = steady_s();
       std::size_t count = 0;
       mhd_error err{};
-      const mhd_status status = file_.api().tracker_read(instance_, buffer, 16, &count, &err);
+      const mhd_status status = file_.api().tracker_read(plugin_.get(), buffer, 16, &count, &err);
       EXPECT_TRUE(status == MHD_OK || status == MHD_NO_DATA) << err.message;
       for (std::size_t i = 0; i < count; ++i) {
         // The timestamp is on this host's clock: measured just now, not in the future.
@@ -112,9 +100,14 @@ class DdsTrackerPlugin {
   }
 
  private:
+  static const mhd_host& clock_now(mhd::test::FakeHost& host) {
+    host.now_s = steady_s();
+    return host.host;
+  }
+
   mhd::test::PluginFile file_;
   mhd::test::FakeHost host_;
-  mhd_plugin_instance* instance_ = nullptr;
+  mhd::test::StartedPlugin plugin_;
 };
 
 void expect_increasing_per_sensor(const std::vector<mhd_tracker_sample>& samples) {

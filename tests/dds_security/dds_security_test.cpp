@@ -109,23 +109,11 @@ class OutputFile {
 class RigServer {
  public:
   RigServer(std::uint32_t domain, std::uint32_t rig, const std::filesystem::path& identity)
-      : file_(MHD_DDS_TRACKER_PLUGIN) {
-    const std::string d = std::to_string(domain);
-    const std::string r = std::to_string(rig);
-    const std::string id = identity.string();
-    host_.now_s = steady_s();
-    const mhd::test::Opened opened = mhd::test::open_plugin(
-        file_.api(), host_.host, {{"domain_id", d.c_str()}, {"rig_id", r.c_str()}, {"identity_dir", id.c_str()}});
-    if (opened.instance == nullptr) throw std::runtime_error(opened.error);
-    instance_ = opened.instance;
-    mhd_error err{};
-    if (file_.api().start(instance_, &err) != MHD_OK) throw std::runtime_error(err.message);
-  }
-  ~RigServer() {
-    mhd_error err{};
-    file_.api().stop(instance_, &err);
-    file_.api().close(instance_);
-  }
+      : file_(MHD_DDS_TRACKER_PLUGIN),
+        plugin_(file_.api(), clock_now(host_),
+                {{"domain_id", std::to_string(domain).c_str()},
+                 {"rig_id", std::to_string(rig).c_str()},
+                 {"identity_dir", identity.c_str()}}) {}
   RigServer(const RigServer&) = delete;
   RigServer& operator=(const RigServer&) = delete;
 
@@ -138,7 +126,7 @@ class RigServer {
       host_.now_s = steady_s();
       std::size_t count = 0;
       mhd_error err{};
-      const mhd_status status = file_.api().tracker_read(instance_, buffer, 16, &count, &err);
+      const mhd_status status = file_.api().tracker_read(plugin_.get(), buffer, 16, &count, &err);
       EXPECT_TRUE(status == MHD_OK || status == MHD_NO_DATA) << err.message;
       got.insert(got.end(), buffer, buffer + count);
       std::this_thread::sleep_for(1ms);
@@ -152,16 +140,21 @@ class RigServer {
     mhd_counter out[32];
     std::size_t count = 0;
     mhd_error err{};
-    EXPECT_EQ(file_.api().counters(instance_, out, 32, &count, &err), MHD_OK) << err.message;
+    EXPECT_EQ(file_.api().counters(plugin_.get(), out, 32, &count, &err), MHD_OK) << err.message;
     std::map<std::string, std::uint64_t> by_name;
     for (std::size_t i = 0; i < count && i < 32; ++i) by_name[out[i].name] = out[i].value;
     return by_name;
   }
 
  private:
+  static const mhd_host& clock_now(mhd::test::FakeHost& host) {
+    host.now_s = steady_s();
+    return host.host;
+  }
+
   mhd::test::PluginFile file_;
   mhd::test::FakeHost host_;
-  mhd_plugin_instance* instance_ = nullptr;
+  mhd::test::StartedPlugin plugin_;
 };
 
 /// The counters once `name` reaches `at_least`, or after `timeout` (a refused peer is

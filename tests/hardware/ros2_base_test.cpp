@@ -153,29 +153,16 @@ TEST(Ros2Base, TheDriverSeesThePlannersTwistsThenAZeroOnSigint) {
 struct OpenedBase {
   mhd::test::PluginFile file{MHD_ROS2_BASE_PLUGIN};
   mhd::test::FakeHost host;
-  mhd_plugin_instance* instance = nullptr;
-  explicit OpenedBase(std::uint32_t domain) {
-    const std::string d = std::to_string(domain);
-    const auto opened = mhd::test::open_plugin(file.api(), host.host, {{"domain_id", d.c_str()}});
-    if (opened.instance == nullptr) throw std::runtime_error(opened.error);
-    instance = opened.instance;
-    mhd_error err{};
-    if (file.api().start(instance, &err) != MHD_OK) throw std::runtime_error(err.message);
-  }
-  ~OpenedBase() {
-    mhd_error err{};
-    file.api().stop(instance, &err);
-    file.api().close(instance);
-  }
-  OpenedBase(const OpenedBase&) = delete;
-  OpenedBase& operator=(const OpenedBase&) = delete;
+  mhd::test::StartedPlugin plugin;
+  explicit OpenedBase(std::uint32_t domain)
+      : plugin(file.api(), host.host, {{"domain_id", std::to_string(domain).c_str()}}) {}
   /// base_read until it gives a state or 5 s pass.
   std::optional<mhd_base_state> read() {
     const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(5);
     while (std::chrono::steady_clock::now() < give_up) {
       mhd_base_state state{};
       mhd_error err{};
-      const mhd_status status = file.api().base_read(instance, &state, &err);
+      const mhd_status status = file.api().base_read(plugin.get(), &state, &err);
       if (status == MHD_OK) return state;
       if (status != MHD_NO_DATA) throw std::runtime_error(err.message);
       std::this_thread::sleep_for(std::chrono::milliseconds(10));
@@ -186,7 +173,7 @@ struct OpenedBase {
     std::array<mhd_counter, 8> out{};
     std::size_t n = 0;
     mhd_error err{};
-    if (file.api().counters(instance, out.data(), out.size(), &n, &err) != MHD_OK) throw std::runtime_error(err.message);
+    if (file.api().counters(plugin.get(), out.data(), out.size(), &n, &err) != MHD_OK) throw std::runtime_error(err.message);
     for (std::size_t i = 0; i < n && i < out.size(); ++i) {
       if (name == out[i].name) return out[i].value;
     }
@@ -221,7 +208,7 @@ TEST(Ros2Base, OdometryInAnotherFrameIsDroppedAndCounted) {
   mhd_base_state state{};
   mhd_error err{};
   for (int i = 0; i < 50; ++i) {
-    EXPECT_EQ(base.file.api().base_read(base.instance, &state, &err), MHD_NO_DATA);
+    EXPECT_EQ(base.file.api().base_read(base.plugin.get(), &state, &err), MHD_NO_DATA);
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
   EXPECT_GT(base.counter("dropped_wrong_frame"), 0u);

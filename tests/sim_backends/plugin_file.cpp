@@ -43,4 +43,23 @@ Opened open_plugin(const mhd_plugin_api& api, const mhd_host& host,
   return out;
 }
 
+StartedPlugin::StartedPlugin(const mhd_plugin_api& api, const mhd_host& host,
+                             std::initializer_list<std::pair<const char*, const char*>> params)
+    : api_(api) {
+  const Opened opened = open_plugin(api, host, params);
+  if (opened.instance == nullptr) throw std::runtime_error(opened.error);
+  instance_ = opened.instance;
+  mhd_error err{};
+  if (api.start(instance_, &err) != MHD_OK) {
+    api.close(instance_);
+    throw std::runtime_error(err.message);
+  }
+}
+
+StartedPlugin::~StartedPlugin() {
+  mhd_error err{};
+  api_.stop(instance_, &err);
+  api_.close(instance_);
+}
+
 }  // namespace mhd::test

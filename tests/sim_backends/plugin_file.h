@@ -54,4 +54,20 @@ struct Opened {
 [[nodiscard]] Opened open_plugin(const mhd_plugin_api& api, const mhd_host& host,
                                  std::initializer_list<std::pair<const char*, const char*>> params);
 
+/// A plugin opened with `params` and started, stopped and closed when it goes. Throws
+/// std::runtime_error with the plugin's message when the open or the start fails.
+class StartedPlugin {
+ public:
+  StartedPlugin(const mhd_plugin_api& api, const mhd_host& host,
+                std::initializer_list<std::pair<const char*, const char*>> params);
+  ~StartedPlugin();
+  StartedPlugin(const StartedPlugin&) = delete;
+  StartedPlugin& operator=(const StartedPlugin&) = delete;
+  [[nodiscard]] mhd_plugin_instance* get() const { return instance_; }
+
+ private:
+  const mhd_plugin_api& api_;
+  mhd_plugin_instance* instance_ = nullptr;
+};
+
 }  // namespace mhd::test
