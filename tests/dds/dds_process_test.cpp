@@ -6,6 +6,7 @@
 #include "../sim_backends/plugin_file.h"
 #include "dds_common/tracker_subscriber.h"
 #include "dds_test_support.h"
+#include "tracker_plugin_on_clock.h"
 #include "lossy_stream.h"
 
 #include <gtest/gtest.h>
@@ -27,10 +28,6 @@ namespace {
 using namespace std::chrono_literals;
 using test::ChildProcess;
 
-double steady_s() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
 std::vector<std::string> server_args(const char* scene, std::uint32_t domain, std::uint32_t rig, double duration_s) {
   return {MHD_DDS_TEST_TRACKER_SERVER,
           "tracker-server",
@@ -45,69 +42,16 @@ std::vector<std::string> server_args(const char* scene, std::uint32_t domain, st
           MHD_DDS_TEST_PLUGIN_DIR};
 }
 
-/// A child's output file in the temporary folder, removed when the test ends.
-class OutputFile {
- public:
-  explicit OutputFile(const char* name)
-      : path_((std::filesystem::temp_directory_path() /
-               ("mhd_dds_test_" + std::to_string(getpid()) + "_" + name + ".log"))
-                  .string()) {}
-  ~OutputFile() {
-    std::error_code ec;
-    std::filesystem::remove(path_, ec);
-  }
-  OutputFile(const OutputFile&) = delete;
-  OutputFile& operator=(const OutputFile&) = delete;
-  [[nodiscard]] const std::string& path() const { return path_; }
-  [[nodiscard]] std::string text() const { return test::read_file(path_); }
-
- private:
-  std::string path_;
+/// A child's output file, removed when the test ends.
+struct OutputFile : test::OutputFile {
+  explicit OutputFile(const char* name) : test::OutputFile(std::filesystem::temp_directory_path().string(), name) {}
 };
 
-/// The `dds` tracker plugin through the real dlopen path, on a clock that follows the
-/// steady clock.
-class DdsTrackerPlugin {
- public:
+/// The `dds` tracker plugin of rig `rig` on `domain`, through the real dlopen path.
+struct DdsTrackerPlugin : test::TrackerPluginOnClock {
   DdsTrackerPlugin(std::uint32_t domain, std::uint32_t rig)
-      : file_(MHD_DDS_TRACKER_PLUGIN),
-        plugin_(file_.api(), clock_now(host_),
-                {{"domain_id", std::to_string(domain).c_str()}, {"rig_id", std::to_string(rig).c_str()}}) {}
-  DdsTrackerPlugin(const DdsTrackerPlugin&) = delete;
-  DdsTrackerPlugin& operator=(const DdsTrackerPlugin&) = delete;
-
-  /// Reads as the haptic loop would, every millisecond, for up to `timeout` or until
-  /// `want` samples came.
-  std::vector<mhd_tracker_sample> read_for(std::chrono::milliseconds timeout, std::size_t want) {
-    std::vector<mhd_tracker_sample> got;
-    mhd_tracker_sample buffer[16];
-    const auto end = std::chrono::steady_clock::now() + timeout;
-    while (got.size() < want && std::chrono::steady_clock::now() < end) {
-      host_.now_s = steady_s();
-      std::size_t count = 0;
-      mhd_error err{};
-      const mhd_status status = file_.api().tracker_read(plugin_.get(), buffer, 16, &count, &err);
-      EXPECT_TRUE(status == MHD_OK || status == MHD_NO_DATA) << err.message;
-      for (std::size_t i = 0; i < count; ++i) {
-        // The timestamp is on this host's clock: measured just now, not in the future.
-        EXPECT_LE(buffer[i].timestamp_s, host_.now_s + 0.01);
-        EXPECT_GE(buffer[i].timestamp_s, host_.now_s - 0.1);
-        got.push_back(buffer[i]);
-      }
-      std::this_thread::sleep_for(1ms);
-    }
-    return got;
-  }
-
- private:
-  static const mhd_host& clock_now(mhd::test::FakeHost& host) {
-    host.now_s = steady_s();
-    return host.host;
-  }
-
-  mhd::test::PluginFile file_;
-  mhd::test::FakeHost host_;
-  mhd::test::StartedPlugin plugin_;
+      : TrackerPluginOnClock(MHD_DDS_TRACKER_PLUGIN,
+                             {{"domain_id", std::to_string(domain).c_str()}, {"rig_id", std::to_string(rig).c_str()}}) {}
 };
 
 void expect_increasing_per_sensor(const std::vector<mhd_tracker_sample>& samples) {

@@ -91,4 +91,13 @@ std::string read_file(const std::string& path) {
   return s.str();
 }
 
+OutputFile::OutputFile(const std::string& folder, const char* name)
+    : path_((std::filesystem::path(folder) / ("mhd_dds_test_" + std::to_string(::getpid()) + "_" + name + ".log"))
+                .string()) {}
+
+OutputFile::~OutputFile() {
+  std::error_code ec;
+  std::filesystem::remove(path_, ec);
+}
+
 }  // namespace mhd::dds::test

@@ -48,4 +48,19 @@ class ChildProcess {
 /// The whole content of a file ("" when it cannot be read).
 std::string read_file(const std::string& path);
 
+/// A child's output file, "<folder>/mhd_dds_test_<pid>_<name>.log", removed when the test
+/// ends.
+class OutputFile {
+ public:
+  OutputFile(const std::string& folder, const char* name);
+  ~OutputFile();
+  OutputFile(const OutputFile&) = delete;
+  OutputFile& operator=(const OutputFile&) = delete;
+  [[nodiscard]] const std::string& path() const { return path_; }
+  [[nodiscard]] std::string text() const { return read_file(path_); }
+
+ private:
+  std::string path_;
+};
+
 }  // namespace mhd::dds::test

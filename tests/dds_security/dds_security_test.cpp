@@ -8,6 +8,7 @@
 #include "../sim_backends/plugin_file.h"
 #include "dds_common/participant_security.h"
 #include "dds_test_support.h"
+#include "tracker_plugin_on_clock.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -58,10 +59,6 @@ class SecurityFiles : public ::testing::Environment {
 };
 [[maybe_unused]] ::testing::Environment* const kSecurityFiles = ::testing::AddGlobalTestEnvironment(new SecurityFiles);
 
-double steady_s() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
 /// Sets an environment variable for the children started while it lives (posix_spawn
 /// copies this process's environment).
 class ScopedEnv {
@@ -86,75 +83,16 @@ class ScopedEnv {
 };
 
 /// A child's output file, removed when the test ends.
-class OutputFile {
- public:
-  explicit OutputFile(const char* name)
-      : path_((std::filesystem::path(MHD_DDS_SECURITY_TEST_DIR) /
-               ("out_" + std::to_string(getpid()) + "_" + name + ".log"))
-                  .string()) {}
-  ~OutputFile() {
-    std::error_code ec;
-    std::filesystem::remove(path_, ec);
-  }
-  OutputFile(const OutputFile&) = delete;
-  OutputFile& operator=(const OutputFile&) = delete;
-  [[nodiscard]] const std::string& path() const { return path_; }
-  [[nodiscard]] std::string text() const { return test::read_file(path_); }
-
- private:
-  std::string path_;
+struct OutputFile : test::OutputFile {
+  explicit OutputFile(const char* name) : test::OutputFile(MHD_DDS_SECURITY_TEST_DIR, name) {}
 };
 
 /// Rig `rig`'s haptic side: the `dds` tracker plugin through dlopen, as `identity`.
-class RigServer {
- public:
+struct RigServer : test::TrackerPluginOnClock {
   RigServer(std::uint32_t domain, std::uint32_t rig, const std::filesystem::path& identity)
-      : file_(MHD_DDS_TRACKER_PLUGIN),
-        plugin_(file_.api(), clock_now(host_),
-                {{"domain_id", std::to_string(domain).c_str()},
-                 {"rig_id", std::to_string(rig).c_str()},
-                 {"identity_dir", identity.c_str()}}) {}
-  RigServer(const RigServer&) = delete;
-  RigServer& operator=(const RigServer&) = delete;
-
-  /// Reads as the haptic loop does, every millisecond, for `duration` or until `want` came.
-  std::vector<mhd_tracker_sample> read_for(std::chrono::milliseconds duration, std::size_t want = SIZE_MAX) {
-    std::vector<mhd_tracker_sample> got;
-    mhd_tracker_sample buffer[16];
-    const auto end = std::chrono::steady_clock::now() + duration;
-    while (got.size() < want && std::chrono::steady_clock::now() < end) {
-      host_.now_s = steady_s();
-      std::size_t count = 0;
-      mhd_error err{};
-      const mhd_status status = file_.api().tracker_read(plugin_.get(), buffer, 16, &count, &err);
-      EXPECT_TRUE(status == MHD_OK || status == MHD_NO_DATA) << err.message;
-      got.insert(got.end(), buffer, buffer + count);
-      std::this_thread::sleep_for(1ms);
-    }
-    return got;
-  }
-
-  /// The plugin's counters by name (accepted, dropped_*, writers_matched, writers_matched_total,
-  /// peers_heard, peers_refused, security_refusals).
-  std::map<std::string, std::uint64_t> counters() {
-    mhd_counter out[32];
-    std::size_t count = 0;
-    mhd_error err{};
-    EXPECT_EQ(file_.api().counters(plugin_.get(), out, 32, &count, &err), MHD_OK) << err.message;
-    std::map<std::string, std::uint64_t> by_name;
-    for (std::size_t i = 0; i < count && i < 32; ++i) by_name[out[i].name] = out[i].value;
-    return by_name;
-  }
-
- private:
-  static const mhd_host& clock_now(mhd::test::FakeHost& host) {
-    host.now_s = steady_s();
-    return host.host;
-  }
-
-  mhd::test::PluginFile file_;
-  mhd::test::FakeHost host_;
-  mhd::test::StartedPlugin plugin_;
+      : TrackerPluginOnClock(MHD_DDS_TRACKER_PLUGIN, {{"domain_id", std::to_string(domain).c_str()},
+                                                      {"rig_id", std::to_string(rig).c_str()},
+                                                      {"identity_dir", identity.c_str()}}) {}
 };
 
 /// The counters once `name` reaches `at_least`, or after `timeout` (a refused peer is
