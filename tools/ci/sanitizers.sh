@@ -62,6 +62,7 @@ tsan_exclude=(
 # lock-free hand-offs, and the plugin host that those threads drive.
 tsan_targets=(
   realtime_tests              # SpscRing, TripleBuffer, Seqlock: producer/consumer threads
+  servo_loop_tests            # the openhaptics plugin: HDAPI's servo thread and the haptic tick
   simulation_tests            # SimulatedWorld's seqlock and mutexes, concurrent writers
   sim_world_tests             # the simulated plugins' shared world, advanced from two threads
   plugin_host_tests           # the loader the server threads call into
