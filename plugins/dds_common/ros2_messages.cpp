@@ -30,6 +30,8 @@ std::string dds_topic_name(std::string_view ros_namespace, std::string_view name
   return out;
 }
 
+std::int64_t stamp_ns(const Time& stamp) { return std::int64_t{stamp.sec} * 1'000'000'000 + stamp.nanosec; }
+
 Time ros_time(std::int64_t realtime_ns) {
   constexpr std::int64_t kNsPerS = 1'000'000'000;
   // Floor division: a time before 1970 still has nanosec in [0, 1e9).

@@ -38,6 +38,9 @@ inline constexpr std::array<const char*, 3> kBaseJointNames = {"base_x", "base_z
 
 /// CLOCK_REALTIME nanoseconds as builtin_interfaces/Time (nanosec in [0, 1e9)).
 [[nodiscard]] Time ros_time(std::int64_t realtime_ns);
+/// A PoseStamped's stamp as CLOCK_REALTIME nanoseconds.
+[[nodiscard]] std::int64_t stamp_ns(const Time& stamp);
+
 /// MHD's (w, x, y, z) as ROS's Quaternion (x, y, z, w).
 [[nodiscard]] Quaternion ros_quaternion(const double (&q_wxyz)[4]);
 /// The base's orientation: heading h about +y (R_y(h), docs/simulation.md, "Conventions").

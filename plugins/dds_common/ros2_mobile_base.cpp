@@ -1,5 +1,7 @@
 #include "dds_common/ros2_mobile_base.h"
 
+#include "dds_common/ros2_messages.h"
+
 #include <cmath>
 #include <cstring>
 
@@ -20,9 +22,7 @@ Twist twist_of(const mhd_base_command& command) {
   return t;
 }
 
-std::int64_t stamp_ns(const Odometry& odometry) {
-  return std::int64_t{odometry.header.stamp.sec} * 1'000'000'000 + odometry.header.stamp.nanosec;
-}
+std::int64_t stamp_ns(const Odometry& odometry) { return stamp_ns(odometry.header.stamp); }
 
 OdometryVerdict base_state_of(const Odometry& odometry, const OdometryCheck& check, mhd_base_state& out) {
   const char* frame = odometry.header.frame_id != nullptr ? odometry.header.frame_id : "";
