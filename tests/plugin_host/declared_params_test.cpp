@@ -96,7 +96,7 @@ TEST(DeclaredParams, EveryInTreePluginRefusesABadValueOfEachDeclaredParameterBef
   }
   // Every in-tree plugin was walked (a missing build would otherwise pass silently).
   for (const char* name : {"sim_phantom", "sim_delta", "sim_is900", "sim_omni3", "replay", "dds", "dds_state",
-                           "ros2_state", "osg_stereo", "null_display", "openhaptics", "forcedimension"}) {
+                           "ros2_state", "osg_stereo", "null_display", "openhaptics", "forcedimension", "ros2_base", "ros2_pose"}) {
     EXPECT_TRUE(seen.count(name) == 1) << name << " not found in " << MHD_BUILD_PLUGIN_DIR;
   }
   EXPECT_GT(checked, 60u);

@@ -1,0 +1,159 @@
+// The `ros2_pose` tracker against a plain Cyclone DDS peer that knows only ROS 2's topic
+// and type names, as a motion-capture system's ROS 2 driver on rmw_cyclonedds would: it
+// publishes the base's and the head's geometry_msgs/PoseStamped. In `mhd run` the base
+// pose it publishes is MHD's base estimate; opened alone, the plugin drops and counts
+// poses in another frame and stale ones.
+#include "../sim_backends/plugin_file.h"
+#include "dds_common/dds_entity.h"
+#include "dds_common/ros2_messages.h"
+#include "dds_common/ros2_topics.h"
+#include "dds_test_support.h"
+#include "support/mhd_run_process.h"
+
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+namespace ros2 = mhd::dds::ros2;
+
+/// The mocap driver: at 100 Hz, the base sensor and the head in the POMHI rig's is900
+/// frame (x = -z_W, y = x_W, z = 2.624 m - y_W). The base sensor stands at its nominal
+/// pose moved 0.3 m along world x, so the base is at (0.3, 0) m heading 0 (scenes/rigs/
+/// pomhi.xml); the head is 1.65 m up, 0.9 m in front of the world origin.
+class FakeMocap {
+ public:
+  FakeMocap(std::uint32_t domain, std::string frame_id, std::int64_t stamp_offset_ns = 0)
+      : participant_(domain),
+        base_topic_(participant_, geometry_msgs_msg_dds__PoseStamped__desc, "rt/mocap/base/pose", ros2::default_qos()),
+        base_(participant_.handle(), base_topic_, ros2::default_qos()),
+        head_topic_(participant_, geometry_msgs_msg_dds__PoseStamped__desc, "rt/mocap/head/pose", ros2::default_qos()),
+        head_(participant_.handle(), head_topic_, ros2::default_qos()),
+        frame_id_(std::move(frame_id)),
+        stamp_offset_ns_(stamp_offset_ns),
+        publisher_([this] { publish_until_stopped(); }) {}
+  ~FakeMocap() {
+    stop_.store(true);
+    publisher_.join();
+  }
+  FakeMocap(const FakeMocap&) = delete;
+  FakeMocap& operator=(const FakeMocap&) = delete;
+
+ private:
+  void publish_until_stopped() {
+    ros2::PoseStamped base{};
+    base.header.frame_id = frame_id_.data();
+    base.pose.position = {0.206, 0.3, 1.4432};
+    base.pose.orientation = {0.0, 1.0, 0.0, 0.0};  // rpy 180 0 180: 180 degrees about y
+    ros2::PoseStamped head{};
+    head.header.frame_id = frame_id_.data();
+    head.pose.position = {-0.9, 0.0, 0.974};
+    head.pose.orientation = {0.0, 0.0, 0.0, 1.0};
+    while (!stop_.load()) {
+      base.header.stamp = head.header.stamp = ros2::ros_time(mhd::dds::realtime_ns() + stamp_offset_ns_);
+      base_.write(base);
+      head_.write(head);
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+  }
+
+  mhd::dds::Participant participant_;
+  mhd::dds::Topic base_topic_;
+  mhd::dds::Writer<ros2::PoseStamped> base_;
+  mhd::dds::Topic head_topic_;
+  mhd::dds::Writer<ros2::PoseStamped> head_;
+  std::string frame_id_;
+  std::int64_t stamp_offset_ns_;
+  std::atomic<bool> stop_{false};
+  std::thread publisher_;
+};
+
+TEST(Ros2Pose, TheMocapsBasePoseIsMhdsBaseEstimate) {
+  const std::uint32_t domain = mhd::dds::test::use_loopback_and_unique_domain(11);
+  const fs::path dir = fs::temp_directory_path() / ("mhd_ros2_pose_" + std::to_string(::getpid())) / "run";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "scene.xml") << mhd::test::fill_scene_template(
+      fs::path(MHD_SOURCE_DIR) / "tests/data/hardware/ros2_pose.xml",
+      {{"value=\"DOMAIN\"", "value=\"" + std::to_string(domain) + "\""}});
+  FakeMocap mocap(domain, "mocap");
+  mhd::test::MhdRunProcess mhd({.argv = {MHD_CLI, "run", (dir / "scene.xml").string(), "--duration", "2", "-q",
+                                         "--plugin-path", MHD_SIM_PLUGIN_DIR},
+                                .dir = dir});
+  const auto status = mhd.wait_for(std::chrono::seconds(30));
+  ASSERT_TRUE(status && WIFEXITED(*status)) << mhd.output();
+  EXPECT_EQ(WEXITSTATUS(*status), 0) << mhd.output();
+  EXPECT_NE(mhd.output().find("ends at (0.300, 0.000) m"), std::string::npos) << mhd.output();
+  // Every pose the mocap published was taken (the base stops once, before the first).
+  EXPECT_NE(mhd.output().find(" samples, 0 dropped;"), std::string::npos) << mhd.output();
+}
+
+/// The plugin opened alone; reads for `duration`, then its counters by name.
+std::map<std::string, std::uint64_t> read_alone(std::uint32_t domain, std::chrono::milliseconds duration,
+                                                std::size_t& samples) {
+  mhd::test::PluginFile file(MHD_ROS2_POSE_PLUGIN);
+  mhd::test::FakeHost host;
+  mhd::test::StartedPlugin plugin(file.api(), host.host, {{"domain_id", std::to_string(domain).c_str()}});
+  samples = 0;
+  const auto end = std::chrono::steady_clock::now() + duration;
+  while (std::chrono::steady_clock::now() < end) {
+    std::array<mhd_tracker_sample, 16> out{};
+    std::size_t count = 0;
+    mhd_error err{};
+    const mhd_status s = file.api().tracker_read(plugin.get(), out.data(), out.size(), &count, &err);
+    EXPECT_TRUE(s == MHD_OK || s == MHD_NO_DATA) << err.message;
+    samples += count;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  std::array<mhd_counter, 16> counters{};
+  std::size_t n = 0;
+  mhd_error err{};
+  EXPECT_EQ(file.api().counters(plugin.get(), counters.data(), counters.size(), &n, &err), MHD_OK);
+  std::map<std::string, std::uint64_t> by_name;
+  for (std::size_t i = 0; i < n && i < counters.size(); ++i) by_name[counters[i].name] = counters[i].value;
+  return by_name;
+}
+
+TEST(Ros2Pose, PosesInTheirFrameAreTakenAsTheirRolesSensors) {
+  const std::uint32_t domain = mhd::dds::test::use_loopback_and_unique_domain(12);
+  FakeMocap mocap(domain, "mocap");
+  std::size_t samples = 0;
+  const auto c = read_alone(domain, std::chrono::milliseconds(600), samples);
+  EXPECT_GT(samples, 20u);
+  EXPECT_EQ(c.at("accepted"), samples);
+  EXPECT_EQ(c.at("dropped_wrong_frame"), 0u);
+}
+
+TEST(Ros2Pose, PosesInAnotherFrameAreDroppedAndCounted) {
+  const std::uint32_t domain = mhd::dds::test::use_loopback_and_unique_domain(13);
+  FakeMocap mocap(domain, "world");
+  std::size_t samples = 0;
+  const auto c = read_alone(domain, std::chrono::milliseconds(600), samples);
+  EXPECT_EQ(samples, 0u);
+  EXPECT_GT(c.at("dropped_wrong_frame"), 20u);
+  EXPECT_EQ(c.at("accepted"), 0u);
+}
+
+TEST(Ros2Pose, StalePosesAreDroppedAndCounted) {
+  const std::uint32_t domain = mhd::dds::test::use_loopback_and_unique_domain(14);
+  FakeMocap mocap(domain, "mocap", -500'000'000);  // stamped 0.5 s ago
+  std::size_t samples = 0;
+  const auto c = read_alone(domain, std::chrono::milliseconds(600), samples);
+  EXPECT_EQ(samples, 0u);
+  EXPECT_GT(c.at("dropped_stale"), 20u);
+}
+
+}  // namespace
