@@ -100,4 +100,17 @@ OutputFile::~OutputFile() {
   std::filesystem::remove(path_, ec);
 }
 
+Repeating::Repeating(std::chrono::milliseconds period, std::function<void()> step)
+    : thread_([this, period, step = std::move(step)] {
+        while (!stop_.load()) {
+          step();
+          std::this_thread::sleep_for(period);
+        }
+      }) {}
+
+Repeating::~Repeating() {
+  stop_.store(true);
+  thread_.join();
+}
+
 }  // namespace mhd::dds::test

@@ -5,10 +5,13 @@
 
 #include <sys/types.h>
 
+#include <atomic>
 #include <chrono>
+#include <functional>
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace mhd::dds::test {
@@ -43,6 +46,20 @@ class ChildProcess {
  private:
   pid_t pid_ = -1;
   bool reaped_ = false;
+};
+
+/// Calls `step` every `period` on a thread of its own until it is destroyed (a publisher
+/// standing in for another process).
+class Repeating {
+ public:
+  Repeating(std::chrono::milliseconds period, std::function<void()> step);
+  ~Repeating();
+  Repeating(const Repeating&) = delete;
+  Repeating& operator=(const Repeating&) = delete;
+
+ private:
+  std::atomic<bool> stop_{false};
+  std::thread thread_;
 };
 
 /// The whole content of a file ("" when it cannot be read).

@@ -48,11 +48,7 @@ class FakeBaseDriver {
         odom_topic_(participant_, nav_msgs_msg_dds__Odometry__desc, "rt/odom", ros2::default_qos()),
         odom_(participant_.handle(), odom_topic_, ros2::default_qos()),
         odom_frame_(std::move(odom_frame)),
-        publisher_([this] { publish_until_stopped(); }) {}
-  ~FakeBaseDriver() {
-    stop_.store(true);
-    publisher_.join();
-  }
+        odometry_(standing_odometry()) {}
   FakeBaseDriver(const FakeBaseDriver&) = delete;
   FakeBaseDriver& operator=(const FakeBaseDriver&) = delete;
 
@@ -63,21 +59,16 @@ class FakeBaseDriver {
   [[nodiscard]] const std::vector<ros2::Twist>& twists() const { return twists_; }
 
  private:
-  void publish_until_stopped() {
-    std::string child = "base_link";
+  ros2::Odometry standing_odometry() {
     ros2::Odometry odometry{};
     odometry.header.frame_id = odom_frame_.data();
-    odometry.child_frame_id = child.data();
+    odometry.child_frame_id = child_frame_.data();
     odometry.pose.pose.position.x = 0.25;
     odometry.pose.pose.position.y = 0.1;
     odometry.pose.pose.orientation.z = std::sin(0.15);
     odometry.pose.pose.orientation.w = std::cos(0.15);
     odometry.twist.twist.linear.x = 0.2;
-    while (!stop_.load()) {
-      odometry.header.stamp = ros2::ros_time(mhd::dds::realtime_ns());
-      odom_.write(odometry);
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    }
+    return odometry;
   }
 
   mhd::dds::Participant participant_;
@@ -86,9 +77,13 @@ class FakeBaseDriver {
   mhd::dds::Topic odom_topic_;
   mhd::dds::Writer<ros2::Odometry> odom_;
   std::string odom_frame_;
+  std::string child_frame_ = "base_link";
+  ros2::Odometry odometry_;
   std::vector<ros2::Twist> twists_;
-  std::atomic<bool> stop_{false};
-  std::thread publisher_;
+  mhd::dds::test::Repeating publisher_{std::chrono::milliseconds(20), [this] {
+                                         odometry_.header.stamp = ros2::ros_time(mhd::dds::realtime_ns());
+                                         odom_.write(odometry_);
+                                       }};
 };
 
 bool is_zero(const ros2::Twist& t) {

@@ -44,30 +44,20 @@ class FakeMocap {
         head_(participant_.handle(), head_topic_, ros2::default_qos()),
         frame_id_(std::move(frame_id)),
         stamp_offset_ns_(stamp_offset_ns),
-        publisher_([this] { publish_until_stopped(); }) {}
-  ~FakeMocap() {
-    stop_.store(true);
-    publisher_.join();
-  }
+        // rpy 180 0 180 is 180 degrees about y.
+        base_pose_(pose_in(frame_id_, {0.206, 0.3, 1.4432}, {0.0, 1.0, 0.0, 0.0})),
+        head_pose_(pose_in(frame_id_, {-0.9, 0.0, 0.974}, {0.0, 0.0, 0.0, 1.0})) {}
   FakeMocap(const FakeMocap&) = delete;
   FakeMocap& operator=(const FakeMocap&) = delete;
 
  private:
-  void publish_until_stopped() {
-    ros2::PoseStamped base{};
-    base.header.frame_id = frame_id_.data();
-    base.pose.position = {0.206, 0.3, 1.4432};
-    base.pose.orientation = {0.0, 1.0, 0.0, 0.0};  // rpy 180 0 180: 180 degrees about y
-    ros2::PoseStamped head{};
-    head.header.frame_id = frame_id_.data();
-    head.pose.position = {-0.9, 0.0, 0.974};
-    head.pose.orientation = {0.0, 0.0, 0.0, 1.0};
-    while (!stop_.load()) {
-      base.header.stamp = head.header.stamp = ros2::ros_time(mhd::dds::realtime_ns() + stamp_offset_ns_);
-      base_.write(base);
-      head_.write(head);
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
+  static ros2::PoseStamped pose_in(std::string& frame_id, const geometry_msgs_msg_dds__Point_& p,
+                                   const ros2::Quaternion& q) {
+    ros2::PoseStamped pose{};
+    pose.header.frame_id = frame_id.data();
+    pose.pose.position = p;
+    pose.pose.orientation = q;
+    return pose;
   }
 
   mhd::dds::Participant participant_;
@@ -77,8 +67,14 @@ class FakeMocap {
   mhd::dds::Writer<ros2::PoseStamped> head_;
   std::string frame_id_;
   std::int64_t stamp_offset_ns_;
-  std::atomic<bool> stop_{false};
-  std::thread publisher_;
+  ros2::PoseStamped base_pose_;
+  ros2::PoseStamped head_pose_;
+  mhd::dds::test::Repeating publisher_{std::chrono::milliseconds(10), [this] {
+                                         base_pose_.header.stamp = head_pose_.header.stamp =
+                                             ros2::ros_time(mhd::dds::realtime_ns() + stamp_offset_ns_);
+                                         base_.write(base_pose_);
+                                         head_.write(head_pose_);
+                                       }};
 };
 
 TEST(Ros2Pose, TheMocapsBasePoseIsMhdsBaseEstimate) {
@@ -137,23 +133,30 @@ TEST(Ros2Pose, PosesInTheirFrameAreTakenAsTheirRolesSensors) {
   EXPECT_EQ(c.at("dropped_wrong_frame"), 0u);
 }
 
-TEST(Ros2Pose, PosesInAnotherFrameAreDroppedAndCounted) {
+struct DroppedCase {
+  const char* name;
+  const char* frame_id;
+  std::int64_t stamp_offset_ns;
+  const char* counter;
+};
+
+class Ros2PoseDropped : public ::testing::TestWithParam<DroppedCase> {};
+
+TEST_P(Ros2PoseDropped, NoPoseIsTakenAndEachIsCountedByItsReason) {
+  const DroppedCase c = GetParam();
   const std::uint32_t domain = mhd::dds::test::use_loopback_and_unique_domain(13);
-  FakeMocap mocap(domain, "world");
+  FakeMocap mocap(domain, c.frame_id, c.stamp_offset_ns);
   std::size_t samples = 0;
-  const auto c = read_alone(domain, std::chrono::milliseconds(600), samples);
+  const auto counts = read_alone(domain, std::chrono::milliseconds(600), samples);
   EXPECT_EQ(samples, 0u);
-  EXPECT_GT(c.at("dropped_wrong_frame"), 20u);
-  EXPECT_EQ(c.at("accepted"), 0u);
+  EXPECT_GT(counts.at(c.counter), 20u);
+  EXPECT_EQ(counts.at("accepted"), 0u);
 }
 
-TEST(Ros2Pose, StalePosesAreDroppedAndCounted) {
-  const std::uint32_t domain = mhd::dds::test::use_loopback_and_unique_domain(14);
-  FakeMocap mocap(domain, "mocap", -500'000'000);  // stamped 0.5 s ago
-  std::size_t samples = 0;
-  const auto c = read_alone(domain, std::chrono::milliseconds(600), samples);
-  EXPECT_EQ(samples, 0u);
-  EXPECT_GT(c.at("dropped_stale"), 20u);
-}
+INSTANTIATE_TEST_SUITE_P(Ros2Pose, Ros2PoseDropped,
+                         ::testing::Values(DroppedCase{"another_frame", "world", 0, "dropped_wrong_frame"},
+                                           DroppedCase{"stamped_half_a_second_ago", "mocap", -500'000'000,
+                                                       "dropped_stale"}),
+                         [](const auto& param_info) { return std::string(param_info.param.name); });
 
 }  // namespace

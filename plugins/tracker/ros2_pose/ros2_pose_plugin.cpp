@@ -49,10 +49,10 @@ class Ros2PosePlugin {
   static constexpr std::array kParams = sdk::join(
       dds::kEndpointParams,
       std::array{sdk::text("base_topic", "/mocap/base/pose", "the ROS topic of the base's PoseStamped"),
-                 sdk::text("head_topic", "/mocap/head/pose", "the ROS topic of the head's PoseStamped"),
-                 sdk::text("frame_id", "mocap", "the frame_id the poses must carry: the tracker frame"),
                  sdk::integer("base_sensor_id", "", "0", "the sensor id of the base's samples", sdk::between(0, 31)),
+                 sdk::text("head_topic", "/mocap/head/pose", "the ROS topic of the head's PoseStamped"),
                  sdk::integer("head_sensor_id", "", "1", "the sensor id of the head's samples", sdk::between(0, 31)),
+                 sdk::text("frame_id", "mocap", "the frame_id the poses must carry: the tracker frame"),
                  sdk::number("max_position_m", "m", "20", "poses farther out, per coordinate, are refused",
                              sdk::above_up_to(0, 1000)),
                  sdk::number("max_age_s", "s", "0.1", "older poses are stale and refused", sdk::above_up_to(0, 10)),
