@@ -321,6 +321,7 @@ TEST_P(VendorDevice, AMissingRuntimeIsOneLineNamingTheLibraryAndNothingMoves) {
   const std::string out = mhd.output();
   EXPECT_NE(out.find(std::string("cannot load ") + b().runtime + " '" + b().library + "'"), std::string::npos) << out;
   EXPECT_NE(out.find(b().install), std::string::npos) << out;
+  EXPECT_NE(out.find("(docs/hardware.md)\n"), std::string::npos) << "the hint was cut: " << out;
   std::istringstream lines(out);
   int naming = 0;
   for (std::string line; std::getline(lines, line);) naming += line.find(b().library) != std::string::npos ? 1 : 0;
@@ -441,6 +442,47 @@ TEST(OpenHaptics, AToolFarOutsideTheReportedWorkspaceEndsTheRunWithoutForce) {
   EXPECT_NE(exit_status(mhd), 0) << mhd.output();
   EXPECT_NE(mhd.output().find("outside the device's workspace"), std::string::npos) << mhd.output();
   EXPECT_EQ(largest_force(dir), 0.0);
+}
+
+// ---- mhd devices ------------------------------------------------------------------------
+
+/// `mhd devices` with LD_LIBRARY_PATH = `library_path` and the fakes' `fault`; its output.
+std::string devices_output(const fs::path& dir, const std::string& library_path, const std::string& fault,
+                           int& status) {
+  MhdRunProcess mhd({.argv = {MHD_CLI, "devices", "--plugin-path", MHD_SIM_PLUGIN_DIR},
+                     .dir = dir,
+                     .env = {{"LD_LIBRARY_PATH", library_path},
+                             {"MHD_FAKE_LOG", (dir / "hardware.csv").string()},
+                             {"MHD_FAKE_FAULT", fault}}});
+  status = exit_status(mhd);
+  return mhd.output();
+}
+
+TEST(MhdDevices, SaysWhichRuntimeAnswersWhichIsMissingAndTheSnippetForEach) {
+  const fs::path dir = fresh_dir(kOpenHaptics, "devices");
+  int status = -1;
+  const std::string out = devices_output(dir, kOpenHaptics.fake_dir, "none", status);
+  EXPECT_EQ(status, 0) << out;
+  EXPECT_NE(out.find("  found: 3.3 N, 1260 N/m, 6 in / 3 out DOF, workspace x [-0.08, 0.08] y [-0.06, 0.06] "
+                     "z [-0.035, 0.035] m\n  <plugin kind=\"device\" name=\"openhaptics\"/>"),
+            std::string::npos)
+      << out;
+  EXPECT_NE(out.find("  no device: open failed: cannot load the Force Dimension SDK 'libdhd.so'"), std::string::npos)
+      << out;
+  EXPECT_NE(out.find("(docs/hardware.md)\n  <plugin kind=\"device\" name=\"forcedimension\"/>"), std::string::npos)
+      << out;
+  // Asked, never driven: the device was opened and released, and no force went out.
+  EXPECT_FALSE(rows_of(dir, "init").empty()) << out;
+  EXPECT_TRUE(rows_of(dir, "force_on").empty()) << out;
+  EXPECT_TRUE(rows_of(dir, "scheduler_start").empty()) << out;
+}
+
+TEST(MhdDevices, AnUnpluggedDeviceIsNamedWithItsCause) {
+  const fs::path dir = fresh_dir(kForceDimension, "devices_unplugged");
+  int status = -1;
+  const std::string out = devices_output(dir, kForceDimension.fake_dir, "unplugged", status);
+  EXPECT_EQ(status, 0) << out;
+  EXPECT_NE(out.find("  no device: open failed: dhdOpen: DHD_ERROR_NO_DEVICE_FOUND (5)"), std::string::npos) << out;
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include "cache_command.h"
 #include "calibrate_command.h"
 #include "command_exit.h"
+#include "devices_command.h"
 #include "plan_sim_command.h"
 #include "plugins_command.h"
 #include "proxy_replay_command.h"
@@ -49,6 +50,7 @@ int main(int argc, char** argv) {
   add_validate_command(app);
   add_run_command(app);
   add_plugins_command(app);
+  add_devices_command(app);
   add_plan_sim_command(app);
   add_cache_command(app);
   add_calibrate_command(app);

@@ -8,8 +8,8 @@ namespace mhd_forcedimension {
 namespace {
 
 constexpr const char* kInstallHint =
-    "install the Force Dimension SDK (libdhd) for Linux from forcedimension.com, or name the library with "
-    "<param name=\"library\" value=\"/path/to/libdhd.so\"/> (docs/hardware.md)";
+    "install the Force Dimension SDK for Linux (forcedimension.com), or set the 'library' parameter to "
+    "libdhd.so's path (docs/hardware.md)";
 
 // The SDK's documented error codes, in the order of its dhd_errors.
 constexpr std::array kErrorNames{

@@ -9,8 +9,8 @@ namespace mhd_openhaptics {
 namespace {
 
 constexpr const char* kInstallHint =
-    "install OpenHaptics for Linux and the device driver from 3D Systems, or name the library with "
-    "<param name=\"library\" value=\"/path/to/libHD.so\"/> (docs/hardware.md)";
+    "install OpenHaptics for Linux and the device driver (3D Systems), or set the 'library' parameter to "
+    "libHD.so's path (docs/hardware.md)";
 
 struct NamedError {
   HDerror code;
