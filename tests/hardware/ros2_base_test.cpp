@@ -29,6 +29,7 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -97,28 +98,41 @@ struct Ran {
   std::vector<ros2::Twist> twists;
 };
 
-/// `mhd run` for `duration_s` with the driver publishing odometry in `odom_frame` (the
-/// plugin wants "odom"); SIGINT at `sigint_after_s` when given.
-Ran run_with_driver(const std::string& name, const std::string& odom_frame, double duration_s,
-                    double sigint_after_s = 0.0) {
+/// How a run of the ROS 2 base ends: by a signal after 3 s, or by what the scene makes
+/// happen (a crashing display, a hanging tracker).
+struct EndCase {
+  const char* name;
+  int signal;  ///< 0: none
+  int status;  ///< the exit status
+  const char* from;  ///< put `to` there in the scene (nullptr: nothing)
+  const char* to;
+  const char* says;
+};
+
+/// `mhd run` with the driver publishing odometry in "odom", ended as `c` says; the
+/// twists the driver received.
+Ran run_with_driver(const EndCase& c) {
   const std::uint32_t domain = mhd::dds::test::use_loopback_and_unique_domain(7);
-  const fs::path dir = fs::temp_directory_path() / ("mhd_ros2_base_" + std::to_string(::getpid())) / name;
+  const fs::path dir = fs::temp_directory_path() / ("mhd_ros2_base_" + std::to_string(::getpid())) / c.name;
   fs::remove_all(dir);
   fs::create_directories(dir);
+  std::vector<std::pair<std::string, std::string>> fills{
+      {"value=\"DOMAIN\"", "value=\"" + std::to_string(domain) + "\""}};
+  if (c.from != nullptr) fills.emplace_back(c.from, c.to);
   std::ofstream(dir / "scene.xml") << mhd::test::fill_scene_template(
-      fs::path(MHD_SOURCE_DIR) / "tests/data/hardware/ros2_base.xml", {{"value=\"DOMAIN\"", "value=\"" + std::to_string(domain) + "\""}});
-  FakeBaseDriver driver(domain, odom_frame);
-  MhdRunProcess mhd({.argv = {MHD_CLI, "run", (dir / "scene.xml").string(), "--duration", std::to_string(duration_s),
-                              "-q", "--plugin-path", MHD_SIM_PLUGIN_DIR},
+      fs::path(MHD_SOURCE_DIR) / "tests/data/hardware/ros2_base.xml", fills);
+  FakeBaseDriver driver(domain, "odom");
+  MhdRunProcess mhd({.argv = {MHD_CLI, "run", (dir / "scene.xml").string(), "--duration", "30", "-q",
+                              "--plugin-path", MHD_FAULT_INJECTION_PLUGIN_DIR, "--plugin-path", MHD_SIM_PLUGIN_DIR},
                      .dir = dir});
   Ran ran;
   const auto start = std::chrono::steady_clock::now();
-  bool signalled = sigint_after_s <= 0.0;
+  bool signalled = c.signal == 0;
   for (;;) {
     driver.receive();
     if (mhd.wait_for(std::chrono::milliseconds(10))) break;
-    if (!signalled && std::chrono::steady_clock::now() - start > std::chrono::duration<double>(sigint_after_s)) {
-      mhd.signal(SIGINT);
+    if (!signalled && std::chrono::steady_clock::now() - start > std::chrono::seconds(3)) {
+      mhd.signal(c.signal);
       signalled = true;
     }
     if (std::chrono::steady_clock::now() - start > std::chrono::seconds(30)) break;
@@ -132,16 +146,36 @@ Ran run_with_driver(const std::string& name, const std::string& odom_frame, doub
   return ran;
 }
 
-TEST(Ros2Base, TheDriverSeesThePlannersTwistsThenAZeroOnSigint) {
-  const Ran ran = run_with_driver("sigint", "odom", 30.0, 3.0);
-  EXPECT_EQ(ran.status, 0) << ran.output;
-  EXPECT_NE(ran.output.find("stopped by SIGINT"), std::string::npos) << ran.output;
+class Ros2BaseEnd : public ::testing::TestWithParam<EndCase> {};
+
+TEST_P(Ros2BaseEnd, TheDriverSeesThePlannersTwistsThenAZeroLast) {
+  const EndCase c = GetParam();
+  const Ran ran = run_with_driver(c);
+  EXPECT_EQ(ran.status, c.status) << ran.output;
+  EXPECT_NE(ran.output.find(c.says), std::string::npos) << ran.output;
   ASSERT_FALSE(ran.twists.empty()) << "no twist reached the driver: " << ran.output;
   EXPECT_TRUE(std::any_of(ran.twists.begin(), ran.twists.end(), [](const ros2::Twist& t) { return !is_zero(t); }))
       << "the planner never moved the base: " << ran.output;
   EXPECT_TRUE(is_zero(ran.twists.back())) << "last twist " << ran.twists.back().linear.x << " "
                                           << ran.twists.back().linear.y << " " << ran.twists.back().angular.z;
 }
+
+INSTANTIATE_TEST_SUITE_P(
+    Ros2Base, Ros2BaseEnd,
+    ::testing::Values(
+        EndCase{"SIGINT", SIGINT, 0, nullptr, nullptr, "stopped by SIGINT"},
+        EndCase{"SIGTERM", SIGTERM, 0, nullptr, nullptr, "stopped by SIGTERM"},
+        EndCase{"SIGHUP", SIGHUP, 128 + SIGHUP, nullptr, nullptr, "stopped by SIGHUP"},
+        // fi_crash's 150th frame: 2.5 s in, at 60 Hz.
+        EndCase{"crashed_plugin", 0, 4, "<!--EXTRA-->",
+                "<plugin kind=\"display\" name=\"fi_crash\"><param name=\"crash\" value=\"abort\"/>"
+                "<param name=\"crash_on_call\" value=\"150\"/></plugin>",
+                "last gasp: zero torque sent, base stop sent"},
+        EndCase{"watchdog", 0, 3, "<plugin kind=\"tracker\" name=\"sim_is900\">",
+                "<plugin kind=\"tracker\" name=\"fi_is900\"><param name=\"fault\" value=\"hang\"/>"
+                "<param name=\"fault_call\" value=\"tracker_read\"/><param name=\"fault_after_s\" value=\"2\"/>",
+                "tracker_read has not returned"}),
+    [](const auto& param_info) { return std::string(param_info.param.name); });
 
 // ---- the plugin alone, through dlopen --------------------------------------------------
 
