@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <mutex>
@@ -72,7 +73,7 @@ void HapticServer::Impl::io_thread() {
     if (!simulate_io_plugins(t_s)) break;
     if (!read_tracker(io) || !read_tracker_counters(io, t_s)) break;
     if (base == nullptr) continue;
-    if (!read_base(t_s)) break;
+    if (!read_base(io, t_s)) break;
     bool new_plan = false;
     const BaseGuardDecision guarded = guard_plan(io, t_s, new_plan);
     if (stop.load(std::memory_order_relaxed)) break;  // nothing but the stop after the run ended
@@ -155,6 +156,7 @@ bool HapticServer::Impl::take_sample(IoThreadState& io, const mhd_tracker_sample
   const Pose X_T_S =
       pose_from_xyz_quaternion(p_T_m, Eigen::Quaterniond(s.q_T_wxyz[0], s.q_T_wxyz[1], s.q_T_wxyz[2], s.q_T_wxyz[3]));
   if (s.sensor_id == settings.base_sensor_id) {
+    if (settings.base_pose_source == BasePoseSource::Odometry) return true;  // the base's own pose rules
     if (!base_samples.push({s.timestamp_s, X_T_S})) status_counters.tracker_rejected.fetch_add(1, std::memory_order_relaxed);
     io.newest_base_sample_t_s = std::max(io.newest_base_sample_t_s, s.timestamp_s);
     base_sample_newest_t_s.store(io.newest_base_sample_t_s, std::memory_order_relaxed);
@@ -186,7 +188,7 @@ bool HapticServer::Impl::read_tracker_counters(IoThreadState& io, double t_s) {
   return true;
 }
 
-bool HapticServer::Impl::read_base(double t_s) {
+bool HapticServer::Impl::read_base(IoThreadState& io, double t_s) {
   mhd_base_state base_state{};
   auto br = [&] {
     const std::lock_guard lock(*base->call_mutex);
@@ -199,7 +201,26 @@ bool HapticServer::Impl::read_base(double t_s) {
              .to_string());
     return false;
   }
+  if (br.value() == PluginCallStatus::Ok && settings.base_pose_source == BasePoseSource::Odometry) {
+    take_odometry(io, base_state);
+  }
   return true;
+}
+
+void HapticServer::Impl::take_odometry(IoThreadState& io, const mhd_base_state& base_state) {
+  // The base's own pose, in the world: the sample the base sensor would have given there.
+  if (!std::isfinite(base_state.heading_rad) || !std::isfinite(base_state.timestamp_s)) {
+    status_counters.tracker_rejected.fetch_add(1, std::memory_order_relaxed);
+    return;
+  }
+  const Pose X_T_S =
+      rig.X_is900_base_sensor_from_base(BasePose{base_state.x_m, base_state.z_m, base_state.heading_rad});
+  if (!base_samples.push({base_state.timestamp_s, X_T_S})) {
+    status_counters.tracker_rejected.fetch_add(1, std::memory_order_relaxed);
+    return;
+  }
+  io.newest_base_sample_t_s = std::max(io.newest_base_sample_t_s, base_state.timestamp_s);
+  base_sample_newest_t_s.store(io.newest_base_sample_t_s, std::memory_order_relaxed);
 }
 
 BaseGuardDecision HapticServer::Impl::guard_plan(IoThreadState& io, double t_s, bool& new_plan) {

@@ -200,7 +200,8 @@ struct HapticServer::Impl {
   std::optional<std::size_t> read_tracker(IoThreadState& io);
   bool take_sample(IoThreadState& io, const mhd_tracker_sample& s, double read_at_s, bool& base_sample);
   bool read_tracker_counters(IoThreadState& io, double t_s);
-  bool read_base(double t_s);
+  bool read_base(IoThreadState& io, double t_s);
+  void take_odometry(IoThreadState& io, const mhd_base_state& base_state);
   BaseGuardDecision guard_plan(IoThreadState& io, double t_s, bool& new_plan);
   bool send_base_command(IoThreadState& io, double t_s, bool new_plan, const BaseGuardDecision& guarded);
   void planner_thread();

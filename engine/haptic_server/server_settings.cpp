@@ -41,6 +41,12 @@ Result<ServerSettings> server_settings_from(const SceneDescription& scene) {
   s.tick.predict_base_pose = r.boolean("predict_base_pose", s.tick.predict_base_pose);
   s.base_sensor_id = sensor_id("base_sensor_id", s.base_sensor_id);
   s.head_sensor_id = sensor_id("head_sensor_id", s.head_sensor_id);
+  if (const std::string source = r.text("base_pose_source", "tracker"); source == "odometry") {
+    s.base_pose_source = BasePoseSource::Odometry;
+  } else if (source != "tracker") {
+    r.error("base_pose_source",
+            fmt::format("param 'base_pose_source' in <server> must be tracker or odometry, got '{}'", source));
+  }
   s.io_rate_hz = number("io_rate_hz", s.io_rate_hz);
   s.base_rate_hz = number("base_rate_hz", s.base_rate_hz);
   s.display_rate_hz = number("display_rate_hz", s.display_rate_hz);

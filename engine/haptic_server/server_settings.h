@@ -7,6 +7,9 @@
 //   fade_in_s (0.5)           force returns over this long after a fault
 //   predict_base_pose (true)  BasePosePredictor between tracker samples, else hold
 //   base_sensor_id (0), head_sensor_id (1)   tracker sensors on the robot and the head
+//   base_pose_source (tracker)  where the base pose comes from: the tracker's base sensor,
+//                             or `odometry`, the base plugin's own state (base_read, e.g. a
+//                             ROS 2 base's Odometry), whose frame is then the world's
 //   io_rate_hz (1000), base_rate_hz (10), display_rate_hz (60)
 //   base_max_speed_mps (0.5), base_max_omega_degps (40), keep_out_m (the planner's
 //                             robot + human radius, else 0.475): the base guard
@@ -66,6 +69,9 @@ inline constexpr std::array<ServerNumber, 14> kServerNumbers{{
 /// The sensor ids (<server> base_sensor_id, head_sensor_id) are integers in [0, this].
 inline constexpr std::uint64_t kMaxSensorId = 0xFFFF'FFFFu;
 
+/// Where the base pose estimate comes from (<server> base_pose_source).
+enum class BasePoseSource { Tracker, Odometry };
+
 struct ServerSettings {
   HapticTickSettings tick;
   double haptic_rate_hz = 1000.0;
@@ -74,6 +80,7 @@ struct ServerSettings {
   double display_rate_hz = 60.0;
   std::uint32_t base_sensor_id = 0;
   std::uint32_t head_sensor_id = 1;
+  BasePoseSource base_pose_source = BasePoseSource::Tracker;
   BaseCommandGuardSettings base_guard;
   double record_flush_s = 0.05;
   bool tick_on_tracker_sample = true;

@@ -118,6 +118,24 @@ TEST(ServerSettings, TheTrackingRangeHasADefaultAndIsRead) {
   EXPECT_DOUBLE_EQ(r->tracking_range_m, 20.0);
 }
 
+TEST(ServerSettings, TheBasePoseComesFromTheTrackerUnlessOdometryIsAskedFor) {
+  const Result<ServerSettings> by_default = server_settings_from(SceneDescription{});
+  ASSERT_TRUE(by_default.ok());
+  EXPECT_EQ(by_default->base_pose_source, BasePoseSource::Tracker);
+  const Result<ServerSettings> odometry = server_settings_from(scene_with_server({{"base_pose_source", "odometry"}}));
+  ASSERT_TRUE(odometry.ok());
+  EXPECT_EQ(odometry->base_pose_source, BasePoseSource::Odometry);
+  for (const char* bad : {"gps", "", "Odometry", "tracker odometry"}) {
+    const Result<ServerSettings> r = server_settings_from(scene_with_server({{"base_pose_source", bad}}));
+    ASSERT_FALSE(r.ok()) << bad;
+    ASSERT_EQ(r.diagnostics().size(), 1u);
+    EXPECT_EQ(r.diagnostics()[0].where.line, 7);
+    EXPECT_THAT(r.diagnostics()[0].message,
+                HasSubstr("param 'base_pose_source' in <server> must be tracker or odometry, got '" + std::string(bad) +
+                          "'"));
+  }
+}
+
 TEST(PluginCounters, OnlyNonZeroDropsAreShownWithoutTheirPrefix) {
   EXPECT_EQ(dropped_counts_text({}), "");
   EXPECT_EQ(dropped_counts_text({{"accepted", 120}, {"dropped_stale", 0}}), "");

@@ -177,6 +177,28 @@ INSTANTIATE_TEST_SUITE_P(
                 "tracker_read has not returned"}),
     [](const auto& param_info) { return std::string(param_info.param.name); });
 
+TEST(Ros2Base, WithBasePoseSourceOdometryTheDriversOdometryIsMhdsBaseEstimate) {
+  // <server> base_pose_source odometry: the tracker's base sensor is not used; the driver's
+  // odometry (x 0.25 m, y 0.1 m, yaw 0.3 rad in odom = the world) is the base pose.
+  const Ran ran = run_with_driver(EndCase{"odometry", SIGINT, 0, "<!--SERVER-->",
+                                          "<server><param name=\"base_pose_source\" value=\"odometry\"/>"
+                                          "<param name=\"predict_base_pose\" value=\"false\"/></server>",
+                                          "stopped by SIGINT"});
+  EXPECT_EQ(ran.status, 0) << ran.output;
+  EXPECT_NE(ran.output.find("ends at (0.250, -0.100) m"), std::string::npos) << ran.output;
+  ASSERT_FALSE(ran.twists.empty()) << ran.output;
+  EXPECT_TRUE(is_zero(ran.twists.back()));
+}
+
+TEST(Ros2Base, ByDefaultTheTrackerNotTheOdometryIsTheBaseEstimate) {
+  const Ran ran = run_with_driver(EndCase{"tracker", SIGINT, 0, "<!--SERVER-->",
+                                          "<server><param name=\"predict_base_pose\" value=\"false\"/></server>",
+                                          "stopped by SIGINT"});
+  EXPECT_EQ(ran.status, 0) << ran.output;
+  EXPECT_NE(ran.output.find("ends at ("), std::string::npos) << ran.output;
+  EXPECT_EQ(ran.output.find("ends at (0.250, -0.100) m"), std::string::npos) << ran.output;
+}
+
 // ---- the plugin alone, through dlopen --------------------------------------------------
 
 struct OpenedBase {
