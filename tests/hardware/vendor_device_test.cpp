@@ -81,7 +81,9 @@ const Backend kForceDimension{
     .max_force_N = "12",         // an omega.3
     // The firmware watchdog's longest: a loaded test machine may hold a tick 10 ms.
     .params = "<param name=\"command_timeout_s\" value=\"0.03\"/>",
-    .comm_error = "dhdGetPosition: DHD_ERROR_COM (2)",
+    // Named at whichever call meets the lost link first (a read or dhdSetForce).
+    .comm_error = "DHD_ERROR_COM (2): communication error between the host and the device; communication with the "
+                  "device failed",
     .unplugged = "dhdOpen: DHD_ERROR_NO_DEVICE_FOUND (5): error; no device found",
     .mobile_model = "delta3",
     .mobile_workspace_mm = "",
