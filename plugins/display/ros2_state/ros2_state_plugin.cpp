@@ -11,8 +11,10 @@
 
 #include <mhd/plugin_sdk.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <string>
 
 namespace mhd::ros2_state {
@@ -35,7 +37,13 @@ class Ros2StatePlugin {
       : Ros2StatePlugin(host, read_config(params, host.scene_file)) {}
 
   void display_write(const mhd_display_frame& frame) {
-    const std::int64_t stamp_ns = dds::realtime_from_host(frame.timestamp_s, sdk::host_now(host_), dds::realtime_ns());
+    // A frame of no newer snapshot is no news. A topic's stamps only go forward, whatever
+    // the jitter between the two clocks read for the conversion (a preemption between them).
+    if (frame.timestamp_s <= last_timestamp_s_) return;
+    last_timestamp_s_ = frame.timestamp_s;
+    const std::int64_t stamp_ns = std::max(
+        dds::realtime_from_host(frame.timestamp_s, sdk::host_now(host_), dds::realtime_ns()), last_stamp_ns_ + 1);
+    last_stamp_ns_ = stamp_ns;
     messages_.set(frame, stamp_ns);
     hip_.write(messages_.hip);
     proxy_.write(messages_.proxy);
@@ -74,6 +82,8 @@ class Ros2StatePlugin {
   ros2::RosPublisher<ros2::WrenchStamped> force_;
   ros2::RosPublisher<ros2::JointState> joints_;
   ros2::RigMessages messages_;
+  double last_timestamp_s_ = -std::numeric_limits<double>::infinity();
+  std::int64_t last_stamp_ns_ = std::numeric_limits<std::int64_t>::min() + 1;
 };
 
 }  // namespace mhd::ros2_state
