@@ -298,8 +298,14 @@ TEST_P(VendorDevice, AFrozenProcessLetsTheDevicesOwnWatchdogZeroTheForce) {
   mhd.signal(SIGCONT);
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
   mhd.signal(SIGINT);
-  EXPECT_EQ(exit_status(mhd), b().frozen_status) << mhd.output();
-  EXPECT_NE(mhd.output().find(b().frozen_says), std::string::npos) << mhd.output();
+  // The run rides through, or ends by the device's own cause; or, when the freeze caught a
+  // device call under way, the host's call watchdog counts the freeze and ends the run.
+  const int status = exit_status(mhd);
+  const bool as_the_device_says =
+      status == b().frozen_status && mhd.output().find(b().frozen_says) != std::string::npos;
+  const bool by_the_call_watchdog =
+      status == kExitFault && mhd.output().find("has not returned after") != std::string::npos;
+  EXPECT_TRUE(as_the_device_says || by_the_call_watchdog) << "status " << status << "\n" << mhd.output();
   const auto all = log_of(dir);
   // The freeze's timeout: a row whose neighbours are more than 0.3 s apart.
   const auto timeout = std::find_if(all.begin(), all.end(), [&](const CommandLogRow& r) {
