@@ -16,9 +16,6 @@ namespace dhd {
 
 constexpr int kOn = 1;
 constexpr int kOff = 0;
-/// dhdSetForce's non-error returns.
-constexpr int kTimeGuard = 1;
-constexpr int kMotorSaturated = 2;
 /// dhdGetStatus: how many, and the two the plugin reads.
 constexpr int kStatusCount = 16;
 constexpr int kStatusForce = 5;

@@ -85,8 +85,9 @@ std::array<double, 3> ServoLoop::force_to_render(const Reading& reading, double 
   }
   const std::array<double, 4> c = command_.read();
   const bool fresh = now_s - c[3] <= command_timeout_s_;
-  if (armed_.load(std::memory_order_acquire) && !fresh) stale_frames_.fetch_add(1, std::memory_order_relaxed);
-  if (!armed_.load(std::memory_order_acquire) || !fresh || fault() != Fault::None) {
+  const bool armed = armed_.load(std::memory_order_acquire);
+  if (armed && !fresh) stale_frames_.fetch_add(1, std::memory_order_relaxed);
+  if (!armed || !fresh || fault() != Fault::None) {
     last_zero_frame_.store(frames_ + 1, std::memory_order_release);
     return {0.0, 0.0, 0.0};
   }
@@ -120,11 +121,11 @@ void ServoLoop::publish(const Reading& reading, double now_s) noexcept {
   const ToolState& t = reading.tool;
   state_.write({t.p_D_mm[0], t.p_D_mm[1], t.p_D_mm[2], t.v_D_mm_s[0], t.v_D_mm_s[1], t.v_D_mm_s[2], t.q_D_wxyz[0],
                 t.q_D_wxyz[1], t.q_D_wxyz[2], t.q_D_wxyz[3], static_cast<double>(t.buttons),
-                static_cast<double>(frames_), now_s, 0.0});
+                static_cast<double>(frames_), now_s});
 }
 
 ToolState ServoLoop::state() const noexcept {
-  const std::array<double, 14> s = state_.read();
+  const std::array<double, 13> s = state_.read();
   ToolState t;
   t.p_D_mm = {s[0], s[1], s[2]};
   t.v_D_mm_s = {s[3], s[4], s[5]};

@@ -73,7 +73,7 @@ class ServoLoop {
   double command_timeout_s_;
   double motor_temperature_limit_;
 
-  mhd::realtime::Seqlock<14> state_;   ///< p, v, q, buttons, frame, time
+  mhd::realtime::Seqlock<13> state_;   ///< p, v, q, buttons, frame, time
   mhd::realtime::Seqlock<4> command_;  ///< force, when written (steady clock)
   std::atomic<bool> armed_{false};
   std::atomic<int> fault_{static_cast<int>(Fault::None)};
