@@ -325,11 +325,15 @@ void HapticServer::Impl::join_threads(std::vector<std::thread>& threads, PluginW
 void HapticServer::Impl::read_final_tracker_counts() {
   // Its thread has ended, so this thread may call it.
   if (tracker == nullptr || !tracker->instance.counts() || tracker->instance.state() == PluginState::Loaded) return;
-  std::array<mhd_counter, 32> buffer{};
+  std::array<mhd_counter, PluginCounterFrame::kMax> buffer{};
   if (auto n = tracker->instance.counters(buffer); n.ok()) {
-    std::vector<PluginCounter> out;
-    for (std::size_t i = 0; i < n.value(); ++i) out.push_back({buffer[i].name, buffer[i].value});
-    status_counters.tracker_plugin_counters.set(out);
+    PluginCounterFrame frame;
+    for (std::size_t i = 0; i < n.value(); ++i) {
+      frame.names[i] = buffer[i].name;
+      frame.values[i] = buffer[i].value;
+    }
+    frame.count = n.value();
+    status_counters.tracker_plugin_counters.write(frame);
   }
 }
 
@@ -363,7 +367,7 @@ void HapticServer::Impl::fill_report(ServerReport& report, double elapsed_s) {
   report.clamped_ticks = safety_counters.clamped_ticks;
   report.base_commands = base_commands.load();
   report.base_stops = base_stops.load();
-  report.base_stops_by_cause = base_stop_counts.get();
+  report.base_stops_by_cause = base_stop_counts.latest();
   report.recording_rows = recording_rows_written;
   report.recording_dropped = recording_dropped.load();
   report.zero_force_sent = zero_force_sent;

@@ -1,6 +1,8 @@
 // The io thread: tracker samples through TrackerSampleFilter to the
 // haptic thread (base sensor) and the planner (head); the planner's command through the
-// BaseCommandGuard to the base when BaseCommandScheduler says so.
+// BaseCommandGuard to the base when BaseCommandScheduler says so. After it starts, it
+// takes no lock and allocates nothing: lock-free hand-offs, a claim on the base that never
+// waits, fixed buffers (haptic_thread_hygiene_test.cpp watches it).
 #include "haptic_server/server_impl.h"
 
 #include "haptic_server/base_command_scheduler.h"
@@ -17,10 +19,8 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <mutex>
 #include <optional>
 #include <thread>
-#include <vector>
 
 namespace mhd {
 
@@ -38,11 +38,11 @@ struct HapticServer::Impl::IoThreadState {
   BaseCommandScheduler scheduler;
   std::array<mhd_tracker_sample, 64> samples{};
   double newest_base_sample_t_s = -std::numeric_limits<double>::infinity();
-  std::uint64_t command_sequence_seen = 0;
   BaseTwist planned;
   BaseStopCounts counts_published;
   // The plugin's own counts (samples it dropped, and why), for the status line.
-  std::array<mhd_counter, 32> counter_buffer{};
+  std::array<mhd_counter, PluginCounterFrame::kMax> counter_buffer{};
+  PluginCounterFrame counters;
   double next_counters_t_s = 0.0;
 };
 
@@ -56,7 +56,7 @@ constexpr double kWakeMargin_s = 100e-6;
 }  // namespace
 
 void HapticServer::Impl::io_thread() {
-  realtime::name_current_thread("mhd-io");
+  realtime::name_current_thread(realtime::kIoThreadName);
   BaseCommandGuardSettings guard_settings = settings.base_guard;
   guard_settings.command_hold_s = 1.0 / settings.io_rate_hz;
   IoThreadState io(settings, guard_settings);
@@ -104,7 +104,8 @@ bool HapticServer::Impl::take_samples_until_deadline(IoThreadState& io, const re
 
 bool HapticServer::Impl::simulate_io_plugins(double t_s) {
   if (base != nullptr && base->instance.simulates()) {
-    const std::lock_guard lock(*base->call_mutex);
+    const ClaimedCall claimed(*base->call_claim);
+    if (!claimed.taken()) return false;  // run()'s thread is stopping the base: the run ends
     const InCall in_call(*base, "simulate_until", t_s);
     if (check(base->instance.simulate_until(t_s), *base)) return false;
   }
@@ -181,17 +182,20 @@ bool HapticServer::Impl::read_tracker_counters(IoThreadState& io, double t_s) {
     return tracker->instance.counters(io.counter_buffer);
   }();
   if (check(n, *tracker)) return false;
-  std::vector<PluginCounter> out;
-  out.reserve(n.value());
-  for (std::size_t i = 0; i < n.value(); ++i) out.push_back({io.counter_buffer[i].name, io.counter_buffer[i].value});
-  status_counters.tracker_plugin_counters.set(out);
+  for (std::size_t i = 0; i < n.value(); ++i) {
+    io.counters.names[i] = io.counter_buffer[i].name;
+    io.counters.values[i] = io.counter_buffer[i].value;
+  }
+  io.counters.count = n.value();
+  status_counters.tracker_plugin_counters.write(io.counters);
   return true;
 }
 
 bool HapticServer::Impl::read_base(IoThreadState& io, double t_s) {
   mhd_base_state base_state{};
+  const ClaimedCall claimed(*base->call_claim);
+  if (!claimed.taken()) return false;  // run()'s thread is stopping the base: the run ends
   auto br = [&] {
-    const std::lock_guard lock(*base->call_mutex);
     const InCall in_call(*base, "base_read", t_s);
     return base->instance.base_read(base_state);
   }();
@@ -226,12 +230,7 @@ void HapticServer::Impl::take_odometry(IoThreadState& io, const mhd_base_state& 
 BaseGuardDecision HapticServer::Impl::guard_plan(IoThreadState& io, double t_s, bool& new_plan) {
   // The planner's newest command, through the guard: stale base or head data stops the
   // base at once.
-  const auto [sequence, twist] = planned_command.get();
-  new_plan = sequence != io.command_sequence_seen;
-  if (new_plan) {
-    io.command_sequence_seen = sequence;
-    io.planned = twist;
-  }
+  new_plan = planned_command.read(io.planned);
   const HeadState h = head.get();
   BaseGuardInput judged;
   judged.t_s = t_s;
@@ -245,7 +244,7 @@ BaseGuardDecision HapticServer::Impl::guard_plan(IoThreadState& io, double t_s, 
   if (io.guard.counts().stops() != io.counts_published.stops() ||
       io.guard.counts().keep_out_deflections != io.counts_published.keep_out_deflections) {
     io.counts_published = io.guard.counts();
-    base_stop_counts.set(io.counts_published);
+    base_stop_counts.write(io.counts_published);
   }
   return guarded;
 }
@@ -259,8 +258,9 @@ bool HapticServer::Impl::send_base_command(IoThreadState& io, double t_s, bool n
   cmd.vx_mps = guarded.twist_B.vx_mps;
   cmd.vz_mps = guarded.twist_B.vz_mps;
   cmd.omega_radps = guarded.twist_B.omega_radps;
+  const ClaimedCall claimed(*base->call_claim);
+  if (!claimed.taken()) return false;  // run()'s thread is stopping the base: the run ends
   auto bw = [&] {
-    const std::lock_guard lock(*base->call_mutex);
     const InCall in_call(*base, "base_write", t_s);
     return base->instance.base_write(cmd);
   }();
@@ -279,14 +279,16 @@ void HapticServer::Impl::stop_base() {
     base_stop_sent.store(true);
     return;
   }
-  // Bounded: the io thread may itself be stuck inside the base. (A try_lock loop rather
-  // than a timed mutex: TSan does not see pthread_mutex_clocklock and reports races.)
-  std::unique_lock lock(*base->call_mutex, std::defer_lock);
+  // Bounded: the io thread may itself be stuck inside the base.
   const auto give_up = std::chrono::steady_clock::now() + std::chrono::milliseconds(200);
-  while (!lock.try_lock()) {
+  while (!base->call_claim->try_take()) {
     if (std::chrono::steady_clock::now() >= give_up) return;
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
+  struct GiveBack {
+    CallClaim& claim;
+    ~GiveBack() { claim.give_back(); }
+  } give_back{*base->call_claim};
   if (base->instance.state() == PluginState::Running) {
     const InCall in_call(*base, "base_write", host.now_s());
     base_stop_sent.store(send_base_stop(&base->instance, host));

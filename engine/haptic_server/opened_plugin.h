@@ -7,8 +7,8 @@
 #include "plugin_host/plugin_instance.h"
 #include "scene/scene_description.h"
 
+#include <atomic>
 #include <memory>
-#include <mutex>
 #include <string>
 #include <utility>
 
@@ -17,15 +17,43 @@ namespace mhd {
 /// "plugin 'x' (scene.xml:12)", or "plugin 'x' (scene.xml)" without a line.
 [[nodiscard]] std::string culprit_of(const PluginDescription& description);
 
+/// Taken around every call to the base from a server thread, so that run()'s thread can
+/// send the base its stop while the io thread is stuck inside another plugin. Taking it
+/// never waits and never locks: the io thread, which finds it taken only while run()'s
+/// thread stops the base at the run's end, then ends its loop.
+class CallClaim {
+ public:
+  [[nodiscard]] bool try_take() noexcept { return !taken_.exchange(true, std::memory_order_acquire); }
+  void give_back() noexcept { taken_.store(false, std::memory_order_release); }
+
+ private:
+  std::atomic<bool> taken_{false};
+};
+
+/// Holds a CallClaim for as long as it lives, when it could take it (see taken()).
+class ClaimedCall {
+ public:
+  explicit ClaimedCall(CallClaim& claim) noexcept : claim_(claim), taken_(claim.try_take()) {}
+  ~ClaimedCall() {
+    if (taken_) claim_.give_back();
+  }
+  ClaimedCall(const ClaimedCall&) = delete;
+  ClaimedCall& operator=(const ClaimedCall&) = delete;
+  [[nodiscard]] bool taken() const noexcept { return taken_; }
+
+ private:
+  CallClaim& claim_;
+  bool taken_;
+};
+
 struct OpenedPlugin {
   PluginDescription description;
   PluginInstance instance;
   /// Made at open: a crash message names the plugin without allocating.
   std::string culprit = culprit_of(description);
   std::unique_ptr<CallWatch> watch = std::make_unique<CallWatch>();
-  /// Held around every call to the base from a server thread, so run()'s thread can send
-  /// the base its stop while the io thread is stuck inside another plugin.
-  std::unique_ptr<std::mutex> call_mutex = std::make_unique<std::mutex>();
+  /// Taken around every call to the base from a server thread (in a box: plugins move).
+  std::unique_ptr<CallClaim> call_claim = std::make_unique<CallClaim>();
 };
 
 /// Marks `plugin` as inside `call` for as long as it lives, for the watchdog and, on this

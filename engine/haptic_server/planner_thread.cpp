@@ -11,7 +11,6 @@ namespace mhd {
 void HapticServer::Impl::planner_thread() {
   realtime::name_current_thread("mhd-planner");
   realtime::PeriodicTimer timer(1.0 / settings.base_rate_hz);
-  std::uint64_t sequence = 0;
   UserMotionEstimate user_motion;
   while (!stop.load(std::memory_order_relaxed)) {
     (void)timer.wait_next();
@@ -34,7 +33,7 @@ void HapticServer::Impl::planner_thread() {
     in.base_age_s = in.t_s - base_sample_newest_t_s.load(std::memory_order_relaxed);
     if (h.known) in.head_age_s = in.t_s - h.t_s;
     const BaseTwist twist = options.plan_base(in);
-    planned_command.set({++sequence, twist});
+    planned_command.write(twist);
   }
 }
 

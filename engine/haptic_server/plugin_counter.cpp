@@ -4,6 +4,13 @@
 
 namespace mhd {
 
+std::vector<PluginCounter> PluginCounterFrame::to_vector() const {
+  std::vector<PluginCounter> out;
+  out.reserve(count);
+  for (std::size_t i = 0; i < count && i < kMax; ++i) out.push_back({names[i], values[i]});
+  return out;
+}
+
 std::string dropped_counts_text(const std::vector<PluginCounter>& counters) {
   constexpr std::string_view kPrefix = "dropped_";
   std::string out;

@@ -8,7 +8,6 @@
 #include "haptic_server/haptic_server.h"
 #include "haptic_server/head_state.h"
 #include "haptic_server/opened_plugin.h"
-#include "haptic_server/shared_value.h"
 #include "haptic_server/status_counters.h"
 #include "haptic_server/tick_histogram.h"
 #include "kinematics/rig.h"
@@ -81,8 +80,8 @@ struct HapticServer::Impl {
   realtime::TripleBuffer<HapticSnapshot> snapshot_for_planner;
   realtime::TripleBuffer<HapticSnapshot> snapshot_for_display;
   realtime::TripleBuffer<HapticSnapshot> snapshot_for_io;  ///< the base pose the guard judges
-  SharedValue<HeadState> head;
-  SharedValue<std::pair<std::uint64_t, BaseTwist>> planned_command;  // sequence, twist
+  SharedHead head;                                  ///< io -> planner, display, recorder
+  realtime::TripleBuffer<BaseTwist> planned_command;  ///< planner -> io
   realtime::WakeEvent base_sample_arrived;  ///< io -> haptic: start the tick now
   bool tick_on_tracker_sample = false;      ///< set by run(): the tracker can wake the io thread
 
@@ -91,7 +90,7 @@ struct HapticServer::Impl {
   // For the report only.
   std::atomic<std::uint64_t> missed{0}, contact_ticks{0}, proxy_budget_exhausted_ticks{0}, recording_dropped{0};
   std::atomic<std::uint64_t> base_commands{0}, base_stops{0};
-  SharedValue<BaseStopCounts> base_stop_counts;  ///< the guard's, by cause (io thread)
+  realtime::TripleBuffer<BaseStopCounts> base_stop_counts;  ///< the guard's, by cause (io -> run())
   std::atomic<double> base_sample_newest_t_s{-std::numeric_limits<double>::infinity()};  ///< for the planner
 
   std::atomic<bool> stop{false};
@@ -157,7 +156,7 @@ struct HapticServer::Impl {
     return true;
   }
 
-  /// Sends the base a zero twist (under its call mutex) and notes whether it took it
+  /// Sends the base a zero twist (under its call claim) and notes whether it took it
   /// (io_thread.cpp).
   void stop_base();
 

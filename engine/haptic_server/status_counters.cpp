@@ -2,7 +2,7 @@
 
 namespace mhd {
 
-ServerStatus StatusCounters::snapshot(double elapsed_s, std::uint64_t ticks_before, double window_s) const {
+ServerStatus StatusCounters::snapshot(double elapsed_s, std::uint64_t ticks_before, double window_s) {
   ServerStatus s;
   s.elapsed_s = elapsed_s;
   s.ticks = ticks.load();
@@ -14,7 +14,7 @@ ServerStatus StatusCounters::snapshot(double elapsed_s, std::uint64_t ticks_befo
   s.tracker_age_s = tracker_age_s.load();
   s.tracker_samples = tracker_samples.load();
   s.tracker_rejected = tracker_rejected.load();
-  s.tracker_plugin_counters = tracker_plugin_counters.get();
+  s.tracker_plugin_counters = tracker_plugin_counters.latest().to_vector();
   s.early_ticks = early_ticks.load();
   s.base = base.get();
   return s;

@@ -6,6 +6,7 @@ namespace mhd::realtime {
 
 /// The haptic server's thread names.
 inline constexpr const char* kHapticThreadName = "mhd-haptic";
+inline constexpr const char* kIoThreadName = "mhd-io";
 
 void name_current_thread(const char* name) noexcept;
 

@@ -111,6 +111,12 @@ class SimIs900Plugin {
     model_.start(now, world_truth(session_->world()));
   }
   std::size_t tracker_read(std::span<mhd_tracker_sample> out) { return model_.read(out); }
+  /// Samples lost because the host read too seldom (the oldest makes room).
+  std::size_t counters(std::span<mhd_counter> out) const {
+    if (out.empty()) return 1;
+    out[0] = {"dropped_buffer_full", model_.dropped()};
+    return 1;
+  }
   void simulate_until(double t_s) {
     session_->advance_to(t_s);
     model_.simulate_until(t_s, world_truth(session_->world()));
