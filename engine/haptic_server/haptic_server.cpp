@@ -14,7 +14,7 @@
 #include "plugin_host/plugin_search_path.h"
 #include "realtime/alternate_signal_stack.h"
 #include "scene/rig_kind_check.h"
-#include "simulation/simulated_user_params.h"
+#include "simulation_config/simulated_user_params.h"
 
 #include <array>
 #include <chrono>

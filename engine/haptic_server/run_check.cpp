@@ -7,7 +7,7 @@
 #include "plugin_host/plugin_kind.h"
 #include "plugin_host/scene_plugin_check.h"
 #include "scene/rig_kind_check.h"
-#include "simulation/simulated_user_params.h"
+#include "simulation_config/simulated_user_params.h"
 
 #include <string>
 

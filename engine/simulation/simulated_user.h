@@ -12,6 +12,7 @@
 // right-hand side (sin h, 0, cos h) (the +z axis of the body frame).
 
 #include "simulation/simulated_world.h"
+#include "simulation_config/simulated_user_config.h"
 
 #include <Eigen/Geometry>
 
@@ -22,51 +23,6 @@
 #include <vector>
 
 namespace mhd::simulation {
-
-struct Waypoint {
-  double x_m = 0.0;
-  double z_m = 0.0;
-  double speed_mps = 0.0;  ///< walking speed on the way to this waypoint
-};
-
-/// Parses "x z speed; x z speed; ..." (metres, m/s; numbers separated by blanks,
-/// waypoints by ';'). Throws std::invalid_argument, e.g. "waypoint 2: expected 'x z
-/// speed_mps', got '1 2'".
-[[nodiscard]] std::vector<Waypoint> parse_waypoints(std::string_view text);
-
-struct SimulatedUserConfig {
-  /// Scripted path: the user starts on the first waypoint (its speed is used only when
-  /// looping back to it) and walks to each next one at that one's speed. Empty: random walk.
-  std::vector<Waypoint> path;
-  /// After the last waypoint, walk back to the first and go round again; else stand.
-  bool loop_path = false;
-  /// No part of the walk is faster; path speeds above it are an error.
-  double max_speed_mps = 1.5;
-  /// The heading turns towards the walking direction at most this fast.
-  double max_turn_rate_radps = 3.0;
-
-  // Random walk (used when path is empty): a sequence of manoeuvres.
-  std::uint64_t seed = 0;
-  PlanarPose start;                       ///< where the random walk begins
-  double walk_speed_min_mps = 0.3;        ///< walking: speed drawn from [min, max]
-  double walk_speed_max_mps = 1.0;
-  double walk_turn_rate_max_radps = 0.6;  ///< walking: constant turn rate from [-max, max]
-  double side_step_probability = 0.25;    ///< chance that a manoeuvre is a side-step
-  double stand_probability = 0.15;        ///< chance that a manoeuvre is a pause
-  double side_step_speed_max_mps = 1.5;   ///< side-step speed drawn from [0.5, 1] x this
-  /// Soft bound: beyond |x| or |z| = this the walk steers back towards the origin.
-  double area_half_size_m = 3.0;
-
-  // Body.
-  double eye_height_m = 1.65;
-  std::optional<Eigen::Vector3d> gaze_target_W;  ///< the head faces this point when set
-  double hand_reach_m = 0.45;                    ///< in front of the chest, horizontally
-  double hand_height_m = 1.1;
-  double hand_motion_amplitude_m = 0.02;  ///< per axis, slow sinusoids with seeded phases
-
-  double start_time_s = 0.0;
-  double step_s = 0.005;
-};
 
 class SimulatedUser {
  public:

@@ -13,18 +13,12 @@
 #include <Eigen/Geometry>
 
 #include "realtime/seqlock.h"
+#include "simulation_config/planar_pose.h"
 
 #include <atomic>
 #include <mutex>
 
 namespace mhd::simulation {
-
-/// A pose on the floor: position (x, z) and heading about +y.
-struct PlanarPose {
-  double x_m = 0.0;
-  double z_m = 0.0;
-  double heading_rad = 0.0;
-};
 
 struct HeadPose {
   Eigen::Vector3d p_W_m = Eigen::Vector3d::Zero();

@@ -21,7 +21,13 @@ TEST(StatusCounters, ASnapshotCarriesEveryPublishedValue) {
   c.tracker_age_s = 0.007;
   c.tracker_samples = 4320;
   c.tracker_rejected = 2;
-  c.tracker_plugin_counters.set({{"stale", 3}, {"unknown_rig", 12}});
+  PluginCounterFrame counters;
+  counters.names[0] = "stale";
+  counters.values[0] = 3;
+  counters.names[1] = "unknown_rig";
+  counters.values[1] = 12;
+  counters.count = 2;
+  c.tracker_plugin_counters.write(counters);
   BasePose base;
   base.x_m = -0.14;
   base.z_m = -0.78;
@@ -46,6 +52,8 @@ TEST(StatusCounters, ASnapshotCarriesEveryPublishedValue) {
   EXPECT_EQ(s.base.x_m, -0.14);
   EXPECT_EQ(s.base.z_m, -0.78);
   EXPECT_EQ(s.base.heading_rad, 0.5);
+  // A later snapshot with nothing newer still carries the counters.
+  EXPECT_EQ(c.snapshot(2.6, 0, 2.6).tracker_plugin_counters.size(), 2u);
 }
 
 TEST(StatusCounters, TheRateIsOverTheWindowAndZeroWithoutOne) {
@@ -56,7 +64,7 @@ TEST(StatusCounters, TheRateIsOverTheWindowAndZeroWithoutOne) {
 }
 
 TEST(StatusCounters, BeforeAnythingIsPublishedTheTrackerIsInfinitelyOld) {
-  const StatusCounters c;
+  StatusCounters c;
   const ServerStatus s = c.snapshot(0.0, 0, 0.0);
   EXPECT_EQ(s.ticks, 0u);
   EXPECT_TRUE(std::isinf(s.tracker_age_s));

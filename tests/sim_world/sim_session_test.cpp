@@ -1,7 +1,7 @@
 #include "sim_world/sim_session.h"
 
 #include "scene_xml/scene_reader.h"
-#include "simulation/simulated_user_params.h"
+#include "simulation_config/simulated_user_params.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // <simulated_user> params into a SimulatedUserConfig, each problem at its line.
-#include "simulation/simulated_user_params.h"
+#include "simulation_config/simulated_user_params.h"
 
 #include <gtest/gtest.h>
 

@@ -8,7 +8,7 @@
 #include "plugin_host/plugin_search_path.h"
 #include "scene_xml/scene_reader.h"
 #include "simulation/simulated_user.h"
-#include "simulation/simulated_user_params.h"
+#include "simulation_config/simulated_user_params.h"
 #include "simulation/simulated_world.h"
 #include "sim_world/sim_session.h"
 

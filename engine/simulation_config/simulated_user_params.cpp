@@ -1,4 +1,4 @@
-#include "simulation/simulated_user_params.h"
+#include "simulation_config/simulated_user_params.h"
 
 #include "scene/param_block_reader.h"
 
@@ -49,7 +49,7 @@ Result<SimulatedUserConfig> simulated_user_config_from(const ParamBlock& block) 
   Diagnostics errors = r.finish();
   if (!errors.empty()) return errors;
   try {
-    SimulatedUser check(c);  // the constructor validates the whole configuration
+    validate(c);  // the whole configuration, as SimulatedUser checks it
   } catch (const std::invalid_argument& e) {
     return Diagnostic{block.where, std::string("<simulated_user>: ") + e.what()};
   }

@@ -8,7 +8,7 @@
 
 #include "diagnostics/result.h"
 #include "scene/scene_description.h"
-#include "simulation/simulated_user.h"
+#include "simulation_config/simulated_user_config.h"
 
 #include <optional>
 
