@@ -1,4 +1,4 @@
-// The display thread: the newest state as an mhd_display_frame to every display plugin.
+// The display thread: the newest state as a DisplayFrame to every display plugin.
 #include "haptic_server/server_impl.h"
 
 #include "realtime/periodic_timer.h"
@@ -13,7 +13,7 @@ void HapticServer::Impl::display_thread() {
     (void)timer.wait_next();
     const HapticSnapshot snap = snapshot_for_display.latest();
     const HeadState h = head.get();
-    mhd_display_frame frame{};
+    DisplayFrame frame{};
     frame.timestamp_s = snap.t_s;
     for (int i = 0; i < 3; ++i) {
       frame.p_W_hip_m[i] = snap.p_W_hip[i];
@@ -21,7 +21,7 @@ void HapticServer::Impl::display_thread() {
       frame.force_W_N[i] = snap.force_W_N[i];
       frame.p_W_head_m[i] = h.p_W_m[i];
     }
-    frame.in_contact = snap.in_contact ? 1 : 0;
+    frame.in_contact = snap.in_contact;
     frame.base_x_m = snap.base.x_m;
     frame.base_z_m = snap.base.z_m;
     frame.base_heading_rad = snap.base.heading_rad;

@@ -325,7 +325,7 @@ void HapticServer::Impl::join_threads(std::vector<std::thread>& threads, PluginW
 void HapticServer::Impl::read_final_tracker_counts() {
   // Its thread has ended, so this thread may call it.
   if (tracker == nullptr || !tracker->instance.counts() || tracker->instance.state() == PluginState::Loaded) return;
-  std::array<mhd_counter, PluginCounterFrame::kMax> buffer{};
+  std::array<CounterReading, PluginCounterFrame::kMax> buffer{};
   if (auto n = tracker->instance.counters(buffer); n.ok()) {
     PluginCounterFrame frame;
     for (std::size_t i = 0; i < n.value(); ++i) {

@@ -24,7 +24,7 @@ constexpr double kLookAheadWithinPeriod = 0.25;
 
 void HapticServer::Impl::haptic_thread() {
   const HapticTickSettings& tick_settings = settings.tick;  // max_force_N: the device's, set at open
-  mhd_device_info info{};
+  DeviceInfo info{};
   if (auto reported = device->instance.device_info(); reported.ok()) info = reported.value();
   HapticTick tick(scene, rig, tick_settings);
   realtime::name_current_thread(realtime::kHapticThreadName);
@@ -71,12 +71,12 @@ void HapticServer::Impl::drain_into(HapticTick& tick) {
   while (commands_to_haptic.pop(command)) tick.add_base_command(command.t_s, command.twist_B);
 }
 
-bool HapticServer::Impl::read_device(double t_s, const mhd_device_info& info, Eigen::Vector3d& p_D_tool_m) {
+bool HapticServer::Impl::read_device(double t_s, const DeviceInfo& info, Eigen::Vector3d& p_D_tool_m) {
   if (device->instance.simulates()) {
     const InCall in_call(*device, "simulate_until", t_s);
     if (check(device->instance.simulate_until(t_s), *device)) return false;
   }
-  mhd_device_state state{};
+  DeviceState state{};
   auto read = [&] {
     const InCall in_call(*device, "device_read", t_s);
     return device->instance.device_read(state);
@@ -95,7 +95,7 @@ bool HapticServer::Impl::read_device(double t_s, const mhd_device_info& info, Ei
 bool HapticServer::Impl::write_device(double t_s, const HapticTickOutput& out) {
   // A call that returned after the watchdog ended the run: nothing but zero from here.
   if (stop.load(std::memory_order_relaxed)) return false;
-  mhd_device_command cmd{};
+  DeviceCommand cmd{};
   cmd.timestamp_s = t_s;
   for (int j = 0; j < 3; ++j) cmd.force_D_N[j] = out.force_D_N[j];
   auto write = [&] {

@@ -36,12 +36,12 @@ struct HapticServer::Impl::IoThreadState {
   BaseCommandGuard guard;
   TrackerSampleFilter filter;
   BaseCommandScheduler scheduler;
-  std::array<mhd_tracker_sample, 64> samples{};
+  std::array<TrackerSample, 64> samples{};
   double newest_base_sample_t_s = -std::numeric_limits<double>::infinity();
   BaseTwist planned;
   BaseStopCounts counts_published;
   // The plugin's own counts (samples it dropped, and why), for the status line.
-  std::array<mhd_counter, PluginCounterFrame::kMax> counter_buffer{};
+  std::array<CounterReading, PluginCounterFrame::kMax> counter_buffer{};
   PluginCounterFrame counters;
   double next_counters_t_s = 0.0;
 };
@@ -139,7 +139,7 @@ std::optional<std::size_t> HapticServer::Impl::read_tracker(IoThreadState& io) {
   return taken;
 }
 
-bool HapticServer::Impl::take_sample(IoThreadState& io, const mhd_tracker_sample& s, double read_at_s,
+bool HapticServer::Impl::take_sample(IoThreadState& io, const TrackerSample& s, double read_at_s,
                                      bool& base_sample) {
   const Eigen::Vector3d p_T_m(s.p_T_m[0], s.p_T_m[1], s.p_T_m[2]);
   const TrackerSampleVerdict verdict = io.filter.check(s, read_at_s);
@@ -192,7 +192,7 @@ bool HapticServer::Impl::read_tracker_counters(IoThreadState& io, double t_s) {
 }
 
 bool HapticServer::Impl::read_base(IoThreadState& io, double t_s) {
-  mhd_base_state base_state{};
+  BaseState base_state{};
   const ClaimedCall claimed(*base->call_claim);
   if (!claimed.taken()) return false;  // run()'s thread is stopping the base: the run ends
   auto br = [&] {
@@ -211,7 +211,7 @@ bool HapticServer::Impl::read_base(IoThreadState& io, double t_s) {
   return true;
 }
 
-void HapticServer::Impl::take_odometry(IoThreadState& io, const mhd_base_state& base_state) {
+void HapticServer::Impl::take_odometry(IoThreadState& io, const BaseState& base_state) {
   // The base's own pose, in the world: the sample the base sensor would have given there.
   if (!std::isfinite(base_state.heading_rad) || !std::isfinite(base_state.timestamp_s)) {
     status_counters.tracker_rejected.fetch_add(1, std::memory_order_relaxed);
@@ -253,7 +253,7 @@ bool HapticServer::Impl::send_base_command(IoThreadState& io, double t_s, bool n
                                            const BaseGuardDecision& guarded) {
   // Commands go out at the base rate (and feed the base's watchdog).
   if (!io.scheduler.should_send(t_s, new_plan, guarded.twist_B)) return true;
-  mhd_base_command cmd{};
+  BaseCommand cmd{};
   cmd.timestamp_s = t_s;
   cmd.vx_mps = guarded.twist_B.vx_mps;
   cmd.vz_mps = guarded.twist_B.vz_mps;

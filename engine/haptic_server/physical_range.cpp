@@ -4,7 +4,7 @@
 
 namespace mhd {
 
-bool tool_position_plausible(const mhd_device_info& info, const Eigen::Vector3d& p_D_tool_m) noexcept {
+bool tool_position_plausible(const DeviceInfo& info, const Eigen::Vector3d& p_D_tool_m) noexcept {
   return p_D_tool_m.allFinite() && distance_outside_workspace_m(info, p_D_tool_m.data()) <= kWorkspaceMargin_m;
 }
 
@@ -23,12 +23,12 @@ std::string tracked_position_fault(unsigned sensor_id, const Eigen::Vector3d& p_
                      sensor_id, p_T_m.norm(), tracking_range_m);
 }
 
-bool base_position_plausible(const mhd_base_state& state, double tracking_range_m) noexcept {
+bool base_position_plausible(const BaseState& state, double tracking_range_m) noexcept {
   const Eigen::Vector2d p_m(state.x_m, state.z_m);
   return p_m.allFinite() && p_m.norm() <= tracking_range_m;
 }
 
-std::string base_position_fault(const mhd_base_state& state, double tracking_range_m) {
+std::string base_position_fault(const BaseState& state, double tracking_range_m) {
   return fmt::format("base_read returned the base at ({:g}, {:g}) m, farther than the tracking range of {:g} m",
                      state.x_m, state.z_m, tracking_range_m);
 }

@@ -6,7 +6,7 @@
 
 #include "plugin_host/device_info_check.h"
 
-#include <mhd/plugin_abi.h>
+#include "plugin_host/hardware_io.h"
 
 #include <Eigen/Core>
 
@@ -14,13 +14,13 @@
 
 namespace mhd {
 
-/// How far outside the workspace a device reports (mhd_device_info) a real tool may be
+/// How far outside the workspace a device reports (DeviceInfo) a real tool may be
 /// (end stops, cable stretch, a conservative box) before a reading is absurd.
 inline constexpr double kWorkspaceMargin_m = 0.1;
 
 /// False when p_D_tool_m is not finite or lies farther than the margin outside the union
 /// of the device's workspace boxes.
-[[nodiscard]] bool tool_position_plausible(const mhd_device_info& info, const Eigen::Vector3d& p_D_tool_m) noexcept;
+[[nodiscard]] bool tool_position_plausible(const DeviceInfo& info, const Eigen::Vector3d& p_D_tool_m) noexcept;
 
 /// "device_read returned the tool at (a, b, c) m, outside the device's workspace by more than 0.1 m"
 [[nodiscard]] std::string tool_position_fault(const Eigen::Vector3d& p_D_tool_m);
@@ -35,9 +35,9 @@ inline constexpr double kWorkspaceMargin_m = 0.1;
 
 /// False when the base's odometry puts it farther from the world origin than
 /// `tracking_range_m`: the base moves where it is tracked, so farther is no real reading.
-[[nodiscard]] bool base_position_plausible(const mhd_base_state& state, double tracking_range_m) noexcept;
+[[nodiscard]] bool base_position_plausible(const BaseState& state, double tracking_range_m) noexcept;
 
 /// "base_read returned the base at (1e+308, 0) m, farther than the tracking range of 50 m"
-[[nodiscard]] std::string base_position_fault(const mhd_base_state& state, double tracking_range_m);
+[[nodiscard]] std::string base_position_fault(const BaseState& state, double tracking_range_m);
 
 }  // namespace mhd

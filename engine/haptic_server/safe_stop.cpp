@@ -4,7 +4,7 @@ namespace mhd {
 
 bool send_zero_torque(PluginInstance& device, const HostServices& clock) noexcept {
   if (device.state() != PluginState::Running) return false;
-  mhd_device_command zero{};
+  DeviceCommand zero{};
   zero.timestamp_s = clock.now_s();
   return device.device_write(zero).ok();
 }
@@ -12,7 +12,7 @@ bool send_zero_torque(PluginInstance& device, const HostServices& clock) noexcep
 bool send_base_stop(PluginInstance* base, const HostServices& clock) noexcept {
   if (base == nullptr) return true;
   if (base->state() != PluginState::Running) return false;
-  mhd_base_command zero{};
+  BaseCommand zero{};
   zero.timestamp_s = clock.now_s();
   return base->base_write(zero).ok();
 }

@@ -51,11 +51,11 @@ Result<ScenePlanner> scene_planner(const SceneDescription& scene, const Rig& rig
   return out;
 }
 
-std::optional<WorkspaceBox> usable_device_workspace(const mhd_device_info& info, double margin_m) {
+std::optional<WorkspaceBox> usable_device_workspace(const DeviceInfo& info, double margin_m) {
   std::optional<WorkspaceBox> largest;
-  const std::uint32_t count = std::min<std::uint32_t>(info.workspace_box_count, MHD_DEVICE_MAX_WORKSPACE_BOXES);
+  const std::uint32_t count = std::min<std::uint32_t>(info.workspace_box_count, static_cast<std::uint32_t>(DeviceInfo::kMaxWorkspaceBoxes));
   for (std::uint32_t i = 0; i < count; ++i) {
-    const mhd_box_D& b = info.workspace[i];
+    const WorkspaceBoxD& b = info.workspace[i];
     const WorkspaceBox box{Eigen::Vector3d(b.min_m[0], b.min_m[1], b.min_m[2]),
                            Eigen::Vector3d(b.max_m[0], b.max_m[1], b.max_m[2])};
     if (!largest || box.size_m().prod() > largest->size_m().prod()) largest = box;

@@ -10,7 +10,7 @@
 #include "diagnostics/result.h"
 #include "scene/scene_description.h"
 
-#include <mhd/plugin_abi.h>
+#include "plugin_host/hardware_io.h"
 
 #include <optional>
 
@@ -30,6 +30,6 @@ struct ScenePlanner {
 /// The usable workspace of a device from its own report: the largest of its workspace
 /// boxes (a box inside the union, which may not be convex), moved in by `margin_m` on
 /// every side. Null when it reports no box or the margin leaves nothing.
-[[nodiscard]] std::optional<WorkspaceBox> usable_device_workspace(const mhd_device_info& info, double margin_m);
+[[nodiscard]] std::optional<WorkspaceBox> usable_device_workspace(const DeviceInfo& info, double margin_m);
 
 }  // namespace mhd

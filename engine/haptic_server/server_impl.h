@@ -184,7 +184,7 @@ struct HapticServer::Impl {
   void haptic_thread();
   // The haptic thread's steps, in tick order; a false return ends the run.
   void drain_into(HapticTick& tick);
-  bool read_device(double t_s, const mhd_device_info& info, Eigen::Vector3d& p_D_tool_m);
+  bool read_device(double t_s, const DeviceInfo& info, Eigen::Vector3d& p_D_tool_m);
   bool write_device(double t_s, const HapticTickOutput& out);
   void publish(double t_s, const HapticTickOutput& out);
   void record(double t_s, double dt_s, const HapticTickOutput& out);
@@ -197,10 +197,10 @@ struct HapticServer::Impl {
   bool take_samples_until_deadline(IoThreadState& io, const realtime::PeriodicTimer& timer);
   bool simulate_io_plugins(double t_s);
   std::optional<std::size_t> read_tracker(IoThreadState& io);
-  bool take_sample(IoThreadState& io, const mhd_tracker_sample& s, double read_at_s, bool& base_sample);
+  bool take_sample(IoThreadState& io, const TrackerSample& s, double read_at_s, bool& base_sample);
   bool read_tracker_counters(IoThreadState& io, double t_s);
   bool read_base(IoThreadState& io, double t_s);
-  void take_odometry(IoThreadState& io, const mhd_base_state& base_state);
+  void take_odometry(IoThreadState& io, const BaseState& base_state);
   BaseGuardDecision guard_plan(IoThreadState& io, double t_s, bool& new_plan);
   bool send_base_command(IoThreadState& io, double t_s, bool new_plan, const BaseGuardDecision& guarded);
   void planner_thread();

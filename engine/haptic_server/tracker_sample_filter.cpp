@@ -17,7 +17,7 @@ const char* to_string(TrackerSampleVerdict verdict) noexcept {
   return "?";
 }
 
-TrackerSampleVerdict TrackerSampleFilter::check(const mhd_tracker_sample& sample, double read_at_s) {
+TrackerSampleVerdict TrackerSampleFilter::check(const TrackerSample& sample, double read_at_s) {
   auto [it, first] = sensors_.emplace(sample.sensor_id, SensorTrack{sample.sequence, read_at_s});
   const bool restarted = read_at_s - it->second.accepted_at_s > settings_.sequence_restart_after_s;
   if (sample.sensor_id != settings_.base_sensor_id && sample.sensor_id != settings_.head_sensor_id) {

@@ -2,7 +2,7 @@
 // Which tracker samples the server takes (docs/haptic_server.md, "Status line"): the io
 // thread's checks on every sample a tracker plugin returns, as one verdict per sample.
 
-#include <mhd/plugin_abi.h>
+#include "plugin_host/hardware_io.h"
 
 #include <cstdint>
 #include <map>
@@ -41,7 +41,7 @@ class TrackerSampleFilter {
   /// checked before the position, so a dropped sample is never a fault. Only an accepted
   /// sample moves its sensor's sequence on; the first sample of a sensor, whatever its
   /// verdict, starts the sensor's memory. Allocates once per new sensor id.
-  [[nodiscard]] TrackerSampleVerdict check(const mhd_tracker_sample& sample, double read_at_s);
+  [[nodiscard]] TrackerSampleVerdict check(const TrackerSample& sample, double read_at_s);
 
   [[nodiscard]] const TrackerSampleFilterSettings& settings() const noexcept { return settings_; }
 

@@ -4,25 +4,26 @@
 // Plugins keep the mhd_host pointer they get in open(),
 // so a HostServices must outlive every instance opened with it and cannot move.
 
-#include <mhd/plugin_abi.h>
-
 #include <chrono>
 #include <filesystem>
+#include <memory>
 #include <string>
+
+struct mhd_host;  // mhd/plugin_abi.h; the engine passes it to plugins and never reads it
 
 namespace mhd {
 
 class HostServices {
  public:
-  HostServices() noexcept;
+  HostServices();
   HostServices(const HostServices&) = delete;
   HostServices& operator=(const HostServices&) = delete;
   HostServices(HostServices&&) = delete;
   HostServices& operator=(HostServices&&) = delete;
-  ~HostServices() = default;
+  ~HostServices();
 
   /// The table handed to open(); abi_version and struct_size are this host's.
-  [[nodiscard]] const mhd_host& abi() const noexcept { return host_; }
+  [[nodiscard]] const mhd_host& abi() const noexcept { return *host_; }
 
   /// Seconds on the steady clock since this object was made (the host clock plugins see).
   [[nodiscard]] double now_s() const noexcept;
@@ -34,7 +35,7 @@ class HostServices {
 
  private:
   std::chrono::steady_clock::time_point epoch_;
-  mhd_host host_;
+  std::unique_ptr<mhd_host> host_;
   std::string scene_file_;
 };
 

@@ -1,5 +1,7 @@
 #include "plugin_host/open_plugin.h"
 
+#include <mhd/plugin_abi.h>
+
 #include "plugin_host/scene_plugin_check.h"
 
 #include <utility>

@@ -9,8 +9,6 @@
 #include "plugin_host/plugin_search_path.h"
 #include "scene/scene_description.h"
 
-#include <mhd/plugin_abi.h>
-
 namespace mhd {
 
 /// An Open instance, or the first error (NotFound ... WrongKind ... OpenFailed).

@@ -1,5 +1,6 @@
 #include "plugin_host/plugin_instance.h"
 
+#include "plugin_host/abi_conversion.h"
 #include "plugin_host/device_info_check.h"
 #include "plugin_host/plugin_kind.h"
 #include "plugin_host/scene_plugin_check.h"
@@ -7,6 +8,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <initializer_list>
@@ -61,17 +63,18 @@ std::optional<std::string> first_non_finite(std::initializer_list<Field> fields,
   return std::nullopt;
 }
 
-std::optional<std::string> non_finite_in(const mhd_device_command& c) {
-  return first_non_finite(
-      {{"timestamp_s", &c.timestamp_s, 1}, {"force_D_N", c.force_D_N, 3}, {"torque_D_Nm", c.torque_D_Nm, 3}});
+std::optional<std::string> non_finite_in(const DeviceCommand& c) {
+  return first_non_finite({{"timestamp_s", &c.timestamp_s, 1},
+                           {"force_D_N", c.force_D_N.data(), 3},
+                           {"torque_D_Nm", c.torque_D_Nm.data(), 3}});
 }
 
-std::optional<std::string> non_finite_in(const mhd_tracker_sample& s, std::string_view prefix) {
+std::optional<std::string> non_finite_in(const TrackerSample& s, std::string_view prefix) {
   return first_non_finite(
-      {{"timestamp_s", &s.timestamp_s, 1}, {"p_T_m", s.p_T_m, 3}, {"q_T_wxyz", s.q_T_wxyz, 4}}, prefix);
+      {{"timestamp_s", &s.timestamp_s, 1}, {"p_T_m", s.p_T_m.data(), 3}, {"q_T_wxyz", s.q_T_wxyz.data(), 4}}, prefix);
 }
 
-std::optional<std::string> non_finite_in(const mhd_base_state& s) {
+std::optional<std::string> non_finite_in(const BaseState& s) {
   return first_non_finite({{"timestamp_s", &s.timestamp_s, 1},
                            {"x_m", &s.x_m, 1},
                            {"z_m", &s.z_m, 1},
@@ -81,23 +84,23 @@ std::optional<std::string> non_finite_in(const mhd_base_state& s) {
                            {"omega_radps", &s.omega_radps, 1}});
 }
 
-std::optional<std::string> non_finite_in(const mhd_base_command& c) {
+std::optional<std::string> non_finite_in(const BaseCommand& c) {
   return first_non_finite({{"timestamp_s", &c.timestamp_s, 1},
                            {"vx_mps", &c.vx_mps, 1},
                            {"vz_mps", &c.vz_mps, 1},
                            {"omega_radps", &c.omega_radps, 1}});
 }
 
-std::optional<std::string> non_finite_in(const mhd_display_frame& f) {
+std::optional<std::string> non_finite_in(const DisplayFrame& f) {
   return first_non_finite({{"timestamp_s", &f.timestamp_s, 1},
-                           {"p_W_hip_m", f.p_W_hip_m, 3},
-                           {"p_W_proxy_m", f.p_W_proxy_m, 3},
-                           {"force_W_N", f.force_W_N, 3},
+                           {"p_W_hip_m", f.p_W_hip_m.data(), 3},
+                           {"p_W_proxy_m", f.p_W_proxy_m.data(), 3},
+                           {"force_W_N", f.force_W_N.data(), 3},
                            {"base_x_m", &f.base_x_m, 1},
                            {"base_z_m", &f.base_z_m, 1},
                            {"base_heading_rad", &f.base_heading_rad, 1},
-                           {"p_W_head_m", f.p_W_head_m, 3},
-                           {"q_W_head_wxyz", f.q_W_head_wxyz, 4}});
+                           {"p_W_head_m", f.p_W_head_m.data(), 3},
+                           {"q_W_head_wxyz", f.q_W_head_wxyz.data(), 4}});
 }
 
 // A tracker quaternion is a unit quaternion up to this much error in its norm.
@@ -204,13 +207,14 @@ Status<PluginError> PluginInstance::open(const std::map<std::string, std::string
 
 Status<PluginError> PluginInstance::read_device_info() {
   mhd_error err{};
-  mhd_device_info info{};
-  const StatusCode code = static_cast<StatusCode>(library_->api().device_info(handle_, &info, &err));
+  mhd_device_info raw{};
+  const StatusCode code = static_cast<StatusCode>(library_->api().device_info(handle_, &raw, &err));
   if (code == MHD_ERROR) return error(PluginErrorKind::CallFailed, failed("device_info", err));
   if (code != MHD_OK) {
     return error(PluginErrorKind::InvalidData,
                  fmt::format("device_info returned {}; expected MHD_OK or MHD_ERROR", status_name(code)));
   }
+  const DeviceInfo info = from_abi(raw);
   if (auto problem = device_info_problem(info)) {
     return error(PluginErrorKind::InvalidData, fmt::format("device_info returned {}", *problem));
   }
@@ -263,7 +267,7 @@ void PluginInstance::close_handle() noexcept {
   handle_ = nullptr;
 }
 
-Result<mhd_device_info, PluginError> PluginInstance::device_info() const {
+Result<DeviceInfo, PluginError> PluginInstance::device_info() const {
   if (Status<PluginError> s = check_call("device_info", PluginKind::Device); !s) return s.error();
   if (state_ != PluginState::Open && state_ != PluginState::Running && state_ != PluginState::Stopped) {
     return error(PluginErrorKind::WrongState,
@@ -291,14 +295,15 @@ Result<PluginCallStatus, PluginError> call_outcome(const std::string& plugin, st
 
 }  // namespace
 
-Result<PluginCallStatus, PluginError> PluginInstance::device_read(mhd_device_state& out) {
+Result<PluginCallStatus, PluginError> PluginInstance::device_read(DeviceState& out) {
   if (Status<PluginError> s = check_call("device_read", PluginKind::Device); !s) return s.error();
   if (Status<PluginError> s = check_running("device_read"); !s) return s.error();
   mhd_error err{};
-  mhd_device_state state{};
+  mhd_device_state raw{};
   Result<PluginCallStatus, PluginError> outcome =
-      call_outcome(name(), "device_read", static_cast<StatusCode>(library_->api().device_read(handle_, &state, &err)), err);
+      call_outcome(name(), "device_read", static_cast<StatusCode>(library_->api().device_read(handle_, &raw, &err)), err);
   if (!outcome || outcome.value() != PluginCallStatus::Ok) return outcome;
+  const DeviceState state = from_abi(raw);
   if (auto problem = device_state_problem(state)) {
     return error(PluginErrorKind::InvalidData, fmt::format("device_read returned {}", *problem));
   }
@@ -306,38 +311,42 @@ Result<PluginCallStatus, PluginError> PluginInstance::device_read(mhd_device_sta
   return outcome;
 }
 
-Result<PluginCallStatus, PluginError> PluginInstance::device_write(const mhd_device_command& command) {
+Result<PluginCallStatus, PluginError> PluginInstance::device_write(const DeviceCommand& command) {
   if (Status<PluginError> s = check_call("device_write", PluginKind::Device); !s) return s.error();
   if (Status<PluginError> s = check_running("device_write"); !s) return s.error();
   if (auto field = non_finite_in(command)) {
     return error(PluginErrorKind::InvalidData, fmt::format("refused to send a non-finite {} to device_write", *field));
   }
-  const mhd_device_command clamped = clamp_to_device(info_, command);
+  const mhd_device_command clamped = to_abi(clamp_to_device(info_, command));
   mhd_error err{};
   return call_outcome(name(), "device_write", static_cast<StatusCode>(library_->api().device_write(handle_, &clamped, &err)), err);
 }
 
-Result<PluginCallStatus, PluginError> PluginInstance::tracker_read(std::span<mhd_tracker_sample> out, std::size_t& count) {
+Result<PluginCallStatus, PluginError> PluginInstance::tracker_read(std::span<TrackerSample> out, std::size_t& count) {
   count = 0;
   if (Status<PluginError> s = check_call("tracker_read", PluginKind::Tracker); !s) return s.error();
   if (Status<PluginError> s = check_running("tracker_read"); !s) return s.error();
   mhd_error err{};
+  // Read into the ABI's form on the stack (no allocation on the io thread), then convert.
+  std::array<mhd_tracker_sample, kMaxTrackerSamplesPerRead> raw{};
+  const std::size_t capacity = std::min(out.size(), raw.size());
   std::size_t returned = 0;
   Result<PluginCallStatus, PluginError> outcome = call_outcome(
       name(), "tracker_read",
-      static_cast<StatusCode>(library_->api().tracker_read(handle_, out.data(), out.size(), &returned, &err)), err);
+      static_cast<StatusCode>(library_->api().tracker_read(handle_, raw.data(), capacity, &returned, &err)), err);
   if (!outcome || outcome.value() != PluginCallStatus::Ok) return outcome;
-  if (returned > out.size()) {
+  if (returned > capacity) {
     return error(PluginErrorKind::InvalidData,
-                 fmt::format("tracker_read returned count {} for capacity {}", returned, out.size()));
+                 fmt::format("tracker_read returned count {} for capacity {}", returned, capacity));
   }
   for (std::size_t i = 0; i < returned; ++i) {
-    const mhd_tracker_sample& sample = out[i];
+    const TrackerSample sample = from_abi(raw[i]);
+    out[i] = sample;
     const std::string prefix = fmt::format("samples[{}].", i);
     if (auto field = non_finite_in(sample, prefix)) {
       return error(PluginErrorKind::InvalidData, fmt::format("tracker_read returned a non-finite {}", *field));
     }
-    const double* q = sample.q_T_wxyz;
+    const std::array<double, 4>& q = sample.q_T_wxyz;
     const double norm = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
     if (std::abs(norm - 1.0) > kUnitQuaternionTolerance) {
       return error(PluginErrorKind::InvalidData,
@@ -348,14 +357,15 @@ Result<PluginCallStatus, PluginError> PluginInstance::tracker_read(std::span<mhd
   return outcome;
 }
 
-Result<PluginCallStatus, PluginError> PluginInstance::base_read(mhd_base_state& out) {
+Result<PluginCallStatus, PluginError> PluginInstance::base_read(BaseState& out) {
   if (Status<PluginError> s = check_call("base_read", PluginKind::Base); !s) return s.error();
   if (Status<PluginError> s = check_running("base_read"); !s) return s.error();
   mhd_error err{};
-  mhd_base_state state{};
+  mhd_base_state raw{};
   Result<PluginCallStatus, PluginError> outcome =
-      call_outcome(name(), "base_read", static_cast<StatusCode>(library_->api().base_read(handle_, &state, &err)), err);
+      call_outcome(name(), "base_read", static_cast<StatusCode>(library_->api().base_read(handle_, &raw, &err)), err);
   if (!outcome || outcome.value() != PluginCallStatus::Ok) return outcome;
+  const BaseState state = from_abi(raw);
   if (auto field = non_finite_in(state)) {
     return error(PluginErrorKind::InvalidData, fmt::format("base_read returned a non-finite {}", *field));
   }
@@ -363,24 +373,27 @@ Result<PluginCallStatus, PluginError> PluginInstance::base_read(mhd_base_state& 
   return outcome;
 }
 
-Result<PluginCallStatus, PluginError> PluginInstance::base_write(const mhd_base_command& command) {
+Result<PluginCallStatus, PluginError> PluginInstance::base_write(const BaseCommand& command) {
   if (Status<PluginError> s = check_call("base_write", PluginKind::Base); !s) return s.error();
   if (Status<PluginError> s = check_running("base_write"); !s) return s.error();
   if (auto field = non_finite_in(command)) {
     return error(PluginErrorKind::InvalidData, fmt::format("refused to send a non-finite {} to base_write", *field));
   }
   mhd_error err{};
-  return call_outcome(name(), "base_write", static_cast<StatusCode>(library_->api().base_write(handle_, &command, &err)), err);
+  const mhd_base_command raw = to_abi(command);
+  return call_outcome(name(), "base_write", static_cast<StatusCode>(library_->api().base_write(handle_, &raw, &err)), err);
 }
 
-Result<PluginCallStatus, PluginError> PluginInstance::display_write(const mhd_display_frame& frame) {
+Result<PluginCallStatus, PluginError> PluginInstance::display_write(const DisplayFrame& frame) {
   if (Status<PluginError> s = check_call("display_write", PluginKind::Display); !s) return s.error();
   if (Status<PluginError> s = check_running("display_write"); !s) return s.error();
   if (auto field = non_finite_in(frame)) {
     return error(PluginErrorKind::InvalidData, fmt::format("refused to send a non-finite {} to display_write", *field));
   }
   mhd_error err{};
-  return call_outcome(name(), "display_write", static_cast<StatusCode>(library_->api().display_write(handle_, &frame, &err)), err);
+  const mhd_display_frame raw = to_abi(frame);
+  return call_outcome(name(), "display_write", static_cast<StatusCode>(library_->api().display_write(handle_, &raw, &err)),
+                      err);
 }
 
 Result<PluginCallStatus, PluginError> PluginInstance::simulate_until(double t_s) {
@@ -407,20 +420,23 @@ Result<PluginCallStatus, PluginError> PluginInstance::tracker_wait(double timeou
                       err);
 }
 
-Result<std::size_t, PluginError> PluginInstance::counters(std::span<mhd_counter> out) {
+Result<std::size_t, PluginError> PluginInstance::counters(std::span<CounterReading> out) {
   if (library_ && !counts()) return error(PluginErrorKind::WrongKind, "counters called on a plugin that keeps none");
   if (state_ != PluginState::Open && state_ != PluginState::Running && state_ != PluginState::Stopped) {
     return error(PluginErrorKind::WrongState,
                  fmt::format("counters called while the plugin is {}; it must be open, running or stopped", to_string(state_)));
   }
   mhd_error err{};
+  std::array<mhd_counter, kMaxCountersPerRead> raw{};
+  const std::size_t capacity = std::min(out.size(), raw.size());
   std::size_t count = 0;
   Result<PluginCallStatus, PluginError> outcome = call_outcome(
-      name(), "counters", static_cast<StatusCode>(library_->api().counters(handle_, out.data(), out.size(), &count, &err)), err);
+      name(), "counters", static_cast<StatusCode>(library_->api().counters(handle_, raw.data(), capacity, &count, &err)), err);
   if (!outcome) return outcome.error();
   if (outcome.value() != PluginCallStatus::Ok) return std::size_t{0};
-  const std::size_t written = std::min(count, out.size());
+  const std::size_t written = std::min(count, capacity);
   for (std::size_t i = 0; i < written; ++i) {
+    out[i] = from_abi(raw[i]);
     const char* n = out[i].name;
     constexpr std::size_t kMaxName = 64;
     const std::size_t length = n == nullptr ? 0 : strnlen(n, kMaxName + 1);

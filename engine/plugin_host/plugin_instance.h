@@ -11,12 +11,12 @@
 // What the host sends is checked too: a non-finite command never reaches a plugin, and
 // device forces and torques are clamped to what the device reported at open.
 // An instance is driven by one thread at a time; wrappers allocate only on error.
+// The calls take and give the engine's types (hardware_io.h); the ABI's stay inside.
 
 #include "plugin_host/plugin_library.h"
 #include "diagnostics/result.h"
+#include "plugin_host/hardware_io.h"
 #include "plugin_host/plugin_error.h"
-
-#include <mhd/plugin_abi.h>
 
 #include <cstddef>
 #include <map>
@@ -24,6 +24,9 @@
 #include <span>
 #include <string>
 #include <string_view>
+
+struct mhd_host;
+struct mhd_plugin_instance;
 
 namespace mhd {
 
@@ -41,6 +44,10 @@ enum class PluginCallStatus {
 
 class PluginInstance {
  public:
+  /// The most samples one tracker_read hands on, and counters one counters() call.
+  static constexpr std::size_t kMaxTrackerSamplesPerRead = 256;
+  static constexpr std::size_t kMaxCountersPerRead = 64;
+
   /// A Loaded instance of `library` (not null).
   explicit PluginInstance(std::shared_ptr<const PluginLibrary> library);
   ~PluginInstance();
@@ -75,16 +82,17 @@ class PluginInstance {
 
   /// Device: what it reported at open (Open, Running or Stopped), checked
   /// (plugin_host/device_info_check.h).
-  [[nodiscard]] Result<mhd_device_info, PluginError> device_info() const;
-  [[nodiscard]] Result<PluginCallStatus, PluginError> device_read(mhd_device_state& out);
+  [[nodiscard]] Result<DeviceInfo, PluginError> device_info() const;
+  [[nodiscard]] Result<PluginCallStatus, PluginError> device_read(DeviceState& out);
   /// The force (torque) is scaled down to the device's max_force_N (max_torque_Nm) before
   /// the plugin sees it; a 3-DOF-out device gets a zero torque.
-  [[nodiscard]] Result<PluginCallStatus, PluginError> device_write(const mhd_device_command& command);
-  /// Tracker: up to out.size() samples; `count` is how many were written (0 unless Ok).
-  [[nodiscard]] Result<PluginCallStatus, PluginError> tracker_read(std::span<mhd_tracker_sample> out, std::size_t& count);
-  [[nodiscard]] Result<PluginCallStatus, PluginError> base_read(mhd_base_state& out);
-  [[nodiscard]] Result<PluginCallStatus, PluginError> base_write(const mhd_base_command& command);
-  [[nodiscard]] Result<PluginCallStatus, PluginError> display_write(const mhd_display_frame& frame);
+  [[nodiscard]] Result<PluginCallStatus, PluginError> device_write(const DeviceCommand& command);
+  /// Tracker: up to out.size() samples (at most kMaxTrackerSamplesPerRead); `count` is
+  /// how many were written (0 unless Ok).
+  [[nodiscard]] Result<PluginCallStatus, PluginError> tracker_read(std::span<TrackerSample> out, std::size_t& count);
+  [[nodiscard]] Result<PluginCallStatus, PluginError> base_read(BaseState& out);
+  [[nodiscard]] Result<PluginCallStatus, PluginError> base_write(const BaseCommand& command);
+  [[nodiscard]] Result<PluginCallStatus, PluginError> display_write(const DisplayFrame& frame);
   /// Simulated backends: advance to host time t_s (WrongKind when the plugin does not simulate).
   [[nodiscard]] Result<PluginCallStatus, PluginError> simulate_until(double t_s);
   /// Tracker with tracker_wait (WrongKind otherwise): blocks up to timeout_s (clamped to
@@ -93,7 +101,7 @@ class PluginInstance {
   /// The plugin's counters (WrongKind when it keeps none): writes up to out.size() and
   /// returns how many were written. Every name is checked (present, printable, at most
   /// 64 characters) before it is handed on.
-  [[nodiscard]] Result<std::size_t, PluginError> counters(std::span<mhd_counter> out);
+  [[nodiscard]] Result<std::size_t, PluginError> counters(std::span<CounterReading> out);
 
  private:
   [[nodiscard]] PluginError error(PluginErrorKind kind, std::string message) const;
@@ -105,7 +113,7 @@ class PluginInstance {
   std::shared_ptr<const PluginLibrary> library_;
   mhd_plugin_instance* handle_ = nullptr;
   PluginState state_ = PluginState::Loaded;
-  mhd_device_info info_{};
+  DeviceInfo info_{};
 };
 
 }  // namespace mhd

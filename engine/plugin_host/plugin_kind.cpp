@@ -1,16 +1,8 @@
 #include "plugin_host/plugin_kind.h"
 
-namespace mhd {
+#include <mhd/plugin_abi.h>
 
-mhd_plugin_kind to_abi_kind(PluginKind kind) {
-  switch (kind) {
-    case PluginKind::Device: return MHD_KIND_DEVICE;
-    case PluginKind::Tracker: return MHD_KIND_TRACKER;
-    case PluginKind::Base: return MHD_KIND_BASE;
-    case PluginKind::Display: return MHD_KIND_DISPLAY;
-  }
-  return MHD_KIND_DEVICE;
-}
+namespace mhd {
 
 std::optional<PluginKind> plugin_kind_from_abi(std::uint32_t raw_kind) {
   switch (raw_kind) {

@@ -3,16 +3,11 @@
 
 #include "scene/plugin_kind.h"
 
-#include <mhd/plugin_abi.h>
-
 #include <cstdint>
 #include <optional>
 #include <string_view>
 
 namespace mhd {
-
-/// The ABI kind for a scene's plugin kind.
-[[nodiscard]] mhd_plugin_kind to_abi_kind(PluginKind kind);
 
 /// The kind a table's raw kind field names; nullopt outside 1..4. Takes the raw number
 /// because a plugin may put any value there (reading it as the enum would be UB).

@@ -4,6 +4,7 @@
 #include "plugin_host/plugin_kind.h"
 #include "plugin_host/plugin_name.h"
 
+#include <mhd/plugin_abi.h>
 #include <mhd/plugin_params.hpp>
 
 #include <fmt/core.h>

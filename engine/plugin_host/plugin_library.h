@@ -12,11 +12,11 @@
 #include "plugin_host/plugin_error.h"
 #include "scene/scene_description.h"
 
-#include <mhd/plugin_abi.h>
-
 #include <filesystem>
 #include <memory>
 #include <string>
+
+struct mhd_plugin_api;  // the plugin's table (mhd/plugin_abi.h): whoever reads it includes that
 
 namespace mhd {
 

@@ -1,5 +1,7 @@
 #include "plugin_host/plugin_search_path.h"
 
+#include <mhd/plugin_abi.h>
+
 #include "plugin_host/isolated_load.h"
 #include "plugin_host/plugin_name.h"
 

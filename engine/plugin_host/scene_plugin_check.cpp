@@ -1,5 +1,7 @@
 #include "plugin_host/scene_plugin_check.h"
 
+#include <mhd/plugin_abi.h>
+
 #include "plugin_host/plugin_kind.h"
 
 #include <mhd/plugin_params.hpp>

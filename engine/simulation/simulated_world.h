@@ -13,7 +13,7 @@
 #include <Eigen/Geometry>
 
 #include "realtime/seqlock.h"
-#include "simulation_config/planar_pose.h"
+#include "simulation_config/simulated_user_config.h"
 
 #include <atomic>
 #include <mutex>

@@ -4,8 +4,6 @@
 // apart from the user itself so that a scene can be judged (haptic_server/run_check.h)
 // without linking the simulation.
 
-#include "simulation_config/planar_pose.h"
-
 #include <Eigen/Core>
 
 #include <cstdint>
@@ -14,6 +12,12 @@
 #include <vector>
 
 namespace mhd::simulation {
+
+/// A pose on the floor: position (x, z) and heading about +y.
+struct PlanarPose {
+  double x_m = 0.0, z_m = 0.0;
+  double heading_rad = 0.0;
+};
 
 struct Waypoint {
   double x_m = 0.0;

@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <array>
 #include <cmath>
 
 namespace mhd::viewer {
@@ -15,9 +16,9 @@ std::string check_finite(const double* values, int n, const char* name) {
   return {};
 }
 
-Eigen::Vector3d vec3(const double (&v)[3]) { return {v[0], v[1], v[2]}; }
+Eigen::Vector3d vec3(const std::array<double, 3>& v) { return {v[0], v[1], v[2]}; }
 
-void put(double (&out)[3], const Eigen::Vector3d& v) {
+void put(std::array<double, 3>& out, const Eigen::Vector3d& v) {
   out[0] = v.x();
   out[1] = v.y();
   out[2] = v.z();
@@ -25,12 +26,13 @@ void put(double (&out)[3], const Eigen::Vector3d& v) {
 
 }  // namespace
 
-Result<RigState, std::string> rig_state_from_frame(const mhd_display_frame& f) {
+Result<RigState, std::string> rig_state_from_frame(const DisplayFrame& f) {
   const double scalars[] = {f.timestamp_s, f.base_x_m, f.base_z_m, f.base_heading_rad};
-  for (const std::string& e : {check_finite(scalars, 4, "timestamp_s/base"), check_finite(f.p_W_hip_m, 3, "p_W_hip_m"),
-                               check_finite(f.p_W_proxy_m, 3, "p_W_proxy_m"), check_finite(f.force_W_N, 3, "force_W_N"),
-                               check_finite(f.p_W_head_m, 3, "p_W_head_m"),
-                               check_finite(f.q_W_head_wxyz, 4, "q_W_head_wxyz")}) {
+  for (const std::string& e : {check_finite(scalars, 4, "timestamp_s/base"), check_finite(f.p_W_hip_m.data(), 3, "p_W_hip_m"),
+                               check_finite(f.p_W_proxy_m.data(), 3, "p_W_proxy_m"),
+                               check_finite(f.force_W_N.data(), 3, "force_W_N"),
+                               check_finite(f.p_W_head_m.data(), 3, "p_W_head_m"),
+                               check_finite(f.q_W_head_wxyz.data(), 4, "q_W_head_wxyz")}) {
     if (!e.empty()) return e;
   }
   const Eigen::Quaterniond q(f.q_W_head_wxyz[0], f.q_W_head_wxyz[1], f.q_W_head_wxyz[2], f.q_W_head_wxyz[3]);
@@ -40,19 +42,19 @@ Result<RigState, std::string> rig_state_from_frame(const mhd_display_frame& f) {
   s.p_W_hip_m = vec3(f.p_W_hip_m);
   s.p_W_proxy_m = vec3(f.p_W_proxy_m);
   s.force_W_N = vec3(f.force_W_N);
-  s.in_contact = f.in_contact != 0;
+  s.in_contact = f.in_contact;
   s.base = BasePose{f.base_x_m, f.base_z_m, f.base_heading_rad};
   s.X_W_head = pose_from_xyz_quaternion(vec3(f.p_W_head_m), q);
   return s;
 }
 
-mhd_display_frame display_frame_from_rig_state(const RigState& s) {
-  mhd_display_frame f{};
+DisplayFrame display_frame_from_rig_state(const RigState& s) {
+  DisplayFrame f;
   f.timestamp_s = s.timestamp_s;
   put(f.p_W_hip_m, s.p_W_hip_m);
   put(f.p_W_proxy_m, s.p_W_proxy_m);
   put(f.force_W_N, s.force_W_N);
-  f.in_contact = s.in_contact ? 1 : 0;
+  f.in_contact = s.in_contact;
   f.base_x_m = s.base.x_m;
   f.base_z_m = s.base.z_m;
   f.base_heading_rad = s.base.heading_rad;

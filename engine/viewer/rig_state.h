@@ -1,6 +1,6 @@
 #pragma once
 // What the viewer draws of the rig: one snapshot in the world frame W (y up, floor
-// y = 0), the C++ form of the plugin ABI's mhd_display_frame.
+// y = 0), as a display frame (plugin_host/hardware_io.h) describes it.
 //
 // The head frame H follows the simulated user's: x forward (the gaze), y up, z to the
 // right (right-handed), so a head with heading h about +y looks along (cos h, 0, -sin h).
@@ -8,8 +8,7 @@
 #include "diagnostics/result.h"
 #include "geometry/pose.h"
 #include "kinematics/base_pose.h"
-
-#include <mhd/plugin_abi.h>
+#include "plugin_host/hardware_io.h"
 
 #include <Eigen/Core>
 
@@ -30,10 +29,10 @@ struct RigState {
 
 /// The state a display frame describes, or an error ("display frame: p_W_hip_m[1] is not
 /// finite", "display frame: q_W_head_wxyz has zero norm") for a frame that cannot be drawn.
-[[nodiscard]] Result<RigState, std::string> rig_state_from_frame(const mhd_display_frame& frame);
+[[nodiscard]] Result<RigState, std::string> rig_state_from_frame(const DisplayFrame& frame);
 
 /// The inverse, for tests and for publishing a state over a frame-based channel.
-[[nodiscard]] mhd_display_frame display_frame_from_rig_state(const RigState& state);
+[[nodiscard]] DisplayFrame display_frame_from_rig_state(const RigState& state);
 
 /// A head at p_W_head_m looking at p_W_target_m with world +y as up (x forward, y up,
 /// z right). A target straight above or below falls back to looking along -z.

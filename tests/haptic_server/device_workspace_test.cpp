@@ -11,7 +11,7 @@
 namespace mhd {
 namespace {
 
-void set_box(mhd_box_D& b, const Eigen::Vector3d& min_m, const Eigen::Vector3d& max_m) {
+void set_box(WorkspaceBoxD& b, const Eigen::Vector3d& min_m, const Eigen::Vector3d& max_m) {
   for (int i = 0; i < 3; ++i) {
     b.min_m[i] = min_m[i];
     b.max_m[i] = max_m[i];
@@ -19,7 +19,7 @@ void set_box(mhd_box_D& b, const Eigen::Vector3d& min_m, const Eigen::Vector3d& 
 }
 
 TEST(DeviceWorkspace, OneBoxIsMovedInByTheMargin) {
-  mhd_device_info info{};
+  DeviceInfo info{};
   info.workspace_box_count = 1;
   set_box(info.workspace[0], Eigen::Vector3d(-0.1, 0.0, -0.05), Eigen::Vector3d(0.1, 0.2, 0.05));
   const std::optional<WorkspaceBox> usable = usable_device_workspace(info, 0.01);
@@ -29,7 +29,7 @@ TEST(DeviceWorkspace, OneBoxIsMovedInByTheMargin) {
 }
 
 TEST(DeviceWorkspace, OfSeveralBoxesTheLargestIsUsed) {
-  mhd_device_info info{};
+  DeviceInfo info{};
   info.workspace_box_count = 3;
   set_box(info.workspace[0], Eigen::Vector3d(0.0, 0.0, 0.0), Eigen::Vector3d(0.1, 0.1, 0.1));   // 1e-3 m^3
   set_box(info.workspace[1], Eigen::Vector3d(0.0, 0.0, 0.0), Eigen::Vector3d(0.3, 0.2, 0.1));   // 6e-3 m^3
@@ -40,7 +40,7 @@ TEST(DeviceWorkspace, OfSeveralBoxesTheLargestIsUsed) {
 }
 
 TEST(DeviceWorkspace, NoBoxOrOneThinnerThanTwiceTheMarginGivesNone) {
-  mhd_device_info info{};
+  DeviceInfo info{};
   EXPECT_FALSE(usable_device_workspace(info, 0.01)) << "no box reported";
   info.workspace_box_count = 1;
   set_box(info.workspace[0], Eigen::Vector3d(0.0, 0.0, 0.0), Eigen::Vector3d(0.3, 0.02, 0.3));

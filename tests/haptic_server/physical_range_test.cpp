@@ -12,14 +12,14 @@ namespace {
 using namespace mhd;
 
 /// Two boxes, as a device whose workspace is an L reports it.
-mhd_device_info info() {
-  mhd_device_info d{};
+DeviceInfo info() {
+  DeviceInfo d{};
   d.max_force_N = 8.5;
   d.max_stiffness_N_per_m = 1000.0;
   d.dof_in = d.dof_out = 3;
   d.workspace_box_count = 2;
-  d.workspace[0] = mhd_box_D{{-0.1, -0.1, -0.1}, {0.1, 0.1, 0.1}};
-  d.workspace[1] = mhd_box_D{{0.1, -0.1, -0.1}, {0.3, 0.0, 0.1}};
+  d.workspace[0] = WorkspaceBoxD{{-0.1, -0.1, -0.1}, {0.1, 0.1, 0.1}};
+  d.workspace[1] = WorkspaceBoxD{{0.1, -0.1, -0.1}, {0.3, 0.0, 0.1}};
   return d;
 }
 
@@ -53,7 +53,7 @@ TEST(PhysicalRange, TrackedPositionsWithinTheRangePassBeyondItFail) {
 }
 
 TEST(PhysicalRange, BasePositionsWithinTheRangePassBeyondItFail) {
-  mhd_base_state s{};
+  BaseState s{};
   s.x_m = 3.0;
   s.z_m = 4.0;
   EXPECT_TRUE(base_position_plausible(s, 5.0));  // exactly at the range

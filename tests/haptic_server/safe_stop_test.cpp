@@ -50,7 +50,7 @@ TEST_F(SafeStopTest, ARunningDeviceGetsZeroTorqueAfterAForce) {
   const fs::path log = dir_ / "device.log";
   PluginInstance device = open(PluginKind::Device, "fault_device", log);
   ASSERT_TRUE(device.start().ok());
-  mhd_device_command push{};
+  DeviceCommand push{};
   push.force_D_N[0] = 0.5;
   push.force_D_N[2] = -0.25;
   ASSERT_TRUE(device.device_write(push).ok());
@@ -67,7 +67,7 @@ TEST_F(SafeStopTest, ARunningBaseGetsAZeroTwistAfterMotion) {
   const fs::path log = dir_ / "base.log";
   PluginInstance base = open(PluginKind::Base, "fault_base", log);
   ASSERT_TRUE(base.start().ok());
-  mhd_base_command move{};
+  BaseCommand move{};
   move.vx_mps = 0.3;
   move.omega_radps = 0.1;
   ASSERT_TRUE(base.base_write(move).ok());
@@ -104,10 +104,10 @@ TEST_F(SafeStopTest, BothAreSentInEitherOrder) {
     PluginInstance base = open(PluginKind::Base, "fault_base", base_log);
     ASSERT_TRUE(device.start().ok());
     ASSERT_TRUE(base.start().ok());
-    mhd_device_command push{};
+    DeviceCommand push{};
     push.force_D_N[1] = 1.0;
     ASSERT_TRUE(device.device_write(push).ok());
-    mhd_base_command move{};
+    BaseCommand move{};
     move.vz_mps = 0.2;
     ASSERT_TRUE(base.base_write(move).ok());
     const SafeStopSent sent = send_safe_stop(device, &base, order, host_);

@@ -20,9 +20,9 @@ TrackerSampleFilterSettings settings() {
   return s;
 }
 
-mhd_tracker_sample sample(std::uint32_t sensor_id, std::uint64_t sequence, double timestamp_s,
+TrackerSample sample(std::uint32_t sensor_id, std::uint64_t sequence, double timestamp_s,
                           double x_m = 1.0) {
-  mhd_tracker_sample s{};
+  TrackerSample s{};
   s.sensor_id = sensor_id;
   s.sequence = sequence;
   s.timestamp_s = timestamp_s;

@@ -1,11 +1,35 @@
+# Who links whom, read at configure time from each target's LINK_LIBRARIES and
+# INTERFACE_LINK_LIBRARIES (a static library's private dependencies appear there as
+# $<LINK_ONLY:...>), aliases resolved.
+
+# mhd_linked_targets(<target> <out-var>): the targets <target> names among its own link
+# libraries, public or private.
+function(mhd_linked_targets target out_var)
+  set(out "")
+  get_target_property(direct "${target}" LINK_LIBRARIES)
+  get_target_property(interface "${target}" INTERFACE_LINK_LIBRARIES)
+  foreach(lib IN LISTS direct interface)
+    if(lib MATCHES "^\\$<LINK_ONLY:(.*)>$")
+      set(lib "${CMAKE_MATCH_1}")
+    endif()
+    if(NOT lib OR NOT TARGET "${lib}")
+      continue()
+    endif()
+    get_target_property(aliased "${lib}" ALIASED_TARGET)
+    if(aliased)
+      set(lib "${aliased}")
+    endif()
+    list(APPEND out "${lib}")
+  endforeach()
+  list(REMOVE_DUPLICATES out)
+  set(${out_var} "${out}" PARENT_SCOPE)
+endfunction()
+
 # mhd_link_chain(<target> <forbidden> <out-var>): the chain of targets through which
 # <target> links <forbidden>, directly or not, as "a -> b -> c"; empty when it does not.
-# Read at configure time from LINK_LIBRARIES and INTERFACE_LINK_LIBRARIES (a static
-# library's private dependencies appear there as $<LINK_ONLY:...>), aliases resolved.
 function(mhd_link_chain target forbidden out_var)
   set(seen "")
   set(todo "${target}")
-  set(parent_of_${target} "")
   set(chain "")
   while(todo)
     list(POP_FRONT todo t)
@@ -22,20 +46,8 @@ function(mhd_link_chain target forbidden out_var)
       endwhile()
       break()
     endif()
-    set(libs "")
-    get_target_property(direct "${t}" LINK_LIBRARIES)
-    get_target_property(interface "${t}" INTERFACE_LINK_LIBRARIES)
-    foreach(lib IN LISTS direct interface)
-      if(lib MATCHES "^\\$<LINK_ONLY:(.*)>$")
-        set(lib "${CMAKE_MATCH_1}")
-      endif()
-      if(NOT lib OR lib MATCHES "-NOTFOUND$" OR NOT TARGET "${lib}")
-        continue()
-      endif()
-      get_target_property(aliased "${lib}" ALIASED_TARGET)
-      if(aliased)
-        set(lib "${aliased}")
-      endif()
+    mhd_linked_targets("${t}" linked)
+    foreach(lib IN LISTS linked)
       if(NOT lib IN_LIST seen AND NOT DEFINED parent_of_${lib})
         set(parent_of_${lib} "${t}")
         list(APPEND todo "${lib}")
@@ -43,4 +55,15 @@ function(mhd_link_chain target forbidden out_var)
     endforeach()
   endwhile()
   set(${out_var} "${chain}" PARENT_SCOPE)
+endfunction()
+
+# mhd_direct_link(<target> <forbidden> <out-var>): "<target> -> <forbidden>" when
+# <target> links <forbidden> itself, publicly or privately; empty otherwise.
+function(mhd_direct_link target forbidden out_var)
+  mhd_linked_targets("${target}" linked)
+  set(found "")
+  if(forbidden IN_LIST linked)
+    set(found "${target} -> ${forbidden}")
+  endif()
+  set(${out_var} "${found}" PARENT_SCOPE)
 endfunction()

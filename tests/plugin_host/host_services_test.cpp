@@ -4,6 +4,8 @@
 
 #include "plugin_host/host_services.h"
 
+#include <mhd/plugin_abi.h>
+
 #include <gtest/gtest.h>
 
 namespace mhd {

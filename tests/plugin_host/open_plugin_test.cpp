@@ -29,7 +29,7 @@ TEST_F(OpenPluginTest, OpensWithTheSceneParams) {
   PluginInstance& device = opened.value();
   EXPECT_EQ(device.state(), PluginState::Open);
   ASSERT_TRUE(device.start().ok());
-  mhd_device_state state{};
+  DeviceState state{};
   ASSERT_TRUE(device.device_read(state).ok());
   EXPECT_EQ(state.p_D_tool_m[0], 0.075);
 }

@@ -115,7 +115,7 @@ TEST_F(PluginInstanceTest, MovedInstanceClosesOnce) {
 TEST_F(PluginInstanceTest, CallsOutOfOrderAreRefusedBeforeThePluginSeesThem) {
   PluginInstance device(load_test("good_device"));
   CallLog log(*device.library());
-  mhd_device_state state{};
+  DeviceState state{};
   expect_error(device.start().error(), PluginErrorKind::WrongState,
                "plugin 'good_device': start called while the plugin is loaded; it must be open or stopped");
   expect_error(device.device_read(state).error(), PluginErrorKind::WrongState,
@@ -128,7 +128,7 @@ TEST_F(PluginInstanceTest, CallsOutOfOrderAreRefusedBeforeThePluginSeesThem) {
                "plugin 'good_device': open called while the plugin is open; it must be loaded");
   expect_error(device.stop().error(), PluginErrorKind::WrongState,
                "plugin 'good_device': stop called while the plugin is open; it must be running");
-  expect_error(device.device_write(mhd_device_command{}).error(), PluginErrorKind::WrongState,
+  expect_error(device.device_write(DeviceCommand{}).error(), PluginErrorKind::WrongState,
                "plugin 'good_device': device_write called while the plugin is open; it must be running");
   ASSERT_TRUE(device.start().ok());
   expect_error(device.start().error(), PluginErrorKind::WrongState,
@@ -146,22 +146,22 @@ TEST_F(PluginInstanceTest, CallsOutOfOrderAreRefusedBeforeThePluginSeesThem) {
 
 TEST_F(PluginInstanceTest, CallsOfAnotherKindAreRefused) {
   PluginInstance device = running("good_device");
-  std::array<mhd_tracker_sample, 4> samples{};
+  std::array<TrackerSample, 4> samples{};
   std::size_t count = 99;
   expect_error(device.tracker_read(samples, count).error(), PluginErrorKind::WrongKind,
                "plugin 'good_device': tracker_read called on a device plugin");
   EXPECT_EQ(count, 0u);
-  mhd_base_state base{};
+  BaseState base{};
   expect_error(device.base_read(base).error(), PluginErrorKind::WrongKind,
                "plugin 'good_device': base_read called on a device plugin");
-  expect_error(device.display_write(mhd_display_frame{}).error(), PluginErrorKind::WrongKind,
+  expect_error(device.display_write(DisplayFrame{}).error(), PluginErrorKind::WrongKind,
                "plugin 'good_device': display_write called on a device plugin");
 }
 
 TEST_F(PluginInstanceTest, DeviceReadsFixedDataWithParamsAndTheHostClock) {
   PluginInstance device = running("good_device", {{"tool_x_m", "0.075"}});
   const double before_s = host_.now_s();
-  mhd_device_state state{};
+  DeviceState state{};
   auto read = device.device_read(state);
   ASSERT_TRUE(read.ok()) << read.error().to_string();
   EXPECT_EQ(read.value(), PluginCallStatus::Ok);
@@ -214,18 +214,18 @@ TEST_F(PluginInstanceTest, UndeclaredOrBadParametersAreRefusedBeforeOpen) {
 
 TEST_F(PluginInstanceTest, ForceIsScaledToTheDeviceLimitKeepingItsDirection) {
   PluginInstance device = running("good_device", {{"max_force_N", "5"}});
-  mhd_device_command command{};
+  DeviceCommand command{};
   command.force_D_N[0] = 6.0;
   command.force_D_N[1] = -8.0;  // |F| = 10 N: halved
   command.torque_D_Nm[2] = 1.0;  // a 3-DOF-out device gets no torque
   ASSERT_TRUE(device.device_write(command).ok());
-  mhd_device_state state{};
+  DeviceState state{};
   ASSERT_TRUE(device.device_read(state).ok());
   EXPECT_DOUBLE_EQ(state.v_D_tool_mps[0], 3.0);  // good_device echoes the force it got
   EXPECT_DOUBLE_EQ(state.v_D_tool_mps[1], -4.0);
   EXPECT_EQ(state.v_D_tool_mps[2], 0.0);
   // The dual: a force within the limit passes unchanged.
-  command = mhd_device_command{};
+  command = DeviceCommand{};
   command.force_D_N[2] = 4.5;
   ASSERT_TRUE(device.device_write(command).ok());
   ASSERT_TRUE(device.device_read(state).ok());
@@ -234,7 +234,7 @@ TEST_F(PluginInstanceTest, ForceIsScaledToTheDeviceLimitKeepingItsDirection) {
 
 TEST_F(PluginInstanceTest, NonFiniteCommandsNeverReachThePlugin) {
   PluginInstance device = running("good_device");
-  mhd_device_command command{};
+  DeviceCommand command{};
   command.force_D_N[1] = kNaN;
   expect_error(device.device_write(command).error(), PluginErrorKind::InvalidData,
                "plugin 'good_device': refused to send a non-finite force_D_N[1] to device_write");
@@ -244,14 +244,14 @@ TEST_F(PluginInstanceTest, NonFiniteCommandsNeverReachThePlugin) {
                "plugin 'good_device': refused to send a non-finite torque_D_Nm[0] to device_write");
   expect_error(device.simulate_until(kNaN).error(), PluginErrorKind::InvalidData,
                "plugin 'good_device': refused to send a non-finite t_s to simulate_until");
-  mhd_device_state state{};
+  DeviceState state{};
   ASSERT_TRUE(device.device_read(state).ok());
   EXPECT_EQ(state.v_D_tool_mps[1], 0.0);
 }
 
 TEST_F(PluginInstanceTest, NonFiniteDeviceStateIsInvalidData) {
   PluginInstance device = running("nan_device");
-  mhd_device_state state{};
+  DeviceState state{};
   state.p_D_tool_m[0] = 42.0;
   expect_error(device.device_read(state).error(), PluginErrorKind::InvalidData,
                "plugin 'nan_device': device_read returned a non-finite p_D_tool_m[1]");
@@ -259,7 +259,7 @@ TEST_F(PluginInstanceTest, NonFiniteDeviceStateIsInvalidData) {
 }
 
 TEST_F(PluginInstanceTest, ReadStatuses) {
-  mhd_device_state state{};
+  DeviceState state{};
   state.p_D_tool_m[0] = 42.0;
   {
     PluginInstance device = running("good_device", {{"read_status", "no_data"}});
@@ -342,7 +342,7 @@ TEST_F(PluginInstanceTest, SimulateUntil) {
 
 TEST_F(PluginInstanceTest, TrackerSamples) {
   PluginInstance tracker = running("good_tracker");
-  std::array<mhd_tracker_sample, 4> samples{};
+  std::array<TrackerSample, 4> samples{};
   std::size_t count = 0;
   auto read = tracker.tracker_read(samples, count);
   ASSERT_TRUE(read.ok()) << read.error().to_string();
@@ -355,7 +355,7 @@ TEST_F(PluginInstanceTest, TrackerSamples) {
 
 TEST_F(PluginInstanceTest, TrackerNoData) {
   PluginInstance tracker = running("good_tracker", {{"mode", "no_data"}});
-  std::array<mhd_tracker_sample, 4> samples{};
+  std::array<TrackerSample, 4> samples{};
   std::size_t count = 99;
   auto read = tracker.tracker_read(samples, count);
   ASSERT_TRUE(read.ok());
@@ -383,12 +383,12 @@ TEST_F(PluginInstanceTest, TrackerWaitSaysWhetherDataIsThere) {
 
 TEST_F(PluginInstanceTest, CountersAreReadAndTheirNamesChecked) {
   PluginInstance tracker = running("good_tracker");
-  std::array<mhd_tracker_sample, 4> samples{};
+  std::array<TrackerSample, 4> samples{};
   std::size_t count = 0;
   ASSERT_TRUE(tracker.tracker_read(samples, count).ok());
   ASSERT_TRUE(tracker.tracker_read(samples, count).ok());
   ASSERT_TRUE(tracker.counts());
-  std::array<mhd_counter, 4> counters{};
+  std::array<CounterReading, 4> counters{};
   auto n = tracker.counters(counters);
   ASSERT_TRUE(n.ok()) << n.error().to_string();
   ASSERT_EQ(n.value(), 2u);
@@ -396,7 +396,7 @@ TEST_F(PluginInstanceTest, CountersAreReadAndTheirNamesChecked) {
   EXPECT_EQ(counters[0].value, 2u);
   EXPECT_STREQ(counters[1].name, "dropped_test");
   EXPECT_EQ(counters[1].value, 7u);
-  std::array<mhd_counter, 1> one{};
+  std::array<CounterReading, 1> one{};
   auto first_only = tracker.counters(one);  // the plugin keeps 2: only the first fits
   ASSERT_TRUE(first_only.ok());
   EXPECT_EQ(first_only.value(), 1u);
@@ -411,7 +411,7 @@ TEST_F(PluginInstanceTest, CountersAreReadAndTheirNamesChecked) {
 }
 
 TEST_F(PluginInstanceTest, BadTrackerSamplesAreInvalidData) {
-  std::array<mhd_tracker_sample, 4> samples{};
+  std::array<TrackerSample, 4> samples{};
   std::size_t count = 99;
   {
     PluginInstance tracker = running("good_tracker", {{"mode", "too_many"}});
@@ -434,11 +434,11 @@ TEST_F(PluginInstanceTest, BadTrackerSamplesAreInvalidData) {
 
 TEST_F(PluginInstanceTest, BaseWriteAndRead) {
   PluginInstance base = running("good_base");
-  mhd_base_command command{};
+  BaseCommand command{};
   command.vx_mps = 0.25;
   command.omega_radps = -0.5;
   ASSERT_TRUE(base.base_write(command).ok());
-  mhd_base_state state{};
+  BaseState state{};
   auto read = base.base_read(state);
   ASSERT_TRUE(read.ok()) << read.error().to_string();
   EXPECT_EQ(state.vx_mps, 0.25);
@@ -452,7 +452,7 @@ TEST_F(PluginInstanceTest, DisplayFrames) {
   PluginInstance display(load(test::null_display_plugin()));
   ASSERT_TRUE(display.open({}, host_.abi()).ok());
   ASSERT_TRUE(display.start().ok());
-  mhd_display_frame frame{};
+  DisplayFrame frame{};
   frame.q_W_head_wxyz[0] = 1.0;
   for (int i = 0; i < 3; ++i) ASSERT_TRUE(display.display_write(frame).ok());
   frame.q_W_head_wxyz[3] = kNaN;

@@ -5,6 +5,8 @@
 #include "plugin_host/plugin_name.h"
 #include "test_plugins.h"
 
+#include <mhd/plugin_abi.h>
+
 #include <gtest/gtest.h>
 
 #include <dlfcn.h>

@@ -4,6 +4,8 @@
 #include "plugin_host/plugin_search_path.h"
 #include "test_plugins.h"
 
+#include <mhd/plugin_abi.h>
+
 #include <gtest/gtest.h>
 
 #include <unistd.h>

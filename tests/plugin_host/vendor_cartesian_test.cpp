@@ -49,13 +49,13 @@ TEST_F(VendorCartesianTest, ReportsTheVendorsLimitsInSiUnits) {
 TEST_F(VendorCartesianTest, PositionComesInMetresAndForceGoesOutInNewtons) {
   PluginInstance device = opened({{"watchdog_s", "1"}});  // no expiry while the test runs
   ASSERT_TRUE(device.start().ok());
-  mhd_device_state state{};
+  DeviceState state{};
   ASSERT_TRUE(device.device_read(state).ok());
   EXPECT_DOUBLE_EQ(state.p_D_tool_m[0], 0.010);  // the vendor's 10 mm
   EXPECT_DOUBLE_EQ(state.p_D_tool_m[1], 0.020);
   EXPECT_DOUBLE_EQ(state.p_D_tool_m[2], 0.030);
   // The simulated hand gives 2 mm per newton: the force reached the vendor in newtons.
-  mhd_device_command command{};
+  DeviceCommand command{};
   command.force_D_N[0] = 1.0;
   command.force_D_N[2] = -0.5;
   ASSERT_TRUE(device.device_write(command).ok());
@@ -65,7 +65,7 @@ TEST_F(VendorCartesianTest, PositionComesInMetresAndForceGoesOutInNewtons) {
   EXPECT_DOUBLE_EQ(state.p_D_tool_m[2], 0.029);
   // 10 N is twice the device's limit: the host halves it, so the vendor (which refuses
   // more than 5 N) renders (3, 4, 0) N.
-  command = mhd_device_command{};
+  command = DeviceCommand{};
   command.force_D_N[0] = 6.0;
   command.force_D_N[1] = 8.0;
   ASSERT_TRUE(device.device_write(command).ok());

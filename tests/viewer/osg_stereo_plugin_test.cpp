@@ -72,7 +72,7 @@ TEST_F(OsgStereoPlugin, DrawsTheFramesItIsGivenInItsOwnThread) {
   s.p_W_hip_m = Eigen::Vector3d(0.0, 1.6, -0.2);
   s.p_W_proxy_m = Eigen::Vector3d(0.1, 1.7, -0.2);
   s.base = BasePose{0.0, -2.0, 0.0};  // behind the HIP: the arm does not hide it
-  const mhd_display_frame frame = viewer::display_frame_from_rig_state(s);
+  const DisplayFrame frame = viewer::display_frame_from_rig_state(s);
   // Frames at about 1 kHz while it draws its 20 frames (at most 200 Hz, so at least
   // 100 ms) and writes the screenshot; every write returns at once. How long the drawing
   // takes depends on the machine (software GL, sanitizers, load): wait for the file.

@@ -13,8 +13,8 @@
 namespace mhd::viewer {
 namespace {
 
-mhd_display_frame sample_frame() {
-  mhd_display_frame f{};
+DisplayFrame sample_frame() {
+  DisplayFrame f{};
   f.timestamp_s = 1.5;
   f.p_W_hip_m[0] = 0.1, f.p_W_hip_m[1] = 1.0, f.p_W_hip_m[2] = -0.5;
   f.p_W_proxy_m[0] = 0.1, f.p_W_proxy_m[1] = 1.01, f.p_W_proxy_m[2] = -0.5;
@@ -37,7 +37,7 @@ TEST(RigState, FromDisplayFrameAndBack) {
   EXPECT_DOUBLE_EQ(s.base.heading_rad, 0.3);
   // Heading pi/2: the head's x (gaze) points along -z.
   EXPECT_TRUE((s.X_W_head.linear() * Eigen::Vector3d::UnitX()).isApprox(Eigen::Vector3d(0, 0, -1), 1e-12));
-  const mhd_display_frame back = display_frame_from_rig_state(s);
+  const DisplayFrame back = display_frame_from_rig_state(s);
   EXPECT_DOUBLE_EQ(back.p_W_proxy_m[1], 1.01);
   EXPECT_NEAR(back.q_W_head_wxyz[0], std::cos(M_PI / 4.0), 1e-12);
   EXPECT_NEAR(back.q_W_head_wxyz[2], std::sin(M_PI / 4.0), 1e-12);
@@ -45,7 +45,7 @@ TEST(RigState, FromDisplayFrameAndBack) {
 }
 
 TEST(RigState, NonFiniteOrZeroQuaternionIsRefusedWithTheField) {
-  mhd_display_frame f = sample_frame();
+  DisplayFrame f = sample_frame();
   f.force_W_N[2] = std::numeric_limits<double>::quiet_NaN();
   EXPECT_EQ(rig_state_from_frame(f).error(), "display frame: force_W_N[2] is not finite");
   f = sample_frame();

@@ -7,6 +7,7 @@
 
 #include "dds_common/dds_convert.h"
 #include "dds_common/dds_topics.h"
+#include "plugin_host/abi_conversion.h"
 #include "scene_xml/scene_reader.h"
 #include "viewer/display_check.h"
 #include "viewer/png_image.h"
@@ -38,7 +39,7 @@ TEST(DdsRender, TheHipIsDrawnWhereThePublishedStatePutsItAndStaysAfterThePublish
   s.p_W_hip_m = Eigen::Vector3d(0.05, 1.55, -0.5);
   s.p_W_proxy_m = s.p_W_hip_m;
   s.base = BasePose{0.0, -1.5, 0.0};
-  const mhd_dds_RigState sample = dds::to_dds(display_frame_from_rig_state(s), 2, 0, dds::realtime_ns());
+  const mhd_dds_RigState sample = dds::to_dds(to_abi(display_frame_from_rig_state(s)), 2, 0, dds::realtime_ns());
 
   DdsStateSourceOptions o;
   o.rig_id = 2;

@@ -24,10 +24,10 @@ struct DevicesOptions {
 };
 
 /// "found: 3.3 N, 1260 N/m, 6 in / 3 out DOF, workspace x [-0.08, 0.08] y [...] z [...] m".
-std::string what_it_can_do(const mhd_device_info& info) {
+std::string what_it_can_do(const mhd::DeviceInfo& info) {
   std::string out = fmt::format("found: {:g} N, {:g} N/m, {} in / {} out DOF, workspace", info.max_force_N,
                                 info.max_stiffness_N_per_m, info.dof_in, info.dof_out);
-  const mhd_box_D& box = info.workspace[0];
+  const mhd::WorkspaceBoxD& box = info.workspace[0];
   for (int i = 0; i < 3; ++i) out += fmt::format(" {} [{:g}, {:g}]", "xyz"[i], box.min_m[i], box.max_m[i]);
   return out + " m";
 }

@@ -3,6 +3,7 @@
 #include "dds_common/dds_convert.h"
 #include "dds_common/dds_topics.h"
 #include "dds_common/shared_sim_world.h"
+#include "plugin_host/abi_conversion.h"
 #include "plugin_host/host_services.h"
 #include "plugin_host/open_plugin.h"
 #include "plugin_host/plugin_search_path.h"
@@ -123,7 +124,7 @@ TrackerServerReport run_tracker_server(const TrackerServerOptions& options, cons
                            shared ? ", measuring the simulated world the rig's haptic server publishes" : ""));
   }
 
-  std::array<mhd_tracker_sample, 64> samples{};
+  std::array<TrackerSample, 64> samples{};
   const auto period = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
       std::chrono::duration<double>(options.poll_period_s));
   auto next = std::chrono::steady_clock::now();
@@ -142,7 +143,7 @@ TrackerServerReport run_tracker_server(const TrackerServerOptions& options, cons
       const double host_now_s = host.now_s();
       const std::int64_t now_ns = realtime_ns();
       for (std::size_t i = 0; i < count; ++i) {
-        publisher.write(to_dds(samples[i], options.rig_id,
+        publisher.write(to_dds(to_abi(samples[i]), options.rig_id,
                                realtime_from_host(samples[i].timestamp_s, host_now_s, now_ns)));
       }
       report.published += count;

@@ -2,6 +2,7 @@
 
 #include "dds_common/dds_convert.h"
 #include "dds_common/dds_topics.h"
+#include "plugin_host/abi_conversion.h"
 
 #include <fmt/core.h>
 
@@ -60,7 +61,7 @@ std::optional<RigState> DdsStateSource::poll(double now_s) {
       ++s.status.other_rigs;
       continue;
     }
-    Result<RigState, std::string> converted = rig_state_from_frame(dds::from_dds(sample, now_s));
+    Result<RigState, std::string> converted = rig_state_from_frame(from_abi(dds::from_dds(sample, now_s)));
     if (!converted.ok()) {
       ++s.status.dropped_invalid;
       s.status.last_error = converted.error();

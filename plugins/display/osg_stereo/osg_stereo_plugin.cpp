@@ -5,6 +5,7 @@
 // Parameters (all optional): stereo, ipd_m, fov_deg, width, height, offscreen,
 // screenshot, frames, max_frame_rate_Hz, rig_file, grid. docs/viewer.md.
 
+#include "plugin_host/abi_conversion.h"
 #include "viewer/stereo_viewer.h"
 
 #include <mhd/plugin_sdk.hpp>
@@ -74,7 +75,7 @@ class OsgStereoPlugin {
 
   // The haptic side's call: no lock, no allocation, no waiting.
   void display_write(const mhd_display_frame& frame) {
-    const Result<viewer::RigState, std::string> state = viewer::rig_state_from_frame(frame);
+    const Result<viewer::RigState, std::string> state = viewer::rig_state_from_frame(from_abi(frame));
     if (!state.ok()) throw std::invalid_argument(state.error());
     slot_->publish(*state);
   }
