@@ -11,6 +11,32 @@
 #include <string_view>
 
 namespace mhd {
+namespace {
+
+BasePoseSource base_pose_source_from(ParamBlockReader& r) {
+  const std::string source = r.text("base_pose_source", "tracker");
+  if (source == "odometry") return BasePoseSource::Odometry;
+  if (source != "tracker") {
+    r.error("base_pose_source",
+            fmt::format("param 'base_pose_source' in <server> must be tracker or odometry, got '{}'", source));
+  }
+  return BasePoseSource::Tracker;
+}
+
+/// The rules between settings, each reported at the setting that breaks it.
+void check_together(const ServerSettings& s, ParamBlockReader& r) {
+  if (s.min_tick_interval_s > 1.0 / s.haptic_rate_hz) {
+    r.error("min_tick_interval_s", "param 'min_tick_interval_s' in <server> must not exceed the haptic period (1 / rate)");
+  }
+  if (s.tick.safety.tracker_fade_s > s.tick.safety.tracker_timeout_s) {
+    r.error("tracker_fade_s", "param 'tracker_fade_s' in <server> must not exceed tracker_timeout_s");
+  }
+  if (s.base_sensor_id == s.head_sensor_id) {
+    r.error("head_sensor_id", "params 'base_sensor_id' and 'head_sensor_id' in <server> must differ");
+  }
+}
+
+}  // namespace
 
 Result<ServerSettings> server_settings_from(const SceneDescription& scene) {
   constexpr double kDegToRad = std::numbers::pi / 180.0;
@@ -41,12 +67,7 @@ Result<ServerSettings> server_settings_from(const SceneDescription& scene) {
   s.tick.predict_base_pose = r.boolean("predict_base_pose", s.tick.predict_base_pose);
   s.base_sensor_id = sensor_id("base_sensor_id", s.base_sensor_id);
   s.head_sensor_id = sensor_id("head_sensor_id", s.head_sensor_id);
-  if (const std::string source = r.text("base_pose_source", "tracker"); source == "odometry") {
-    s.base_pose_source = BasePoseSource::Odometry;
-  } else if (source != "tracker") {
-    r.error("base_pose_source",
-            fmt::format("param 'base_pose_source' in <server> must be tracker or odometry, got '{}'", source));
-  }
+  s.base_pose_source = base_pose_source_from(r);
   s.io_rate_hz = number("io_rate_hz", s.io_rate_hz);
   s.base_rate_hz = number("base_rate_hz", s.base_rate_hz);
   s.display_rate_hz = number("display_rate_hz", s.display_rate_hz);
@@ -58,15 +79,7 @@ Result<ServerSettings> server_settings_from(const SceneDescription& scene) {
   s.min_tick_interval_s = number("min_tick_interval_s", s.min_tick_interval_s);
   s.plugin_call_timeout_s = number("plugin_call_timeout_s", s.plugin_call_timeout_s);
   s.tracking_range_m = number("tracking_range_m", s.tracking_range_m);
-  if (s.min_tick_interval_s > 1.0 / s.haptic_rate_hz) {
-    r.error("min_tick_interval_s", "param 'min_tick_interval_s' in <server> must not exceed the haptic period (1 / rate)");
-  }
-  if (s.tick.safety.tracker_fade_s > s.tick.safety.tracker_timeout_s) {
-    r.error("tracker_fade_s", "param 'tracker_fade_s' in <server> must not exceed tracker_timeout_s");
-  }
-  if (s.base_sensor_id == s.head_sensor_id) {
-    r.error("head_sensor_id", "params 'base_sensor_id' and 'head_sensor_id' in <server> must differ");
-  }
+  check_together(s, r);
   s.base_guard.tracker_timeout_s = s.tick.safety.tracker_timeout_s;
 
   Diagnostics errors = r.finish();
