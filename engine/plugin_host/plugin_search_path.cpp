@@ -14,8 +14,8 @@
 #include <system_error>
 #include <utility>
 
-#if !defined(MHD_BUILD_PLUGIN_DIR) || !defined(MHD_INSTALLED_PLUGIN_DIR_FROM_BINDIR)
-#error "MHD_BUILD_PLUGIN_DIR and MHD_INSTALLED_PLUGIN_DIR_FROM_BINDIR must be defined by CMake"
+#if !defined(MHD_BUILD_PLUGIN_DIR) || !defined(MHD_INSTALLED_PLUGIN_DIR_FROM_BINDIR) || !defined(MHD_BUILD_ROOT_DIR)
+#error "MHD_BUILD_PLUGIN_DIR, MHD_BUILD_ROOT_DIR and MHD_INSTALLED_PLUGIN_DIR_FROM_BINDIR must be defined by CMake"
 #endif
 
 namespace mhd {
@@ -55,6 +55,8 @@ fs::path versioned_plugin_subdir() { return fs::path("mhd") / fmt::format("plugi
 
 fs::path build_tree_plugin_dir() { return fs::path(MHD_BUILD_PLUGIN_DIR); }
 
+fs::path build_tree_root() { return fs::path(MHD_BUILD_ROOT_DIR); }
+
 fs::path installed_plugin_dir_from_bindir() { return fs::path(MHD_INSTALLED_PLUGIN_DIR_FROM_BINDIR); }
 
 std::vector<PluginFolder> plugin_folders(const std::vector<fs::path>& command_line, std::string_view env_value,
@@ -72,7 +74,12 @@ std::vector<PluginFolder> plugin_folders(const std::vector<fs::path>& command_li
     env_value = colon == std::string_view::npos ? std::string_view() : env_value.substr(colon + 1);
   }
   bool installed = false;
-  if (!executable.empty()) {
+  // A program in its own build tree has no installed folder: "<build>/tools/lib/..." would
+  // be searched, and listed as missing, for nothing.
+  const fs::path root = build_tree_root().lexically_normal();
+  const fs::path relative = executable.lexically_normal().lexically_relative(root);
+  const bool in_build_tree = !executable.empty() && !relative.empty() && *relative.begin() != "..";
+  if (!executable.empty() && !in_build_tree) {
     const fs::path dir = (executable.parent_path() / installed_plugin_dir_from_bindir()).lexically_normal();
     add(dir, PluginFolderSource::Executable);
     std::error_code ec;

@@ -3,7 +3,8 @@
 //   1. --plugin-path folders from the command line, in the order given;
 //   2. $MHD_PLUGIN_PATH, colon-separated (empty entries skipped);
 //   3. <executable's folder>/../lib/mhd/plugins-abi<N> (an installed mhd; "lib" is the
-//      install's libdir, see installed_plugin_dir_from_bindir());
+//      install's libdir, see installed_plugin_dir_from_bindir()), unless the executable
+//      lies in the build tree it was built in;
 //   4. the build tree's <build>/lib/mhd/plugins-abi<N> (MHD_BUILD_PLUGIN_DIR), only when
 //      folder 3 does not exist: an installed mhd never loads plugins from a build tree.
 // N is MHD_PLUGIN_ABI_VERSION: a host never even looks at plugins of another ABI.
@@ -37,6 +38,9 @@ struct PluginFolder {
 /// The build tree's plugin folder (where mhd_add_plugin puts plugins).
 [[nodiscard]] std::filesystem::path build_tree_plugin_dir();
 
+/// The build tree this library was built in (CMake's top binary folder).
+[[nodiscard]] std::filesystem::path build_tree_root();
+
 /// Where `cmake --install` puts plugins, relative to the folder it puts mhd in, e.g.
 /// "../lib/mhd/plugins-abi4" ("../lib/x86_64-linux-gnu/..." for a /usr prefix on Debian).
 /// Ends with versioned_plugin_subdir().
@@ -45,7 +49,7 @@ struct PluginFolder {
 /// The search order above from its inputs: `env_value` is $MHD_PLUGIN_PATH's value and
 /// `executable` the running program (either may be empty). A folder named twice keeps
 /// its first place. The build tree's folder is left out when the executable's installed
-/// plugin folder exists.
+/// plugin folder exists; the installed one, when the executable lies in the build tree.
 [[nodiscard]] std::vector<PluginFolder> plugin_folders(const std::vector<std::filesystem::path>& command_line,
                                                        std::string_view env_value,
                                                        const std::filesystem::path& executable);

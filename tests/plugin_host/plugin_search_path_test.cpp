@@ -89,11 +89,18 @@ TEST(PluginFolders, StandardReadsTheEnvironmentAndTheExecutable) {
   ASSERT_EQ(::setenv("MHD_PLUGIN_PATH", "/env/one:/env/two", 1), 0);
   const PluginSearchPath search = PluginSearchPath::standard({"/cmd"});
   ::unsetenv("MHD_PLUGIN_PATH");
-  const fs::path executable = fs::read_symlink("/proc/self/exe");
+  // This test runs from the build tree: no installed folder is searched (or listed).
   EXPECT_EQ(dirs_of(search.folders()),
-            (std::vector<fs::path>{"/cmd", "/env/one", "/env/two",
-                                   (executable.parent_path() / installed_plugin_dir_from_bindir()).lexically_normal(),
-                                   build_tree_plugin_dir()}));
+            (std::vector<fs::path>{"/cmd", "/env/one", "/env/two", build_tree_plugin_dir()}));
+}
+
+TEST(PluginFolders, AnExecutableInTheBuildTreeSearchesTheBuildTreeOnly) {
+  // "<build>/tools/lib/mhd/plugins-abi4" means nothing for a program built there.
+  const fs::path in_tree = build_tree_root() / "tools" / "mhd" / "mhd";
+  const auto folders = plugin_folders({}, "", in_tree);
+  EXPECT_EQ(dirs_of(folders), (std::vector<fs::path>{build_tree_plugin_dir()}));
+  ASSERT_EQ(folders.size(), 1u);
+  EXPECT_EQ(folders[0].source, PluginFolderSource::BuildTree);
 }
 
 TEST_F(PluginSearchPathTest, AnInstalledExecutableNeverSearchesTheBuildTree) {
