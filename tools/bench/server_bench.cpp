@@ -15,7 +15,13 @@
 //         0.2 m/s: IS-900-like samples at 100 Hz (2.5 mm, 0.4 deg noise; 4 ms latency plus
 //         0-2 ms jitter), with prediction and with the newest sample held. The leap is the
 //         HIP's step minus the true step, |(h_i - h_i-1) - (t_i - t_i-1)|.
+//   overruns  The server's overruns beside the platform's own: the haptic server on a
+//         scene (as `mhd run`, haptic thread at SCHED_FIFO 80) for --seconds, then a bare
+//         loop at the same rate and priority that does nothing but sleep to its absolute
+//         deadlines, for as long. A bare loop's overruns are wake-ups over one period late:
+//         what the machine and its scheduler cost any real-time loop.
 
+#include "haptic_server/haptic_server.h"
 #include "haptic_server/haptic_tick.h"
 #include "kinematics/phantom_kinematics.h"
 #include "realtime/periodic_timer.h"
@@ -34,6 +40,7 @@
 #include <numbers>
 #include <random>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -312,8 +319,67 @@ int run_leaps(const std::string& scene_file, double seconds, int seeds) {
 
 }  // namespace
 
+/// A loop at `rate_hz` on SCHED_FIFO `priority` (when allowed) that only sleeps to its
+/// absolute deadlines for `seconds`: its timer's counts and each wake-up's lateness.
+struct BareLoop {
+  std::string scheduling;
+  realtime::TimerStats stats;
+  std::vector<double> late_us;
+};
+
+BareLoop run_bare_loop(double rate_hz, int priority, double seconds) {
+  BareLoop loop;
+  std::thread thread([&] {  // a thread of its own, as the haptic thread is
+    loop.scheduling = realtime::make_current_thread_realtime(priority).detail;
+    realtime::PeriodicTimer timer(1.0 / rate_hz);
+    const auto ticks = static_cast<std::size_t>(seconds * rate_hz);
+    loop.late_us.reserve(ticks);
+    for (std::size_t i = 0; i < ticks; ++i) {
+      const double deadline_s = timer.wait_next();
+      loop.late_us.push_back((realtime::PeriodicTimer::monotonic_now_s() - deadline_s) * 1e6);
+    }
+    loop.stats = timer.stats();
+  });
+  thread.join();
+  return loop;
+}
+
+int run_overruns(const std::string& scene_file, double seconds) {
+  auto read = read_scene_file(scene_file);
+  for (const auto& d : read.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
+  if (!read.ok()) return 1;
+  auto compiled = compile_scene(*read);
+  for (const auto& d : compiled.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
+  if (!compiled.ok()) return 1;
+  ServerOptions options;
+  options.duration_s = seconds;
+  auto opened = HapticServer::open(*read, *compiled.value(), options);
+  for (const auto& d : opened.diagnostics()) fmt::print(stderr, "{}\n", d.to_string());
+  if (!opened.ok()) return 1;
+  const double rate_hz = opened->server->settings().haptic_rate_hz;
+  const ServerReport server = opened->server->run();
+  if (server.error) {
+    fmt::print(stderr, "{}\n", *server.error);
+    return 1;
+  }
+  const BareLoop bare = run_bare_loop(rate_hz, 80, seconds);
+  const double period_us = 1e6 / rate_hz;
+  const auto over_a_period = std::count_if(bare.late_us.begin(), bare.late_us.end(),
+                                            [&](double late_us) { return late_us > period_us; });
+  fmt::print("over {:g} s at {:g} Hz, each in a thread of its own:\n", seconds, rate_hz);
+  fmt::print("  server on {} ({}): {} overruns, {} deadlines missed in {} ticks; tick p99.9 {:.1f} us, max {:.1f} us\n",
+             scene_file, server.haptic_scheduling, server.status.overruns, server.missed_deadlines,
+             server.status.ticks, server.tick_p999_us, server.tick_max_us);
+  fmt::print("  bare loop, no work ({}): {} overruns, {} deadlines missed in {} ticks; woken late by median {:.1f} us, "
+             "p99 {:.1f} us, p99.9 {:.1f} us, max {:.1f} us; {} wake-ups over one period ({:g} us) late\n",
+             bare.scheduling, bare.stats.overruns, bare.stats.missed_deadlines, bare.stats.ticks,
+             quantile(bare.late_us, 0.5), quantile(bare.late_us, 0.99), quantile(bare.late_us, 0.999),
+             *std::max_element(bare.late_us.begin(), bare.late_us.end()), over_a_period, period_us);
+  return 0;
+}
+
 int main(int argc, char** argv) {
-  CLI::App app{"Haptic server benchmarks: whole tick at 10 kHz, HIP leap with and without prediction",
+  CLI::App app{"Haptic server benchmarks: whole tick at 10 kHz, HIP leap with and without prediction, overruns",
                "mhd-server-bench"};
   app.require_subcommand(1);
   std::string scene = "scenes/benchmarks/server_dolphin_1m.xml";
@@ -334,7 +400,12 @@ int main(int argc, char** argv) {
   leap->add_option("--scene", scene, "Scene with a rig");
   leap->add_option("--seconds", seconds, "Simulated seconds per run");
   leap->add_option("--seeds", seeds, "Runs (noise seeds); the worst is reported");
+  CLI::App* overruns = app.add_subcommand(
+      "overruns", "The server's overruns beside a bare real-time loop's at the same rate, in one run");
+  overruns->add_option("--scene", scene, "Scene to serve (default: the 1M dolphin server scene)");
+  overruns->add_option("--seconds", seconds, "Seconds of each: the server, then the bare loop");
   CLI11_PARSE(app, argc, argv);
   if (tick->parsed()) return run_tick(scene, tick_options);
+  if (overruns->parsed()) return run_overruns(scene, seconds);
   return run_leaps(scene, seconds, seeds);
 }
