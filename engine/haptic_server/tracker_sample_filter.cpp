@@ -18,18 +18,20 @@ const char* to_string(TrackerSampleVerdict verdict) noexcept {
 }
 
 TrackerSampleVerdict TrackerSampleFilter::check(const TrackerSample& sample, double read_at_s) {
-  auto [it, first] = sensors_.emplace(sample.sensor_id, SensorTrack{sample.sequence, read_at_s});
-  const bool restarted = read_at_s - it->second.accepted_at_s > settings_.sequence_restart_after_s;
   if (sample.sensor_id != settings_.base_sensor_id && sample.sensor_id != settings_.head_sensor_id) {
     return TrackerSampleVerdict::UnknownSensor;
   }
+  SensorTrack& track = sensors_[sample.sensor_id == settings_.base_sensor_id ? 0 : 1];
+  const bool first = !track.seen;
+  if (first) track = {true, sample.sequence, read_at_s};
+  const bool restarted = read_at_s - track.accepted_at_s > settings_.sequence_restart_after_s;
   if (sample.timestamp_s > read_at_s + settings_.future_slack_s) return TrackerSampleVerdict::FromTheFuture;
-  if (!first && !restarted && sample.sequence <= it->second.sequence) return TrackerSampleVerdict::SequenceBackwards;
+  if (!first && !restarted && sample.sequence <= track.sequence) return TrackerSampleVerdict::SequenceBackwards;
   if (!tracked_position_plausible(Eigen::Vector3d(sample.p_T_m[0], sample.p_T_m[1], sample.p_T_m[2]),
                                   settings_.tracking_range_m)) {
     return TrackerSampleVerdict::ImplausiblePosition;
   }
-  it->second = {sample.sequence, read_at_s};
+  track = {true, sample.sequence, read_at_s};
   return TrackerSampleVerdict::Accepted;
 }
 

@@ -4,8 +4,8 @@
 
 #include "plugin_host/hardware_io.h"
 
+#include <array>
 #include <cstdint>
-#include <map>
 
 namespace mhd {
 
@@ -31,27 +31,29 @@ struct TrackerSampleFilterSettings {
   double sequence_restart_after_s = 0.25;
 };
 
-/// The per-sensor memory behind the checks: the last accepted sequence number and when.
-/// One instance per tracker, driven by one thread.
+/// The per-sensor memory behind the checks: the last accepted sequence number and when,
+/// for the base's and the head's sensors only. One instance per tracker, driven by one
+/// thread; it never allocates, whatever sensors a tracker names.
 class TrackerSampleFilter {
  public:
   explicit TrackerSampleFilter(TrackerSampleFilterSettings settings) : settings_(settings) {}
 
   /// The verdict on `sample`, read from the plugin at host time `read_at_s`. Drops are
   /// checked before the position, so a dropped sample is never a fault. Only an accepted
-  /// sample moves its sensor's sequence on; the first sample of a sensor, whatever its
-  /// verdict, starts the sensor's memory. Allocates once per new sensor id.
+  /// sample moves its sensor's sequence on; the first sample of the base's or the head's
+  /// sensor, whatever its verdict, starts that sensor's memory.
   [[nodiscard]] TrackerSampleVerdict check(const TrackerSample& sample, double read_at_s);
 
   [[nodiscard]] const TrackerSampleFilterSettings& settings() const noexcept { return settings_; }
 
  private:
   struct SensorTrack {
+    bool seen = false;
     std::uint64_t sequence = 0;
     double accepted_at_s = 0.0;  ///< host time of the last accepted sample
   };
   TrackerSampleFilterSettings settings_;
-  std::map<std::uint32_t, SensorTrack> sensors_;
+  std::array<SensorTrack, 2> sensors_{};  ///< the base's, the head's
 };
 
 }  // namespace mhd

@@ -12,6 +12,7 @@
 #include "haptic_thread_watch.h"
 
 #include "haptic_server/haptic_server.h"
+#include "haptic_server/tracker_sample_filter.h"
 #include "realtime/thread_name.h"
 #include "scene_compiler/scene_compiler.h"
 #include "scene_xml/scene_reader.h"
@@ -79,6 +80,35 @@ TEST(HapticThreadHygiene, TheCountersSeeAThreadOfThatNameLockAllocateAndWrite) {
   EXPECT_GE(c.locks, 1);
   EXPECT_GE(c.allocations, 2);
   EXPECT_GE(c.writes, 2);
+}
+
+// The io thread's check of every tracker sample keeps its memory in place: a tracker that
+// names a new sensor in each sample (10,000 of them) costs no allocation, so no memory
+// grows with what a plugin sends.
+TEST(HapticThreadHygiene, TheTrackerSampleFilterNeverAllocatesWhateverSensorsArrive) {
+  TrackerSampleFilter filter({.base_sensor_id = 0, .head_sensor_id = 1, .tracking_range_m = 50.0});
+  std::vector<TrackerSample> samples(10000);
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    samples[i].sensor_id = static_cast<std::uint32_t>(i % 3 == 0 ? i % 2 : i + 2);  // base, head, strangers
+    samples[i].sequence = i + 1;
+    samples[i].timestamp_s = 0.001 * static_cast<double>(i);
+  }
+  std::size_t accepted = 0, unknown = 0;
+  ThreadCalls calls;
+  std::thread io([&] {
+    realtime::name_current_thread(realtime::kIoThreadName);
+    test::start_thread_watch(realtime::kIoThreadName);
+    for (const TrackerSample& s : samples) {
+      const TrackerSampleVerdict v = filter.check(s, s.timestamp_s);
+      accepted += v == TrackerSampleVerdict::Accepted ? 1 : 0;
+      unknown += v == TrackerSampleVerdict::UnknownSensor ? 1 : 0;
+    }
+    calls = test::stop_thread_watch();
+  });
+  io.join();
+  EXPECT_EQ(calls.allocations, 0) << "first from " << calls.first_caller;
+  EXPECT_EQ(accepted, 3334u);  // every third sample, base or head, each newer than the last
+  EXPECT_EQ(unknown, 6666u);
 }
 
 /// The server on simulated hardware for 2.5 s, with the calls made on the thread named
