@@ -1,11 +1,13 @@
-# cpack -G DEB (run in the build folder): two Debian packages from the install
-# components of MhdInstall.cmake, installed under /usr:
+# cpack -G DEB (run in the build folder): Debian packages from the install components of
+# MhdInstall.cmake and python/CMakeLists.txt, installed under /usr:
 #   mhd      the runtime component; Depends computed by dpkg-shlibdeps (dpkg-dev) from the
 #            shared libraries the programs and plugins load; Recommends what its scenes
 #            and scripts use.
 #   mhd-dev  the dev component (headers, static engine libraries, CMake package,
 #            pkg-config); Depends on mhd of the same version and on the -dev packages of
 #            the libraries the engine links, which MHDConfig.cmake finds.
+#   python3-mhd  the Python module `mhd` (where the build has it); Depends on mhd of the
+#            same version (its plugins), python3-numpy, and what dpkg-shlibdeps finds.
 # Licence: mhd contains binaries that link CGAL's GPL-3.0+ code (docs/licensing.md), so
 # the package as a whole is distributed under GPL-3.0-or-later terms; mhd-dev holds only
 # BSD-3-Clause code.
@@ -23,6 +25,14 @@ set(CPACK_STRIP_FILES ON)
 
 set(CPACK_DEB_COMPONENT_INSTALL ON)
 set(CPACK_COMPONENTS_ALL runtime dev)
+if(TARGET mhd_python)
+  list(APPEND CPACK_COMPONENTS_ALL python)
+  set(CPACK_DEBIAN_PYTHON_PACKAGE_NAME python3-mhd)
+  set(CPACK_DEBIAN_PYTHON_PACKAGE_SECTION python)
+  set(CPACK_DEBIAN_PYTHON_PACKAGE_SHLIBDEPS ON)
+  set(CPACK_DEBIAN_PYTHON_PACKAGE_DEPENDS "mhd (= ${PROJECT_VERSION}), python3, python3-numpy")
+  set(CPACK_DEBIAN_PYTHON_DESCRIPTION "${PROJECT_DESCRIPTION}: the Python module mhd")
+endif()
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_NAME mhd)

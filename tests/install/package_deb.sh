@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
-# cpack -G DEB makes the two packages of cmake/MhdPackaging.cmake, and each says what
-# it needs: mhd's Depends (from dpkg-shlibdeps) name the shared libraries its programs
-# and plugins load, its Recommends what its scenes and scripts use; mhd-dev's Depends
-# name mhd of the same version and the -dev packages MHDConfig.cmake finds. Their
-# contents sit where the installed mhd looks.
-# Usage: package_deb.sh <cpack> <build dir> <version> <libdir>
+# cpack -G DEB makes the packages of cmake/MhdPackaging.cmake, and each says what it
+# needs: mhd's Depends (from dpkg-shlibdeps) name the shared libraries its programs and
+# plugins load, its Recommends what its scenes and scripts use; mhd-dev's Depends name
+# mhd of the same version and the -dev packages MHDConfig.cmake finds; python3-mhd's
+# (given a Python module folder) mhd of the same version and numpy. Their contents sit
+# where the installed mhd, and Debian's python3, look.
+# Usage: package_deb.sh <cpack> <build dir> <version> <libdir> [<Python module folder under /usr>]
 set -euo pipefail
-cpack_exe="$1" build="$2" version="$3" libdir="$4"
+cpack_exe="$1" build="$2" version="$3" libdir="$4" python_dir="${5:-}"
 scratch="$(mktemp -d "${TMPDIR:-/tmp}/mhd_package_test.XXXXXX")"
 trap 'rm -rf "$scratch"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
@@ -48,4 +49,18 @@ for f in ./usr/include/mhd/plugin_abi.h "./usr/$libdir/cmake/MHD/MHDConfig.cmake
   grep -qF " $f" <<<"$dev_files" || fail "mhd-dev lacks $f"
 done
 if grep -qF "include/mhd" <<<"$runtime_files"; then fail "mhd (runtime) holds headers"; fi
+
+if [ -n "$python_dir" ]; then
+  python="$scratch/python3-mhd_${version}_${arch}.deb"
+  [ -f "$python" ] || { ls "$scratch"; fail "expected python3-mhd_${version}_${arch}.deb"; }
+  python_depends="$(dpkg-deb -f "$python" Depends)"
+  echo "python3-mhd Depends: $python_depends"
+  for pkg in "mhd (= $version)" python3-numpy; do
+    grep -qF "$pkg" <<<"$python_depends" || fail "python3-mhd's Depends lacks $pkg"
+  done
+  python_files="$(dpkg-deb -c "$python")"
+  grep -qF " ./usr/$python_dir/mhd/__init__.py" <<<"$python_files" || fail "python3-mhd lacks $python_dir/mhd/__init__.py"
+  grep -qE " \./usr/$python_dir/mhd/_mhd\..*so$" <<<"$python_files" || fail "python3-mhd lacks $python_dir/mhd/_mhd*.so"
+  if grep -qF "/mhd/_mhd" <<<"$runtime_files"; then fail "mhd (runtime) holds the Python module"; fi
+fi
 echo "packages: ok"
