@@ -33,9 +33,10 @@ void read_simulated_hand(const sdk::Params& params, Config& m) {
   if (params.text("hand_model") == "impedance") {
     m.hand_model = Model::Impedance;
     auto& h = m.hand_impedance;
-    h.mass_kg = params.number("hand_mass_kg", h.mass_kg);
-    h.stiffness_N_per_m = params.number("hand_stiffness_N_per_m", h.stiffness_N_per_m);
-    h.damping_Ns_per_m = params.number("hand_damping_Ns_per_m", h.damping_Ns_per_m);
+    h.mass_kg = params.number("hand_mass_kg");
+    // Declared without a default: each hand model has its own (its config's).
+    h.stiffness_N_per_m = params.optional_number("hand_stiffness_N_per_m").value_or(h.stiffness_N_per_m);
+    h.damping_Ns_per_m = params.number("hand_damping_Ns_per_m");
     return;
   }
   for (const char* impedance_only : {"hand_mass_kg", "hand_damping_Ns_per_m"}) {
@@ -43,7 +44,7 @@ void read_simulated_hand(const sdk::Params& params, Config& m) {
       throw sdk::ParamError("parameter '" + std::string(impedance_only) + "' applies only to hand_model 'impedance'");
     }
   }
-  m.hand_stiffness_N_per_m = params.number("hand_stiffness_N_per_m", m.hand_stiffness_N_per_m);
+  m.hand_stiffness_N_per_m = params.optional_number("hand_stiffness_N_per_m").value_or(m.hand_stiffness_N_per_m);
 }
 
 /// A 3-in, 3-out device's info with one workspace box [min_D_m, max_D_m] in its frame.

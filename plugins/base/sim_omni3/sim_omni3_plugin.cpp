@@ -106,15 +106,15 @@ class SimOmni3Plugin {
         {"command_timeout_s", &Omni3Config::command_timeout_s},
     }};
     Omni3Config c;
-    for (const auto& [name, field] : kPlainNumbers) c.*field = params.number(name, c.*field);
-    c.max_omega_radps = params.number("max_omega_degps", c.max_omega_radps / kDegToRad) * kDegToRad;
-    c.seed = params.integer("seed", c.seed);
+    for (const auto& [name, field] : kPlainNumbers) c.*field = params.number(name);
+    c.max_omega_radps = params.number("max_omega_degps") * kDegToRad;
+    c.seed = params.integer("seed");
     // The start pose: the simulated world's base pose, each field overridden by its parameter.
     PlanarPose& p = c.initial_pose;
     const simulation::PlanarPose world_base = session.world().base_pose();
     p = {world_base.x_m, world_base.z_m, world_base.heading_rad};
-    p.x_m = params.number("x_m", p.x_m);
-    p.z_m = params.number("z_m", p.z_m);
+    p.x_m = params.optional_number("x_m").value_or(p.x_m);
+    p.z_m = params.optional_number("z_m").value_or(p.z_m);
     if (const auto heading_deg = params.optional_number("heading_deg")) p.heading_rad = *heading_deg * kDegToRad;
     return c;
   }

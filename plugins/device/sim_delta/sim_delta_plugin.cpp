@@ -39,7 +39,8 @@ class SimDeltaPlugin {
   SimDeltaPlugin(const mhd_host& host, const sdk::Params& params)
       : host_(host), session_(sim_world::SimSession::acquire(host)), model_(read_config(params)),
         X_DW_(read_X_WD(params).inverse(Eigen::Isometry)) {
-    rest_hand_D_m_ = params.vector3("hand_D_m", model_.config().workspace.center_D_m());
+    rest_hand_D_m_ =
+        params.optional_vector3<Eigen::Vector3d>("hand_D_m").value_or(model_.config().workspace.center_D_m());
   }
 
   void start() {
@@ -89,15 +90,15 @@ class SimDeltaPlugin {
   static DeltaSimConfig read_config(const sdk::Params& params) {
     DeltaSimConfig m;
     plugin_support::read_simulated_hand(params, m);
-    m.command_timeout_s = params.number("command_timeout_s", m.command_timeout_s);
+    m.command_timeout_s = params.number("command_timeout_s");
     return m;
   }
 
   static Pose read_X_WD(const sdk::Params& params) {
     Pose X_WD = Pose::Identity();
-    const Eigen::Vector3d rpy_deg = params.vector3("device_rpy_deg", Eigen::Vector3d(Eigen::Vector3d::Zero()));
+    const Eigen::Vector3d rpy_deg = params.vector3<Eigen::Vector3d>("device_rpy_deg");
     X_WD.linear() = rotation_from_rpy(rpy_deg * (std::numbers::pi / 180.0));
-    X_WD.translation() = params.vector3("device_position_m", Eigen::Vector3d(Eigen::Vector3d::Zero()));
+    X_WD.translation() = params.vector3<Eigen::Vector3d>("device_position_m");
     return X_WD;
   }
 

@@ -58,7 +58,7 @@ class SimPhantomPlugin {
 
   SimPhantomPlugin(const mhd_host& host, const sdk::Params& params)
       : host_(host), session_(sim_world::SimSession::acquire(host)), model_(read_config(params)),
-        rest_hand_P_m_(params.vector3("hand_P_m", workspace_center())) {
+        rest_hand_P_m_(params.optional_vector3<Eigen::Vector3d>("hand_P_m").value_or(workspace_center())) {
     if (const auto file = params.optional_text("command_log")) {
       log_ = std::make_unique<plugin_support::CommandLog>(*file, std::array{"force_x_N", "force_y_N", "force_z_N"});
     }
@@ -180,8 +180,8 @@ Eigen::Isometry3d read_pose(const sdk::Params& params, const char* position_name
 PhantomSimConfig SimPhantomPlugin::read_config(const sdk::Params& params) {
   PhantomSimConfig m;
   plugin_support::read_simulated_hand(params, m);
-  m.command_timeout_s = params.number("command_timeout_s", m.command_timeout_s);
-  m.position_resolution_m = params.number("position_resolution_m", m.position_resolution_m);
+  m.command_timeout_s = params.number("command_timeout_s");
+  m.position_resolution_m = params.number("position_resolution_m");
   m.X_robot_phantom = read_pose(params, "phantom_position_m", "phantom_rpy_deg", m.X_robot_phantom);
   m.X_robot_base = read_pose(params, "base_position_m", "base_rpy_deg", m.X_robot_base);
   return m;

@@ -84,16 +84,16 @@ class OsgStereoPlugin {
   static viewer::ViewerOptions read_options(const sdk::Params& params) {
     viewer::ViewerOptions o;
     o.window_title = "MHD osg_stereo";
-    o.stereo = params.boolean("stereo", o.stereo);
-    o.ipd_m = params.number("ipd_m", o.ipd_m);
-    o.fov_deg = params.number("fov_deg", o.fov_deg);
-    o.width = static_cast<int>(params.integer("width", static_cast<std::uint64_t>(o.width)));
-    o.height = static_cast<int>(params.integer("height", static_cast<std::uint64_t>(o.height)));
-    o.offscreen = params.boolean("offscreen", o.offscreen);
+    o.stereo = params.boolean("stereo");
+    o.ipd_m = params.number("ipd_m");
+    o.fov_deg = params.number("fov_deg");
+    o.width = static_cast<int>(params.integer("width"));
+    o.height = static_cast<int>(params.integer("height"));
+    o.offscreen = params.boolean("offscreen");
     if (auto screenshot = params.optional_text("screenshot")) o.screenshot_png = *screenshot;
-    o.frames = static_cast<int>(params.integer("frames", static_cast<std::uint64_t>(o.frames)));
-    o.max_frame_rate_Hz = params.number("max_frame_rate_Hz", o.max_frame_rate_Hz);
-    o.show_grid = params.boolean("grid", o.show_grid);
+    o.frames = static_cast<int>(params.integer("frames"));
+    o.max_frame_rate_Hz = params.number("max_frame_rate_Hz");
+    o.show_grid = params.boolean("grid");
     if (std::string e = o.check(); !e.empty()) throw std::invalid_argument(e);
     return o;
   }

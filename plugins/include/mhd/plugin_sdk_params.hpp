@@ -9,8 +9,9 @@
 //     range, required but missing), so every getter reads a value that is already valid.
 //   - A getter asking for a name the plugin did not declare throws std::logic_error: a
 //     plugin bug its own tests catch, never a user error.
-//   - Getters without a fallback return the scene's value, else the declared default;
-//     with neither they throw std::logic_error (declare a default, or use optional_*).
+//   - Each parameter has one default, the declared one: a getter returns the scene's
+//     value, else the declared default; with neither it throws std::logic_error (declare
+//     a default, or read it with optional_* when absent means something of its own).
 //   - A Params refers to the arrays it was made from: use it inside the constructor only.
 #ifndef MHD_PLUGIN_SDK_PARAMS_HPP
 #define MHD_PLUGIN_SDK_PARAMS_HPP
@@ -63,24 +64,14 @@ class Params {
     const char* v = scene_value(name);
     return v != nullptr ? std::optional<double>(to_number(v)) : std::nullopt;
   }
-  [[nodiscard]] double number(std::string_view name, double fallback) const {
-    return optional_number(name).value_or(fallback);
-  }
   [[nodiscard]] double number(std::string_view name) const { return to_number(value_or_default(name)); }
 
   [[nodiscard]] std::optional<std::uint64_t> optional_integer(std::string_view name) const {
     const char* v = scene_value(name);
     return v != nullptr ? std::optional<std::uint64_t>(to_integer(v)) : std::nullopt;
   }
-  [[nodiscard]] std::uint64_t integer(std::string_view name, std::uint64_t fallback) const {
-    return optional_integer(name).value_or(fallback);
-  }
   [[nodiscard]] std::uint64_t integer(std::string_view name) const { return to_integer(value_or_default(name)); }
 
-  [[nodiscard]] bool boolean(std::string_view name, bool fallback) const {
-    const char* v = scene_value(name);
-    return v != nullptr ? detail::trim(v) == "true" : fallback;
-  }
   [[nodiscard]] bool boolean(std::string_view name) const { return detail::trim(value_or_default(name)) == "true"; }
 
   /// "x y z" as V(x, y, z) (or V{x, y, z} for an aggregate such as std::array).
@@ -91,9 +82,10 @@ class Params {
     const std::vector<double> x = to_numbers(v);
     return make<V>(x[0], x[1], x[2]);
   }
-  template <class V>
-  [[nodiscard]] V vector3(std::string_view name, const V& fallback) const {
-    return optional_vector3<V>(name).value_or(fallback);
+  template <class V = std::array<double, 3>>
+  [[nodiscard]] V vector3(std::string_view name) const {
+    const std::vector<double> x = to_numbers(value_or_default(name));
+    return make<V>(x[0], x[1], x[2]);
   }
 
   /// "w x y z", normalised, as Q(w, x, y, z) (Eigen::Quaterniond's order) or Q{w, x, y, z}.

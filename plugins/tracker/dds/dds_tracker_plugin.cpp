@@ -117,12 +117,12 @@ class DdsTrackerPlugin {
     Config c;
     c.endpoint = dds::read_endpoint(params, host.scene_file);
     c.limits.rig_id = c.endpoint.rig_id;
-    c.limits.max_abs_position_m = params.number("max_position_m", c.limits.max_abs_position_m);
-    c.limits.max_age_s = params.number("max_age_s", c.limits.max_age_s);
-    c.limits.max_future_s = params.number("max_future_s", c.limits.max_future_s);
-    c.limits.restart_after_s = params.number("restart_after_s", c.limits.restart_after_s);
-    c.limits.quaternion_tolerance = params.number("quaternion_tolerance", c.limits.quaternion_tolerance);
-    c.publish_sim_world = params.boolean("publish_sim_world", false);
+    c.limits.max_abs_position_m = params.number("max_position_m");
+    c.limits.max_age_s = params.number("max_age_s");
+    c.limits.max_future_s = params.number("max_future_s");
+    c.limits.restart_after_s = params.number("restart_after_s");
+    c.limits.quaternion_tolerance = params.number("quaternion_tolerance");
+    c.publish_sim_world = params.boolean("publish_sim_world");
     return c;
   }
 

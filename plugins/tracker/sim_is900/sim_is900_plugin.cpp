@@ -51,21 +51,21 @@ Eigen::Isometry3d read_pose(const sdk::Params& params, const std::string& prefix
 
 Is900Config read_config(const sdk::Params& params) {
   Is900Config c;
-  c.rate_hz = params.number("rate_hz", c.rate_hz);
-  c.latency_s = params.number("latency_s", c.latency_s);
-  c.position_sigma_m = params.number("position_sigma_m", c.position_sigma_m);
-  c.angle_sigma_rad = params.number("angle_sigma_deg", c.angle_sigma_rad / kDegToRad) * kDegToRad;
-  c.base_sensor_id = static_cast<std::uint32_t>(params.integer("base_sensor_id", c.base_sensor_id));
-  c.head_sensor_id = static_cast<std::uint32_t>(params.integer("head_sensor_id", c.head_sensor_id));
+  c.rate_hz = params.number("rate_hz");
+  c.latency_s = params.number("latency_s");
+  c.position_sigma_m = params.number("position_sigma_m");
+  c.angle_sigma_rad = params.number("angle_sigma_deg") * kDegToRad;
+  c.base_sensor_id = static_cast<std::uint32_t>(params.integer("base_sensor_id"));
+  c.head_sensor_id = static_cast<std::uint32_t>(params.integer("head_sensor_id"));
   c.X_BS = read_pose(params, "base_sensor", c.X_BS);
   c.X_WT = read_pose(params, "tracker", c.X_WT);
-  c.buffer_capacity = static_cast<std::size_t>(params.integer("buffer_capacity", c.buffer_capacity));
-  c.seed = params.integer("seed", c.seed);
+  c.buffer_capacity = static_cast<std::size_t>(params.integer("buffer_capacity"));
+  c.seed = params.integer("seed");
   if (const auto sensor = params.optional_text("dropout_sensor")) {  // head|base: declared
     c.dropout_sensor_id = *sensor == "head" ? c.head_sensor_id : c.base_sensor_id;
   }
-  c.dropout_start_s = params.number("dropout_start_s", c.dropout_start_s);
-  c.dropout_duration_s = params.number("dropout_duration_s", c.dropout_duration_s);
+  c.dropout_start_s = params.number("dropout_start_s");
+  c.dropout_duration_s = params.number("dropout_duration_s");
   if (c.base_sensor_id == c.head_sensor_id) {
     throw sdk::ParamError("parameters 'base_sensor_id' and 'head_sensor_id' must differ, both are " +
                           std::to_string(c.base_sensor_id));

@@ -40,11 +40,11 @@ class FiDevice {
 
   FiDevice(const mhd_host& host, const mhd::sdk::Params& params)
       : host_(host),
-        p_free_(params.vector3<Vec3>("p_free_m", test_plugins::kPhantomMidTool_D_m)),
-        p_press_(params.vector3<Vec3>("p_press_m", test_plugins::kPhantomMidTool_D_m)),
-        press_at_s_(params.number("press_at_s", std::numeric_limits<double>::infinity())),
+        p_free_(params.optional_vector3<Vec3>("p_free_m").value_or(test_plugins::kPhantomMidTool_D_m)),
+        p_press_(params.optional_vector3<Vec3>("p_press_m").value_or(test_plugins::kPhantomMidTool_D_m)),
+        press_at_s_(params.optional_number("press_at_s").value_or(std::numeric_limits<double>::infinity())),
         press_ramp_s_(params.number("press_ramp_s")),
-        max_force_N_(params.number("max_force_N", test_plugins::kPhantomMaxForce_N)),
+        max_force_N_(params.optional_number("max_force_N").value_or(test_plugins::kPhantomMaxForce_N)),
         info_(workspace_info(params)),
         fault_(params, 1u << 17) {}  // 131 s at 1 kHz
 
@@ -83,9 +83,9 @@ class FiDevice {
 
   static mhd_device_info workspace_info(const mhd::sdk::Params& params) {
     mhd_device_info info = test_plugins::phantom_like_device_info();
-    const Vec3 min_m = params.vector3<Vec3>("workspace_min_m", {info.workspace[0].min_m[0], info.workspace[0].min_m[1],
+    const Vec3 min_m = params.optional_vector3<Vec3>("workspace_min_m").value_or(Vec3{info.workspace[0].min_m[0], info.workspace[0].min_m[1],
                                                                  info.workspace[0].min_m[2]});
-    const Vec3 max_m = params.vector3<Vec3>("workspace_max_m", {info.workspace[0].max_m[0], info.workspace[0].max_m[1],
+    const Vec3 max_m = params.optional_vector3<Vec3>("workspace_max_m").value_or(Vec3{info.workspace[0].max_m[0], info.workspace[0].max_m[1],
                                                                  info.workspace[0].max_m[2]});
     for (std::size_t i = 0; i < 3; ++i) {
       info.workspace[0].min_m[i] = min_m[i];

@@ -64,8 +64,8 @@ class FiTracker {
         session_(mhd::sim_world::SimSession::acquire(host)),
         model_(config_from(params)),
         rng_(model_.config().seed ^ 0x5eedu),
-        silent_after_s_(params.number("silent_after_s", std::numeric_limits<double>::infinity())),
-        resume_after_s_(params.number("resume_after_s", std::numeric_limits<double>::infinity())),
+        silent_after_s_(params.optional_number("silent_after_s").value_or(std::numeric_limits<double>::infinity())),
+        resume_after_s_(params.optional_number("resume_after_s").value_or(std::numeric_limits<double>::infinity())),
         loss_(params.number("loss")),
         delay_s_(params.number("delay_ms") * 1e-3),
         jitter_s_(params.number("jitter_ms") * 1e-3),
@@ -128,9 +128,9 @@ class FiTracker {
   static mhd::sim_is900::Is900Config config_from(const mhd::sdk::Params& params) {
     mhd::sim_is900::Is900Config c;
     c.seed = params.integer("seed");
-    c.rate_hz = params.number("rate_hz", c.rate_hz);
-    c.latency_s = params.number("latency_s", c.latency_s);
-    c.position_sigma_m = params.number("position_sigma_m", c.position_sigma_m);
+    c.rate_hz = params.optional_number("rate_hz").value_or(c.rate_hz);
+    c.latency_s = params.optional_number("latency_s").value_or(c.latency_s);
+    c.position_sigma_m = params.optional_number("position_sigma_m").value_or(c.position_sigma_m);
     if (const auto deg = params.optional_number("angle_sigma_deg")) c.angle_sigma_rad = *deg * std::numbers::pi / 180.0;
     return c;
   }

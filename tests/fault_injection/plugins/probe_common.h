@@ -64,7 +64,7 @@ class FaultOnCue {
  public:
   FaultOnCue(const mhd::sdk::Params& params, std::size_t log_capacity)
       : fault_(params.text("fault")),
-        fault_after_s_(params.number("fault_after_s", std::numeric_limits<double>::infinity())),
+        fault_after_s_(params.optional_number("fault_after_s").value_or(std::numeric_limits<double>::infinity())),
         fault_on_(params.text("fault_on") == "write" ? FaultOn::Write : FaultOn::Read) {
     commands.open(params.optional_text("command_log").value_or(""), log_capacity);
   }

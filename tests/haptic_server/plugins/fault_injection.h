@@ -36,7 +36,7 @@ class FaultyHardware {
  public:
   FaultyHardware(const mhd_host& host, const mhd::sdk::Params& params)
       : host_(host),
-        fail_after_reads_(params.integer("fail_after_reads", std::numeric_limits<std::uint64_t>::max())),
+        fail_after_reads_(params.optional_integer("fail_after_reads").value_or(std::numeric_limits<std::uint64_t>::max())),
         fault_(params.text("fault")),
         block_s_(params.number("block_s")),
         command_log_(params.optional_text("command_log").value_or("")) {}
