@@ -9,7 +9,7 @@
 #            mhd_add_plugin); <libdir>/pkgconfig/mhd-plugin.pc.
 # The engine is linked statically and mhd finds the plugins relative to itself
 # (engine/plugin_host/plugin_search_path.h). The one shared library of ours is the
-# simulated plugins' world (plugins/sim_world), in <libdir>/mhd/: the simulated plugins
+# simulated plugins' world (libs/sim_world), in <libdir>/mhd/: the simulated plugins
 # and mhd (its tracker server) find it through a relative RUNPATH.
 include_guard(GLOBAL)
 include(CMakePackageConfigHelpers)

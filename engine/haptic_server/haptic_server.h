@@ -13,7 +13,7 @@
 // A desktop rig (<rig kind="desktop">, docs/desktop.md) has a device and displays only:
 // no io or planner thread, and the haptic thread renders with the device fixed at X_WD.
 // The simulated user is not the server's: the simulated plugins move it in the world
-// they share (plugins/sim_world); the server only checks the scene's <simulated_user>.
+// they share (libs/sim_world); the server only checks the scene's <simulated_user>.
 // Hand-offs into and out of the haptic thread are lock-free: SPSC rings for events
 // (tracker samples, commands, recording rows) and triple buffers for state. Other
 // threads share a few values behind a mutex.

@@ -15,7 +15,7 @@ namespace mhd {
 
 Diagnostics check_scene_settings(const SceneDescription& scene) {
   Diagnostics errors = server_settings_from(scene).diagnostics();
-  // The simulated plugins run the scene's <simulated_user> (plugins/sim_world); its
+  // The simulated plugins run the scene's <simulated_user> (libs/sim_world); its
   // errors still refuse the run here, at their lines, before any plugin opens.
   if (scene.simulated_user) {
     auto u = simulation::simulated_user_config_from(*scene.simulated_user);

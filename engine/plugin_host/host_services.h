@@ -1,6 +1,6 @@
 #pragma once
 // What the host offers every plugin (mhd_host): a monotonic clock and the scene file it
-// runs. (Simulated plugins share their world among themselves: plugins/sim_world.)
+// runs. (Simulated plugins share their world among themselves: libs/sim_world.)
 // Plugins keep the mhd_host pointer they get in open(),
 // so a HostServices must outlive every instance opened with it and cannot move.
 

@@ -327,9 +327,11 @@ Result<PluginCallStatus, PluginError> PluginInstance::tracker_read(std::span<Tra
   if (Status<PluginError> s = check_call("tracker_read", PluginKind::Tracker); !s) return s.error();
   if (Status<PluginError> s = check_running("tracker_read"); !s) return s.error();
   mhd_error err{};
-  // Read into the ABI's form on the stack (no allocation on the io thread), then convert.
-  std::array<mhd_tracker_sample, kMaxTrackerSamplesPerRead> raw{};
+  // Read into the ABI's form on the stack (no allocation on the io thread), then convert;
+  // only the part handed to the plugin is zeroed.
+  std::array<mhd_tracker_sample, kMaxTrackerSamplesPerRead> raw;
   const std::size_t capacity = std::min(out.size(), raw.size());
+  std::fill_n(raw.begin(), capacity, mhd_tracker_sample{});
   std::size_t returned = 0;
   Result<PluginCallStatus, PluginError> outcome = call_outcome(
       name(), "tracker_read",

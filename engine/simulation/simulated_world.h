@@ -1,7 +1,7 @@
 #pragma once
 // The truth of a simulated session: the base's planar pose, the user's head pose and
 // the user's hand. The simulated plugins of one scene share one world through their own
-// support library (plugins/sim_world/sim_session.h), never through the host, so the
+// support library (libs/sim_world/sim_session.h), never through the host, so the
 // simulated tracker sees the base that the simulated base moves. World frame W: y up,
 // floor at y = 0; a planar heading h is a rotation about +y_W, forward x = (cos h, 0,
 // -sin h).

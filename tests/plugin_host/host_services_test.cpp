@@ -1,6 +1,6 @@
 // The host table plugins get in open(): this host's ABI numbers, a monotonic clock and
 // the scene file. (No simulated world: since ABI 4 the simulated plugins share theirs
-// through plugins/sim_world.)
+// through libs/sim_world.)
 
 #include "plugin_host/host_services.h"
 

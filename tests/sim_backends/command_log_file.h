@@ -1,5 +1,5 @@
 #pragma once
-// Reading the command log a simulated backend writes (plugins/sim_common/command_log.h):
+// Reading the command log a simulated backend writes (libs/sim_common/command_log.h):
 // the rows of "t_s,event,a,b,c" after the header.
 
 #include <array>

@@ -1,5 +1,5 @@
 // The simulated base, tracker and user on one simulated world, shared by the plugins
-// through their library (plugins/sim_world), never through the host: the tracker sees
+// through their library (libs/sim_world), never through the host: the tracker sees
 // the base that the base plugin moves and the head of the user it moves itself.
 
 #include "plugin_file.h"

@@ -13,7 +13,7 @@
 #       permissions.xml permissions.p7s     what NAME may do, and the signed copy
 # Identities: tracker-rigN and haptic-rigN for each RIG_ID N, viewer and ros2-viewer.
 # Access control grants topics per partition, not per key: rig N's endpoints all live
-# in partition "mhd_rigN" (plugins/dds_common/rig_partition.h), so tracker-rigN may
+# in partition "mhd_rigN" (libs/dds_common/rig_partition.h), so tracker-rigN may
 # publish mhd_tracker_sample in mhd_rigN only. An identity folder is what a process
 # names with MHD_DDS_IDENTITY, --dds-identity or a plugin's identity_dir parameter.
 # Existing files under OUT_DIR are replaced. The CA key stays in OUT_DIR/ca: keep it

@@ -1,4 +1,4 @@
-// libFuzzer target: DDS tracker-sample validation (plugins/dds_common/sample_validation.h)
+// libFuzzer target: DDS tracker-sample validation (libs/dds_common/sample_validation.h)
 // and the conversion of accepted samples to the plugin ABI (dds_convert.h).
 //
 // The input drives one validator: first its limits (sane ranges, as the dds tracker

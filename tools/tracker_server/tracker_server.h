@@ -1,7 +1,7 @@
 #pragma once
 // `mhd tracker-server`: runs a scene's tracker plugin (sim_is900, replay, or real
 // hardware) and publishes every sample it reads as mhd_dds::TrackerSample for one rig.
-// For simulated trackers it sets up the scene's simulated world (plugins/sim_world, the
+// For simulated trackers it sets up the scene's simulated world (libs/sim_world, the
 // simulated plugins' own library) before opening the plugin: the scene's <simulated_user>
 // or a random walk, which the plugin moves; the base stays where the world puts it (the
 // base is the haptic server's). With shared_world it runs no user: it measures the world the rig's

@@ -17,7 +17,7 @@
  * host checks a scene's parameters without opening the plugin. A v2 plugin is refused.
  * Version 4 took the simulated world out of mhd_host: simulation is not the host's
  * business, so simulated backends share their world through a support library of their
- * own (plugins/sim_world). A v3 plugin is refused.
+ * own (libs/sim_world). A v3 plugin is refused.
  * All quantities are SI (metres, radians, seconds, newtons); device-native units
  * (millimetres, encoder counts) stay inside the plugin. Frames follow the engine's
  * X_AB naming: a pose of B given in A.

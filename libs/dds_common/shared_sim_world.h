@@ -5,7 +5,7 @@
 // tracker-server --shared-world` writes the newest into its own world before its
 // simulated tracker measures it, so the tracker sees the base the haptic server moves,
 // as a real tracker sees the real base. Both sides work on the simulated plugins' shared
-// world (plugins/sim_world), never on the host.
+// world (libs/sim_world), never on the host.
 
 #include "dds_common/dds_topics.h"
 
