@@ -35,7 +35,11 @@ Config Config::from_environment() {
       {"servo_stall", Fault::ServoStall},
       {"warm_motors", Fault::WarmMotors},
       {"needs_manual_calibration", Fault::NeedsManualCalibration},
-      {"needs_update", Fault::NeedsUpdate}};
+      {"needs_update", Fault::NeedsUpdate},
+      {"frozen_timestamp", Fault::FrozenTimestamp},
+      {"old_library", Fault::OldLibrary},
+      {"hang", Fault::Hang},
+      {"dropout", Fault::Dropout}};
   Config c;
   const auto it = faults.find(env("MHD_FAKE_FAULT", "none"));
   if (it == faults.end()) {

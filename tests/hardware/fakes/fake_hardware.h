@@ -1,15 +1,19 @@
 #pragma once
 // What the fakes of vendor libraries share (fake_hd.cpp for OpenHaptics, fake_dhd.cpp for
-// the Force Dimension SDK): the environment that configures them, the log of what the
-// hardware received, the simulated hand that holds the tool, and the clock.
+// the Force Dimension SDK, fake_isense.cpp for the InterSense SDK): the environment that
+// configures them, the log of what the hardware received, the simulated hand that holds
+// the tool, and the clock.
 //
 // Environment (read once, when the fake is first called):
 //   MHD_FAKE_LOG            the log file (none: no log)
 //   MHD_FAKE_FAULT          none|unplugged|error_every_call|comm_error|nan_position|
-//                           servo_stall|warm_motors|needs_manual_calibration|needs_update
-//                           (the last four: OpenHaptics only)
-//   MHD_FAKE_FAULT_AFTER_S  when comm_error, nan_position, servo_stall and warm_motors
-//                           strike, after force output was first enabled (default 1)
+//                           servo_stall|warm_motors|needs_manual_calibration|needs_update|
+//                           frozen_timestamp|old_library|hang|dropout
+//                           (servo_stall to needs_update: OpenHaptics only; the last
+//                           four: InterSense only; dropout: the stations are lost for 1 s)
+//   MHD_FAKE_FAULT_AFTER_S  when comm_error, nan_position, servo_stall, warm_motors,
+//                           frozen_timestamp, hang and dropout strike, after force output was first
+//                           enabled (a tracker: after its first read) (default 1)
 //   MHD_FAKE_MAX_FORCE_N    the nominal maximum force the device reports (default 3.3)
 //   MHD_FAKE_WORKSPACE_MM   the usable workspace "minx miny minz maxx maxy maxz"
 //                           (OpenHaptics; the Force Dimension SDK reports none)
@@ -25,7 +29,7 @@ namespace mhd::fake {
 
 enum class Fault {
   None, Unplugged, ErrorEveryCall, CommError, NanPosition, ServoStall, WarmMotors, NeedsManualCalibration,
-  NeedsUpdate
+  NeedsUpdate, FrozenTimestamp, OldLibrary, Hang, Dropout
 };
 
 double now_s();
