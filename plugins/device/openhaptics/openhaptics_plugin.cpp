@@ -1,7 +1,9 @@
 // openhaptics: a 3D Systems device (Touch, Touch X, the PHANToM Premium family) through
 // OpenHaptics' HDAPI, loaded from libHD.so when the plugin opens. HDAPI runs its own servo
 // loop; ServoLoop meets MHD's haptic tick there without a lock (servo_loop.h). Device
-// frame D is HDAPI's (x right, y up, z towards the user), in metres.
+// frame D is HDAPI's (x right, y up, z towards the user), in metres. With
+// joint_state_topic, the arm's joint angles go to ROS 2 displays (arm_joint_publisher.h).
+#include "arm_joint_publisher.h"
 #include "hd_runtime.h"
 #include "servo_loop.h"
 
@@ -47,7 +49,7 @@ bool wait_for_servo(Done&& done) {
 
 class OpenHaptics {
  public:
-  static constexpr std::array kParams{
+  static constexpr std::array kParams = mhd::sdk::join(std::array{
       mhd::sdk::text("library", "libHD.so", "the OpenHaptics runtime to load (a name the loader finds, or a path)"),
       mhd::sdk::text("device", "default", "the device's name as configured in Touch_Setup; 'default' for the default"),
       mhd::sdk::number("command_timeout_s", "s", "0.01",
@@ -58,7 +60,12 @@ class OpenHaptics {
                        mhd::sdk::between(0.1, 1.0)),
       mhd::sdk::choice("calibration", "auto|refuse", "auto",
                        "auto: update a calibration the device can update itself; refuse: end the open instead"),
-  };
+      mhd::sdk::text("joint_state_topic", nullptr,
+                     "the ROS topic of the arm's sensor_msgs/JointState (none: not published); the DDS parameters "
+                     "below apply to it"),
+      mhd::sdk::number("joint_state_rate_hz", "Hz", "100", "how often the joint states are published",
+                       mhd::sdk::between(1, 1000)),
+  }, mhd::dds::kEndpointParams);
 
   OpenHaptics(const mhd_host& host, const mhd::sdk::Params& params)
       : host_(host), runtime_(load_hd(params.text("library"))), hd_(runtime_->calls()),
@@ -79,6 +86,11 @@ class OpenHaptics {
     }
     servo_ = std::make_unique<ServoLoop>(hd_, device_, params.number("command_timeout_s"),
                                          params.number("motor_temperature_limit"));
+    if (const auto topic = params.optional_text("joint_state_topic")) {
+      joints_ = std::make_unique<ArmJointPublisher>(
+          *servo_, mhd::dds::read_endpoint(params, host.scene_file),
+          mhd::dds::checked_ros_name("joint_state_topic", *topic), params.number("joint_state_rate_hz"));
+    }
   }
   OpenHaptics(const OpenHaptics&) = delete;
   OpenHaptics& operator=(const OpenHaptics&) = delete;
@@ -103,6 +115,7 @@ class OpenHaptics {
     hd_.hdEnable(hd::kForceOutput);
     check("hdEnable(HD_FORCE_OUTPUT)");
     servo_->arm(true);
+    if (joints_) joints_->start();
   }
 
   /// Zero force in a servo frame, force output off, the servo loop and scheduler ended.
@@ -134,9 +147,10 @@ class OpenHaptics {
   }
 
   std::size_t counters(std::span<mhd_counter> out) const {
-    const std::array<mhd_counter, 2> all{
+    const std::array<mhd_counter, 3> all{
         mhd_counter{"servo_frames", servo_->state().frame},
         mhd_counter{"stale_command_frames", servo_->stale_command_frames()},
+        mhd_counter{"joint_states_published", joints_ ? joints_->published() : 0},
     };
     for (std::size_t i = 0; i < out.size() && i < all.size(); ++i) out[i] = all[i];
     return all.size();
@@ -253,6 +267,7 @@ class OpenHaptics {
   /// Disarms the servo loop, waits for a zero-force frame, then turns force output off
   /// and ends the loop and the scheduler. Says whether a zero frame was rendered.
   bool end_servo_loop() noexcept {
+    if (joints_) joints_->stop();
     if (!scheduler_running_) return true;
     bool zero_rendered = true;
     if (servo_scheduled_) {
@@ -276,6 +291,7 @@ class OpenHaptics {
   std::string model_;
   mhd_device_info info_{};
   std::unique_ptr<ServoLoop> servo_;
+  std::unique_ptr<ArmJointPublisher> joints_;  ///< null: no joint_state_topic
   HDSchedulerHandle servo_handle_ = 0;
   bool scheduler_running_ = false;
   bool servo_scheduled_ = false;

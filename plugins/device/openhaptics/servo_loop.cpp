@@ -71,6 +71,8 @@ ServoLoop::Reading ServoLoop::read_tool() const noexcept {
   hd_.hdGetDoublev(hd::kCurrentTransform, transform.data());
   hd_.hdGetIntegerv(hd::kCurrentButtons, &buttons);
   hd_.hdGetDoublev(hd::kMotorTemperature, r.motor_temperature.data());
+  hd_.hdGetDoublev(hd::kCurrentJointAngles, r.joint_angles_rad.data());
+  hd_.hdGetDoublev(hd::kCurrentGimbalAngles, r.joint_angles_rad.data() + 3);
   r.tool.q_D_wxyz = quaternion_of(transform);
   r.tool.buttons = static_cast<std::uint32_t>(buttons);
   r.finite = all_finite(r.tool.p_D_mm.data(), 3) && all_finite(r.tool.v_D_mm_s.data(), 3) &&
@@ -122,6 +124,16 @@ void ServoLoop::publish(const Reading& reading, double now_s) noexcept {
   state_.write({t.p_D_mm[0], t.p_D_mm[1], t.p_D_mm[2], t.v_D_mm_s[0], t.v_D_mm_s[1], t.v_D_mm_s[2], t.q_D_wxyz[0],
                 t.q_D_wxyz[1], t.q_D_wxyz[2], t.q_D_wxyz[3], static_cast<double>(t.buttons),
                 static_cast<double>(frames_), now_s});
+  const std::array<double, 6>& j = reading.joint_angles_rad;
+  joints_.write({j[0], j[1], j[2], j[3], j[4], j[5], static_cast<double>(frames_)});
+}
+
+ArmJoints ServoLoop::joints() const noexcept {
+  const std::array<double, 7> s = joints_.read();
+  ArmJoints out;
+  for (std::size_t i = 0; i < out.angles_rad.size(); ++i) out.angles_rad[i] = s[i];
+  out.frame = static_cast<std::uint64_t>(s[6]);
+  return out;
 }
 
 ToolState ServoLoop::state() const noexcept {

@@ -24,6 +24,13 @@ struct ToolState {
   double servo_time_s = 0.0; ///< steady clock at that frame
 };
 
+/// The arm's joints as the servo loop last read them: HD_CURRENT_JOINT_ANGLES, then
+/// HD_CURRENT_GIMBAL_ANGLES (zero on a device without gimbal encoders).
+struct ArmJoints {
+  std::array<double, 6> angles_rad{};
+  std::uint64_t frame = 0;  ///< the servo frame they are from; 0 before the first
+};
+
 enum class Fault : int { None = 0, DeviceError, NonFiniteReading, WarmMotors };
 
 class ServoLoop {
@@ -37,6 +44,7 @@ class ServoLoop {
 
   // ---- the haptic thread's side: lock-free, allocation-free -------------------------
   [[nodiscard]] ToolState state() const noexcept;
+  [[nodiscard]] ArmJoints joints() const noexcept;
   void command(const std::array<double, 3>& force_D_N) noexcept;
   [[nodiscard]] Fault fault() const noexcept { return static_cast<Fault>(fault_.load(std::memory_order_acquire)); }
   [[nodiscard]] HDErrorInfo fault_error() const noexcept;
@@ -60,6 +68,7 @@ class ServoLoop {
     ToolState tool;
     bool finite = true;  ///< position, velocity and transform
     std::array<double, hd::kMaxMotors> motor_temperature{};
+    std::array<double, 6> joint_angles_rad{};
   };
   HDCallbackCode frame() noexcept;
   Reading read_tool() const noexcept;
@@ -75,6 +84,7 @@ class ServoLoop {
 
   mhd::realtime::Seqlock<13> state_;   ///< p, v, q, buttons, frame, time
   mhd::realtime::Seqlock<4> command_;  ///< force, when written (steady clock)
+  mhd::realtime::Seqlock<7> joints_;   ///< joint and gimbal angles, frame
   std::atomic<bool> armed_{false};
   std::atomic<int> fault_{static_cast<int>(Fault::None)};
   std::atomic<unsigned> fault_code_{0};

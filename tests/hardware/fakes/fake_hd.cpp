@@ -28,6 +28,9 @@ namespace {
 
 constexpr double kWatchdogS = 0.02;
 constexpr double kMmPerM = 1000.0;
+/// The joint angles are a stand-in that moves with the tool; the gimbal stands still.
+constexpr double kJointRadPerM = 10.0;
+constexpr std::array<double, 3> kGimbalAngles_rad{0.1, 0.2, 0.3};
 
 /// The simulated device and the driver's state.
 struct Device : mhd::fake::FakeBase {
@@ -198,6 +201,12 @@ FAKE_HD_EXPORT void hdGetDoublev(HDenum parameter, double* values) {
       return;
     case hd::kMotorTemperature:
       std::fill(values, values + hd::kMaxMotors, d.config.fault == Fault::WarmMotors && d.struck() ? 0.95 : 0.2);
+      return;
+    case hd::kCurrentJointAngles:  // a stand-in that moves with the tool: 10 rad per metre
+      for (std::size_t i = 0; i < 3; ++i) values[i] = d.hand.p_m()[i] * kJointRadPerM;
+      return;
+    case hd::kCurrentGimbalAngles:
+      std::copy(kGimbalAngles_rad.begin(), kGimbalAngles_rad.end(), values);
       return;
     default:
       d.raise(hd::kInvalidEnum);
