@@ -360,4 +360,36 @@ TEST(InterSense, GoodParametersAreAcceptedWithoutTheRuntime) {
   EXPECT_EQ(exit_status(mhd), 0) << mhd.output();
 }
 
+// ---- mhd devices --trackers ---------------------------------------------------------------
+
+/// `mhd devices` with `flags`, the fake installed or not; its output.
+std::string devices_output(const fs::path& dir, const std::vector<std::string>& flags, bool installed) {
+  std::vector<std::string> argv{MHD_CLI, "devices", "--plugin-path", MHD_SIM_PLUGIN_DIR};
+  argv.insert(argv.end(), flags.begin(), flags.end());
+  MhdRunProcess mhd({.argv = argv,
+                     .dir = dir,
+                     .env = {{"LD_LIBRARY_PATH", installed ? MHD_FAKE_ISENSE_DIR : dir.string()},
+                             {"MHD_FAKE_LOG", (dir / "isense.csv").string()}}});
+  EXPECT_EQ(exit_status(mhd), 0) << mhd.output();
+  return mhd.output();
+}
+
+TEST(InterSense, MhdDevicesWithTrackersSaysTheTrackerAnswersAndReleasesIt) {
+  const fs::path dir = fresh_dir("devices");
+  const std::string out = devices_output(dir, {"--trackers"}, true);
+  EXPECT_TRUE(has(out, "libmhd_intersense.so\n  found: it opened with its default parameters\n"
+                       "  <plugin kind=\"tracker\" name=\"intersense\"/>"))
+      << out;
+  EXPECT_EQ(rows_of(dir / "isense.csv", "open").size(), 1u);
+  EXPECT_EQ(rows_of(dir / "isense.csv", "close").size(), 1u);
+  EXPECT_TRUE(rows_of(dir / "isense.csv", "record").empty()) << "asked, never read";
+}
+
+TEST(InterSense, MhdDevicesNamesAMissingRuntimeAndAsksTrackersOnlyWhenTold) {
+  const fs::path dir = fresh_dir("devices_missing");
+  const std::string out = devices_output(dir, {"--trackers"}, false);
+  EXPECT_TRUE(has(out, "  no tracker: open failed: cannot load the InterSense SDK 'libisense.so'")) << out;
+  EXPECT_FALSE(has(devices_output(dir, {}, true), "intersense")) << "asked without --trackers";
+}
+
 }  // namespace
