@@ -42,6 +42,10 @@ void get_doublev(HDenum parameter, double* values) {
     case hd::kMotorTemperature:
       for (int i = 0; i < hd::kMaxMotors; ++i) values[i] = g_stub.motor_temperature;
       return;
+    case hd::kCurrentJointAngles:  // every angle the frame count: a torn read would mix two
+    case hd::kCurrentGimbalAngles:
+      for (std::size_t i = 0; i < 3; ++i) values[i] = static_cast<double>(g_stub.frames);
+      return;
     default:
       return;
   }
@@ -157,9 +161,18 @@ TEST_F(ServoLoopTest, TheTransformsRotationBecomesAUnitQuaternion) {
   EXPECT_NEAR(s.q_D_wxyz[3], 0.0, 1e-12);
 }
 
+TEST_F(ServoLoopTest, TheJointAnglesArePublishedWithTheirFrame) {
+  EXPECT_EQ(loop.joints().frame, 0u);
+  frame();
+  frame();
+  const ArmJoints j = loop.joints();
+  EXPECT_EQ(j.frame, 2u);
+  for (const double a : j.angles_rad) EXPECT_EQ(a, 1.0);  // read before the second frame ended
+}
+
 // Both sides at full speed: the servo thread renders only forces that were commanded
 // whole (each command is (k, k, k): a torn one would mix two), and the haptic side sees
-// frame numbers that never go back.
+// frame numbers that never go back, and joint angles read whole (a display's thread).
 TEST_F(ServoLoopTest, BothThreadsAtFullSpeedNeverTearAForceOrGoBack) {
   loop.arm(true);
   std::atomic<bool> stop{false};
@@ -173,17 +186,21 @@ TEST_F(ServoLoopTest, BothThreadsAtFullSpeedNeverTearAForceOrGoBack) {
   });
   std::uint64_t last_frame = 0;
   int went_back = 0;
+  int torn_joints = 0;
   const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(300);
   for (double k = 1.0; std::chrono::steady_clock::now() < end; k += 1.0) {
     loop.command({k, k, k});
     const ToolState s = loop.state();
     if (s.frame < last_frame) ++went_back;
     last_frame = s.frame;
+    const ArmJoints j = loop.joints();
+    for (const double a : j.angles_rad) torn_joints += a != j.angles_rad[0] ? 1 : 0;
   }
   stop.store(true);
   servo.join();
   EXPECT_EQ(torn.load(), 0);
   EXPECT_EQ(went_back, 0);
+  EXPECT_EQ(torn_joints, 0);
   EXPECT_GT(last_frame, 100u);
 }
 
