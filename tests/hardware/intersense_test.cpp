@@ -2,8 +2,7 @@
 // libisense (fakes/fake_isense.cpp: a simulated IS-900 on the POMHI rig's ceiling), judged
 // from the hardware's side: what the simulated base and device received last (base.csv,
 // device.csv) and the fake's log of what the tracker was asked (isense.csv).
-#include "command_log_file.h"
-#include "support/mhd_run_process.h"
+#include "hardware_run.h"
 
 #include <gtest/gtest.h>
 
@@ -26,17 +25,9 @@ namespace {
 namespace fs = std::filesystem;
 using mhd::test::CommandLogRow;
 using mhd::test::MhdRunProcess;
-using mhd::test::read_command_log;
+using namespace mhd::test::hardware;
 
-constexpr int kExitFault = 3;
-constexpr int kExitLastGasp = 4;
-
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("mhd_intersense_" + std::to_string(::getpid())) / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path fresh_dir(const std::string& name) { return mhd::test::hardware::fresh_dir("intersense", name); }
 
 /// tests/data/hardware/intersense_mobile.xml in `dir`, with tracker parameters and extra
 /// plugins put in.
@@ -73,34 +64,10 @@ MhdRunProcess run(const fs::path& dir, double duration_s, const Fake& fake = {},
                                 {"MHD_FAKE_FAULT_AFTER_S", std::to_string(fake.fault_after_s)}}});
 }
 
-int exit_status(MhdRunProcess& process, std::chrono::seconds timeout = std::chrono::seconds(30)) {
-  const auto status = process.wait_for(timeout);
-  if (!status) return -1;
-  if (!WIFEXITED(*status)) return 1000 + WTERMSIG(*status);
-  return WEXITSTATUS(*status);
-}
-
-std::vector<CommandLogRow> log_of(const fs::path& file) {
-  return fs::exists(file) ? read_command_log(file) : std::vector<CommandLogRow>{};
-}
-
-std::vector<CommandLogRow> rows_of(const fs::path& file, const std::string& event) {
-  std::vector<CommandLogRow> out;
-  for (const CommandLogRow& r : log_of(file)) {
-    if (r.event == event) out.push_back(r);
-  }
-  return out;
-}
-
 /// The hardware's view of a safe end: the base's and the device's last commands are zero.
 void expect_base_and_device_left_still(const fs::path& dir, const std::string& output) {
-  for (const char* file : {"base.csv", "device.csv"}) {
-    const auto commands = rows_of(dir / file, "command");
-    ASSERT_FALSE(commands.empty()) << file << "\n" << output;
-    EXPECT_TRUE(commands.back().is_zero()) << file << " last command " << commands.back().values[0] << " "
-                                           << commands.back().values[1] << " " << commands.back().values[2] << "\n"
-                                           << output;
-  }
+  expect_last_command_zero(dir / "base.csv", output);
+  expect_last_command_zero(dir / "device.csv", output);
 }
 
 double largest_force_N(const fs::path& dir) {
@@ -110,16 +77,6 @@ double largest_force_N(const fs::path& dir) {
   }
   return largest;
 }
-
-/// The run's ticks with force faded for stale tracking ("safety: ..., N stale"); -1 if not said.
-int stale_ticks(const std::string& output) {
-  int stale = -1;
-  const std::size_t at = output.find("start-up, ");
-  if (at != std::string::npos && std::sscanf(output.c_str() + at, "start-up, %d stale", &stale) != 1) stale = -1;
-  return stale;
-}
-
-bool has(const std::string& output, const std::string& text) { return output.find(text) != std::string::npos; }
 
 // ---- tracking ---------------------------------------------------------------------------
 

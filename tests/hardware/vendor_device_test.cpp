@@ -2,8 +2,7 @@
 // through the real dlopen path, each against a fake of its vendor library (fakes/), judged
 // from the hardware's side: the fake's log of every force its motors gave, force output
 // switched on and off, and the device's own watchdog.
-#include "command_log_file.h"
-#include "support/mhd_run_process.h"
+#include "hardware_run.h"
 
 #include <gtest/gtest.h>
 
@@ -30,8 +29,9 @@ using mhd::test::CommandLogRow;
 using mhd::test::MhdRunProcess;
 using mhd::test::read_command_log;
 
-constexpr int kExitFault = 3;
-constexpr int kExitLastGasp = 4;
+using mhd::test::hardware::exit_status;
+using mhd::test::hardware::kExitFault;
+using mhd::test::hardware::kExitLastGasp;
 
 /// A backend and its fake.
 struct Backend {
@@ -145,13 +145,6 @@ MhdRunProcess run(const Backend& b, const fs::path& dir, double duration_s, cons
                                 {"MHD_FAKE_MAX_FORCE_N", fake.max_force_N.empty() ? b.max_force_N : fake.max_force_N},
                                 {"MHD_FAKE_WORKSPACE_MM", fake.workspace_mm},
                                 {"MHD_FAKE_MODEL", fake.model}}});
-}
-
-int exit_status(MhdRunProcess& process, std::chrono::seconds timeout = std::chrono::seconds(20)) {
-  const auto status = process.wait_for(timeout);
-  if (!status) return -1;
-  if (!WIFEXITED(*status)) return 1000 + WTERMSIG(*status);
-  return WEXITSTATUS(*status);
 }
 
 std::vector<CommandLogRow> log_of(const fs::path& dir) {
