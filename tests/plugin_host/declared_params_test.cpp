@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <cstdlib>
@@ -149,7 +150,11 @@ TEST(DeclaredParams, EveryNumberHasTwoBoundsAndTheEnvelopeIsJudgedByThemAlikeAtO
         if (std::string_view(d.name) == "hand_mass_kg" || std::string_view(d.name) == "hand_damping_Ns_per_m") {
           params.emplace("hand_model", "impedance");
         }
-        if (std::string_view(d.name) == "head_sensor_id") params.emplace("base_sensor_id", "7");
+        // ros2_pose's two sensor ids must differ (openxr has the head's only).
+        const bool has_base_sensor = std::any_of(api.params, api.params + api.param_count, [](const mhd_param_decl& p) {
+          return std::string_view(p.name) == "base_sensor_id";
+        });
+        if (std::string_view(d.name) == "head_sensor_id" && has_base_sensor) params.emplace("base_sensor_id", "7");
         const PluginDescription description = describe_plugin(info.kind, info.name, params);
         const Status<PluginError> checked = check_scene_plugin(search, description);
         EXPECT_EQ(checked.ok(), expected) << info.name << ": '" << d.name << "' = '" << value << "'";
