@@ -13,11 +13,13 @@
 #include <time.h>
 
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <deque>
 #include <memory>
 #include <mutex>
+#include <thread>
 #include <string_view>
 
 namespace mhd::fake_openxr {
@@ -197,9 +199,13 @@ XRAPI_ATTR XrResult XRAPI_CALL destroy_space(XrSpace space) {
 XRAPI_ATTR XrResult XRAPI_CALL locate_space(XrSpace space, XrSpace base, XrTime time, XrSpaceLocation* location) {
   if (g_runtime == nullptr || space == XR_NULL_HANDLE || base == XR_NULL_HANDLE) return XR_ERROR_HANDLE_INVALID;
   if (time <= 0) return XR_ERROR_TIME_INVALID;
-  const std::lock_guard lock(g_runtime->mutex);
+  std::unique_lock lock(g_runtime->mutex);
   const SimulatedHeadset& headset = g_runtime->headset;
   if (headset.fault() == Fault::SessionLost && headset.struck()) return XR_ERROR_SESSION_LOST;
+  if (headset.fault() == Fault::Hang && headset.struck()) {
+    lock.unlock();
+    for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));
+  }
   const XrSpaceLocation now = headset.locate();
   location->locationFlags = now.locationFlags;
   location->pose = now.pose;

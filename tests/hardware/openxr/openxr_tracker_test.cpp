@@ -242,6 +242,17 @@ TEST(OpenXrTracker, ALostSessionEndsTheRunNamedWithTheBaseStopped) {
   EXPECT_EQ(events.back(), "destroy_instance") << joined(events);
 }
 
+TEST(OpenXrTracker, ARuntimeCallThatNeverReturnsEndsTheRunByTheWatchdog) {
+  const fs::path dir = fresh_dir("hang");
+  write_scene(dir);
+  MhdRunProcess mhd = run(dir, 30.0, Fake{.fault = "hang", .fault_after_s = 1.0});
+  EXPECT_EQ(exit_status(mhd), kExitFault) << mhd.output();
+  EXPECT_TRUE(has(mhd.output(), "tracker_read has not returned")) << mhd.output();
+  EXPECT_TRUE(has(mhd.output(), "safe state: zero force sent, base stopped")) << mhd.output();
+  EXPECT_FALSE(rows_of(dir / "headset.csv", "locate").empty()) << "never tracked: " << mhd.output();
+  expect_base_stopped(dir, mhd.output());
+}
+
 struct DroppedCase {
   const char* fault;
   const char* says;      ///< the plugin's counter in the run's summary

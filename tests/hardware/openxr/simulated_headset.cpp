@@ -25,6 +25,7 @@ Fault fault_from(const std::string& name) {
   if (name == "nan_pose") return Fault::NanPose;
   if (name == "session_lost") return Fault::SessionLost;
   if (name == "no_system") return Fault::NoSystem;
+  if (name == "hang") return Fault::Hang;
   std::fprintf(stderr, "fake OpenXR runtime: unknown MHD_FAKE_FAULT '%s'\n", name.c_str());
   std::abort();
 }

@@ -6,8 +6,9 @@
 //   MHD_FAKE_LOG            the log file (none: no log); "t_s,event,a,b,c" lines, each
 //                           written at once with write(2), t_s the steady clock, as the
 //                           other fakes' (tests/hardware/fakes/fake_hardware.h)
-//   MHD_FAKE_FAULT          none|tracking_lost|nan_pose|session_lost|no_system
-//   MHD_FAKE_FAULT_AFTER_S  when tracking_lost, nan_pose and session_lost strike, after
+//   MHD_FAKE_FAULT          none|tracking_lost|nan_pose|session_lost|no_system|hang
+//                           (hang: xrLocateSpace never returns, a runtime stuck in a lock)
+//   MHD_FAKE_FAULT_AFTER_S  when tracking_lost, nan_pose, session_lost and hang strike, after
 //                           the session began (default 1)
 //   MHD_FAKE_HEAD_M         the head's mean position "x y z" in the base space (default
 //                           the POMHI rig's tracker frame: 1.65 m up, 0.9 m in front of
@@ -23,7 +24,7 @@
 
 namespace mhd::fake_openxr {
 
-enum class Fault { None, TrackingLost, NanPose, SessionLost, NoSystem };
+enum class Fault { None, TrackingLost, NanPose, SessionLost, NoSystem, Hang };
 
 double now_s();
 
