@@ -8,6 +8,7 @@
 #include "dds_common/ros2_messages.h"
 #include "dds_common/ros2_topics.h"
 #include "dds_test_support.h"
+#include "hardware_run.h"
 #include "support/mhd_run_process.h"
 
 #include <gtest/gtest.h>
@@ -16,6 +17,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <csignal>
 #include <atomic>
 #include <chrono>
 #include <cstdint>
@@ -96,6 +98,70 @@ TEST(Ros2Pose, TheMocapsBasePoseIsMhdsBaseEstimate) {
   // Every pose the mocap published was taken (the base stops once, before the first).
   EXPECT_NE(mhd.output().find(" samples, 0 dropped;"), std::string::npos) << mhd.output();
 }
+
+/// How a run with the mocap tracker ends: by a signal 2 s in, or by what the scene makes
+/// happen (a crashing display, a base driver call that hangs).
+struct MocapEndCase {
+  const char* name;
+  int signal;        ///< 0: none
+  int status;        ///< the exit status
+  const char* from;  ///< put `to` there in the scene
+  const char* to;
+  const char* says;
+};
+
+class Ros2PoseEnd : public ::testing::TestWithParam<MocapEndCase> {};
+
+TEST_P(Ros2PoseEnd, TheArmIsLeftWithZeroForceAndTheBaseStopped) {
+  namespace hw = mhd::test::hardware;
+  const MocapEndCase c = GetParam();
+  const std::uint32_t domain = mhd::dds::test::use_loopback_and_unique_domain(14);
+  const fs::path dir = hw::fresh_dir("ros2_pose_end", c.name);
+  std::vector<std::pair<std::string, std::string>> fills{
+      {"value=\"DOMAIN\"", "value=\"" + std::to_string(domain) + "\""}};
+  if (c.from != nullptr) fills.emplace_back(c.from, c.to);
+  std::ofstream(dir / "scene.xml") << mhd::test::fill_scene_template(
+      fs::path(MHD_SOURCE_DIR) / "tests/data/hardware/ros2_pose.xml", fills);
+  FakeMocap mocap(domain, "mocap");
+  mhd::test::MhdRunProcess mhd({.argv = {MHD_CLI, "run", (dir / "scene.xml").string(), "--duration", "30", "-q",
+                                         "--plugin-path", MHD_FAULT_INJECTION_PLUGIN_DIR, "--plugin-path",
+                                         MHD_SIM_PLUGIN_DIR},
+                                .dir = dir});
+  if (c.signal != 0) {
+    std::this_thread::sleep_for(std::chrono::seconds(2));
+    mhd.signal(c.signal);
+  }
+  EXPECT_EQ(hw::exit_status(mhd), c.status) << mhd.output();
+  EXPECT_TRUE(hw::has(mhd.output(), c.says)) << mhd.output();
+  // The mocap's base pose was taken before the end: the base estimate moved off the start.
+  EXPECT_FALSE(hw::has(mhd.output(), "tracker: 0 samples")) << mhd.output();
+  hw::expect_last_command_zero(dir / "device.csv", mhd.output());
+  // A base driver stuck for good gets no further command: its own command timeout must
+  // stop it (docs/reliability.md, the fault matrix), and the run says so.
+  if (c.from != nullptr && std::string(c.to).find("fi_omni3") != std::string::npos) {
+    EXPECT_TRUE(hw::has(mhd.output(), "BASE STOP NOT CONFIRMED")) << mhd.output();
+  } else {
+    hw::expect_last_command_zero(dir / "base.csv", mhd.output());
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Ros2Pose, Ros2PoseEnd,
+    ::testing::Values(
+        MocapEndCase{"SIGINT", SIGINT, 0, nullptr, nullptr, "stopped by SIGINT"},
+        MocapEndCase{"SIGTERM", SIGTERM, 0, nullptr, nullptr, "stopped by SIGTERM"},
+        MocapEndCase{"SIGHUP", SIGHUP, 128 + SIGHUP, nullptr, nullptr, "stopped by SIGHUP"},
+        // fi_crash's 150th frame: 2.5 s in, at 60 Hz.
+        MocapEndCase{"crashed_plugin", 0, 4, "<!--EXTRA-->",
+                "<plugin kind=\"display\" name=\"fi_crash\"><param name=\"crash\" value=\"abort\"/>"
+                "<param name=\"crash_on_call\" value=\"150\"/></plugin>",
+                "last gasp: zero torque sent, base stop sent"},
+        // The base's driver hangs 2 s in: the call watchdog ends the run with zero force.
+        MocapEndCase{"watchdog", 0, 3, "<plugin kind=\"base\" name=\"sim_omni3\">",
+                     "<plugin kind=\"base\" name=\"fi_omni3\"><param name=\"fault\" value=\"hang\"/>"
+                     "<param name=\"fault_call\" value=\"base_read\"/><param name=\"fault_after_s\" value=\"2\"/>",
+                     "base_read has not returned"}),
+    [](const auto& param_info) { return std::string(param_info.param.name); });
 
 /// The plugin opened alone; reads for `duration`, then its counters by name.
 std::map<std::string, std::uint64_t> read_alone(std::uint32_t domain, std::chrono::milliseconds duration,
