@@ -13,8 +13,29 @@
 
 namespace mhd {
 
+namespace {
+
+/// The rig's problems as diagnostics, at their lines (the scene file's when they have none).
+Diagnostics rig_problems(const SceneDescription& scene) {
+  Diagnostics errors;
+  const Result<Rig, std::vector<RigError>> rig = Rig::from_scene(scene);
+  if (rig.ok()) return errors;
+  for (const RigError& e : rig.error()) {
+    errors.push_back({e.where.file.empty() ? SourceLocation{scene.file.string(), 0} : e.where, e.message});
+  }
+  return errors;
+}
+
+}  // namespace
+
 Diagnostics check_scene_settings(const SceneDescription& scene) {
   Diagnostics errors = server_settings_from(scene).diagnostics();
+  // A lift is judged against the rig that carries it (its axis must be vertical), so a
+  // scene with one has its rig checked here, by validate too; run checks every rig.
+  if (scene.rig_lift) {
+    const Diagnostics rig = rig_problems(scene);
+    errors.insert(errors.end(), rig.begin(), rig.end());
+  }
   // The simulated plugins run the scene's <simulated_user> (libs/sim_world); its
   // errors still refuse the run here, at their lines, before any plugin opens.
   if (scene.simulated_user) {
@@ -39,13 +60,9 @@ Diagnostics check_scene_for_validate(const SceneDescription& scene, const Plugin
 
 Diagnostics check_scene_for_run(const SceneDescription& scene, bool custom_planner) {
   Diagnostics errors = check_scene_settings(scene);
-  const SourceLocation scene_where{scene.file.string(), 0};
   const auto add = [&errors](const Diagnostics& more) { errors.insert(errors.end(), more.begin(), more.end()); };
-
-  Result<Rig, std::vector<RigError>> rig = Rig::from_scene(scene);
-  if (!rig.ok()) {
-    for (const RigError& e : rig.error()) errors.push_back({e.where.file.empty() ? scene_where : e.where, e.message});
-  }
+  if (!scene.rig_lift) add(rig_problems(scene));  // with a lift, check_scene_settings did
+  const Result<Rig, std::vector<RigError>> rig = Rig::from_scene(scene);
 
   // One device, one tracker, at most one base.
   const PluginDescription* device = nullptr;

@@ -58,7 +58,16 @@ std::string RigError::to_string() const {
 }
 
 Result<Rig, std::vector<RigError>> Rig::from_scene(const SceneDescription& scene, const PhantomModel& device) {
-  if (scene.rig_kind.kind == RigKind::Mobile) return from_frames(scene.rig_frames, device);
+  if (scene.rig_kind.kind == RigKind::Mobile) {
+    auto rig = from_frames(scene.rig_frames, device);
+    if (!rig || !scene.rig_lift) return rig;
+    return std::move(rig).value().with_lift(*scene.rig_lift);
+  }
+  if (scene.rig_lift) {
+    return std::vector<RigError>{{RigErrorKind::LiftOnDesktop, "lift",
+                                  "a desktop rig has no base to carry a <lift>: use a mobile rig",
+                                  scene.rig_lift->where}};
+  }
   for (const FrameDescription& frame : scene.rig_frames) {
     if (frame.name == "device" && frame.parent == "world") return desktop(frame.X_PF, device);
   }
@@ -148,31 +157,56 @@ BasePose Rig::base_from_sensor(const Pose& X_is900_base_sensor) const noexcept {
   return base_from_pose(X_W_robot_from_sensor(X_is900_base_sensor) * X_robot_base_);
 }
 
+Result<Rig, std::vector<RigError>> Rig::with_lift(const LiftDescription& lift) && {
+  // The lift moves the arm along the robot's z: it must be world up, as the base's y is.
+  const Eigen::Vector3d z_W = (X_W_robot_from_sensor(X_is900_base_sensor_nominal_).linear() * Eigen::Vector3d::UnitZ());
+  const double tilt_rad = std::acos(std::clamp(z_W.dot(Eigen::Vector3d::UnitY()), -1.0, 1.0));
+  if (tilt_rad > kLevelTolerance_rad) {
+    return std::vector<RigError>{{RigErrorKind::LiftNotVertical, "lift",
+                                  concat("the lift moves the arm along the robot frame's z, which is ",
+                                         format_degrees(tilt_rad),
+                                         " degrees from world up with base_sensor at its nominal pose: turn the "
+                                         "'robot' frame so that its z is up"),
+                                  lift.where}};
+  }
+  lift_ = Lift{lift.min_m, lift.max_m, lift.max_speed_mps, lift.max_acceleration_mps2};
+  return std::move(*this);
+}
+
 Pose Rig::X_is900_base_sensor_from_base(const BasePose& base) const noexcept {
   return X_W_is900_.inverse(Eigen::Isometry) * X_W_robot_from_base(base) *
          X_base_sensor_robot_.inverse(Eigen::Isometry);
 }
 
-Pose Rig::X_W_phantom(const Pose& X_W_robot) const noexcept { return X_W_robot * X_robot_phantom_; }
-
-Pose Rig::X_W_tool(const Pose& X_W_robot, const Eigen::Vector3d& q_rad) const noexcept {
-  return X_W_phantom(X_W_robot) * phantom_tool_pose(device_.geometry, q_rad);
+Pose Rig::X_robot_phantom(double lift_m) const noexcept {
+  Pose X = X_robot_phantom_;
+  X.translation().z() += lift_m;
+  return X;
 }
 
-Eigen::Vector3d Rig::p_W_hip(const Pose& X_W_robot, const Eigen::Vector3d& q_rad) const noexcept {
-  return X_W_phantom(X_W_robot) * phantom_tool_position(device_.geometry, q_rad);
+Pose Rig::X_W_phantom(const Pose& X_W_robot, double lift_m) const noexcept {
+  return X_W_robot * X_robot_phantom(lift_m);
 }
 
-Eigen::Vector3d Rig::p_W_from_device(const Pose& X_W_robot, const Eigen::Vector3d& p_P_m) const noexcept {
-  return X_W_phantom(X_W_robot) * p_P_m;
+Pose Rig::X_W_tool(const Pose& X_W_robot, const Eigen::Vector3d& q_rad, double lift_m) const noexcept {
+  return X_W_phantom(X_W_robot, lift_m) * phantom_tool_pose(device_.geometry, q_rad);
+}
+
+Eigen::Vector3d Rig::p_W_hip(const Pose& X_W_robot, const Eigen::Vector3d& q_rad, double lift_m) const noexcept {
+  return X_W_phantom(X_W_robot, lift_m) * phantom_tool_position(device_.geometry, q_rad);
+}
+
+Eigen::Vector3d Rig::p_W_from_device(const Pose& X_W_robot, const Eigen::Vector3d& p_P_m,
+                                     double lift_m) const noexcept {
+  return X_W_phantom(X_W_robot, lift_m) * p_P_m;
 }
 
 Eigen::Vector3d Rig::force_P_from_W(const Pose& X_W_robot, const Eigen::Vector3d& force_W_N) const noexcept {
   return X_W_phantom(X_W_robot).linear().transpose() * force_W_N;
 }
 
-Eigen::Vector3d Rig::p_P_from_W(const Pose& X_W_robot, const Eigen::Vector3d& p_W) const noexcept {
-  return X_W_phantom(X_W_robot).inverse(Eigen::Isometry) * p_W;
+Eigen::Vector3d Rig::p_P_from_W(const Pose& X_W_robot, const Eigen::Vector3d& p_W, double lift_m) const noexcept {
+  return X_W_phantom(X_W_robot, lift_m).inverse(Eigen::Isometry) * p_W;
 }
 
 Eigen::Vector3d Rig::joint_torques_Nm(const Pose& X_W_robot, const Eigen::Vector3d& q_rad,

@@ -21,6 +21,12 @@
 // that ties the tracker path and the planar path together and catches axis mistakes.
 // scenes/rigs/pomhi.xml holds the thesis's rig; docs/kinematics.md derives it.
 //
+// A lift (scene <rig><lift range=... max_speed=... max_acceleration=.../>) is a prismatic
+// joint between robot and phantom along the robot's z, which must be vertical: at height
+// h the arm's frame is X_robot_phantom(h) = Translation(0, 0, h) X_robot_phantom(0), the
+// file's "phantom" frame being height 0. Functions that place the arm take the height
+// (lift_m, default 0: a rig without a lift is one whose lift stays at 0).
+//
 // A desktop rig (scene <rig kind="desktop">, docs/desktop.md) has no tracker and no base:
 // the device frame D (here called phantom, whatever the device) is fixed in the world at the
 // scene's frame "device", X_WD. Rig::desktop() makes it a chain whose base stands at the
@@ -58,6 +64,16 @@ enum class RigErrorKind {
   WrongParent,     ///< a required frame hangs from another parent than the chain needs
   BaseNotLevel,    ///< base's y axis is not world up (with base_sensor at its nominal pose)
   BaseNotOnFloor,  ///< base is not at y = 0 (likewise)
+  LiftNotVertical, ///< the lift's axis, the robot's z, is not world up (with base_sensor at its nominal pose)
+  LiftOnDesktop,   ///< a desktop rig has no base to carry a lift
+};
+
+/// The rig's lift, in SI units (scene/scene_description.h's LiftDescription, checked).
+struct Lift {
+  double min_m = 0.0;
+  double max_m = 0.0;
+  double max_speed_mps = 0.0;
+  double max_acceleration_mps2 = 0.0;
 };
 
 struct RigError {
@@ -81,8 +97,8 @@ class Rig {
   /// Builds the rig from the scene's frames; every problem is reported, not only the first.
   [[nodiscard]] static Result<Rig, std::vector<RigError>> from_frames(const std::vector<FrameDescription>& frames,
                                                   const PhantomModel& device = phantom_premium_1_5());
-  /// A mobile scene's frames through from_frames(); a desktop scene's "device" frame
-  /// through desktop().
+  /// A mobile scene's frames through from_frames(), then its lift (range, limits and a
+  /// vertical axis); a desktop scene's "device" frame through desktop(), refusing a lift.
   [[nodiscard]] static Result<Rig, std::vector<RigError>> from_scene(const SceneDescription& scene,
                                                  const PhantomModel& device = phantom_premium_1_5());
   /// A device fixed in the world at X_WD: X_W_robot_from_base(BasePose{}) is the identity.
@@ -97,6 +113,10 @@ class Rig {
   [[nodiscard]] const Pose& X_robot_phantom() const noexcept { return X_robot_phantom_; }
   [[nodiscard]] const Pose& X_robot_base() const noexcept { return X_robot_base_; }
   [[nodiscard]] const PhantomModel& device() const noexcept { return device_; }
+  /// The lift, if the rig has one.
+  [[nodiscard]] const std::optional<Lift>& lift() const noexcept { return lift_; }
+  /// The arm's frame P in the robot frame with the lift at `lift_m` (0: the file's frame).
+  [[nodiscard]] Pose X_robot_phantom(double lift_m) const noexcept;
 
   // Where the robot is: from a tracker measurement, or from a planar base pose.
   [[nodiscard]] Pose X_W_robot_from_sensor(const Pose& X_is900_base_sensor) const noexcept;
@@ -107,17 +127,20 @@ class Rig {
   [[nodiscard]] Pose X_is900_base_sensor_from_base(const BasePose& base) const noexcept;
 
   // From the robot's pose and the joint angles to the tool.
-  [[nodiscard]] Pose X_W_phantom(const Pose& X_W_robot) const noexcept;
-  [[nodiscard]] Pose X_W_tool(const Pose& X_W_robot, const Eigen::Vector3d& q_rad) const noexcept;
-  [[nodiscard]] Eigen::Vector3d p_W_hip(const Pose& X_W_robot, const Eigen::Vector3d& q_rad) const noexcept;
+  [[nodiscard]] Pose X_W_phantom(const Pose& X_W_robot, double lift_m = 0.0) const noexcept;
+  [[nodiscard]] Pose X_W_tool(const Pose& X_W_robot, const Eigen::Vector3d& q_rad, double lift_m = 0.0) const noexcept;
+  [[nodiscard]] Eigen::Vector3d p_W_hip(const Pose& X_W_robot, const Eigen::Vector3d& q_rad,
+                                        double lift_m = 0.0) const noexcept;
   /// A point the device reports in its frame P (a Cartesian device's tool, ABI 3) in the world.
-  [[nodiscard]] Eigen::Vector3d p_W_from_device(const Pose& X_W_robot, const Eigen::Vector3d& p_P_m) const noexcept;
+  [[nodiscard]] Eigen::Vector3d p_W_from_device(const Pose& X_W_robot, const Eigen::Vector3d& p_P_m,
+                                                double lift_m = 0.0) const noexcept;
   /// A force given in the world, in the device frame P (what a Cartesian device receives).
   /// Thesis ch. 5.2: with the base position-controlled and much heavier than the arm, the
   /// base's motion does not enter the force command.
   [[nodiscard]] Eigen::Vector3d force_P_from_W(const Pose& X_W_robot, const Eigen::Vector3d& force_W_N) const noexcept;
   /// A world point in the device frame P (e.g. the user's hand, for the simulated device's IK).
-  [[nodiscard]] Eigen::Vector3d p_P_from_W(const Pose& X_W_robot, const Eigen::Vector3d& p_W) const noexcept;
+  [[nodiscard]] Eigen::Vector3d p_P_from_W(const Pose& X_W_robot, const Eigen::Vector3d& p_W,
+                                           double lift_m = 0.0) const noexcept;
 
   /// Joint torques for a force on the tool given in the world: tau = J_P^T (R_W_P^T F_W).
   /// Thesis ch. 5.2: with the base position-controlled and much heavier than the arm, the
@@ -132,6 +155,8 @@ class Rig {
 
  private:
   Rig() = default;
+  /// This rig with `lift` (from_scene), or why it cannot carry it.
+  [[nodiscard]] Result<Rig, std::vector<RigError>> with_lift(const LiftDescription& lift) &&;
 
   RigKind kind_ = RigKind::Mobile;
   PhantomModel device_;
@@ -141,6 +166,7 @@ class Rig {
   Pose X_robot_phantom_ = Pose::Identity();
   Pose X_robot_base_ = Pose::Identity();
   Pose X_base_robot_ = Pose::Identity();  ///< inverse of X_robot_base_
+  std::optional<Lift> lift_;
 };
 
 }  // namespace mhd

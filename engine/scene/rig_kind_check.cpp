@@ -28,6 +28,10 @@ Diagnostics check_rig_kind(const SceneDescription& scene) {
                                   " (use <rig kind=\"mobile\">)"});
     }
   }
+  if (scene.rig_lift) {
+    out.push_back({scene.rig_lift->where, "<lift> in " + desktop_rig(declared) +
+                                              ": a desktop device has no base to carry a lift (use <rig kind=\"mobile\">)"});
+  }
   if (scene.planner) {
     out.push_back({scene.planner->where,
                    "<planner> in " + desktop_rig(declared) + ": there is no base to plan for (use <rig kind=\"mobile\">)"});

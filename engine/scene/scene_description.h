@@ -66,6 +66,17 @@ struct FrameDescription {
   SourceLocation where;
 };
 
+/// A vertical lift between the robot and the arm (<rig><lift .../>): a prismatic joint
+/// along the robot frame's z (up), whose height 0 is where the rig's "phantom" frame puts
+/// the arm. Heights, speed and acceleration in SI units.
+struct LiftDescription {
+  double min_m = 0.0;  ///< the lowest height, <= 0
+  double max_m = 0.0;  ///< the highest, >= 0 and > min_m
+  double max_speed_mps = 0.0;
+  double max_acceleration_mps2 = 0.0;
+  SourceLocation where;
+};
+
 /// What carries the device (docs/desktop.md). Mobile: the POSTECH rig, a tracker, a base
 /// and a planner (the frames of scenes/rigs/pomhi.xml). Desktop: a device fixed in the
 /// world and nothing else; the <rig> holds one frame, "device", parent "world".
@@ -121,6 +132,7 @@ struct SceneDescription {
   std::vector<ObjectDescription> objects;
   std::vector<FrameDescription> rig_frames;
   RigKindDeclaration rig_kind;
+  std::optional<LiftDescription> rig_lift;  ///< <rig><lift>: none, the arm at a fixed height
   std::vector<PluginDescription> plugins;
   SourceLocation plugins_where;  ///< the first <plugins>; empty file when there is none
   std::optional<ParamBlock> simulated_user;  ///< <simulated_user>: who drives simulated hardware

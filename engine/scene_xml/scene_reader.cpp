@@ -662,6 +662,10 @@ class SceneReader {
     AttributeParser rig_attributes(e, ctx.sink, {"kind"});
     read_rig_kind(rig_attributes, e, ctx);
     for_each_child(e, ctx.sink, [&](const tinyxml2::XMLElement& child) {
+      if (std::string_view(child.Name()) == "lift") {
+        read_lift(child, ctx);
+        return;
+      }
       if (std::string_view(child.Name()) != "frame") {
         report_unknown_element(child, e, ctx.sink);
         return;
@@ -683,6 +687,34 @@ class SceneReader {
       frame.parent = *parent;
       scene_.rig_frames.push_back(std::move(frame));
     });
+  }
+
+  /// <lift range="MIN MAX" max_speed="V" max_acceleration="A"/>, in the file's length unit
+  /// (per s, per s^2): one per scene. Whether it fits the rig is Rig::from_scene's to judge.
+  void read_lift(const tinyxml2::XMLElement& e, const FileContext& ctx) {
+    AttributeParser a(e, ctx.sink, {"range", "max_speed", "max_acceleration"});
+    expect_no_children(e, ctx.sink);
+    const SourceLocation where = ctx.sink.at(e.GetLineNum());
+    const auto range = a.numbers("range", Presence::Required, 2, Bound::Any);
+    const auto speed = a.number("max_speed", Presence::Required, Bound::Positive);
+    const auto acceleration = a.number("max_acceleration", Presence::Required, Bound::Positive);
+    if (scene_.rig_lift) {
+      ctx.sink.error(e.GetLineNum(), concat("a rig has one <lift> (the first is at ", scene_.rig_lift->where.file, ":",
+                                            std::to_string(scene_.rig_lift->where.line), ")"));
+      return;
+    }
+    if (!range || !speed || !acceleration) return;
+    if (!((*range)[0] <= 0.0 && (*range)[1] >= 0.0 && (*range)[0] < (*range)[1])) {
+      ctx.sink.error(a.line_of("range"),
+                     "lift range must be 'MIN MAX' with MIN <= 0 <= MAX and MIN < MAX: height 0 is where the "
+                     "'phantom' frame puts the arm");
+      return;
+    }
+    scene_.rig_lift = LiftDescription{.min_m = (*range)[0] * ctx.unit_to_m,
+                                      .max_m = (*range)[1] * ctx.unit_to_m,
+                                      .max_speed_mps = *speed * ctx.unit_to_m,
+                                      .max_acceleration_mps2 = *acceleration * ctx.unit_to_m,
+                                      .where = where};
   }
 
   /// <rig kind="mobile|desktop">: every <rig> that names a kind (across includes) must agree.
