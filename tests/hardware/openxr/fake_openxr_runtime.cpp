@@ -221,39 +221,43 @@ XRAPI_ATTR XrResult XRAPI_CALL convert_timespec(XrInstance instance, const times
   return XR_SUCCESS;
 }
 
-XRAPI_ATTR XrResult XRAPI_CALL result_to_string(XrInstance, XrResult value, char buffer[XR_MAX_RESULT_STRING_SIZE]) {
-  const char* name = nullptr;
-  switch (value) {
+/// `name` into the runtime's fixed-size `buffer`; a value with no name is refused.
+XrResult copy_name(const char* name, char* buffer, std::size_t size) {
+  if (name == nullptr) return XR_ERROR_VALIDATION_FAILURE;
+  std::strncpy(buffer, name, size - 1);
+  buffer[size - 1] = '\0';
+  return XR_SUCCESS;
+}
+
 #define MHD_FAKE_XR_NAME(n, v) \
   case n:                      \
-    name = #n;                 \
-    break;
+    return #n;
+
+const char* result_name(XrResult value) {
+  switch (value) {
     XR_LIST_ENUM_XrResult(MHD_FAKE_XR_NAME)
-#undef MHD_FAKE_XR_NAME
     default:
-      return XR_ERROR_VALIDATION_FAILURE;
+      return nullptr;
   }
-  std::strncpy(buffer, name, XR_MAX_RESULT_STRING_SIZE - 1);
-  buffer[XR_MAX_RESULT_STRING_SIZE - 1] = '\0';
-  return XR_SUCCESS;
+}
+
+const char* structure_type_name(XrStructureType value) {
+  switch (value) {
+    XR_LIST_ENUM_XrStructureType(MHD_FAKE_XR_NAME)
+    default:
+      return nullptr;
+  }
+}
+
+#undef MHD_FAKE_XR_NAME
+
+XRAPI_ATTR XrResult XRAPI_CALL result_to_string(XrInstance, XrResult value, char buffer[XR_MAX_RESULT_STRING_SIZE]) {
+  return copy_name(result_name(value), buffer, XR_MAX_RESULT_STRING_SIZE);
 }
 
 XRAPI_ATTR XrResult XRAPI_CALL structure_type_to_string(XrInstance, XrStructureType value,
                                                         char buffer[XR_MAX_STRUCTURE_NAME_SIZE]) {
-  const char* name = nullptr;
-  switch (value) {
-#define MHD_FAKE_XR_NAME(n, v) \
-  case n:                      \
-    name = #n;                 \
-    break;
-    XR_LIST_ENUM_XrStructureType(MHD_FAKE_XR_NAME)
-#undef MHD_FAKE_XR_NAME
-    default:
-      return XR_ERROR_VALIDATION_FAILURE;
-  }
-  std::strncpy(buffer, name, XR_MAX_STRUCTURE_NAME_SIZE - 1);
-  buffer[XR_MAX_STRUCTURE_NAME_SIZE - 1] = '\0';
-  return XR_SUCCESS;
+  return copy_name(structure_type_name(value), buffer, XR_MAX_STRUCTURE_NAME_SIZE);
 }
 
 template <class F>
