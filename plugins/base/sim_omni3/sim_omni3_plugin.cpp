@@ -85,7 +85,10 @@ class SimOmni3Plugin {
   void simulate_until(double t_s) {
     const bool was_commanded = !model_.watchdog_stopped();
     model_.simulate_until(t_s);
-    if (was_commanded && model_.watchdog_stopped()) {
+    // One command expires once: a second firing for the same command (the model re-armed
+    // and stopped again by a tick on the command's deadline) is not a second event.
+    if (was_commanded && model_.watchdog_stopped() && model_.command_time_s() != timed_out_command_s_) {
+      timed_out_command_s_ = model_.command_time_s();
       // The base's own watchdog fired: the last command expired command_timeout_s after it came.
       log_event(model_.command_time_s() + model_.config().command_timeout_s, CommandEvent::Timeout);
     }
@@ -132,6 +135,7 @@ class SimOmni3Plugin {
   std::shared_ptr<sim_world::SimSession> session_;
   Omni3Model model_;
   bool read_once_ = false;
+  double timed_out_command_s_ = -1.0;  ///< the command whose expiry was logged last
   double last_read_time_s_ = 0.0;
   std::unique_ptr<plugin_support::CommandLog> log_;  ///< written inside SDK calls only: one producer
 };

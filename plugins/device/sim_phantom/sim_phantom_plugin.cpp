@@ -119,7 +119,10 @@ class SimPhantomPlugin {
   void simulate_until(double t_s) {
     const bool was_commanded = !model_.watchdog_stopped();
     simulate(t_s);
-    if (was_commanded && model_.watchdog_stopped()) {
+    // One command expires once: a second firing for the same command (the model re-armed
+    // and stopped again by a tick on the command's deadline) is not a second event.
+    if (was_commanded && model_.watchdog_stopped() && model_.command_time_s() != timed_out_command_s_) {
+      timed_out_command_s_ = model_.command_time_s();
       // The device's own watchdog fired: the last torques expired command_timeout_s after they came.
       log_event(model_.command_time_s() + model_.config().command_timeout_s, CommandEvent::Timeout);
     }
@@ -157,6 +160,7 @@ class SimPhantomPlugin {
   Eigen::Vector3d rest_hand_P_m_;
   bool read_once_ = false;
   double last_read_time_s_ = 0.0;
+  double timed_out_command_s_ = -1.0;  ///< the command whose expiry was logged last
   Eigen::Vector3d last_read_p_P_m_ = Eigen::Vector3d::Zero();
   std::unique_ptr<plugin_support::CommandLog> log_;  ///< written inside SDK calls only: one producer
 };
