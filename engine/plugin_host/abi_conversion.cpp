@@ -70,6 +70,9 @@ void fields(A& a, C& c, F&& f) {
   f(a.vx_mps, c.vx_mps);
   f(a.vz_mps, c.vz_mps);
   f(a.omega_radps, c.omega_radps);
+  f(a.has_lift, c.has_lift);
+  f(a.lift_m, c.lift_m);
+  f(a.lift_vmps, c.lift_vmps);
 }
 
 template <class A, class C, class F>
@@ -79,6 +82,7 @@ void fields(A& a, C& c, F&& f) {
   f(a.vx_mps, c.vx_mps);
   f(a.vz_mps, c.vz_mps);
   f(a.omega_radps, c.omega_radps);
+  f(a.lift_vmps, c.lift_vmps);
 }
 
 template <class A, class C, class F>

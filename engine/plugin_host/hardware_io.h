@@ -59,12 +59,16 @@ struct BaseState {
   double timestamp_s = 0.0;
   double x_m = 0.0, z_m = 0.0, heading_rad = 0.0;
   double vx_mps = 0.0, vz_mps = 0.0, omega_radps = 0.0;  ///< in the world frame
+  bool has_lift = false;   ///< the base carries a lift, whose state the next two are
+  double lift_m = 0.0;     ///< the arm's height above the rig file's (Rig::X_robot_phantom)
+  double lift_vmps = 0.0;  ///< up positive
 };
 
 /// The base's velocity in its own frame (x forward, y up, z to the right).
 struct BaseCommand {
   double timestamp_s = 0.0;
   double vx_mps = 0.0, vz_mps = 0.0, omega_radps = 0.0;
+  double lift_vmps = 0.0;  ///< the lift's vertical speed, up positive (0: hold)
 };
 
 /// A snapshot of the rig for drawing, in the world frame.

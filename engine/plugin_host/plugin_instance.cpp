@@ -81,14 +81,17 @@ std::optional<std::string> non_finite_in(const BaseState& s) {
                            {"heading_rad", &s.heading_rad, 1},
                            {"vx_mps", &s.vx_mps, 1},
                            {"vz_mps", &s.vz_mps, 1},
-                           {"omega_radps", &s.omega_radps, 1}});
+                           {"omega_radps", &s.omega_radps, 1},
+                           {"lift_m", &s.lift_m, 1},
+                           {"lift_vmps", &s.lift_vmps, 1}});
 }
 
 std::optional<std::string> non_finite_in(const BaseCommand& c) {
   return first_non_finite({{"timestamp_s", &c.timestamp_s, 1},
                            {"vx_mps", &c.vx_mps, 1},
                            {"vz_mps", &c.vz_mps, 1},
-                           {"omega_radps", &c.omega_radps, 1}});
+                           {"omega_radps", &c.omega_radps, 1},
+                           {"lift_vmps", &c.lift_vmps, 1}});
 }
 
 std::optional<std::string> non_finite_in(const DisplayFrame& f) {

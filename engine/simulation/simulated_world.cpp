@@ -13,6 +13,11 @@ void SimulatedWorld::set_base_pose(const PlanarPose& pose) {
   base_.write({pose.x_m, pose.z_m, pose.heading_rad});
 }
 
+void SimulatedWorld::set_lift_m(double lift_m) {
+  const std::lock_guard lock(writer_mutex_);
+  lift_m_.write({lift_m});
+}
+
 HeadPose SimulatedWorld::head() const noexcept {
   const auto v = head_.read();
   return {Eigen::Vector3d(v[0], v[1], v[2]), Eigen::Quaterniond(v[3], v[4], v[5], v[6])};

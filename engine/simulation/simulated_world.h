@@ -39,6 +39,10 @@ class SimulatedWorld {
   [[nodiscard]] PlanarPose base_pose() const noexcept;
   void set_base_pose(const PlanarPose& pose);
 
+  /// The base's lift: the arm's height above the rig file's (0 on a base without one).
+  [[nodiscard]] double lift_m() const noexcept { return lift_m_.read()[0]; }
+  void set_lift_m(double lift_m);
+
   [[nodiscard]] HeadPose head() const noexcept;
   /// The quaternion is stored normalised.
   void set_head(const HeadPose& head);
@@ -52,6 +56,7 @@ class SimulatedWorld {
  private:
   std::mutex writer_mutex_;
   realtime::Seqlock<3> base_;      ///< x_m, z_m, heading_rad
+  realtime::Seqlock<1> lift_m_;
   realtime::Seqlock<7> head_;      ///< p_W_m, then q_W as w, x, y, z
   realtime::Seqlock<3> hand_W_m_;
   std::atomic<bool> hand_placed_{false};

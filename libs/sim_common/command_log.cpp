@@ -24,12 +24,15 @@ const char* to_text(CommandEvent e) {
 
 }  // namespace
 
-CommandLog::CommandLog(const std::string& path, const std::array<const char*, 3>& value_names) {
+CommandLog::CommandLog(const std::string& path, const char* const* value_names, std::size_t value_count)
+    : value_count_(value_count) {
   file_ = std::fopen(path.c_str(), "w");
   if (file_ == nullptr) {
     throw std::runtime_error("cannot write the command log '" + path + "': " + std::strerror(errno));
   }
-  std::fprintf(file_, "t_s,event,%s,%s,%s\n", value_names[0], value_names[1], value_names[2]);
+  std::fputs("t_s,event", file_);
+  for (std::size_t i = 0; i < value_count_; ++i) std::fprintf(file_, ",%s", value_names[i]);
+  std::fputc('\n', file_);
   std::fflush(file_);
   writer_ = std::thread([this] { writer_loop(); });
 }
@@ -39,21 +42,24 @@ CommandLog::~CommandLog() {
   writer_.join();
   write_queued();
   if (const std::uint64_t lost = dropped(); lost > 0) {
-    std::fprintf(file_, "0,dropped,%llu,0,0\n", static_cast<unsigned long long>(lost));
+    std::fprintf(file_, "0,dropped,%llu", static_cast<unsigned long long>(lost));
+    for (std::size_t i = 1; i < value_count_; ++i) std::fputs(",0", file_);
+    std::fputc('\n', file_);
   }
   std::fclose(file_);
 }
 
-void CommandLog::add(double t_s, CommandEvent event, const std::array<double, 3>& values) noexcept {
-  if (!ring_.push(Row{t_s, event, values})) dropped_.fetch_add(1, std::memory_order_relaxed);
+void CommandLog::push(const Row& row) noexcept {
+  if (!ring_.push(row)) dropped_.fetch_add(1, std::memory_order_relaxed);
 }
 
 void CommandLog::write_queued() {
   Row row;
   bool wrote = false;
   while (ring_.pop(row)) {
-    std::fprintf(file_, "%.6f,%s,%.9g,%.9g,%.9g\n", row.t_s, to_text(row.event), row.values[0], row.values[1],
-                 row.values[2]);
+    std::fprintf(file_, "%.6f,%s", row.t_s, to_text(row.event));
+    for (std::size_t i = 0; i < value_count_; ++i) std::fprintf(file_, ",%.9g", row.values[i]);
+    std::fputc('\n', file_);
     wrote = true;
   }
   if (wrote) std::fflush(file_);

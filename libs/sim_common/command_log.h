@@ -6,7 +6,7 @@
 //
 // File: the header "t_s,event,<value names>", then one row per event:
 //   start    the backend was started (values 0)
-//   command  a command as received (e.g. torques, or a base twist)
+//   command  a command as received (e.g. torques, or a base twist and lift speed)
 //   timeout  the backend's command watchdog fired: no command for command_timeout_s; t_s is
 //            when the last command expired, the values are what then acts (0)
 //   stop     the backend was stopped (values 0)
@@ -15,6 +15,7 @@
 #include "realtime/spsc_ring.h"
 
 #include <array>
+#include <cstddef>
 #include <atomic>
 #include <cstdint>
 #include <cstdio>
@@ -27,9 +28,14 @@ enum class CommandEvent : std::uint8_t { Start, Command, Timeout, Stop };
 
 class CommandLog {
  public:
+  static constexpr std::size_t kMaxValues = 4;
+
   /// Creates `path` (truncating it), writes the header and starts the writer thread.
   /// Throws std::runtime_error "cannot write the command log '<path>': <reason>".
-  CommandLog(const std::string& path, const std::array<const char*, 3>& value_names);
+  template <std::size_t N>
+    requires(N >= 1 && N <= kMaxValues)
+  CommandLog(const std::string& path, const std::array<const char*, N>& value_names)
+      : CommandLog(path, value_names.data(), N) {}
   /// Stops the writer, writes every queued row, flushes and closes the file.
   ~CommandLog();
   CommandLog(const CommandLog&) = delete;
@@ -38,19 +44,29 @@ class CommandLog {
   /// Real-time side: never blocks, allocates or does I/O. One producer at a time (the
   /// plugins call it inside SDK calls, which mhd/plugin_sdk.hpp runs one at a time). A
   /// full ring drops the row (counted).
-  void add(double t_s, CommandEvent event, const std::array<double, 3>& values) noexcept;
+  /// `values` has as many values as the log has names.
+  template <std::size_t N>
+    requires(N <= kMaxValues)
+  void add(double t_s, CommandEvent event, const std::array<double, N>& values) noexcept {
+    Row row{t_s, event, {}};
+    for (std::size_t i = 0; i < N; ++i) row.values[i] = values[i];
+    push(row);
+  }
   [[nodiscard]] std::uint64_t dropped() const noexcept { return dropped_.load(std::memory_order_relaxed); }
 
  private:
   struct Row {
     double t_s = 0.0;
     CommandEvent event = CommandEvent::Command;
-    std::array<double, 3> values{};
+    std::array<double, kMaxValues> values{};
   };
+  CommandLog(const std::string& path, const char* const* value_names, std::size_t value_count);
+  void push(const Row& row) noexcept;
   void write_queued();
   void writer_loop();
 
   std::FILE* file_ = nullptr;
+  std::size_t value_count_ = 0;
   realtime::SpscRing<Row> ring_{1 << 14};  // 16 s of 1 kHz commands
   std::atomic<std::uint64_t> dropped_{0};
   std::atomic<bool> stop_{false};

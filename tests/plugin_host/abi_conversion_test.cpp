@@ -89,13 +89,32 @@ TEST(AbiConversion, CommandsSamplesAndBaseStatesCrossBothWays) {
   EXPECT_EQ(from_abi(sample).q_T_wxyz[0], 10.0);
   EXPECT_TRUE(survives_the_round_trip(sample));
 
-  const mhd_base_state state{1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0};
+  // Zeroed whole, padding too, as to_abi makes them: the round trip compares bytes.
+  auto state = zeroed<mhd_base_state>();
+  next = 0.0;
+  for (double* field : {&state.timestamp_s, &state.x_m, &state.z_m, &state.heading_rad, &state.vx_mps, &state.vz_mps,
+                        &state.omega_radps}) {
+    *field = (next += 1.0);
+  }
+  state.has_lift = 1;
+  state.lift_m = 8.0;
+  state.lift_vmps = 9.0;
   EXPECT_EQ(from_abi(state).heading_rad, 4.0);
   EXPECT_EQ(from_abi(state).omega_radps, 7.0);
+  EXPECT_TRUE(from_abi(state).has_lift);
+  EXPECT_EQ(from_abi(state).lift_m, 8.0);
+  EXPECT_EQ(from_abi(state).lift_vmps, 9.0);
   EXPECT_TRUE(survives_the_round_trip(state));
+  // A base that leaves the lift fields as the host zeroed them has none.
+  auto no_lift = zeroed<mhd_base_state>();
+  no_lift.timestamp_s = 1.0;
+  no_lift.x_m = 2.0;
+  EXPECT_FALSE(from_abi(no_lift).has_lift);
+  EXPECT_TRUE(survives_the_round_trip(no_lift));
 
-  const mhd_base_command twist{1.0, 0.25, -0.5, 0.75};
+  const mhd_base_command twist{1.0, 0.25, -0.5, 0.75, -0.125};
   EXPECT_EQ(from_abi(twist).vz_mps, -0.5);
+  EXPECT_EQ(from_abi(twist).lift_vmps, -0.125);
   EXPECT_TRUE(survives_the_round_trip(twist));
 }
 

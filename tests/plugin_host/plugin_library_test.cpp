@@ -100,18 +100,18 @@ TEST(PluginLibrary, WrongAbiVersion) {
 
 /// `name`, a plugin of an older ABI `version`, is refused with the message that says so.
 void expect_refused_as_older(const char* name, int version) {
-  static_assert(MHD_PLUGIN_ABI_VERSION == 4u, "the refusal below names this host's version");
+  static_assert(MHD_PLUGIN_ABI_VERSION == 5u, "the refusal below names this host's version");
   const PluginError e = load_error(name);
   EXPECT_EQ(e.kind, PluginErrorKind::AbiVersionMismatch);
   EXPECT_EQ(e.to_string(), where(name) + "built for plugin ABI " + std::to_string(version) +
-                               ", this host speaks ABI 4: rebuild it against this MHD's "
-                               "mhd/plugin_abi.h (docs/plugins.md, \"Porting a plugin to ABI 4\")");
+                               ", this host speaks ABI 5: rebuild it against this MHD's "
+                               "mhd/plugin_abi.h (docs/plugins.md, \"Porting a plugin to ABI 5\")");
   EXPECT_FALSE(is_loaded(test_plugin(name)));
 }
 
 TEST(PluginLibrary, AnAbi2PluginIsRefusedNamingItsVersion) {
   // abi2_device is built against the frozen ABI 2 header and, as every v2 plugin does,
-  // returns NULL to a host that asks for version 4.
+  // returns NULL to a host that asks for a newer version.
   expect_refused_as_older("abi2_device", 2);
 }
 
@@ -119,6 +119,12 @@ TEST(PluginLibrary, AnAbi3PluginIsRefusedNamingItsVersion) {
   // A v3 plugin expects the simulated world in mhd_host, which ABI 4 took out: the host
   // never opens it.
   expect_refused_as_older("abi3_device", 3);
+}
+
+TEST(PluginLibrary, AnAbi4PluginIsRefusedNamingItsVersion) {
+  // A v4 base would leave the lift fields of ABI 5's base state and command unread: the
+  // host never opens a v4 plugin.
+  expect_refused_as_older("abi4_device", 4);
 }
 
 TEST(PluginLibrary, ADeclarationWhoseDefaultBreaksItsRangeIsABadTable) {

@@ -16,8 +16,9 @@ std::vector<CommandLogRow> read_command_log(const std::filesystem::path& file, s
   for (int number = 2; std::getline(in, line); ++number) {
     CommandLogRow row;
     char event[32] = {};
-    if (std::sscanf(line.c_str(), "%lf,%31[a-z_],%lf,%lf,%lf", &row.t_s, event, &row.values[0], &row.values[1],
-                    &row.values[2]) != 5) {
+    const int fields = std::sscanf(line.c_str(), "%lf,%31[a-z_],%lf,%lf,%lf,%lf", &row.t_s, event, &row.values[0],
+                                   &row.values[1], &row.values[2], &row.values[3]);
+    if (fields != 5 && fields != 6) {
       throw std::runtime_error(file.string() + ":" + std::to_string(number) + ": malformed row '" + line + "'");
     }
     row.event = event;

@@ -12,8 +12,10 @@ namespace mhd::test {
 struct CommandLogRow {
   double t_s = 0.0;
   std::string event;  ///< start, command, timeout, stop, dropped
-  std::array<double, 3> values{};
-  [[nodiscard]] bool is_zero() const { return values[0] == 0.0 && values[1] == 0.0 && values[2] == 0.0; }
+  std::array<double, 4> values{};  ///< three, or four for a base's log (its lift speed last)
+  [[nodiscard]] bool is_zero() const {
+    return values[0] == 0.0 && values[1] == 0.0 && values[2] == 0.0 && values[3] == 0.0;
+  }
 };
 
 /// Every row; `header` receives the first line. A malformed row throws std::runtime_error

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <unistd.h>
@@ -32,7 +33,7 @@ TEST(SimOmni3Plugin, OpenRejectsUnknownAndMalformedParameters) {
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"speed", "1"}}).error,
             "unknown parameter 'speed' (known: base_radius_m, wheel_radius_m, max_speed_mps, max_omega_degps, "
             "control_rate_hz, motor_time_constant_s, max_wheel_accel_mps2, slip_fraction, command_timeout_s, seed, x_m, "
-            "z_m, heading_deg, command_log)");
+            "z_m, heading_deg, command_log, lift, lift_min_m...)");  // cut at the ABI's message size
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"max_speed_mps", "fast"}}).error,
             "parameter 'max_speed_mps' must be a number in [0.001, 10] (m/s), got 'fast'");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"slip_fraction", "1.5"}}).error,
@@ -62,7 +63,7 @@ TEST(SimOmni3Plugin, DrivesTheBaseAndMovesItInTheSimulatedWorld) {
   // 10 Hz commands of 0.25 m/s ahead for 2 s, simulated at 100 Hz, then a stop.
   for (int k = 0; k <= 20; ++k) {
     h.now_s = 0.1 * k;
-    const mhd_base_command command{h.now_s, k < 20 ? 0.25 : 0.0, 0.0, 0.0};
+    const mhd_base_command command{h.now_s, k < 20 ? 0.25 : 0.0, 0.0, 0.0, 0.0};
     ASSERT_EQ(api.base_write(base, &command, &err), MHD_OK) << err.message;
     for (int i = 1; i <= 10; ++i) ASSERT_EQ(api.simulate_until(base, 0.1 * k + 0.01 * i, &err), MHD_OK);
   }
@@ -76,13 +77,69 @@ TEST(SimOmni3Plugin, DrivesTheBaseAndMovesItInTheSimulatedWorld) {
   EXPECT_EQ(world_base.x_m, state.x_m);
   EXPECT_EQ(world_base.z_m, state.z_m);
 
-  const mhd_base_command bad{0.0, std::nan(""), 0.0, 0.0};
+  const mhd_base_command bad{0.0, std::nan(""), 0.0, 0.0, 0.0};
   EXPECT_EQ(api.base_write(base, &bad, &err), MHD_ERROR);
   EXPECT_STREQ(err.message, "base command has a non-finite value");
 
   ASSERT_EQ(api.stop(base, &err), MHD_OK);
   EXPECT_EQ(api.base_read(base, &state, &err), MHD_ERROR);
   EXPECT_STREQ(err.message, "sim_omni3 is not started");
+  api.close(base);
+}
+
+TEST(SimOmni3Plugin, ABaseHasNoLiftUnlessAskedAndDrivesTheOneItHas) {
+  const PluginFile file(MHD_SIM_OMNI3_PLUGIN);
+  const mhd_plugin_api& api = file.api();
+  FakeHost h;
+  {
+    const Opened plain = open_plugin(api, h.host, {{"lift_min_m", "-0.3"}});  // a range alone is no lift
+    ASSERT_NE(plain.instance, nullptr) << plain.error;
+    mhd_error err{};
+    ASSERT_EQ(api.start(plain.instance, &err), MHD_OK) << err.message;
+    mhd_base_state state{};
+    ASSERT_EQ(api.base_read(plain.instance, &state, &err), MHD_OK) << err.message;
+    EXPECT_EQ(state.has_lift, 0);
+    api.close(plain.instance);
+  }
+  EXPECT_EQ(open_plugin(api, h.host, {{"lift", "on"}, {"lift_min_m", "0"}, {"lift_max_m", "0"}}).error,
+            "lift: the range must hold 0 and have min < max");
+  EXPECT_EQ(open_plugin(api, h.host, {{"lift", "on"}, {"lift_start_m", "0.8"}}).error,
+            "lift: the start height must be within the range");
+
+  const Opened lifted = open_plugin(api, h.host,
+                                    {{"lift", "on"},
+                                     {"lift_min_m", "-0.2"},
+                                     {"lift_max_m", "0.5"},
+                                     {"lift_max_speed_mps", "0.25"},
+                                     {"lift_start_m", "0.1"}});
+  ASSERT_NE(lifted.instance, nullptr) << lifted.error;
+  mhd_plugin_instance* base = lifted.instance;
+  mhd_error err{};
+  ASSERT_EQ(api.start(base, &err), MHD_OK) << err.message;
+  mhd_base_state state{};
+  ASSERT_EQ(api.base_read(base, &state, &err), MHD_OK) << err.message;
+  EXPECT_EQ(state.has_lift, 1);
+  EXPECT_EQ(state.lift_m, 0.1);
+  EXPECT_EQ(h.world.lift_m(), 0.1);
+  // Up at 0.25 m/s for 3 s, commanded at 10 Hz: it climbs to its end stop at 0.5 m and halts.
+  for (int k = 0; k < 30; ++k) {
+    h.now_s = 0.1 * k;
+    mhd_base_command command{};
+    command.timestamp_s = h.now_s;
+    command.lift_vmps = 0.25;
+    ASSERT_EQ(api.base_write(base, &command, &err), MHD_OK) << err.message;
+    ASSERT_EQ(api.simulate_until(base, h.now_s + 0.1, &err), MHD_OK);
+  }
+  ASSERT_EQ(api.base_read(base, &state, &err), MHD_OK);
+  EXPECT_NEAR(state.lift_m, 0.5, 1e-12);
+  EXPECT_EQ(state.lift_vmps, 0.0);
+  EXPECT_EQ(h.world.lift_m(), state.lift_m);  // where the simulated arm reads it
+  EXPECT_EQ(state.x_m, 0.0);                  // the base itself never moved
+
+  mhd_base_command bad{};
+  bad.lift_vmps = std::nan("");
+  EXPECT_EQ(api.base_write(base, &bad, &err), MHD_ERROR);
+  EXPECT_STREQ(err.message, "base command has a non-finite value");
   api.close(base);
 }
 
@@ -98,7 +155,7 @@ TEST(SimOmni3Plugin, LogsEveryCommandAndItsOwnWatchdogFiring) {
   ASSERT_EQ(api.start(opened.instance, &err), MHD_OK) << err.message;
   for (int k = 0; k < 3; ++k) {
     h.now_s = 0.1 * k;
-    const mhd_base_command command{h.now_s, 0.25, 0.0, 0.1};
+    const mhd_base_command command{h.now_s, 0.25, 0.0, 0.1, 0.0};
     ASSERT_EQ(api.base_write(opened.instance, &command, &err), MHD_OK) << err.message;
     for (int i = 1; i <= 10; ++i) ASSERT_EQ(api.simulate_until(opened.instance, 0.1 * k + 0.01 * i, &err), MHD_OK);
   }
@@ -110,7 +167,7 @@ TEST(SimOmni3Plugin, LogsEveryCommandAndItsOwnWatchdogFiring) {
   std::string header;
   const std::vector<CommandLogRow> rows = read_command_log(log, &header);
   std::filesystem::remove(log);
-  EXPECT_EQ(header, "t_s,event,vx_mps,vz_mps,omega_radps");
+  EXPECT_EQ(header, "t_s,event,vx_mps,vz_mps,omega_radps,lift_vmps");
   ASSERT_EQ(rows.size(), 1u + 3u + 1u + 1u);
   EXPECT_EQ(rows[0].event, "start");
   for (int k = 1; k <= 3; ++k) {
@@ -139,7 +196,7 @@ TEST(SimOmni3Plugin, ACommandArrivingAfterAControlTickTheHostHasNotSimulatedIsNo
   ASSERT_EQ(api.start(opened.instance, &err), MHD_OK) << err.message;
   for (int k = 0; k < 20; ++k) {
     h.now_s = 0.025 * k;  // a controller tick (every 0.02 s) often lies before it, unsimulated
-    const mhd_base_command command{h.now_s, 0.25, 0.0, 0.0};
+    const mhd_base_command command{h.now_s, 0.25, 0.0, 0.0, 0.0};
     ASSERT_EQ(api.base_write(opened.instance, &command, &err), MHD_OK) << err.message;
     ASSERT_EQ(api.simulate_until(opened.instance, h.now_s + 0.015, &err), MHD_OK) << err.message;
   }
@@ -164,11 +221,11 @@ TEST(SimOmni3Plugin, ACommandAfterTheLastOneExpiredFollowsTheWatchdogFiring) {
   ASSERT_NE(opened.instance, nullptr) << opened.error;
   mhd_error err{};
   ASSERT_EQ(api.start(opened.instance, &err), MHD_OK) << err.message;
-  const mhd_base_command first{h.now_s, 0.25, 0.0, 0.0};
+  const mhd_base_command first{h.now_s, 0.25, 0.0, 0.0, 0.0};
   ASSERT_EQ(api.base_write(opened.instance, &first, &err), MHD_OK) << err.message;
   ASSERT_EQ(api.simulate_until(opened.instance, 0.01, &err), MHD_OK) << err.message;
   h.now_s = 1.0;  // frozen, then the next command comes first
-  const mhd_base_command next{h.now_s, 0.1, 0.0, 0.0};
+  const mhd_base_command next{h.now_s, 0.1, 0.0, 0.0, 0.0};
   ASSERT_EQ(api.base_write(opened.instance, &next, &err), MHD_OK) << err.message;
   ASSERT_EQ(api.simulate_until(opened.instance, 1.0, &err), MHD_OK) << err.message;
   ASSERT_EQ(api.stop(opened.instance, &err), MHD_OK);

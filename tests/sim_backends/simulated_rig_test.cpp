@@ -38,7 +38,7 @@ TEST(SimulatedRig, TheTrackerSeesTheBaseMoveAndTheUserWalk) {
   for (int ms = 1; ms <= 3000; ++ms) {
     h.now_s = ms * 1e-3;
     if (ms % 100 == 0) {  // 10 Hz: 0.3 m/s ahead until 2 s, then stop
-      const mhd_base_command command{h.now_s, h.now_s < 2.0 ? 0.3 : 0.0, 0.0, 0.0};
+      const mhd_base_command command{h.now_s, h.now_s < 2.0 ? 0.3 : 0.0, 0.0, 0.0, 0.0};
       ASSERT_EQ(base_api.base_write(base.instance, &command, &err), MHD_OK) << err.message;
     }
     ASSERT_EQ(base_api.simulate_until(base.instance, h.now_s, &err), MHD_OK) << err.message;

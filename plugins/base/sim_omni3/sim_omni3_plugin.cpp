@@ -2,8 +2,10 @@
 // host clock when they arrive; the host advances the base with simulate_until(), and
 // the true pose goes to the scene's simulated world (sim_world/sim_session.h) after every advance. With command_log,
 // every command and every firing of the command watchdog goes to a CSV
-// (sim_common/command_log.h).
+// (sim_common/command_log.h). With lift=on the base carries a lift (lift_model.h), whose
+// height goes to the simulated world as well.
 
+#include "lift_model.h"
 #include "sim_omni3_model.h"
 #include "sim_common/command_log.h"
 #include "sim_world/sim_session.h"
@@ -11,7 +13,10 @@
 #include <mhd/plugin_sdk.hpp>
 
 #include <array>
+#include <cmath>
 #include <memory>
+#include <optional>
+#include <stdexcept>
 #include <numbers>
 #include <utility>
 
@@ -42,18 +47,31 @@ class SimOmni3Plugin {
       sdk::number("heading_deg", "deg", nullptr, "start heading (default: the simulated world's base)",
                   sdk::between(-3600, 3600)),
       sdk::text("command_log", nullptr, "a CSV file that receives every command and watchdog firing"),
+      sdk::choice("lift", "off|on", "off", "whether the base carries a lift (the rig's <lift>; lift_* below)"),
+      sdk::number("lift_min_m", "m", "-0.5", "the lift's lower end stop, below the rig file's arm height",
+                  sdk::between(-10, 0)),
+      sdk::number("lift_max_m", "m", "0.5", "the lift's upper end stop, above the rig file's arm height",
+                  sdk::between(0, 10)),
+      sdk::number("lift_max_speed_mps", "m/s", "0.3", "the fastest the lift moves", sdk::between(0.001, 10)),
+      sdk::number("lift_max_acceleration_mps2", "m/s^2", "1.5", "the lift's acceleration limit",
+                  sdk::between(0.001, 100)),
+      sdk::number("lift_start_m", "m", "0", "where the lift stands at open, within its stops", sdk::between(-10, 10)),
   };
 
   SimOmni3Plugin(const mhd_host& host, const sdk::Params& params)
-      : host_(host), session_(sim_world::SimSession::acquire(host)), model_(read_config(*session_, params)) {
+      : host_(host),
+        session_(sim_world::SimSession::acquire(host)),
+        model_(read_config(*session_, params)),
+        lift_(read_lift(params, model_.config().command_timeout_s)) {
     if (const auto file = params.optional_text("command_log")) {
-      log_ = std::make_unique<plugin_support::CommandLog>(*file, std::array{"vx_mps", "vz_mps", "omega_radps"});
+      log_ = std::make_unique<plugin_support::CommandLog>(*file, std::array{"vx_mps", "vz_mps", "omega_radps", "lift_vmps"});
     }
   }
 
   void start() {
     const double now = sdk::host_now(host_);
     model_.start(now);
+    if (lift_) lift_->start(now);
     read_once_ = false;
     log_event(now, CommandEvent::Start);
     publish_pose();
@@ -66,7 +84,12 @@ class SimOmni3Plugin {
     if (read_once_ && t == last_read_time_s_) return MHD_NO_DATA;
     const PlanarPose& p = model_.pose();
     const Twist v_W = model_.velocity_W();
-    out = mhd_base_state{t, p.x_m, p.z_m, p.heading_rad, v_W[0], v_W[1], v_W[2]};
+    out = mhd_base_state{t, p.x_m, p.z_m, p.heading_rad, v_W[0], v_W[1], v_W[2], 0, 0.0, 0.0};
+    if (lift_) {
+      out.has_lift = 1;
+      out.lift_m = lift_->height_m();
+      out.lift_vmps = lift_->velocity_mps();
+    }
     read_once_ = true;
     last_read_time_s_ = t;
     return MHD_OK;
@@ -78,13 +101,17 @@ class SimOmni3Plugin {
     // the host has not yet simulated saw that command, not this one, and a host frozen in
     // between let the watchdog fire in the gap.
     simulate_until(now);
+    // Judged whole before any of it applies: a bad lift speed leaves the base's twist unchanged too.
+    if (!std::isfinite(command.lift_vmps)) throw std::invalid_argument("base command has a non-finite value");
     model_.command(Twist(command.vx_mps, command.vz_mps, command.omega_radps), now);
-    log_event(now, CommandEvent::Command, {command.vx_mps, command.vz_mps, command.omega_radps});
+    if (lift_) lift_->command(command.lift_vmps, now);
+    log_event(now, CommandEvent::Command, {command.vx_mps, command.vz_mps, command.omega_radps}, command.lift_vmps);
   }
 
   void simulate_until(double t_s) {
     const bool was_commanded = !model_.watchdog_stopped();
     model_.simulate_until(t_s);
+    if (lift_) lift_->simulate_until(t_s);
     // One command expires once: a second firing for the same command (the model re-armed
     // and stopped again by a tick on the command's deadline) is not a second event.
     if (was_commanded && model_.watchdog_stopped() && model_.command_time_s() != timed_out_command_s_) {
@@ -122,18 +149,33 @@ class SimOmni3Plugin {
     return c;
   }
 
-  void log_event(double t_s, CommandEvent event, const std::array<double, 3>& values = {}) noexcept {
-    if (log_) log_->add(t_s, event, values);
+  static std::optional<LiftModel> read_lift(const sdk::Params& params, double command_timeout_s) {
+    if (params.text("lift") != "on") return std::nullopt;
+    LiftConfig c;
+    c.min_m = params.number("lift_min_m");
+    c.max_m = params.number("lift_max_m");
+    c.max_speed_mps = params.number("lift_max_speed_mps");
+    c.max_acceleration_mps2 = params.number("lift_max_acceleration_mps2");
+    c.command_timeout_s = command_timeout_s;  // one controller, one watchdog
+    c.initial_m = params.number("lift_start_m");
+    return LiftModel(c);
+  }
+
+  void log_event(double t_s, CommandEvent event, const std::array<double, 3>& values = {},
+                 double lift_vmps = 0.0) noexcept {
+    if (log_) log_->add(t_s, event, std::array{values[0], values[1], values[2], lift_vmps});
   }
 
   void publish_pose() {
     const PlanarPose& p = model_.pose();
     session_->world().set_base_pose({p.x_m, p.z_m, p.heading_rad});
+    if (lift_) session_->world().set_lift_m(lift_->height_m());
   }
 
   mhd_host host_;
   std::shared_ptr<sim_world::SimSession> session_;
   Omni3Model model_;
+  std::optional<LiftModel> lift_;  ///< none unless lift=on
   bool read_once_ = false;
   double timed_out_command_s_ = -1.0;  ///< the command whose expiry was logged last
   double last_read_time_s_ = 0.0;

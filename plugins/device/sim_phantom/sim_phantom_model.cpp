@@ -45,7 +45,7 @@ PhantomSimModel::PhantomSimModel(const PhantomSimConfig& config) : config_(confi
   const PhantomGeometry& g = config.device.geometry;
   require_positive(g.l1_m, "l1_m");
   require_positive(g.l2_m, "l2_m");
-  X_base_phantom_ = config.X_robot_base.inverse(Eigen::Isometry) * config.X_robot_phantom;
+  X_base_robot_ = config.X_robot_base.inverse(Eigen::Isometry);
   angle_step_rad_ = config.position_resolution_m / (g.l1_m + g.l2_m);
   const PhantomIkSolution nominal = phantom_inverse_kinematics(config.device, config.device.workspace.center_P_m());
   if (!nominal.ok()) throw std::invalid_argument("the workspace centre is not reachable");
@@ -55,10 +55,12 @@ PhantomSimModel::PhantomSimModel(const PhantomSimConfig& config) : config_(confi
   p_hip_P_ = phantom_tool_position(g, q_reported_);
 }
 
-Eigen::Isometry3d PhantomSimModel::X_W_phantom(const BasePose& base) const { return pose_from_base(base) * X_base_phantom_; }
+Eigen::Isometry3d PhantomSimModel::X_W_phantom(const BasePose& base, double lift_m) const {
+  return pose_from_base(base) * X_base_robot_ * Eigen::Translation3d(0.0, 0.0, lift_m) * config_.X_robot_phantom;
+}
 
-Eigen::Vector3d PhantomSimModel::p_P_from_W(const BasePose& base, const Eigen::Vector3d& p_W) const {
-  return X_W_phantom(base).inverse(Eigen::Isometry) * p_W;
+Eigen::Vector3d PhantomSimModel::p_P_from_W(const BasePose& base, const Eigen::Vector3d& p_W, double lift_m) const {
+  return X_W_phantom(base, lift_m).inverse(Eigen::Isometry) * p_W;
 }
 
 void PhantomSimModel::start(double t_s) {
@@ -118,7 +120,7 @@ Eigen::Vector3d PhantomSimModel::kinematic_tool_P(const Eigen::Vector3d& hand_P_
 
 Eigen::Vector3d PhantomSimModel::impedance_tool_P(double dt_s, const BasePose& base, const Eigen::Vector3d& hand_W_m,
                                                   bool& clamped) {
-  const Eigen::Isometry3d X_W_P = X_W_phantom(base);
+  const Eigen::Isometry3d X_W_P = X_W_phantom(base, lift_m_);
   if (!hand_placed_) {
     hand_->reset(hand_W_m);
     hand_placed_ = true;
@@ -131,13 +133,17 @@ Eigen::Vector3d PhantomSimModel::impedance_tool_P(double dt_s, const BasePose& b
   return clamp(X_W_P.inverse(Eigen::Isometry) * hand_->p_W_m(), clamped);
 }
 
-void PhantomSimModel::simulate_until(double t_s, const BasePose& base, const Eigen::Vector3d& hand_W_m) {
+void PhantomSimModel::simulate_until(double t_s, const BasePose& base, const Eigen::Vector3d& hand_W_m,
+                                     double lift_m) {
   if (!hand_W_m.allFinite()) throw std::invalid_argument("hand position must be finite");
-  evaluate(t_s, base, hand_W_m, p_P_from_W(base, hand_W_m));
+  if (!std::isfinite(lift_m)) throw std::invalid_argument("lift height must be finite");
+  lift_m_ = lift_m;
+  evaluate(t_s, base, hand_W_m, p_P_from_W(base, hand_W_m, lift_m));
 }
 
 void PhantomSimModel::simulate_until(double t_s, const Eigen::Vector3d& hand_P_m) {
   if (!hand_P_m.allFinite()) throw std::invalid_argument("hand position must be finite");
+  lift_m_ = 0.0;
   evaluate(t_s, BasePose{}, X_W_phantom(BasePose{}) * hand_P_m, hand_P_m);
 }
 

@@ -58,10 +58,12 @@ class PhantomSimModel {
   /// Throws std::invalid_argument for a non-positive / non-finite setting.
   explicit PhantomSimModel(const PhantomSimConfig& config);
 
-  /// X_W_P: the device frame in the world for a planar base pose (world -> base -> robot -> phantom).
-  [[nodiscard]] Eigen::Isometry3d X_W_phantom(const BasePose& base) const;
+  /// X_W_P: the device frame in the world for a planar base pose (world -> base -> robot ->
+  /// lift -> phantom); the lift raises the arm `lift_m` along the robot's z (kinematics/rig.h).
+  [[nodiscard]] Eigen::Isometry3d X_W_phantom(const BasePose& base, double lift_m = 0.0) const;
   /// A world point in P.
-  [[nodiscard]] Eigen::Vector3d p_P_from_W(const BasePose& base, const Eigen::Vector3d& p_W) const;
+  [[nodiscard]] Eigen::Vector3d p_P_from_W(const BasePose& base, const Eigen::Vector3d& p_W,
+                                           double lift_m = 0.0) const;
 
   /// Time origin at t_s; forgets commands, keeps the angles (initially those of the
   /// workspace centre).
@@ -70,9 +72,9 @@ class PhantomSimModel {
   /// "device command has a non-finite value" for NaN / inf.
   void command(const Eigen::Vector3d& tau_Nm, double t_received_s);
   /// Evaluates the device at host time t_s with the base at `base` and the user meaning the
-  /// hand to be at hand_W_m. A t_s before the current time is ignored. Precondition:
-  /// started; throws std::logic_error otherwise.
-  void simulate_until(double t_s, const BasePose& base, const Eigen::Vector3d& hand_W_m);
+  /// hand to be at hand_W_m, the base's lift at `lift_m`. A t_s before the current time is
+  /// ignored. Precondition: started; throws std::logic_error otherwise.
+  void simulate_until(double t_s, const BasePose& base, const Eigen::Vector3d& hand_W_m, double lift_m = 0.0);
   /// The same with the base at the origin (BasePose{}) and the hand given in P.
   void simulate_until(double t_s, const Eigen::Vector3d& hand_P_m);
 
@@ -114,7 +116,8 @@ class PhantomSimModel {
                                                  bool& clamped);
 
   PhantomSimConfig config_;
-  Eigen::Isometry3d X_base_phantom_ = Eigen::Isometry3d::Identity();
+  Eigen::Isometry3d X_base_robot_ = Eigen::Isometry3d::Identity();
+  double lift_m_ = 0.0;  ///< the lift's height at the last evaluation
   Eigen::Vector3d q_nominal_ = Eigen::Vector3d::Zero();
   double angle_step_rad_ = 0.0;
 

@@ -137,8 +137,8 @@ class SimPhantomPlugin {
     if (log_) log_->add(t_s, event, values);
   }
 
-  /// Evaluates the device at t_s with the world's hand (where the user means it to be)
-  /// and base pose, or, while the world has no hand, with the hand resting at rest_hand_P_m.
+  /// Evaluates the device at t_s with the world's hand (where the user means it to be),
+  /// base pose and lift height, or, while the world has no hand, with the hand resting at rest_hand_P_m.
   void simulate(double t_s) {
     const simulation::SimulatedWorld& w = session_->world();
     if (!w.has_hand()) {
@@ -150,7 +150,7 @@ class SimPhantomPlugin {
     base.x_m = b.x_m;
     base.z_m = b.z_m;
     base.heading_rad = b.heading_rad;
-    model_.simulate_until(t_s, base, w.hand());
+    model_.simulate_until(t_s, base, w.hand(), w.lift_m());
   }
 
   mhd_host host_;

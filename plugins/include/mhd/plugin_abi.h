@@ -1,4 +1,4 @@
-/* MHD plugin ABI, version 4. The only header a plugin includes.
+/* MHD plugin ABI, version 5. The only header a plugin includes.
  *
  * A plugin is a shared library exporting one C function, mhd_plugin_entry, that returns
  * a table of function pointers (mhd_plugin_api). The host checks the table's ABI
@@ -18,6 +18,10 @@
  * Version 4 took the simulated world out of mhd_host: simulation is not the host's
  * business, so simulated backends share their world through a support library of their
  * own (libs/sim_world). A v3 plugin is refused.
+ * Version 5 gave the base a lift: a vertical axis between the base and the arm, whose
+ * height a base reports in mhd_base_state and whose speed the host commands in
+ * mhd_base_command. A base without one leaves has_lift 0 and ignores lift_vmps. A v4
+ * plugin is refused.
  * All quantities are SI (metres, radians, seconds, newtons); device-native units
  * (millimetres, encoder counts) stay inside the plugin. Frames follow the engine's
  * X_AB naming: a pose of B given in A.
@@ -43,7 +47,7 @@
 extern "C" {
 #endif
 
-#define MHD_PLUGIN_ABI_VERSION 4u
+#define MHD_PLUGIN_ABI_VERSION 5u
 #define MHD_PLUGIN_ENTRY_SYMBOL "mhd_plugin_entry"
 #define MHD_ERROR_MESSAGE_SIZE 256
 
@@ -169,18 +173,25 @@ typedef struct mhd_tracker_sample {
   double q_T_wxyz[4];    /* orientation, unit quaternion w, x, y, z */
 } mhd_tracker_sample;
 
-/* Base: planar pose on the floor (world x, z; heading about world +y) and velocity. */
+/* Base: planar pose on the floor (world x, z; heading about world +y) and velocity; and
+ * its lift, if it has one: the arm's height above where the rig file puts it (the lift at
+ * 0) and its vertical speed, up positive. The host zeroes the struct before base_read, so
+ * a base that fills none of the lift fields has none. */
 typedef struct mhd_base_state {
   double timestamp_s;
   double x_m, z_m, heading_rad;
   double vx_mps, vz_mps, omega_radps; /* in the world frame */
+  int32_t has_lift;                   /* 1: lift_m and lift_vmps are the lift's state */
+  double lift_m, lift_vmps;
 } mhd_base_state;
 
 /* Base command: velocity in the base's own frame (x forward, y up, z to the right:
- * right-handed, as in the rig). */
+ * right-handed, as in the rig), and the lift's vertical speed (up positive; 0 holds it,
+ * and every stop command is 0). A base limits the lift to its range and limits itself. */
 typedef struct mhd_base_command {
   double timestamp_s;
   double vx_mps, vz_mps, omega_radps;
+  double lift_vmps;
 } mhd_base_command;
 
 /* Display: a snapshot of the rig for drawing (world frame). */

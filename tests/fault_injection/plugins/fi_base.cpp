@@ -42,7 +42,7 @@ class FiBase {
     h += last_.omega_radps * dt;
     w.set_base_pose({x, z, h});
     out = {.timestamp_s = t_s, .x_m = x, .z_m = z, .heading_rad = h, .vx_mps = vx_W, .vz_mps = vz_W,
-           .omega_radps = last_.omega_radps};
+           .omega_radps = last_.omega_radps, .has_lift = 0, .lift_m = 0.0, .lift_vmps = 0.0};
     bool nan = false;
     const mhd_status status =
         fault_.on(probe::FaultOn::Read, t_s, "injected fault: base controller not responding", nan);
