@@ -44,6 +44,7 @@ void HapticServer::Impl::haptic_thread() {
     last_t_s = t_s;
 
     drain_into(tick);
+    tick.set_lift_m(lift_m_at(t_s));
     if (!read_device(t_s, info, p_D_tool_m)) break;
     const HapticTickOutput out = tick.tick(t_s, dt_s, p_D_tool_m);
     if (!write_device(t_s, out)) break;
@@ -141,6 +142,7 @@ void HapticServer::Impl::record(double t_s, double dt_s, const HapticTickOutput&
     row.base_z_m = out.base.z_m;
     row.base_heading_rad = out.base.heading_rad;
   }
+  row.lift_m = out.lift_m;
   row.tracker_age_s = std::isfinite(out.tracker_age_s) ? out.tracker_age_s : -1.0;
   row.safety_gain = out.safety_gain;
   row.contact = out.in_contact ? 1 : 0;

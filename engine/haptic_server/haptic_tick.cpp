@@ -17,6 +17,11 @@ HapticTick::HapticTick(const CompiledScene& scene, const Rig& rig, const HapticT
       moving_(scene.world, scene.motions, scene.dynamics) {
   // One force limit: the safety stage's, which the server set from the device.
   proxy_settings_.max_force_N = settings.safety.max_force_N;
+  if (rig_.lift()) lift_m_ = std::numeric_limits<double>::quiet_NaN();
+}
+
+void HapticTick::set_lift_m(double lift_m) noexcept {
+  if (rig_.lift()) lift_m_ = lift_m;
 }
 
 BaseSampleStatus HapticTick::add_base_sensor_sample(double t_s, const Pose& X_is900_base_sensor) noexcept {
@@ -40,7 +45,10 @@ HapticTickOutput HapticTick::tick(double t_s, double dt_s, const Eigen::Vector3d
     return render(t_s, dt_s, p_D_tool_m, BasePose{}, kNoTracker);
   }
   std::optional<BasePose> base;
-  if (has_measurement_) base = settings_.predict_base_pose ? predictor_.predict(t_s) : last_measurement_;
+  // Without the lift's height the arm's place is as unknown as without the base's pose.
+  if (has_measurement_ && std::isfinite(lift_m_)) {
+    base = settings_.predict_base_pose ? predictor_.predict(t_s) : last_measurement_;
+  }
   return render(t_s, dt_s, p_D_tool_m, base, predictor_.age_s(t_s));
 }
 
@@ -51,6 +59,7 @@ HapticTickOutput HapticTick::render(double t_s, double dt_s, const Eigen::Vector
   out.t_s = t_s;
   out.p_D_tool_m = p_D_tool_m;
   out.tracker_age_s = tracker_age_s;
+  out.lift_m = lift_m_;
 
   ForceSafetyInput safety_in;
   safety_in.dt_s = dt_s;
@@ -58,11 +67,11 @@ HapticTickOutput HapticTick::render(double t_s, double dt_s, const Eigen::Vector
   safety_in.tracker_age_s = std::isnan(tracker_age_s) ? 0.0 : tracker_age_s;
 
   move_objects(t_s);
-  if (base.has_value() && p_D_tool_m.allFinite()) {
+  if (base.has_value() && p_D_tool_m.allFinite() && std::isfinite(lift_m_)) {
     out.base = *base;
     render_hand(dt_s, safety_in, out);
   } else {
-    render_no_hand(base.has_value(), safety_in, out);
+    render_no_hand(base.has_value() && std::isfinite(lift_m_), safety_in, out);
   }
   return out;
 }
@@ -78,7 +87,7 @@ void HapticTick::move_objects(double t_s) noexcept {
 
 void HapticTick::render_hand(double dt_s, ForceSafetyInput& safety_in, HapticTickOutput& out) noexcept {
   const Pose X_W_robot = rig_.X_W_robot_from_base(out.base);
-  out.p_W_hip = rig_.p_W_from_device(X_W_robot, out.p_D_tool_m);
+  out.p_W_hip = rig_.p_W_from_device(X_W_robot, out.p_D_tool_m, out.lift_m);
   if (!proxy_.initialised) {
     // The proxy starts only with the hand in free space: started inside an object it
     // would render the object inside out and pull the hand in. Until then, no force.
@@ -109,7 +118,7 @@ void HapticTick::render_hand(double dt_s, ForceSafetyInput& safety_in, HapticTic
   out.stale = s.stale;
   out.jump = s.jump;
   out.clamped = s.clamped;
-  out.force_D_N = rig_.force_P_from_W(X_W_robot, out.force_W_N);
+  out.force_D_N = rig_.force_P_from_W(X_W_robot, out.force_W_N);  // the lift only translates
   if (!out.force_D_N.allFinite()) out.force_D_N.setZero();
   // The bodies the proxy touches are pushed back by what the hand is sent to feel.
   moving_.apply_reaction(proxy_, out.force_W_N);

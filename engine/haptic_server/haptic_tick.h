@@ -5,7 +5,9 @@
 //   god-object proxy -> force -> safety (clamp, stale fade, jump fade) -> the force in the
 //   device frame (a Cartesian device, ABI 3, maps it to its motors itself).
 // On a desktop rig (Rig::desktop) the base pose is fixed and there is no tracker: tick()
-// renders every tick with BasePose{} and no stale fade.
+// renders every tick with BasePose{} and no stale fade. A rig with a lift (Rig::lift)
+// places the arm at the lift height the base last reported (set_lift_m); until the first
+// report the arm's place is unknown, as before the first base pose.
 // Base poses arrive from the tracker (~100-190 Hz) as base-sensor measurements and the
 // commanded base twist from the planner (10 Hz); between them BasePosePredictor gives a
 // pose for every tick, so the HIP does not leap when a sample arrives.
@@ -44,6 +46,7 @@ struct HapticTickOutput {
   Eigen::Vector3d proxy_force_W_N = Eigen::Vector3d::Zero();  ///< before safety
   Eigen::Vector3d force_D_N = Eigen::Vector3d::Zero();  ///< force_W_N in the device frame: what is sent
   BasePose base;  ///< the base pose this tick used
+  double lift_m = 0.0;  ///< the lift height this tick used (0 without a lift; NaN: not known yet)
   double tracker_age_s = 0.0;  ///< HapticTick::kNoTracker (NaN) on a desktop rig
   double safety_gain = 0.0;
   int contact_object = -1;
@@ -68,6 +71,8 @@ class HapticTick {
   BaseSampleStatus add_base_sensor_sample(double t_s, const Pose& X_is900_base_sensor) noexcept;
   /// The base twist the planner commanded at t_s.
   void add_base_command(double t_s, const BaseTwist& twist_B) noexcept;
+  /// The lift height the base last reported (NaN: none yet). Ignored on a rig without a lift.
+  void set_lift_m(double lift_m) noexcept;
 
   /// The tick at t_s with the device's tool position in its frame; dt_s is the time since
   /// the last tick. A non-finite position gives zero force (and counts as a fault).
@@ -119,6 +124,7 @@ class HapticTick {
   std::uint64_t startup_ticks_ = 0;
   double last_measurement_t_s_ = 0.0;
   BasePose last_measurement_;
+  double lift_m_ = 0.0;  ///< NaN on a rig with a lift until the base reports its height
 };
 
 }  // namespace mhd

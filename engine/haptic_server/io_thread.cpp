@@ -208,7 +208,39 @@ bool HapticServer::Impl::read_base(IoThreadState& io, double t_s) {
   if (br.value() == PluginCallStatus::Ok && settings.base_pose_source == BasePoseSource::Odometry) {
     take_odometry(io, base_state);
   }
+  return br.value() != PluginCallStatus::Ok || take_lift(base_state);
+}
+
+bool HapticServer::Impl::take_lift(const BaseState& base_state) {
+  // The arm's height is only known when the base and the rig agree that there is a lift,
+  // and where it stands is inside the rig's range (its end stops, with a margin for the
+  // controller's overshoot); anything else ends the run rather than place the arm wrongly.
+  // The texts are built only on the way out.
+  constexpr double kRangeMargin_m = 0.01;
+  const std::optional<Lift>& lift = rig.lift();
+  if (lift.has_value() != base_state.has_lift) {
+    fail(Diagnostic{base->description.where,
+                    plugin_said(*base, lift ? "the rig has a <lift>, but this base reports none"
+                                            : "this base reports a lift, but the rig has no <lift>: declare it in "
+                                              "the rig (docs/kinematics.md, \"The lift\")")}
+             .to_string());
+    return false;
+  }
+  if (!lift) return true;
+  if (base_state.lift_m < lift->min_m - kRangeMargin_m || base_state.lift_m > lift->max_m + kRangeMargin_m) {
+    fail(Diagnostic{base->description.where,
+                    plugin_said(*base, lift_position_fault(base_state.lift_m, lift->min_m, lift->max_m))}
+             .to_string());
+    return false;
+  }
+  lift_reading.write({base_state.lift_m, base_state.lift_vmps, base_state.timestamp_s});
   return true;
+}
+
+double HapticServer::Impl::lift_m_at(double t_s) const noexcept {
+  const std::array<double, 3> r = lift_reading.read();
+  const double ahead_s = std::clamp(t_s - r[2], 0.0, 1.0 / settings.io_rate_hz);
+  return r[0] + r[1] * ahead_s;
 }
 
 void HapticServer::Impl::take_odometry(IoThreadState& io, const BaseState& base_state) {
@@ -258,6 +290,10 @@ bool HapticServer::Impl::send_base_command(IoThreadState& io, double t_s, bool n
   cmd.vx_mps = guarded.twist_B.vx_mps;
   cmd.vz_mps = guarded.twist_B.vz_mps;
   cmd.omega_radps = guarded.twist_B.omega_radps;
+  // The lift stops with the base: a stale hand or head stops both.
+  if (rig.lift() && guarded.action != BaseGuardAction::Stopped) {
+    cmd.lift_vmps = planned_lift_vmps.load(std::memory_order_relaxed);
+  }
   const ClaimedCall claimed(*base->call_claim);
   if (!claimed.taken()) return false;  // run()'s thread is stopping the base: the run ends
   auto bw = [&] {

@@ -33,4 +33,9 @@ std::string base_position_fault(const BaseState& state, double tracking_range_m)
                      state.x_m, state.z_m, tracking_range_m);
 }
 
+std::string lift_position_fault(double lift_m, double min_m, double max_m) {
+  return fmt::format("base_read returned the lift at {:g} m, outside the rig's lift range [{:g}, {:g}] m", lift_m, min_m,
+                     max_m);
+}
+
 }  // namespace mhd

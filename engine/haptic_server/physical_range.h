@@ -40,4 +40,7 @@ inline constexpr double kWorkspaceMargin_m = 0.1;
 /// "base_read returned the base at (1e+308, 0) m, farther than the tracking range of 50 m"
 [[nodiscard]] std::string base_position_fault(const BaseState& state, double tracking_range_m);
 
+/// "base_read returned the lift at 2.5 m, outside the rig's lift range [-0.5, 0.7] m"
+[[nodiscard]] std::string lift_position_fault(double lift_m, double min_m, double max_m);
+
 }  // namespace mhd

@@ -1,10 +1,16 @@
 // The planner thread: the base planner at the base rate, on the newest HIP, base pose
-// and the user's motion (UserMotionEstimate).
+// and the user's motion (UserMotionEstimate); and, on a rig with a lift, the lift's
+// planner (LiftPlanner), which keeps the middle of the arm's reach at the hand's height.
 #include "haptic_server/server_impl.h"
 
 #include "haptic_server/user_motion_estimate.h"
 #include "realtime/periodic_timer.h"
 #include "realtime/thread_name.h"
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <optional>
 
 namespace mhd {
 
@@ -12,12 +18,16 @@ void HapticServer::Impl::planner_thread() {
   realtime::name_current_thread("mhd-planner");
   realtime::PeriodicTimer timer(1.0 / settings.base_rate_hz);
   UserMotionEstimate user_motion;
+  const std::optional<LiftPlanner> lift_planner =
+      rig.lift() ? std::optional<LiftPlanner>(std::in_place, *rig.lift(), reach_centre_above_phantom_m(rig))
+                 : std::nullopt;
   while (!stop.load(std::memory_order_relaxed)) {
     (void)timer.wait_next();
     const HapticSnapshot snap = snapshot_for_planner.latest();
     status_counters.base.set(snap.base);
     const HeadState h = head.get();
     user_motion.update(h);
+    if (lift_planner) planned_lift_vmps.store(plan_lift(*lift_planner, snap, host.now_s() - snap.t_s));
     if (!options.plan_base) continue;  // no planner: the base holds still (zero twist)
     BasePlanInput in;
     in.t_s = host.now_s();
@@ -35,6 +45,21 @@ void HapticServer::Impl::planner_thread() {
     const BaseTwist twist = options.plan_base(in);
     planned_command.write(twist);
   }
+}
+
+double HapticServer::Impl::plan_lift(const LiftPlanner& planner, const HapticSnapshot& snap, double hip_age_s) const {
+  const std::array<double, 3> reading = lift_reading.read();
+  const LiftState now{reading[0], reading[1]};
+  if (!std::isfinite(now.height_m) || !std::isfinite(now.velocity_mps)) return 0.0;  // no lift reading yet
+  // No hand, or a stale one: the target is no number, and the lift brakes to a stop.
+  double target_m = std::numeric_limits<double>::quiet_NaN();
+  if (snap.valid && hip_age_s <= settings.base_guard.tracker_timeout_s) {
+    const double phantom_y_W_m = rig.X_W_phantom(rig.X_W_robot_from_base(snap.base)).translation().y();
+    target_m = planner.target_for_hand(snap.p_W_hip.y(), phantom_y_W_m);
+  }
+  // The speed the lift should have one base period from now: commanded now, it is what
+  // the lift's own controller accelerates to within the period.
+  return planner.step(now, target_m, 1.0 / settings.base_rate_hz).velocity_mps;
 }
 
 }  // namespace mhd

@@ -40,6 +40,7 @@ ReplayComparison replay_recording(const CompiledScene& scene, const Rig& rig, co
       if (in.tracker_age_s >= 0.0) base = BasePose{in.base_x_m, in.base_z_m, in.base_heading_rad};
       age_s = in.tracker_age_s >= 0.0 ? in.tracker_age_s : std::numeric_limits<double>::infinity();
     }
+    tick.set_lift_m(in.lift_m);
     const HapticTickOutput out = tick.render(in.t_s, in.dt_s, vec(in.p_D_tool_m), base, age_s);
 
     RecordingRow r = in;

@@ -11,9 +11,11 @@
 #include "haptic_server/status_counters.h"
 #include "haptic_server/tick_histogram.h"
 #include "kinematics/rig.h"
+#include "planner/lift_planner.h"
 #include "plugin_host/host_services.h"
 #include "plugin_host/plugin_error.h"
 #include "realtime/periodic_timer.h"
+#include "realtime/seqlock.h"
 #include "realtime/spsc_ring.h"
 #include "realtime/triple_buffer.h"
 #include "realtime/wake_event.h"
@@ -92,6 +94,10 @@ struct HapticServer::Impl {
   std::atomic<std::uint64_t> base_commands{0}, base_stops{0};
   realtime::TripleBuffer<BaseStopCounts> base_stop_counts;  ///< the guard's, by cause (io -> run())
   std::atomic<double> base_sample_newest_t_s{-std::numeric_limits<double>::infinity()};  ///< for the planner
+  /// The lift as the base last reported it (io -> haptic, planner): height (NaN until
+  /// the first report), vertical speed, and when it was measured.
+  realtime::Seqlock<3> lift_reading{{std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0}};
+  std::atomic<double> planned_lift_vmps{0.0};  ///< planner -> io
 
   std::atomic<bool> stop{false};
   std::atomic<int> gasp_state{kGaspIdle};
@@ -201,6 +207,11 @@ struct HapticServer::Impl {
   bool read_tracker_counters(IoThreadState& io, double t_s);
   bool read_base(IoThreadState& io, double t_s);
   void take_odometry(IoThreadState& io, const BaseState& base_state);
+  bool take_lift(const BaseState& base_state);
+  /// The lift's height at t_s, carried on from its last reading at that reading's speed
+  /// for at most one io period (NaN before the first reading).
+  double lift_m_at(double t_s) const noexcept;
+  double plan_lift(const LiftPlanner& planner, const HapticSnapshot& snap, double hip_age_s) const;
   BaseGuardDecision guard_plan(IoThreadState& io, double t_s, bool& new_plan);
   bool send_base_command(IoThreadState& io, double t_s, bool new_plan, const BaseGuardDecision& guarded);
   void planner_thread();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace mhd {
 
@@ -33,6 +34,22 @@ LiftState LiftPlanner::step(const LiftState& now, double target_height_m, double
     next.velocity_mps = 0.0;
   }
   return next;
+}
+
+double reach_centre_above_phantom_m(const Rig& rig) noexcept {
+  const Pose X_B_P = rig.X_robot_base().inverse(Eigen::Isometry) * rig.X_robot_phantom();
+  const WorkspaceBox box = rig.device().usable_workspace();
+  double y_min = std::numeric_limits<double>::infinity();
+  double y_max = -std::numeric_limits<double>::infinity();
+  for (int corner = 0; corner < 8; ++corner) {
+    const Eigen::Vector3d p_P((corner & 1) ? box.max_P_m.x() : box.min_P_m.x(),
+                              (corner & 2) ? box.max_P_m.y() : box.min_P_m.y(),
+                              (corner & 4) ? box.max_P_m.z() : box.min_P_m.z());
+    const double y_B = (X_B_P * p_P).y();
+    y_min = std::min(y_min, y_B);
+    y_max = std::max(y_max, y_B);
+  }
+  return 0.5 * (y_min + y_max) - X_B_P.translation().y();
 }
 
 }  // namespace mhd

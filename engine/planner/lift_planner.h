@@ -42,4 +42,8 @@ class LiftPlanner {
   double reach_centre_above_phantom_m_;
 };
 
+/// How far above the arm's frame P the middle of its usable workspace's vertical extent is,
+/// along the base's up (world up): the reach centre a LiftPlanner keeps at the hand.
+[[nodiscard]] double reach_centre_above_phantom_m(const Rig& rig) noexcept;
+
 }  // namespace mhd

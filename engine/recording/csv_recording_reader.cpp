@@ -11,6 +11,7 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 namespace mhd {
 namespace {
@@ -70,7 +71,8 @@ Result<std::vector<RecordingRow>> read_recording(const std::filesystem::path& fi
   Diagnostics errors;
 
   std::map<std::string, std::size_t, std::less<>> column;
-  const std::vector<std::string_view> expected = split(recording_csv_header());
+  std::vector<std::string_view> expected = split(recording_csv_header());
+  std::erase(expected, std::string_view("lift_m"));  // optional: recordings from before the lift lack it
   // Read a block at a time, each line within kMaxLineBytes: memory stays bounded by the
   // rows, whatever the file holds.
   std::string text;
@@ -149,6 +151,8 @@ Result<std::vector<RecordingRow>> read_recording(const std::filesystem::path& fi
     get("base_x_m", row.base_x_m);
     get("base_z_m", row.base_z_m);
     get("base_heading_rad", row.base_heading_rad);
+    // Recordings from before the lift have no lift column: their arm stood at 0.
+    if (column.find("lift_m") != column.end()) get("lift_m", row.lift_m);
     get("user_x_m", row.user_x_m);
     get("user_z_m", row.user_z_m);
     get("user_heading_rad", row.user_heading_rad);

@@ -17,6 +17,7 @@ struct RecordingRow {
   std::array<double, 3> cmd_force_W_N{};  ///< the proxy's force before the safety stage
   std::array<double, 3> force_D_N{};  ///< force_W_N in the device frame: what was sent
   double base_x_m = 0.0, base_z_m = 0.0, base_heading_rad = 0.0;
+  double lift_m = 0.0;  ///< the arm's lift height the tick used (0 without a lift)
   double user_x_m = 0.0, user_z_m = 0.0, user_heading_rad = 0.0;
   double tracker_age_s = 0.0;
   double safety_gain = 0.0;

@@ -85,7 +85,12 @@ Eigen::Vector2d SimulatedUser::velocity_W() const {
 HeadPose SimulatedUser::head() const {
   const PlanarPose b = body();
   HeadPose h;
-  h.p_W_m = Eigen::Vector3d(b.x_m, config_.eye_height_m, b.z_m);
+  const double eye_height_m =
+      config_.hand_height_sweep
+          ? eye_height_at(config_.eye_height_m, hand_height_at(config_.hand_height_sweep, config_.hand_height_m,
+                                                               time_s_ - config_.start_time_s))
+          : config_.eye_height_m;
+  h.p_W_m = Eigen::Vector3d(b.x_m, eye_height_m, b.z_m);
   double yaw = b.heading_rad;
   double pitch = 0.0;
   if (config_.gaze_target_W) {
@@ -102,7 +107,9 @@ HeadPose SimulatedUser::head() const {
 Eigen::Vector3d SimulatedUser::hand_W() const {
   const PlanarPose b = body();
   const Eigen::Vector2d reach = config_.hand_reach_m * forward(b.heading_rad);
-  Eigen::Vector3d p(b.x_m + reach.x(), config_.hand_height_m, b.z_m + reach.y());
+  const double height_m =
+      hand_height_at(config_.hand_height_sweep, config_.hand_height_m, time_s_ - config_.start_time_s);
+  Eigen::Vector3d p(b.x_m + reach.x(), height_m, b.z_m + reach.y());
   for (int i = 0; i < 3; ++i) {
     p[i] += config_.hand_motion_amplitude_m * std::sin(kTwoPi * hand_frequency_hz_[i] * time_s_ + hand_phase_rad_[i]);
   }

@@ -42,6 +42,24 @@ bool non_negative(double v) { return v >= 0.0 && std::isfinite(v); }
 
 }  // namespace
 
+double hand_height_at(const std::optional<HandHeightSweep>& sweep, double fixed_m, double time_s) noexcept {
+  if (!sweep) return fixed_m;
+  const HandHeightSweep& w = *sweep;
+  const double leg_s = (w.high_m - w.low_m) / w.speed_mps;
+  const double period_s = 2.0 * (leg_s + w.hold_s);
+  const double phase_s = std::fmod(std::max(0.0, time_s), period_s);
+  if (phase_s < w.hold_s) return w.low_m;
+  if (phase_s < w.hold_s + leg_s) return w.low_m + w.speed_mps * (phase_s - w.hold_s);
+  if (phase_s < 2.0 * w.hold_s + leg_s) return w.high_m;
+  return w.high_m - w.speed_mps * (phase_s - 2.0 * w.hold_s - leg_s);
+}
+
+double eye_height_at(double standing_m, double hand_height_m) noexcept {
+  constexpr double kEyesAboveLowHand_m = 0.7;
+  constexpr double kCrouchedEyes_m = 1.0;
+  return std::clamp(hand_height_m + kEyesAboveLowHand_m, std::min(kCrouchedEyes_m, standing_m), standing_m);
+}
+
 void validate(const SimulatedUserConfig& c) {
   require(positive(c.max_speed_mps), "max_speed_mps must be positive");
   require(positive(c.max_turn_rate_radps), "max_turn_rate_radps must be positive");
@@ -64,6 +82,12 @@ void validate(const SimulatedUserConfig& c) {
   require(non_negative(c.hand_reach_m) && positive(c.hand_height_m) && non_negative(c.hand_motion_amplitude_m),
           "hand_reach_m, hand_height_m and hand_motion_amplitude_m must be >= 0 (height > 0)");
   require(!c.gaze_target_W || c.gaze_target_W->allFinite(), "gaze_target_W must be finite");
+  if (const auto& sweep = c.hand_height_sweep) {
+    require(positive(sweep->low_m) && positive(sweep->high_m) && sweep->low_m < sweep->high_m,
+            "hand_height_sweep_m must be two heights 0 < low < high");
+    require(positive(sweep->speed_mps), "hand_height_sweep_speed_mps must be positive");
+    require(non_negative(sweep->hold_s), "hand_height_sweep_hold_s must be >= 0");
+  }
   if (c.loop_path) {
     const bool moves = std::any_of(c.path.begin(), c.path.end(), [&](const Waypoint& w) {
       return w.x_m != c.path.front().x_m || w.z_m != c.path.front().z_m;

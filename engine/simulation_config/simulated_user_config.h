@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -29,6 +30,23 @@ struct Waypoint {
 /// waypoints by ';'). Throws std::invalid_argument, e.g. "waypoint 2: expected 'x z
 /// speed_mps', got '1 2'".
 [[nodiscard]] std::vector<Waypoint> parse_waypoints(std::string_view text);
+
+/// A user who crouches and reaches: the hand's height goes from `low_m` up to `high_m` and
+/// back at `speed_mps`, holding `hold_s` at each end, starting crouched at `low_m`. The eyes
+/// come down with a low hand (a crouch): eye_height_at() below.
+struct HandHeightSweep {
+  double low_m = 0.3;
+  double high_m = 1.9;
+  double speed_mps = 0.3;
+  double hold_s = 1.0;
+};
+
+/// The hand's height at `time_s` since the user started (the sweep's, or `fixed_m`).
+[[nodiscard]] double hand_height_at(const std::optional<HandHeightSweep>& sweep, double fixed_m, double time_s) noexcept;
+/// The eye height of a user whose hand is at `hand_height_m`: standing (`standing_m`)
+/// until the hand comes within 0.7 m of the eyes' height, then crouching with it, down to
+/// 1 m.
+[[nodiscard]] double eye_height_at(double standing_m, double hand_height_m) noexcept;
 
 struct SimulatedUserConfig {
   /// Scripted path: the user starts on the first waypoint (its speed is used only when
@@ -58,6 +76,7 @@ struct SimulatedUserConfig {
   std::optional<Eigen::Vector3d> gaze_target_W;  ///< the head faces this point when set
   double hand_reach_m = 0.45;                    ///< in front of the chest, horizontally
   double hand_height_m = 1.1;
+  std::optional<HandHeightSweep> hand_height_sweep;  ///< set: crouches and reaches (hand_height_m unused)
   double hand_motion_amplitude_m = 0.02;  ///< per axis, slow sinusoids with seeded phases
 
   double start_time_s = 0.0;

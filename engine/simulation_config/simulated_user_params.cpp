@@ -36,6 +36,19 @@ Result<SimulatedUserConfig> simulated_user_config_from(const ParamBlock& block) 
   c.hand_reach_m = r.non_negative("hand_reach_m", c.hand_reach_m);
   c.hand_height_m = r.positive("hand_height_m", c.hand_height_m);
   c.hand_motion_amplitude_m = r.non_negative("hand_motion_amplitude_m", c.hand_motion_amplitude_m);
+  // The sweep's speed and hold are read (and judged) whether or not a sweep is set.
+  HandHeightSweep sweep;
+  sweep.speed_mps = r.positive("hand_height_sweep_speed_mps", sweep.speed_mps);
+  sweep.hold_s = r.non_negative("hand_height_sweep_hold_s", sweep.hold_s);
+  if (r.has("hand_height_sweep_m")) {
+    std::istringstream in(r.text("hand_height_sweep_m", ""));
+    std::string rest;
+    if (!(in >> sweep.low_m >> sweep.high_m) || (in >> rest) || !std::isfinite(sweep.low_m) ||
+        !std::isfinite(sweep.high_m)) {
+      r.error("hand_height_sweep_m", "param 'hand_height_sweep_m' in <simulated_user> must be two heights 'low high'");
+    }
+    c.hand_height_sweep = sweep;
+  }
   if (r.has("gaze_target_m")) {
     std::istringstream in(r.text("gaze_target_m", ""));
     Eigen::Vector3d g;

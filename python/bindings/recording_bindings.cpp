@@ -36,7 +36,7 @@ struct Field {
 constexpr std::size_t kD = sizeof(double);
 
 // In the CSV's column order (recording_csv_header()); a test compares the two.
-const std::array<Field, 30> kFields{{
+const std::array<Field, 31> kFields{{
     {"t_s", offsetof(RecordingRow, t_s), "f8"},
     {"dt_s", offsetof(RecordingRow, dt_s), "f8"},
     {"tool_D_x_m", offsetof(RecordingRow, p_D_tool_m), "f8"},
@@ -67,6 +67,7 @@ const std::array<Field, 30> kFields{{
     {"safety_gain", offsetof(RecordingRow, safety_gain), "f8"},
     {"contact", offsetof(RecordingRow, contact), "u1"},
     {"contact_object", offsetof(RecordingRow, contact_object), "i4"},
+    {"lift_m", offsetof(RecordingRow, lift_m), "f8"},
 }};
 
 py::dtype recording_dtype() {

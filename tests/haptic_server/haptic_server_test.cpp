@@ -348,7 +348,7 @@ TEST(HapticServer, SilentTrackerFadesForceOutAndStopsTheBase) {
     std::vector<std::string> cells;
     std::stringstream ss(line);
     for (std::string cell; std::getline(ss, cell, ',');) cells.push_back(cell);
-    ASSERT_EQ(cells.size(), 30u);
+    ASSERT_EQ(cells.size(), 31u);
     const double age = std::stod(cells[26]), gain = std::stod(cells[27]);
     const double fx = std::stod(cells[11]), fy = std::stod(cells[12]), fz = std::stod(cells[13]);
     if (age >= 0.05) {

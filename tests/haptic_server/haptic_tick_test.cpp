@@ -326,3 +326,70 @@ TEST(HapticTick, TheLookAheadBetweenTicksChangesNothingTheDeviceGets) {
 }
 
 }  // namespace
+
+namespace {
+
+/// The fixture's rig with a lift from -0.5 m to 0.5 m.
+Rig lifted_rig(const Fixture& f) {
+  SceneDescription scene = *f.description;
+  scene.rig_lift = LiftDescription{-0.5, 0.5, 0.3, 1.5, {}};
+  return Rig::from_scene(scene).value();
+}
+
+TEST(HapticTick, ARigWithALiftRendersNothingUntilTheLiftHeightIsKnown) {
+  Fixture f = make_fixture(0.005);
+  HapticTick tick(*f.scene, lifted_rig(f), no_fade_in());
+  ASSERT_NE(tick.add_base_sensor_sample(0.0, f.rig->X_is900_base_sensor_from_base({})), BaseSampleStatus::Invalid);
+  const auto unknown = tick.tick(0.001, 0.001, tool(kQ));
+  EXPECT_TRUE(unknown.startup);  // the arm's place is not known: start-up, neither stale nor a fault
+  EXPECT_FALSE(unknown.p_W_hip.allFinite());
+  EXPECT_EQ(unknown.force_D_N, Eigen::Vector3d::Zero());
+  EXPECT_TRUE(std::isnan(unknown.lift_m));
+  tick.set_lift_m(0.0);
+  const auto known = tick.tick(0.002, 0.001, tool(kQ));
+  EXPECT_FALSE(known.startup);
+  EXPECT_TRUE(known.p_W_hip.allFinite());
+  EXPECT_EQ(known.lift_m, 0.0);
+}
+
+TEST(HapticTick, TheLiftCarriesTheHipAndTheSameToolTouchesOnlyWhereTheLiftPutsIt) {
+  // The box's top is 5 mm below the HIP with the lift at 0: raised 0.2 m the hand is in
+  // free space; lowered 10 mm the HIP is 5 mm into the box and is pushed up.
+  Fixture f = make_fixture(0.005);
+  HapticTick tick(*f.scene, lifted_rig(f), no_fade_in());
+  const Eigen::Vector3d hip_at_0 = f.rig->p_W_hip(f.rig->X_W_robot_from_base({}), kQ);
+  tick.set_lift_m(0.2);
+  HapticTickOutput out;
+  for (int k = 0; k < 10; ++k) {
+    tick.add_base_sensor_sample(1e-3 * k, f.rig->X_is900_base_sensor_from_base({}));
+    out = tick.tick(1e-3 * k, 0.001, tool(kQ));
+  }
+  EXPECT_NEAR((out.p_W_hip - hip_at_0 - Eigen::Vector3d(0.0, 0.2, 0.0)).norm(), 0.0, 1e-12);
+  EXPECT_FALSE(out.in_contact);
+  // Down at 0.3 m/s, one tick at a time (the proxy never jumps), to 10 mm below 0.
+  double lift_m = 0.2;
+  for (int k = 10; lift_m > -0.01; ++k) {
+    lift_m = std::max(-0.01, lift_m - 0.3e-3);
+    tick.set_lift_m(lift_m);
+    tick.add_base_sensor_sample(1e-3 * k, f.rig->X_is900_base_sensor_from_base({}));
+    out = tick.tick(1e-3 * k, 0.001, tool(kQ));
+  }
+  ASSERT_TRUE(out.in_contact);
+  EXPECT_NEAR(out.p_W_hip.y(), hip_at_0.y() - 0.01, 1e-12);
+  EXPECT_NEAR(out.force_W_N.y(), 500.0 * 0.005, 0.05);
+  // The lift only translates: the force in the device frame is the unlifted rig's.
+  EXPECT_NEAR((out.force_D_N - f.rig->force_P_from_W(f.rig->X_W_robot_from_base({}), out.force_W_N)).norm(), 0.0,
+              1e-12);
+}
+
+TEST(HapticTick, ALiftHeightGivenToARigWithoutALiftChangesNothing) {
+  Fixture f = make_fixture(0.005);
+  HapticTick tick(*f.scene, *f.rig, no_fade_in());
+  tick.set_lift_m(0.3);
+  ASSERT_NE(tick.add_base_sensor_sample(0.0, f.rig->X_is900_base_sensor_from_base({})), BaseSampleStatus::Invalid);
+  const auto out = tick.tick(0.001, 0.001, tool(kQ));
+  EXPECT_EQ(out.lift_m, 0.0);
+  EXPECT_NEAR((out.p_W_hip - f.rig->p_W_hip(f.rig->X_W_robot_from_base({}), kQ)).norm(), 0.0, 1e-12);
+}
+
+}  // namespace

@@ -3,6 +3,7 @@
 #include "haptic_server/haptic_server.h"
 #include "haptic_server/recording_replay.h"
 #include "haptic_server/server_settings.h"
+#include "recording/csv_recording.h"
 #include "recording/csv_recording_reader.h"
 #include "scene_compiler/scene_compiler.h"
 #include "scene_xml/scene_reader.h"
@@ -11,8 +12,10 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 namespace {
@@ -154,6 +157,42 @@ TEST(RecordingReader, ALineCutShortByACrashIsLeftOutAndTheRestIsRead) {
   ASSERT_TRUE(r.ok());
   const auto full = read_recording(std::string(MHD_SOURCE_DIR) + "/tests/data/server/recording_head.csv");
   EXPECT_EQ(r.value().size(), full.value().size());
+}
+
+TEST(RecordingReader, ARecordingFromBeforeTheLiftReadsWithTheArmAtZeroAndTheLiftRoundTrips) {
+  // The same recording without its last column, lift_m, as recordings made before the
+  // lift are: it reads, every row's lift at 0, every other number the same.
+  const std::string source = std::string(MHD_SOURCE_DIR) + "/tests/data/server/recording_head.csv";
+  std::ifstream in(source);
+  std::string text, line;
+  while (std::getline(in, line)) text += line.substr(0, line.rfind(',')) + "\n";
+  ASSERT_EQ(text.substr(0, text.find('\n')).find("lift_m"), std::string::npos);
+  const fs::path old = temp_file("before_lift.csv");
+  std::ofstream(old) << text;
+  const auto before = read_recording(old);
+  const auto now = read_recording(source);
+  ASSERT_TRUE(before.ok()) << before.error_text();
+  ASSERT_TRUE(now.ok());
+  ASSERT_EQ(before.value().size(), now.value().size());
+  for (std::size_t i = 0; i < now.value().size(); ++i) {
+    EXPECT_EQ(before.value()[i].lift_m, 0.0);
+    EXPECT_EQ(before.value()[i].p_W_hip, now.value()[i].p_W_hip);
+  }
+  // A lift height, and a not-yet-known one, read back as written.
+  const fs::path lifted = temp_file("lifted.csv");
+  {
+    CsvRecording out(lifted, 0.0);
+    RecordingRow row = now.value().front();
+    row.lift_m = 0.37251;
+    out.write(row);
+    row.lift_m = std::numeric_limits<double>::quiet_NaN();
+    out.write(row);
+  }
+  const auto back = read_recording(lifted);
+  ASSERT_TRUE(back.ok()) << back.error_text();
+  ASSERT_EQ(back.value().size(), 2u);
+  EXPECT_EQ(back.value()[0].lift_m, 0.37251);
+  EXPECT_TRUE(std::isnan(back.value()[1].lift_m));
 }
 
 }  // namespace

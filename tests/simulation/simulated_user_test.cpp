@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -230,6 +232,52 @@ TEST(SimulatedUser, UpdateWritesHeadAndHandIntoTheWorld) {
   EXPECT_EQ(world.hand(), user.hand_W());
   EXPECT_EQ(world.head().p_W_m, user.head().p_W_m);
   EXPECT_TRUE(world.head().q_W.isApprox(user.head().q_W, 1e-15));
+}
+
+TEST(SimulatedUser, ACrouchingAndReachingUserSweepsTheHandsHeightAndCrouchesForTheLowHand) {
+  SimulatedUserConfig c;
+  c.path = {{0.0, 0.0, 0.0}};
+  c.hand_motion_amplitude_m = 0.0;
+  c.hand_height_sweep = HandHeightSweep{0.3, 1.9, 0.4, 0.5};  // legs of 4 s, holds of 0.5 s
+  SimulatedUser user(c);
+  double lowest = 10.0, highest = 0.0, fastest = 0.0, lowest_eyes = 10.0;
+  double last = user.hand_W().y();
+  for (int i = 1; i <= 18000; ++i) {  // two whole sweeps of 9 s
+    user.advance_to(i * 1e-3);
+    const double y = user.hand_W().y();
+    lowest = std::min(lowest, y);
+    highest = std::max(highest, y);
+    fastest = std::max(fastest, std::abs(y - last) / 1e-3);
+    lowest_eyes = std::min(lowest_eyes, user.head().p_W_m.y());
+    // The eyes stay between a crouch (1 m) and standing height.
+    ASSERT_GE(user.head().p_W_m.y(), 1.0);
+    ASSERT_LE(user.head().p_W_m.y(), c.eye_height_m);
+    last = y;
+  }
+  EXPECT_DOUBLE_EQ(lowest, 0.3);
+  EXPECT_DOUBLE_EQ(highest, 1.9);
+  EXPECT_NEAR(fastest, 0.4, 1e-9);  // continuous: no step between ticks
+  EXPECT_DOUBLE_EQ(lowest_eyes, 1.0);
+  // At 2.5 s the hand is half-way up (0.5 s hold, then 2 s at 0.4 m/s), and standing eyes
+  // come back once the hand is 0.7 m below them.
+  EXPECT_NEAR(hand_height_at(c.hand_height_sweep, 1.1, 2.5), 1.1, 1e-12);
+  EXPECT_DOUBLE_EQ(eye_height_at(1.65, 0.95), 1.65);
+  EXPECT_DOUBLE_EQ(eye_height_at(1.65, 0.5), 1.2);
+  // The dual: without a sweep the hand holds hand_height_m.
+  EXPECT_DOUBLE_EQ(hand_height_at(std::nullopt, 1.1, 3.0), 1.1);
+}
+
+TEST(SimulatedUser, RefusesASweepThatIsNoRange) {
+  for (const HandHeightSweep& bad : {HandHeightSweep{1.0, 0.5, 0.3, 1.0}, HandHeightSweep{0.0, 1.0, 0.3, 1.0},
+                                     HandHeightSweep{0.3, 1.9, 0.0, 1.0}, HandHeightSweep{0.3, 1.9, 0.3, -1.0},
+                                     HandHeightSweep{std::nan(""), 1.9, 0.3, 1.0}}) {
+    SimulatedUserConfig c;
+    c.hand_height_sweep = bad;
+    EXPECT_NE(error_of(c), "") << bad.low_m << " " << bad.high_m;
+  }
+  SimulatedUserConfig good;
+  good.hand_height_sweep = HandHeightSweep{};
+  EXPECT_EQ(error_of(good), "");
 }
 
 }  // namespace
