@@ -31,11 +31,76 @@ struct PlanSimOptions {
   double half_size_m = 1.5;
   std::vector<std::string> sets;
   bool no_maps = false;
+  // The followed volume (3-D): hand heights, and the lift that the "with the lift" column uses.
+  bool volume = false;
+  double height_min_m = 0.3;
+  double height_max_m = 1.9;
+  double height_step_m = 0.1;
+  std::vector<double> lift_range_m{-0.7, 0.9};
+  double lift_speed_mps = 0.3;
+  double lift_acceleration_mps2 = 1.5;
 };
 
 int fail(const std::string& message) {
   fmt::print(stderr, "mhd plan-sim: error: {}\n", message);
   return 1;
+}
+
+/// The followed volume, without and with the lift, for each planner and limit: a table on
+/// stdout and plan_sim_volumes.csv.
+int run_volume(const PlanSimOptions& o, const mhd::PlannerSettings& parsed, const std::vector<mhd::PlannerKind>& kinds) {
+  if (!(o.height_step_m > 0.0) || !(o.height_min_m > 0.0) || !(o.height_max_m > o.height_min_m)) {
+    return fail("--heights-m must be MIN MAX STEP with 0 < MIN < MAX and STEP > 0");
+  }
+  if (o.lift_range_m.size() != 2 || !(o.lift_range_m[0] <= 0.0) || !(o.lift_range_m[1] >= 0.0) ||
+      !(o.lift_range_m[0] < o.lift_range_m[1]) || !(o.lift_speed_mps > 0.0) || !(o.lift_acceleration_mps2 > 0.0)) {
+    return fail("the lift needs --lift-range-m MIN MAX with MIN <= 0 <= MAX, MIN < MAX, and positive limits");
+  }
+  std::vector<double> heights;
+  for (int i = 0; o.height_min_m + i * o.height_step_m <= o.height_max_m + 1e-9; ++i) {
+    heights.push_back(o.height_min_m + i * o.height_step_m);
+  }
+  if (heights.size() < 2) return fail("--heights-m gives fewer than two heights");
+  const mhd::Lift lift{o.lift_range_m[0], o.lift_range_m[1], o.lift_speed_mps, o.lift_acceleration_mps2};
+  std::string csv_text =
+      "planner,facing_change_deg,max_linear_speed_mps,max_angular_speed_degps,volume_without_lift_m3,"
+      "volume_with_lift_m3,base_entries\n";
+  fmt::print("followed volume (m^3), hand at {:g}..{:g} m every {:g} m; lift {:g}..{:g} m, {:g} m/s, {:g} m/s^2\n",
+             o.height_min_m, heights.back(), o.height_step_m, lift.min_m, lift.max_m, lift.max_speed_mps,
+             lift.max_acceleration_mps2);
+  fmt::print("{:<11} {:>7} {:>6} {:>8} {:>14} {:>11}\n", "planner", "facing", "v m/s", "w deg/s", "without lift",
+             "with lift");
+  for (const mhd::PlannerKind kind : kinds) {
+    for (const double facing : o.facing_deg) {
+      for (const double v : o.v_mps) {
+        for (const double w : o.omega_degps) {
+          mhd::PlannerSettings settings = parsed;
+          settings.max_linear_speed_mps = v;
+          settings.max_angular_speed_radps = w * kDeg;
+          if (const auto errors = mhd::validate(settings); !errors.empty()) return fail(errors.front());
+          mhd::plan_sim::MapSpec spec;
+          spec.cell_m = o.cell_mm * 1e-3;
+          spec.half_size_m = o.half_size_m;
+          spec.facing_change_rad = facing * kDeg;
+          spec.vertical = mhd::plan_sim::VerticalReach{};
+          const auto fixed = mhd::plan_sim::simulate_volume(kind, settings, spec, heights);
+          spec.vertical->lift = lift;
+          const auto lifted = mhd::plan_sim::simulate_volume(kind, settings, spec, heights);
+          fmt::print("{:<11} {:>7.0f} {:>6.2f} {:>8.0f} {:>14.3f} {:>11.3f}\n", mhd::to_string(kind), facing, v, w,
+                     fixed.followed_volume_m3(), lifted.followed_volume_m3());
+          csv_text += fmt::format("{},{:.0f},{:.2f},{:.0f},{:.4f},{:.4f},{}\n", mhd::to_string(kind), facing, v, w,
+                                  fixed.followed_volume_m3(), lifted.followed_volume_m3(),
+                                  fixed.base_entries + lifted.base_entries);
+        }
+      }
+    }
+  }
+  const std::filesystem::path csv = std::filesystem::path(o.out) / "plan_sim_volumes.csv";
+  std::ofstream out(csv);
+  out << csv_text;
+  if (!out) return fail("cannot write '" + csv.string() + "'");
+  fmt::print("wrote {}\n", csv.string());
+  return 0;
 }
 
 int run(const PlanSimOptions& o) {
@@ -63,6 +128,7 @@ int run(const PlanSimOptions& o) {
   std::error_code ec;
   std::filesystem::create_directories(o.out, ec);
   if (ec) return fail("cannot create '" + o.out + "': " + ec.message());
+  if (o.volume) return run_volume(o, *parsed, kinds);
   const std::filesystem::path maps_dir = std::filesystem::path(o.out) / "maps";
   if (!o.no_maps) {
     std::filesystem::create_directories(maps_dir, ec);
@@ -131,5 +197,23 @@ void add_plan_sim_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--set", o->sets, "Planner setting NAME=VALUE (e.g. step_angle_deg=30)")->type_name("NAME=VALUE");
   cmd->add_flag("--no-maps", o->no_maps, "Only the area table, no follow-map CSVs");
+  cmd->add_flag("--volume", o->volume,
+                "The followed volume instead of the area: the hand at several heights, the arm fixed or on a lift");
+  cmd->add_option_function<std::vector<double>>(
+         "--heights-m",
+         [o](const std::vector<double>& h) {
+           if (h.size() != 3) throw CLI::ValidationError("--heights-m", "expects MIN MAX STEP");
+           o->height_min_m = h[0];
+           o->height_max_m = h[1];
+           o->height_step_m = h[2];
+         },
+         "With --volume: the hand's heights, MIN MAX STEP (default 0.3 1.9 0.1)")
+      ->expected(3);
+  cmd->add_option("--lift-range-m", o->lift_range_m, "With --volume: the lift's range, MIN MAX")
+      ->expected(2)
+      ->capture_default_str();
+  cmd->add_option("--lift-speed-mps", o->lift_speed_mps, "With --volume: the lift's speed limit")->capture_default_str();
+  cmd->add_option("--lift-acceleration-mps2", o->lift_acceleration_mps2, "With --volume: its acceleration limit")
+      ->capture_default_str();
   cmd->callback([o] { mhd::cli::exit_with(run(*o)); });
 }

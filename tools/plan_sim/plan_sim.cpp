@@ -1,5 +1,6 @@
 #include "plan_sim.h"
 
+#include "planner/lift_planner.h"
 #include "planner/planner_geometry.h"
 
 #include <algorithm>
@@ -18,10 +19,41 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
-Eigen::Vector3d hand_of(const Eigen::Vector2d& user, double heading, double reach) {
+Eigen::Vector3d hand_of(const Eigen::Vector2d& user, double heading, double reach, double height_m) {
   const Eigen::Vector2d h = user + reach * g::direction(heading);
-  return Eigen::Vector3d(h.x(), 1.1, h.y());
+  return Eigen::Vector3d(h.x(), height_m, h.y());
 }
+
+/// The arm's height over one case: fixed, or on a lift that LiftPlanner drives from 0
+/// towards the hand. inside(t) says whether the hand is within the reach at time t (called
+/// with increasing t).
+class VerticalTrack {
+ public:
+  VerticalTrack(const std::optional<VerticalReach>& reach, double hand_height_m)
+      : reach_(reach), hand_height_m_(hand_height_m) {
+    if (reach_ && reach_->lift) {
+      planner_.emplace(*reach_->lift, 0.5 * (reach_->low_m + reach_->high_m));
+      target_m_ = planner_->target_for_hand(hand_height_m, 0.0);
+    }
+  }
+
+  [[nodiscard]] bool inside(double t_s) {
+    if (!reach_) return true;
+    if (planner_) {
+      constexpr double kStep_s = 1e-3;
+      for (; lift_t_s_ + kStep_s <= t_s + 1e-12; lift_t_s_ += kStep_s) lift_ = planner_->step(lift_, target_m_, kStep_s);
+    }
+    return hand_height_m_ >= reach_->low_m + lift_.height_m && hand_height_m_ <= reach_->high_m + lift_.height_m;
+  }
+
+ private:
+  std::optional<VerticalReach> reach_;
+  double hand_height_m_;
+  std::optional<LiftPlanner> planner_;
+  double target_m_ = 0.0;
+  LiftState lift_;
+  double lift_t_s_ = 0.0;
+};
 
 }  // namespace
 
@@ -34,15 +66,16 @@ CaseFigures simulate_case(PlannerKind kind, const PlannerSettings& settings, con
   BasePose base{start_base.x(), start_base.y(), g::facing_heading(start_base, start_user, settings.facing_angle_rad)};
 
   const double heading = spec.facing_change_rad;
-  const Eigen::Vector3d hip = hand_of(next_user_W, heading, reach);
+  const Eigen::Vector3d hip = hand_of(next_user_W, heading, reach, spec.hand_height_m);
   const double r_collision = settings.collision_radius_m();
-  const auto hip_inside = [&](const BasePose& b) {
+  VerticalTrack vertical(spec.vertical, spec.hand_height_m);
+  const auto hip_inside = [&](const BasePose& b, double t_s) {
     const Eigen::Vector2d p = g::hip_in_base(b, hip);
-    return settings.usable_B.contains(p.x(), p.y());
+    return settings.usable_B.contains(p.x(), p.y()) && vertical.inside(t_s);
   };
 
   CaseFigures result;
-  if (hip_inside(base)) {
+  if (hip_inside(base, 0.0)) {
     result.followed = true;
     return result;
   }
@@ -63,7 +96,7 @@ CaseFigures simulate_case(PlannerKind kind, const PlannerSettings& settings, con
       const BasePose b = integrate_twist(base, out.twist_B, dt);
       const double d = (Eigen::Vector2d(b.x_m, b.z_m) - next_user_W).norm();
       if (d_start >= r_collision ? d < r_collision : d < d_start - 1e-12) result.base_entered = true;
-      if (!result.followed && hip_inside(b)) {
+      if (!result.followed && hip_inside(b, in.time_s + dt)) {
         result.followed = true;
         result.time_s = in.time_s + dt;
       }
@@ -98,6 +131,28 @@ FollowMap simulate_map(PlannerKind kind, const PlannerSettings& settings, const 
     }
   }
   return map;
+}
+
+double FollowVolume::followed_volume_m3() const noexcept {
+  double cells = 0.0;
+  for (const int n : followed_cells) cells += n;
+  return cells * cell_m * cell_m * height_step_m;
+}
+
+FollowVolume simulate_volume(PlannerKind kind, const PlannerSettings& settings, MapSpec spec,
+                             const std::vector<double>& hand_heights_m) {
+  FollowVolume volume;
+  volume.hand_heights_m = hand_heights_m;
+  volume.cell_m = spec.cell_m;
+  volume.height_step_m = hand_heights_m.size() >= 2 ? hand_heights_m[1] - hand_heights_m[0] : 0.0;
+  if (!spec.vertical) spec.vertical = VerticalReach{};
+  for (const double height_m : hand_heights_m) {
+    spec.hand_height_m = height_m;
+    const FollowMap map = simulate_map(kind, settings, spec);
+    volume.followed_cells.push_back(map.followed_cells);
+    volume.base_entries += map.base_entries;
+  }
+  return volume;
 }
 
 std::string table_csv(const std::vector<TableRow>& rows) {

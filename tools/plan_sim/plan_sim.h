@@ -10,16 +10,33 @@
 // HIP (the hand) is inside the planar usable workspace at some check time t <= 1 s (checks
 // every period / substeps). The followed area is the number of followed cells times the
 // cell area. Deterministic; nothing here touches files.
+//
+// In 3-D (simulate_volume) the hand is also at one of a list of heights, and a position
+// is followed only when the hand is inside the usable workspace's vertical extent too, at
+// the same check time: the arm at its fixed height, or on a lift that LiftPlanner drives
+// from height 0 (where the rig file puts the arm) at t = 0. The followed volume is the sum
+// over heights of the followed area times the height step.
 
+#include "kinematics/rig.h"
 #include "planner/planner.h"
 
 #include <Eigen/Core>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace mhd::plan_sim {
+
+/// The arm's usable reach in height: the usable workspace's vertical extent in the world
+/// with the lift at 0 (the defaults: scenes/rigs/pomhi.xml's PHANToM, its frame 0.87 m up,
+/// the usable box 30 mm inside the workspace), and the lift that carries it, if any.
+struct VerticalReach {
+  double low_m = 0.8965;
+  double high_m = 1.1035;
+  std::optional<Lift> lift;
+};
 
 struct MapSpec {
   double half_size_m = 1.5;         ///< the grid covers [-half, half]^2 around the start
@@ -27,6 +44,9 @@ struct MapSpec {
   double facing_change_rad = 0.0;   ///< the user's new facing minus the old one
   double horizon_s = 1.0;
   int substeps = 10;                ///< success checks per command period
+  double hand_height_m = 1.1;       ///< the hand's height at the new position
+  /// Set: the hand must be within the arm's vertical reach too (3-D); unset: planar only.
+  std::optional<VerticalReach> vertical;
 };
 
 struct CaseFigures {
@@ -53,6 +73,21 @@ struct FollowMap {
 };
 
 [[nodiscard]] FollowMap simulate_map(PlannerKind kind, const PlannerSettings& settings, const MapSpec& spec);
+
+/// The followed volume: simulate_map at each of `hand_heights_m` (evenly spaced, at least
+/// two), with spec.vertical set (the spec's own, or the default reach without a lift).
+struct FollowVolume {
+  std::vector<double> hand_heights_m;
+  std::vector<int> followed_cells;  ///< per height
+  double cell_m = 0.0;
+  double height_step_m = 0.0;
+  int base_entries = 0;
+
+  [[nodiscard]] double followed_volume_m3() const noexcept;
+};
+
+[[nodiscard]] FollowVolume simulate_volume(PlannerKind kind, const PlannerSettings& settings, MapSpec spec,
+                                           const std::vector<double>& hand_heights_m);
 
 struct TableRow {
   PlannerKind kind = PlannerKind::Seed;
