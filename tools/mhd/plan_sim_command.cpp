@@ -46,6 +46,41 @@ int fail(const std::string& message) {
   return 1;
 }
 
+/// One planner and set of limits of the sweep: its settings (checked) and its map's spec.
+struct SweepCase {
+  mhd::PlannerKind kind{};
+  double facing_deg = 0.0, v_mps = 0.0, omega_degps = 0.0;
+  mhd::PlannerSettings settings;
+  mhd::plan_sim::MapSpec spec;
+};
+
+/// Every case, planner by planner, then by facing change, linear and angular speed;
+/// `invalid` receives the first setting the planner refuses (and no cases are returned).
+std::vector<SweepCase> sweep_cases(const PlanSimOptions& o, const mhd::PlannerSettings& parsed,
+                                   const std::vector<mhd::PlannerKind>& kinds, std::string& invalid) {
+  std::vector<SweepCase> cases;
+  for (const mhd::PlannerKind kind : kinds) {
+    for (const double facing : o.facing_deg) {
+      for (const double v : o.v_mps) {
+        for (const double w : o.omega_degps) {
+          SweepCase c{kind, facing, v, w, parsed, {}};
+          c.settings.max_linear_speed_mps = v;
+          c.settings.max_angular_speed_radps = w * kDeg;
+          if (const auto errors = mhd::validate(c.settings); !errors.empty()) {
+            invalid = errors.front();
+            return {};
+          }
+          c.spec.cell_m = o.cell_mm * 1e-3;
+          c.spec.half_size_m = o.half_size_m;
+          c.spec.facing_change_rad = facing * kDeg;
+          cases.push_back(c);
+        }
+      }
+    }
+  }
+  return cases;
+}
+
 /// The followed volume, without and with the lift, for each planner and limit: a table on
 /// stdout and plan_sim_volumes.csv.
 int run_volume(const PlanSimOptions& o, const mhd::PlannerSettings& parsed, const std::vector<mhd::PlannerKind>& kinds) {
@@ -70,30 +105,19 @@ int run_volume(const PlanSimOptions& o, const mhd::PlannerSettings& parsed, cons
              lift.max_acceleration_mps2);
   fmt::print("{:<11} {:>7} {:>6} {:>8} {:>14} {:>11}\n", "planner", "facing", "v m/s", "w deg/s", "without lift",
              "with lift");
-  for (const mhd::PlannerKind kind : kinds) {
-    for (const double facing : o.facing_deg) {
-      for (const double v : o.v_mps) {
-        for (const double w : o.omega_degps) {
-          mhd::PlannerSettings settings = parsed;
-          settings.max_linear_speed_mps = v;
-          settings.max_angular_speed_radps = w * kDeg;
-          if (const auto errors = mhd::validate(settings); !errors.empty()) return fail(errors.front());
-          mhd::plan_sim::MapSpec spec;
-          spec.cell_m = o.cell_mm * 1e-3;
-          spec.half_size_m = o.half_size_m;
-          spec.facing_change_rad = facing * kDeg;
-          spec.vertical = mhd::plan_sim::VerticalReach{};
-          const auto fixed = mhd::plan_sim::simulate_volume(kind, settings, spec, heights);
-          spec.vertical->lift = lift;
-          const auto lifted = mhd::plan_sim::simulate_volume(kind, settings, spec, heights);
-          fmt::print("{:<11} {:>7.0f} {:>6.2f} {:>8.0f} {:>14.3f} {:>11.3f}\n", mhd::to_string(kind), facing, v, w,
-                     fixed.followed_volume_m3(), lifted.followed_volume_m3());
-          csv_text += fmt::format("{},{:.0f},{:.2f},{:.0f},{:.4f},{:.4f},{}\n", mhd::to_string(kind), facing, v, w,
-                                  fixed.followed_volume_m3(), lifted.followed_volume_m3(),
-                                  fixed.base_entries + lifted.base_entries);
-        }
-      }
-    }
+  std::string invalid;
+  std::vector<SweepCase> cases = sweep_cases(o, parsed, kinds, invalid);
+  if (!invalid.empty()) return fail(invalid);
+  for (SweepCase& c : cases) {
+    c.spec.vertical = mhd::plan_sim::VerticalReach{};
+    const auto fixed = mhd::plan_sim::simulate_volume(c.kind, c.settings, c.spec, heights);
+    c.spec.vertical->lift = lift;
+    const auto lifted = mhd::plan_sim::simulate_volume(c.kind, c.settings, c.spec, heights);
+    fmt::print("{:<11} {:>7.0f} {:>6.2f} {:>8.0f} {:>14.3f} {:>11.3f}\n", mhd::to_string(c.kind), c.facing_deg, c.v_mps,
+               c.omega_degps, fixed.followed_volume_m3(), lifted.followed_volume_m3());
+    csv_text += fmt::format("{},{:.0f},{:.2f},{:.0f},{:.4f},{:.4f},{}\n", mhd::to_string(c.kind), c.facing_deg, c.v_mps,
+                            c.omega_degps, fixed.followed_volume_m3(), lifted.followed_volume_m3(),
+                            fixed.base_entries + lifted.base_entries);
   }
   const std::filesystem::path csv = std::filesystem::path(o.out) / "plan_sim_volumes.csv";
   std::ofstream out(csv);
@@ -138,31 +162,21 @@ int run(const PlanSimOptions& o) {
   std::vector<mhd::plan_sim::TableRow> rows;
   double simulated_s = 0.0;
   const auto start = std::chrono::steady_clock::now();
-  for (const mhd::PlannerKind kind : kinds) {
-    for (const double facing : o.facing_deg) {
-      for (const double v : o.v_mps) {
-        for (const double w : o.omega_degps) {
-          mhd::PlannerSettings settings = *parsed;
-          settings.max_linear_speed_mps = v;
-          settings.max_angular_speed_radps = w * kDeg;
-          if (const auto errors = mhd::validate(settings); !errors.empty()) return fail(errors.front());
-          mhd::plan_sim::MapSpec spec;
-          spec.cell_m = o.cell_mm * 1e-3;
-          spec.half_size_m = o.half_size_m;
-          spec.facing_change_rad = facing * kDeg;
-          const mhd::plan_sim::FollowMap map = mhd::plan_sim::simulate_map(kind, settings, spec);
-          simulated_s += spec.horizon_s * map.cells_per_side * map.cells_per_side;
-          rows.push_back({kind, spec.facing_change_rad, v, w * kDeg, map.followed_area_m2(), map.followed_cells,
-                          map.base_entries});
-          if (o.no_maps) continue;
-          const std::filesystem::path file =
-              maps_dir / fmt::format("planner_{}_f{:.0f}_v{:.1f}_w{:.0f}.csv", mhd::to_string(kind), facing, v, w);
-          std::ofstream map_out(file);
-          map_out << mhd::plan_sim::map_csv(map, kind, settings, spec);
-          if (!map_out) return fail("cannot write '" + file.string() + "'");
-        }
-      }
-    }
+  std::string invalid;
+  const std::vector<SweepCase> cases = sweep_cases(o, *parsed, kinds, invalid);
+  if (!invalid.empty()) return fail(invalid);
+  for (const SweepCase& c : cases) {
+    const mhd::plan_sim::FollowMap map = mhd::plan_sim::simulate_map(c.kind, c.settings, c.spec);
+    simulated_s += c.spec.horizon_s * map.cells_per_side * map.cells_per_side;
+    rows.push_back({c.kind, c.spec.facing_change_rad, c.v_mps, c.omega_degps * kDeg, map.followed_area_m2(),
+                    map.followed_cells, map.base_entries});
+    if (o.no_maps) continue;
+    const std::filesystem::path file = maps_dir / fmt::format("planner_{}_f{:.0f}_v{:.1f}_w{:.0f}.csv",
+                                                              mhd::to_string(c.kind), c.facing_deg, c.v_mps,
+                                                              c.omega_degps);
+    std::ofstream map_out(file);
+    map_out << mhd::plan_sim::map_csv(map, c.kind, c.settings, c.spec);
+    if (!map_out) return fail("cannot write '" + file.string() + "'");
   }
   const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
