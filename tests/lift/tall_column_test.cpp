@@ -144,6 +144,18 @@ TEST(TallColumn, ARigWithALiftOnABaseWithoutOneIsRefused) {
   expect_refused("base_without_lift", kLiftParams, "the rig has a <lift>, but this base reports none");
 }
 
+TEST(TallColumn, ALiftStandingOutsideTheRigsRangeEndsTheRun) {
+  // The base's own lift reaches 2 m and stands at 1.5 m; the rig says 0.9 m at most.
+  const fs::path dir = fresh_dir("tall_column", "lift_out_of_range");
+  write_scene(dir, {{R"(<param name="lift_max_m" value="0.9"/>)",
+                     R"(<param name="lift_max_m" value="2"/><param name="lift_start_m" value="1.5"/>)"}});
+  MhdRunProcess mhd = run(dir, 5.0);
+  EXPECT_EQ(exit_status(mhd), mhd::test::hardware::kExitFault) << mhd.output();
+  EXPECT_TRUE(has(mhd.output(), "base_read returned the lift at 1.5 m, outside the rig's lift range [-0.7, 0.9] m"))
+      << mhd.output();
+  expect_last_command_zero(dir / "base.csv", mhd.output());
+}
+
 TEST(TallColumn, ABaseWithALiftOnARigWithoutOneIsRefused) {
   expect_refused("rig_without_lift", kRigLift, "this base reports a lift, but the rig has no <lift>");
 }
