@@ -14,6 +14,7 @@ std::string_view to_string(PlannerCase c) noexcept {
     case PlannerCase::Straight: return "straight";
     case PlannerCase::SubTarget: return "sub-target";
     case PlannerCase::Stopping: return "stopping";
+    case PlannerCase::Held: return "held";
   }
   return "?";
 }
@@ -25,6 +26,17 @@ PlanarStart planar_start(const PlannerInput& in, const PlannerSettings& settings
   const Eigen::Vector2d hip_B = planner_geometry::hip_in_base(in.base, in.p_W_hip);
   start.out.hip_in_usable = settings.usable_B.contains(hip_B.x(), hip_B.y());
   return start;
+}
+
+PlannerOutput Planner::update(const PlannerInput& input) noexcept {
+  if (input.keep_outs_current) return plan(input);
+  active_ = false;
+  PlannerOutput out = planar_start(input, settings_).out;
+  out.status = PlannerCase::Held;
+  out.goal_W = Eigen::Vector2d(input.base.x_m, input.base.z_m);
+  out.target_W = out.goal_W;
+  out.goal_heading_rad = input.base.heading_rad;
+  return out;
 }
 
 std::unique_ptr<Planner> make_planner(PlannerKind kind, const PlannerSettings& settings) {

@@ -23,6 +23,7 @@
 // (x forward, z = x cross y, the right side); see kinematics/base_pose.h.
 
 #include "kinematics/base_pose.h"
+#include "planner/keep_outs.h"
 #include "planner/planner_settings.h"
 
 #include <Eigen/Core>
@@ -39,6 +40,7 @@ enum class PlannerCase {
   Straight,   ///< angle to the target below pi' (seed) or straight path clear (predictive)
   SubTarget,  ///< moving to a temporary target on the circle of radius d' around the user
   Stopping,   ///< within the stop interval of the target: linear velocity 0, finishing the turn
+  Held,       ///< the keep-outs are not current (another rig's data is stale): the base stands still
 };
 
 [[nodiscard]] std::string_view to_string(PlannerCase c) noexcept;
@@ -50,6 +52,9 @@ struct PlannerInput {
   double user_heading_rad = 0.0;                          ///< user's facing, forward (cos h, 0, -sin h)
   Eigen::Vector2d user_velocity_W = Eigen::Vector2d::Zero();  ///< (vx, vz) from the tracker; 0 if unknown
   Eigen::Vector3d p_W_hip = Eigen::Vector3d::Zero();      ///< the HIP (the user's hand) in the world
+  KeepOuts keep_outs;  ///< the other users and bases on the floor (none in a one-rig scene)
+  /// False when a source of keep_outs went stale: the base cannot see what it must avoid.
+  bool keep_outs_current = true;
 };
 
 struct PlannerOutput {
@@ -79,7 +84,9 @@ class Planner {
   Planner& operator=(const Planner&) = delete;
 
   /// One planner tick. Call every settings().command_period_s with the latest measurements.
-  [[nodiscard]] virtual PlannerOutput update(const PlannerInput& input) noexcept = 0;
+  /// Keep-outs that are not current hold the base (PlannerCase::Held, a zero twist) and
+  /// forget that it was moving; otherwise the planner's own step.
+  [[nodiscard]] PlannerOutput update(const PlannerInput& input) noexcept;
   /// Forgets whether the base is moving (e.g. after the base was stopped externally).
   void reset() noexcept { active_ = false; }
   [[nodiscard]] bool active() const noexcept { return active_; }
@@ -89,6 +96,9 @@ class Planner {
  protected:
   PlannerSettings settings_;
   bool active_ = false;
+
+ private:
+  [[nodiscard]] virtual PlannerOutput plan(const PlannerInput& input) noexcept = 0;
 };
 
 /// Precondition: validate(settings) is empty.

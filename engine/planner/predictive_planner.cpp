@@ -1,5 +1,6 @@
 #include "planner/predictive_planner.h"
 
+#include "planner/keep_outs.h"
 #include "planner/planner_geometry.h"
 
 #include <algorithm>
@@ -22,7 +23,7 @@ Eigen::Vector2d base_to_world_xz(double heading_rad, const Eigen::Vector2d& v_B)
 
 }  // namespace
 
-PlannerOutput PredictivePlanner::update(const PlannerInput& in) noexcept {
+PlannerOutput PredictivePlanner::plan(const PlannerInput& in) noexcept {
   const PlannerSettings& s = settings_;
   auto [out, base, hand] = planar_start(in, s);
 
@@ -68,7 +69,9 @@ PlannerOutput PredictivePlanner::update(const PlannerInput& in) noexcept {
     // A chord is clear when it keeps the band from the user (or, inside the band, does not
     // come closer than the base already is).
     const double clear_m = std::min(band, d) - 1e-9;
-    const auto clear = [&](const Eigen::Vector2d& p) { return g::segment_distance(base, p, in.user_W) >= clear_m; };
+    const auto clear = [&](const Eigen::Vector2d& p) {
+      return g::segment_distance(base, p, in.user_W) >= clear_m && chord_clears(in.keep_outs, base, p, s);
+    };
 
     // Catch goal: the soonest pose with the HIP in the box. A goal whose chord is not clear
     // is timed along the way round the band (tangent, arc, tangent).
@@ -93,7 +96,9 @@ PlannerOutput PredictivePlanner::update(const PlannerInput& in) noexcept {
       const Eigen::Vector2d q = world_to_base_xz(h, hand_p.x() - base.x(), hand_p.y() - base.y());
       const Eigen::Vector2d p(std::clamp(q.x(), box.x_min_m, box.x_max_m), std::clamp(q.y(), box.z_min_m, box.z_max_m));
       const Eigen::Vector2d goal = hand_p - base_to_world_xz(h, p);
-      if ((goal - in.user_W).norm() < band + 0.01 || (goal - user_p).norm() < band + 0.01) continue;
+      if ((goal - in.user_W).norm() < band + 0.01 || (goal - user_p).norm() < band + 0.01 ||
+          !outside_bands(in.keep_outs, goal, 0.01, s))
+        continue;
       const bool is_clear = clear(goal);
       const double length = is_clear ? (goal - base).norm() : path_length(goal);
       const double turn = std::abs(wrap_angle(h - in.base.heading_rad));
@@ -154,7 +159,7 @@ PlannerOutput PredictivePlanner::update(const PlannerInput& in) noexcept {
     omega = std::clamp(heading_error / s.command_period_s, -s.max_angular_speed_radps, s.max_angular_speed_radps);
   }
 
-  out.guard_active = g::guard_velocity(base, in.user_W, band, s.command_period_s, omega, v_W);
+  out.guard_active = guard_keep_outs(in.base, in.user_W, band, in.keep_outs, s, omega, v_W);
   out.twist_B = g::body_twist(in.base.heading_rad, v_W, omega, s);
   return out;
 }

@@ -24,8 +24,10 @@ namespace mhd {
 class PredictivePlanner final : public Planner {
  public:
   explicit PredictivePlanner(const PlannerSettings& settings) : Planner(settings) {}
-  [[nodiscard]] PlannerOutput update(const PlannerInput& input) noexcept override;
   [[nodiscard]] PlannerKind kind() const noexcept override { return PlannerKind::Predictive; }
+
+ private:
+  [[nodiscard]] PlannerOutput plan(const PlannerInput& input) noexcept override;
 };
 
 }  // namespace mhd

@@ -1,5 +1,6 @@
 #include "planner/seed_planner.h"
 
+#include "planner/keep_outs.h"
 #include "planner/planner_geometry.h"
 
 #include <algorithm>
@@ -9,7 +10,7 @@ namespace mhd {
 
 namespace g = planner_geometry;
 
-PlannerOutput SeedPlanner::update(const PlannerInput& in) noexcept {
+PlannerOutput SeedPlanner::plan(const PlannerInput& in) noexcept {
   const PlannerSettings& s = settings_;
   auto [out, base, hand] = planar_start(in, s);
 
@@ -65,7 +66,8 @@ PlannerOutput SeedPlanner::update(const PlannerInput& in) noexcept {
 
   if (out.status == PlannerCase::Stopping && omega == 0.0) active_ = false;  // arrived
 
-  out.guard_active = g::guard_velocity(base, in.user_W, r_collision + s.safety_margin_m, s.command_period_s, omega, v_W);
+  out.guard_active =
+      guard_keep_outs(in.base, in.user_W, r_collision + s.safety_margin_m, in.keep_outs, s, omega, v_W);
   out.twist_B = g::body_twist(in.base.heading_rad, v_W, omega, s);
   return out;
 }

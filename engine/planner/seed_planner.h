@@ -17,8 +17,10 @@ namespace mhd {
 class SeedPlanner final : public Planner {
  public:
   explicit SeedPlanner(const PlannerSettings& settings) : Planner(settings) {}
-  [[nodiscard]] PlannerOutput update(const PlannerInput& input) noexcept override;
   [[nodiscard]] PlannerKind kind() const noexcept override { return PlannerKind::Seed; }
+
+ private:
+  [[nodiscard]] PlannerOutput plan(const PlannerInput& input) noexcept override;
 };
 
 }  // namespace mhd
