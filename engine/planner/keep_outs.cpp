@@ -9,6 +9,9 @@ namespace mhd {
 
 namespace g = planner_geometry;
 
+/// A base inside a keep-out's band backs out at (band - distance) / (this many periods).
+constexpr double kPushOutPeriods = 4.0;
+
 double contact_distance_m(const KeepOut& keep_out, const PlannerSettings& settings) noexcept {
   return settings.robot_radius_m + keep_out.radius_m;
 }
@@ -85,6 +88,23 @@ bool guard_keep_outs(const BasePose& base, const Eigen::Vector2d& user, double o
     const double band = contact_distance_m(k, settings) + settings.safety_margin_m;
     changed = g::guard_velocity(p, k.centre_W, band, period, omega_radps, v_W) || changed;
   }
+  // Inside a keep-out's band the base also backs out, faster the deeper it is: a keep-out
+  // is seen late and moves, and without this two bases that met at the band would stay
+  // there, where any error in what each sees of the other is a contact.
+  for (const KeepOut& k : keep_outs) {
+    const Eigen::Vector2d rel = p - k.centre_W;
+    const double d = rel.norm();
+    const double band = contact_distance_m(k, settings) + settings.safety_margin_m;
+    if (d >= band || d < 1e-9) continue;
+    const Eigen::Vector2d out = rel / d;
+    const double push = std::min(settings.max_linear_speed_mps, (band - d) / (kPushOutPeriods * period));
+    const double radial = v_W.dot(out);
+    if (radial < push) {
+      v_W += (push - radial) * out;
+      changed = true;
+    }
+  }
+  if (v_W.norm() > settings.max_linear_speed_mps) v_W *= settings.max_linear_speed_mps / v_W.norm();
   const BaseTwist twist = g::body_twist(base.heading_rad, v_W, omega_radps, settings);
   bool enters = arc_enters(base, twist, period, user, settings.collision_radius_m());
   for (const KeepOut& k : keep_outs)

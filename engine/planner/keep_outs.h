@@ -64,7 +64,10 @@ class KeepOuts {
                                 const PlannerSettings& settings) noexcept;
 
 /// The planners' last step: planner_geometry::guard_velocity for the rig's own user (band
-/// `own_band_m`) and then for every keep-out (band: contact distance + safety margin).
+/// `own_band_m`) and then for every keep-out (band: contact distance + safety margin);
+/// inside a keep-out's band the base also backs out of it, at (band - distance) over four
+/// periods (a keep-out is seen late and moves: two bases resting at each other's band would
+/// turn any error in what each sees of the other into a contact).
 /// With keep-outs, the guards of two discs can undo each other, so the arc the base would
 /// then drive over one period (body_twist, integrate_twist) is checked against every disc,
 /// the own user's included: if it comes nearer than the contact distance (or, from inside,

@@ -2,11 +2,13 @@
 
 #include "command_exit.h"
 #include "plan_sim.h"
+#include "shared_floor.h"
 #include "planner/planner_settings.h"
 
 #include <fmt/core.h>
 
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -39,6 +41,13 @@ struct PlanSimOptions {
   std::vector<double> lift_range_m{-0.7, 0.9};
   double lift_speed_mps = 0.3;
   double lift_acceleration_mps2 = 1.5;
+  // Several rigs on one floor.
+  bool shared_floor = false;
+  int rigs = 2;
+  int sessions = 500;
+  std::uint64_t first_seed = 1000000;
+  double duration_s = 30.0;
+  double tracking_delay_s = 0.05;
 };
 
 int fail(const std::string& message) {
@@ -127,6 +136,56 @@ int run_volume(const PlanSimOptions& o, const mhd::PlannerSettings& parsed, cons
   return 0;
 }
 
+/// Sessions of several rigs on one floor, each planner seeing the others and, for
+/// comparison, blind to them: a table on stdout and plan_sim_shared_floor.csv. Exit 3 when
+/// a rig that sees the others enters a keep-out.
+int run_shared_floor(const PlanSimOptions& o, const mhd::PlannerSettings& settings,
+                     const std::vector<mhd::PlannerKind>& kinds) {
+  const int most = static_cast<int>(mhd::KeepOuts::kCapacity / 2) + 1;
+  if (o.rigs < 1 || o.rigs > most) return fail(fmt::format("--rigs must be 1..{}", most));
+  if (o.sessions < 1) return fail("--sessions must be >= 1");
+  if (!(o.duration_s > 0.0) || !(o.duration_s <= 3600.0)) return fail("--duration-s must be > 0 and <= 3600");
+  if (!(o.tracking_delay_s >= 0.0) || !(o.tracking_delay_s <= 1.0))
+    return fail("--tracking-delay-s must be >= 0 and <= 1");
+  std::string csv_text =
+      "planner,sees_others,rigs,sessions,first_seed,ticks,base_user_intrusions,base_base_intrusions,"
+      "min_base_user_m,min_base_other_user_m,min_base_base_m,user_walked_into_base_ticks,followed_fraction\n";
+  fmt::print("{} rigs on one floor, {} sessions of {:g} s from seed {}, the others tracked {:g} s late\n", o.rigs,
+             o.sessions, o.duration_s, o.first_seed, o.tracking_delay_s);
+  fmt::print("{:<11} {:<6} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10} {:>9}\n", "planner", "sees", "base-user",
+             "base-base", "min b-u", "min b-ou", "min b-b", "walked in", "followed");
+  std::int64_t intrusions = 0;
+  for (const mhd::PlannerKind kind : kinds) {
+    for (const bool sees : {true, false}) {
+      mhd::plan_sim::SharedFloorSpec spec;
+      spec.kind = kind;
+      spec.rigs = o.rigs;
+      spec.duration_s = o.duration_s;
+      spec.tracking_delay_s = o.tracking_delay_s;
+      spec.see_others = sees;
+      const auto f = mhd::plan_sim::simulate_shared_floors(settings, spec, o.first_seed, o.sessions);
+      const double followed = static_cast<double>(f.followed_ticks) / static_cast<double>(f.ticks);
+      if (sees) intrusions += f.base_user_intrusions + f.base_base_intrusions;
+      fmt::print("{:<11} {:<6} {:>10} {:>10} {:>10.3f} {:>10.3f} {:>10.3f} {:>10} {:>8.1f}%\n", mhd::to_string(kind),
+                 sees ? "yes" : "no", f.base_user_intrusions, f.base_base_intrusions, f.min_base_user_m,
+                 f.min_base_other_user_m, f.min_base_base_m, f.user_walked_into_base_ticks, 100.0 * followed);
+      csv_text += fmt::format("{},{},{},{},{},{},{},{},{:.4f},{:.4f},{:.4f},{},{:.4f}\n", mhd::to_string(kind),
+                              sees ? 1 : 0, o.rigs, o.sessions, o.first_seed, f.ticks, f.base_user_intrusions,
+                              f.base_base_intrusions, f.min_base_user_m, f.min_base_other_user_m, f.min_base_base_m,
+                              f.user_walked_into_base_ticks, followed);
+    }
+  }
+  fmt::print("base-user, base-base: sub-steps a base entered a user's or another base's contact distance by its "
+             "own motion; min: least distances between centres (m; b-ou: other rigs' users); walked in: ticks a "
+             "user walked into a base; followed: ticks with the hand in the usable workspace\n");
+  const std::filesystem::path csv = std::filesystem::path(o.out) / "plan_sim_shared_floor.csv";
+  std::ofstream out(csv);
+  out << csv_text;
+  if (!out) return fail("cannot write '" + csv.string() + "'");
+  fmt::print("wrote {}\n", csv.string());
+  return intrusions == 0 ? 0 : 3;
+}
+
 int run(const PlanSimOptions& o) {
   std::map<std::string, std::string> values;
   for (const std::string& s : o.sets) {
@@ -153,6 +212,7 @@ int run(const PlanSimOptions& o) {
   std::filesystem::create_directories(o.out, ec);
   if (ec) return fail("cannot create '" + o.out + "': " + ec.message());
   if (o.volume) return run_volume(o, *parsed, kinds);
+  if (o.shared_floor) return run_shared_floor(o, *parsed, kinds);
   const std::filesystem::path maps_dir = std::filesystem::path(o.out) / "maps";
   if (!o.no_maps) {
     std::filesystem::create_directories(maps_dir, ec);
@@ -228,6 +288,17 @@ void add_plan_sim_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--lift-speed-mps", o->lift_speed_mps, "With --volume: the lift's speed limit")->capture_default_str();
   cmd->add_option("--lift-acceleration-mps2", o->lift_acceleration_mps2, "With --volume: its acceleration limit")
+      ->capture_default_str();
+  cmd->add_flag("--shared-floor", o->shared_floor,
+                "Several rigs on one floor: random users, each base keeping out of the others' way (exit 3 on an "
+                "intrusion)");
+  cmd->add_option("--rigs", o->rigs, "With --shared-floor: rigs (and users) on the floor")->capture_default_str();
+  cmd->add_option("--sessions", o->sessions, "With --shared-floor: sessions")->capture_default_str();
+  cmd->add_option("--first-seed", o->first_seed, "With --shared-floor: the first session's seed")
+      ->capture_default_str();
+  cmd->add_option("--duration-s", o->duration_s, "With --shared-floor: each session's length")->capture_default_str();
+  cmd->add_option("--tracking-delay-s", o->tracking_delay_s,
+                  "With --shared-floor: the age of the others' poses when a rig plans")
       ->capture_default_str();
   cmd->callback([o] { mhd::cli::exit_with(run(*o)); });
 }
