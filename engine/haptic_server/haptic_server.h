@@ -25,6 +25,7 @@
 #include "haptic_server/server_settings.h"
 #include "haptic_server/server_status.h"
 #include "kinematics/base_pose.h"
+#include "planner/floor_view.h"
 #include "diagnostics/result.h"
 #include "scene/scene_description.h"
 #include "scene_compiler/compiled_scene.h"
@@ -60,6 +61,10 @@ struct BasePlanInput {
   double base_age_s = std::numeric_limits<double>::infinity();
   double hip_age_s = std::numeric_limits<double>::infinity();
   double max_input_age_s = 0.05;
+  /// The other rigs on the floor as this rig's tracker last saw them (none declared: empty),
+  /// and how old their data may be before the base holds (planner/floor_view.h).
+  FloorView floor;
+  double floor_timeout_s = 0.3;
   [[nodiscard]] bool fresh() const noexcept {
     return head_age_s < max_input_age_s && base_age_s < max_input_age_s && hip_age_s < max_input_age_s;
   }

@@ -6,6 +6,7 @@
 #include "haptic_server/server_impl.h"
 
 #include "haptic_server/base_command_scheduler.h"
+#include "haptic_server/floor_tracker.h"
 #include "haptic_server/physical_range.h"
 #include "haptic_server/safe_stop.h"
 #include "haptic_server/tracker_sample_filter.h"
@@ -30,11 +31,14 @@ struct HapticServer::Impl::IoThreadState {
       : guard(guard_settings),
         filter({.base_sensor_id = settings.base_sensor_id,
                 .head_sensor_id = settings.head_sensor_id,
+                .other_rigs = settings.other_rigs,
                 .tracking_range_m = settings.tracking_range_m}),
+        floor(settings.other_rigs),
         scheduler(1.0 / settings.base_rate_hz) {}
 
   BaseCommandGuard guard;
   TrackerSampleFilter filter;
+  FloorTracker floor;
   BaseCommandScheduler scheduler;
   std::array<TrackerSample, 64> samples{};
   double newest_base_sample_t_s = -std::numeric_limits<double>::infinity();
@@ -156,6 +160,20 @@ bool HapticServer::Impl::take_sample(IoThreadState& io, const TrackerSample& s, 
   status_counters.tracker_samples.fetch_add(1, std::memory_order_relaxed);
   const Pose X_T_S =
       pose_from_xyz_quaternion(p_T_m, Eigen::Quaterniond(s.q_T_wxyz[0], s.q_T_wxyz[1], s.q_T_wxyz[2], s.q_T_wxyz[3]));
+  if (const std::optional<FloorSlot> slot = io.floor.slot_of(s.sensor_id)) {
+    // Another rig's user or base: where it stands on the floor, for the planner's keep-outs.
+    Eigen::Vector2d p_W;
+    if (slot->base) {
+      const BasePose b = rig.base_from_sensor(X_T_S);
+      p_W = Eigen::Vector2d(b.x_m, b.z_m);
+    } else {
+      const Eigen::Vector3d p = rig.X_W_is900() * X_T_S.translation();
+      p_W = Eigen::Vector2d(p.x(), p.z());
+    }
+    io.floor.take(*slot, s.timestamp_s, p_W);
+    floor_view.write(io.floor.view());
+    return true;
+  }
   if (s.sensor_id == settings.base_sensor_id) {
     if (settings.base_pose_source == BasePoseSource::Odometry) return true;  // the base's own pose rules
     if (!base_samples.push({s.timestamp_s, X_T_S})) status_counters.tracker_rejected.fetch_add(1, std::memory_order_relaxed);

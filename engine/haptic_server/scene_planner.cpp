@@ -1,5 +1,6 @@
 #include "haptic_server/scene_planner.h"
 
+#include "planner/floor_view.h"
 #include "planner/planner.h"
 #include "planner/planner_settings.h"
 
@@ -37,7 +38,7 @@ Result<ScenePlanner> scene_planner(const SceneDescription& scene, const Rig& rig
   ScenePlanner out;
   out.collision_radius_m = parsed->collision_radius_m();
   out.usable_B = parsed->usable_B;
-  out.plan = [planner](const BasePlanInput& in) {
+  out.plan = [planner, settings = *parsed](const BasePlanInput& in) {
     if (!in.hip_valid || !in.user_known || !in.fresh()) return BaseTwist{};  // nothing fresh to follow: hold still
     PlannerInput p;
     p.time_s = in.t_s;
@@ -46,6 +47,9 @@ Result<ScenePlanner> scene_planner(const SceneDescription& scene, const Rig& rig
     p.user_heading_rad = in.user_heading_rad;
     p.user_velocity_W = in.user_velocity_W_mps;
     p.p_W_hip = in.p_W_hip;
+    const FloorKeepOuts floor = floor_keep_outs(in.floor, in.t_s, in.floor_timeout_s, settings);
+    p.keep_outs = floor.keep_outs;
+    p.keep_outs_current = floor.current;
     return planner->update(p).twist_B;
   };
   return out;

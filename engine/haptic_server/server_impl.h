@@ -84,6 +84,7 @@ struct HapticServer::Impl {
   realtime::TripleBuffer<HapticSnapshot> snapshot_for_io;  ///< the base pose the guard judges
   SharedHead head;                                  ///< io -> planner, display, recorder
   realtime::TripleBuffer<BaseTwist> planned_command;  ///< planner -> io
+  realtime::TripleBuffer<FloorView> floor_view;       ///< io -> planner: the other rigs on the floor
   realtime::WakeEvent base_sample_arrived;  ///< io -> haptic: start the tick now
   bool tick_on_tracker_sample = false;      ///< set by run(): the tracker can wake the io thread
 

@@ -4,11 +4,14 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <sstream>
 #include <string_view>
+#include <vector>
 
 namespace mhd {
 namespace {
@@ -21,6 +24,40 @@ BasePoseSource base_pose_source_from(ParamBlockReader& r) {
             fmt::format("param 'base_pose_source' in <server> must be tracker or odometry, got '{}'", source));
   }
   return BasePoseSource::Tracker;
+}
+
+/// <server> other_rig_sensors: "HEAD:BASE ..." pairs of sensor ids, none of them the
+/// rig's own nor repeated, at most kMaxOtherRigs.
+OtherRigSensorList other_rigs_from(ParamBlockReader& r, std::uint32_t own_base, std::uint32_t own_head) {
+  constexpr std::string_view kName = "other_rig_sensors";
+  OtherRigSensorList list;
+  const std::string text = r.text(std::string(kName), "");
+  const auto refuse = [&](const std::string& why) {
+    r.error(kName, fmt::format("param 'other_rig_sensors' in <server> {}, got '{}'", why, text));
+    return OtherRigSensorList{};
+  };
+  std::istringstream words(text);
+  std::vector<std::uint32_t> seen{own_base, own_head};
+  for (std::string pair; words >> pair;) {
+    const auto colon = pair.find(':');
+    std::uint64_t ids[2] = {0, 0};
+    bool ok = colon != std::string::npos && colon > 0 && colon + 1 < pair.size();
+    for (int i = 0; ok && i < 2; ++i) {
+      const std::string part = i == 0 ? pair.substr(0, colon) : pair.substr(colon + 1);
+      ok = part.size() <= 10 && part.find_first_not_of("0123456789") == std::string::npos;
+      if (ok) ids[i] = std::stoull(part);
+      ok = ok && ids[i] <= kMaxSensorId;
+    }
+    if (!ok) return refuse(fmt::format("must be HEAD:BASE pairs of sensor ids in [0, {}]", kMaxSensorId));
+    if (list.count == kMaxOtherRigs) return refuse(fmt::format("names more than {} rigs", kMaxOtherRigs));
+    for (const std::uint64_t id : ids) {
+      if (std::find(seen.begin(), seen.end(), id) != seen.end())
+        return refuse(fmt::format("names sensor {} twice, or one of the rig's own (base_sensor_id, head_sensor_id)", id));
+      seen.push_back(static_cast<std::uint32_t>(id));
+    }
+    list.rigs[list.count++] = OtherRigSensors{static_cast<std::uint32_t>(ids[0]), static_cast<std::uint32_t>(ids[1])};
+  }
+  return list;
 }
 
 /// The rules between settings, each reported at the setting that breaks it.
@@ -79,6 +116,8 @@ Result<ServerSettings> server_settings_from(const SceneDescription& scene) {
   s.min_tick_interval_s = number("min_tick_interval_s", s.min_tick_interval_s);
   s.plugin_call_timeout_s = number("plugin_call_timeout_s", s.plugin_call_timeout_s);
   s.tracking_range_m = number("tracking_range_m", s.tracking_range_m);
+  s.other_rigs_timeout_s = number("other_rigs_timeout_s", s.other_rigs_timeout_s);
+  s.other_rigs = other_rigs_from(r, s.base_sensor_id, s.head_sensor_id);
   check_together(s, r);
   s.base_guard.tracker_timeout_s = s.tick.safety.tracker_timeout_s;
 

@@ -23,9 +23,15 @@
 //                             safe state; a stuck device must rely on its own watchdog)
 //   tracking_range_m (50)     a tracked sensor farther than this from the tracker's origin
 //                             is a fault (physical_range.h)
+//   other_rig_sensors ("")    the other rigs on the floor, as HEAD:BASE pairs of this
+//                             tracker's sensor ids ("2:3 4:5"): their users and bases are
+//                             the planner's keep-outs (planner/floor_view.h)
+//   other_rigs_timeout_s (0.3)  an other rig's sensor unseen this long, or never seen,
+//                             holds the base (the planner's `held`)
 // Every number's range is declared in kServerNumbers: `mhd validate` and `mhd run` judge
 // <server> by server_settings_from alone.
 
+#include "haptic_server/floor_tracker.h"
 #include "haptic_server/haptic_tick.h"
 #include "safety/base_command_guard.h"
 #include "diagnostics/result.h"
@@ -49,7 +55,7 @@ struct ServerNumber {
 
 /// Every numeric <server> parameter. The bounds are what a host loop and the hardware can
 /// live with: a tiny rate is a near-infinite period, a huge timeout no watchdog at all.
-inline constexpr std::array<ServerNumber, 14> kServerNumbers{{
+inline constexpr std::array<ServerNumber, 15> kServerNumbers{{
     {"tracker_timeout_s", 0.001, 10.0, "s"},
     {"tracker_fade_s", 0.0, 10.0, "s"},
     {"hip_jump_m", 1e-5, 1.0, "m"},
@@ -64,6 +70,7 @@ inline constexpr std::array<ServerNumber, 14> kServerNumbers{{
     {"min_tick_interval_s", 0.0, 0.01, "s"},
     {"plugin_call_timeout_s", 0.001, 60.0, "s"},
     {"tracking_range_m", 1.0, 1000.0, "m"},
+    {"other_rigs_timeout_s", 0.001, 10.0, "s"},
 }};
 
 /// The sensor ids (<server> base_sensor_id, head_sensor_id) are integers in [0, this].
@@ -87,6 +94,8 @@ struct ServerSettings {
   double min_tick_interval_s = 0.0002;
   double plugin_call_timeout_s = 0.1;
   double tracking_range_m = 50.0;
+  OtherRigSensorList other_rigs;
+  double other_rigs_timeout_s = 0.3;
   /// Where the scene's planner keeps the HIP (base frame): the device's reported
   /// workspace, moved in by the rig's usable margin. Empty with no planner of the scene's.
   std::optional<PlanarBox> planner_usable_B;

@@ -4,6 +4,8 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
+
 namespace mhd {
 
 const char* to_string(TrackerSampleVerdict verdict) noexcept {
@@ -17,11 +19,21 @@ const char* to_string(TrackerSampleVerdict verdict) noexcept {
   return "?";
 }
 
-TrackerSampleVerdict TrackerSampleFilter::check(const TrackerSample& sample, double read_at_s) {
-  if (sample.sensor_id != settings_.base_sensor_id && sample.sensor_id != settings_.head_sensor_id) {
-    return TrackerSampleVerdict::UnknownSensor;
+std::optional<std::size_t> TrackerSampleFilter::slot_of(std::uint32_t sensor_id) const noexcept {
+  if (sensor_id == settings_.base_sensor_id) return 0;
+  if (sensor_id == settings_.head_sensor_id) return 1;
+  const std::size_t others = std::min(settings_.other_rigs.count, kMaxOtherRigs);
+  for (std::size_t i = 0; i < others; ++i) {
+    if (sensor_id == settings_.other_rigs.rigs[i].head_sensor_id) return 2 + 2 * i;
+    if (sensor_id == settings_.other_rigs.rigs[i].base_sensor_id) return 3 + 2 * i;
   }
-  SensorTrack& track = sensors_[sample.sensor_id == settings_.base_sensor_id ? 0 : 1];
+  return std::nullopt;
+}
+
+TrackerSampleVerdict TrackerSampleFilter::check(const TrackerSample& sample, double read_at_s) {
+  const std::optional<std::size_t> slot = slot_of(sample.sensor_id);
+  if (!slot) return TrackerSampleVerdict::UnknownSensor;
+  SensorTrack& track = sensors_[*slot];
   const bool first = !track.seen;
   if (first) track = {true, sample.sequence, read_at_s};
   const bool restarted = read_at_s - track.accepted_at_s > settings_.sequence_restart_after_s;

@@ -2,9 +2,12 @@
 // Which tracker samples the server takes (docs/haptic_server.md, "Status line"): the io
 // thread's checks on every sample a tracker plugin returns, as one verdict per sample.
 
+#include "haptic_server/floor_tracker.h"
 #include "plugin_host/hardware_io.h"
 
 #include <array>
+#include <cstddef>
+#include <optional>
 #include <cstdint>
 
 namespace mhd {
@@ -14,7 +17,7 @@ enum class TrackerSampleVerdict {
   Accepted,
   SequenceBackwards,   ///< dropped: not newer than the sensor's last accepted sample
   FromTheFuture,       ///< dropped: measured after it was read (beyond the clock slack)
-  UnknownSensor,       ///< dropped: neither the base's sensor nor the head's
+  UnknownSensor,       ///< dropped: neither the base's sensor, the head's nor another rig's
   ImplausiblePosition, ///< a fault: not finite, or beyond the tracking range (physical_range.h)
 };
 
@@ -24,6 +27,7 @@ enum class TrackerSampleVerdict {
 struct TrackerSampleFilterSettings {
   std::uint32_t base_sensor_id = 0;
   std::uint32_t head_sensor_id = 1;
+  OtherRigSensorList other_rigs;  ///< the other rigs' users' and bases' sensors
   double tracking_range_m = 50.0;
   /// A sample may be this much newer than the host clock at its read (the clocks agree).
   double future_slack_s = 0.01;
@@ -53,7 +57,10 @@ class TrackerSampleFilter {
     double accepted_at_s = 0.0;  ///< host time of the last accepted sample
   };
   TrackerSampleFilterSettings settings_;
-  std::array<SensorTrack, 2> sensors_{};  ///< the base's, the head's
+  /// The slot of a sensor the server takes: 0 the base's, 1 the head's, then each other
+  /// rig's head and base.
+  [[nodiscard]] std::optional<std::size_t> slot_of(std::uint32_t sensor_id) const noexcept;
+  std::array<SensorTrack, 2 + 2 * kMaxOtherRigs> sensors_{};
 };
 
 }  // namespace mhd

@@ -86,7 +86,12 @@ TEST(HapticThreadHygiene, TheCountersSeeAThreadOfThatNameLockAllocateAndWrite) {
 // names a new sensor in each sample (10,000 of them) costs no allocation, so no memory
 // grows with what a plugin sends.
 TEST(HapticThreadHygiene, TheTrackerSampleFilterNeverAllocatesWhateverSensorsArrive) {
-  TrackerSampleFilter filter({.base_sensor_id = 0, .head_sensor_id = 1, .tracking_range_m = 50.0});
+  OtherRigSensorList others;  // two other rigs' sensors, 100 000 to 100 003
+  others.rigs[0] = OtherRigSensors{100000, 100001};
+  others.rigs[1] = OtherRigSensors{100002, 100003};
+  others.count = 2;
+  TrackerSampleFilter filter(
+      {.base_sensor_id = 0, .head_sensor_id = 1, .other_rigs = others, .tracking_range_m = 50.0});
   std::vector<TrackerSample> samples(10000);
   for (std::size_t i = 0; i < samples.size(); ++i) {
     samples[i].sensor_id = static_cast<std::uint32_t>(i % 3 == 0 ? i % 2 : i + 2);  // base, head, strangers

@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -109,6 +110,52 @@ TEST(ServerSettings, SensorIdsBeyond32BitsAreRefusedNotCut) {
   ASSERT_FALSE(r.ok());
   EXPECT_THAT(r.diagnostics()[0].message, HasSubstr("'base_sensor_id' in <server> must be an integer in [0, 4294967295]"));
   EXPECT_TRUE(server_settings_from(scene_with_server({{"base_sensor_id", "4294967295"}})).ok());
+}
+
+TEST(ServerSettings, OtherRigsAreHeadBasePairsOfSensorIds) {
+  const Result<ServerSettings> none = server_settings_from(SceneDescription{});
+  ASSERT_TRUE(none.ok());
+  EXPECT_EQ(none->other_rigs.count, 0u);
+  EXPECT_DOUBLE_EQ(none->other_rigs_timeout_s, 0.3);
+  const Result<ServerSettings> two =
+      server_settings_from(scene_with_server({{"other_rig_sensors", " 2:3\t4294967295:17 "},
+                                              {"other_rigs_timeout_s", "0.5"}}));
+  ASSERT_TRUE(two.ok());
+  ASSERT_EQ(two->other_rigs.count, 2u);
+  EXPECT_EQ(two->other_rigs.rigs[0].head_sensor_id, 2u);
+  EXPECT_EQ(two->other_rigs.rigs[0].base_sensor_id, 3u);
+  EXPECT_EQ(two->other_rigs.rigs[1].head_sensor_id, 4294967295u);
+  EXPECT_EQ(two->other_rigs.rigs[1].base_sensor_id, 17u);
+  EXPECT_DOUBLE_EQ(two->other_rigs_timeout_s, 0.5);
+  std::string eight;
+  for (int i = 0; i < 8; ++i) eight += fmt::format("{}:{} ", 10 + 2 * i, 11 + 2 * i);
+  const Result<ServerSettings> most = server_settings_from(scene_with_server({{"other_rig_sensors", eight}}));
+  ASSERT_TRUE(most.ok());
+  EXPECT_EQ(most->other_rigs.count, kMaxOtherRigs);
+}
+
+TEST(ServerSettings, BadOtherRigSensorsAreRefusedAtTheirLine) {
+  std::string nine;
+  for (int i = 0; i < 9; ++i) nine += fmt::format("{}:{} ", 10 + 2 * i, 11 + 2 * i);
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"2", "must be HEAD:BASE pairs"},          {"2:", "must be HEAD:BASE pairs"},
+      {":3", "must be HEAD:BASE pairs"},         {"2:x", "must be HEAD:BASE pairs"},
+      {"-2:3", "must be HEAD:BASE pairs"},       {"2:3:4", "must be HEAD:BASE pairs"},
+      {"4294967296:3", "must be HEAD:BASE pairs"}, {"99999999999999999999:3", "must be HEAD:BASE pairs"},
+      {"2:nan", "must be HEAD:BASE pairs"},      {"2:2", "names sensor 2 twice"},
+      {"2:3 3:4", "names sensor 3 twice"},       {"0:3", "names sensor 0 twice, or one of the rig's own"},
+      {"2:1", "names sensor 1 twice, or one of the rig's own"}, {nine, "names more than 8 rigs"}};
+  for (const auto& [text, message] : cases) {
+    const Result<ServerSettings> r = server_settings_from(scene_with_server({{"other_rig_sensors", text}}));
+    ASSERT_FALSE(r.ok()) << text;
+    ASSERT_EQ(r.error().size(), 1u) << text;
+    EXPECT_THAT(r.error()[0].to_string(), HasSubstr("scene.xml:7: error: param 'other_rig_sensors' in <server> "))
+        << text;
+    EXPECT_THAT(r.error()[0].to_string(), HasSubstr(message)) << text;
+  }
+  for (const std::string t : {"0", "-1", "nan", "inf", "11"}) {
+    EXPECT_FALSE(server_settings_from(scene_with_server({{"other_rigs_timeout_s", t}})).ok()) << t;
+  }
 }
 
 TEST(ServerSettings, TheTrackingRangeHasADefaultAndIsRead) {

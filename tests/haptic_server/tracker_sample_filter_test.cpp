@@ -45,6 +45,25 @@ TEST(TrackerSampleFilter, RejectsASensorThatIsNeitherTheBaseNorTheHead) {
   EXPECT_STREQ(to_string(TrackerSampleVerdict::UnknownSensor), "unknown sensor");
 }
 
+TEST(TrackerSampleFilter, TakesTheOtherRigsSensorsEachWithItsOwnSequence) {
+  TrackerSampleFilterSettings with_others = settings();
+  with_others.other_rigs.rigs[0] = OtherRigSensors{4, 5};
+  with_others.other_rigs.rigs[1] = OtherRigSensors{9, 8};
+  with_others.other_rigs.count = 2;
+  TrackerSampleFilter filter(with_others);
+  for (const std::uint32_t id : {4u, 5u, 9u, 8u}) {
+    EXPECT_EQ(filter.check(sample(id, 3, 10.0), 10.001), TrackerSampleVerdict::Accepted) << id;
+    EXPECT_EQ(filter.check(sample(id, 3, 10.001), 10.002), TrackerSampleVerdict::SequenceBackwards) << id;
+  }
+  EXPECT_EQ(filter.check(sample(0, 1, 10.0), 10.001), TrackerSampleVerdict::Accepted);  // its own still
+  // Dual: a sensor no rig names is still unknown, and one past the declared count too.
+  EXPECT_EQ(filter.check(sample(6, 1, 10.0), 10.001), TrackerSampleVerdict::UnknownSensor);
+  with_others.other_rigs.count = 1;
+  TrackerSampleFilter one_other(with_others);
+  EXPECT_EQ(one_other.check(sample(9, 1, 10.0), 10.001), TrackerSampleVerdict::UnknownSensor);
+  EXPECT_EQ(one_other.check(sample(5, 1, 10.0), 10.001), TrackerSampleVerdict::Accepted);
+}
+
 TEST(TrackerSampleFilter, RejectsATimeMoreThan10msAheadOfTheHostClock) {
   TrackerSampleFilter filter(settings());
   EXPECT_EQ(filter.check(sample(0, 1, 10.0105), 10.0), TrackerSampleVerdict::FromTheFuture);

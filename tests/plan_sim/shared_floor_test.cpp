@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <iostream>
 
 namespace mhd::plan_sim {
@@ -19,6 +20,13 @@ void print(const char* name, const SharedFloorFigures& f) {
             << " m, user walked into a base " << f.user_walked_into_base_ticks << " ticks, held " << f.held_ticks
             << ", followed " << 100.0 * static_cast<double>(f.followed_ticks) / static_cast<double>(f.ticks)
             << " %\n";
+}
+
+/// `count` sessions from `first_seed` with default settings, printed under `name`.
+SharedFloorFigures sessions(const char* name, const SharedFloorSpec& spec, std::uint64_t first_seed, int count) {
+  const SharedFloorFigures f = simulate_shared_floors(PlannerSettings{}, spec, first_seed, count);
+  print(name, f);
+  return f;
 }
 
 TEST(SharedFloor, NoBaseEntersAUserOrAnotherBaseInTwoRigSessions) {
@@ -51,11 +59,9 @@ TEST(SharedFloor, KeepingOutOfEachOtherCostsLittleFollowing) {
 }
 
 TEST(SharedFloor, ThreeRigsKeepOutOfEachOther) {
-  const PlannerSettings settings;
   SharedFloorSpec spec;
   spec.rigs = 3;
-  const SharedFloorFigures f = simulate_shared_floors(settings, spec, 101, 10);
-  print("predictive, 3 rigs", f);
+  const SharedFloorFigures f = sessions("predictive, 3 rigs", spec, 101, 10);
   EXPECT_EQ(f.base_user_intrusions, 0);
   EXPECT_EQ(f.base_base_intrusions, 0);
 }
@@ -63,11 +69,9 @@ TEST(SharedFloor, ThreeRigsKeepOutOfEachOther) {
 TEST(SharedFloor, BlindToEachOtherTheSameRigsCollide) {
   // Dual: the same sessions with every rig planning as if alone (the one-rig planner)
   // drive bases into each other and into the other users; the figures can fail.
-  const PlannerSettings settings;
   SharedFloorSpec spec;
   spec.see_others = false;
-  const SharedFloorFigures f = simulate_shared_floors(settings, spec, 1, 20);
-  print("predictive, 2 rigs, blind", f);
+  const SharedFloorFigures f = sessions("predictive, 2 rigs, blind", spec, 1, 20);
   EXPECT_GT(f.base_base_intrusions, 0);
   EXPECT_GT(f.base_user_intrusions, 0);
 }

@@ -1,5 +1,6 @@
 #include "shared_floor.h"
 
+#include "planner/floor_view.h"
 #include "planner/planner_geometry.h"
 #include "simulation/simulated_user.h"
 
@@ -111,30 +112,31 @@ SharedFloorFigures simulate_shared_floor(const PlannerSettings& settings, const 
       in.user_heading_rad = rig.user->body().heading_rad;
       in.user_velocity_W = rig.user->velocity_W();
       in.p_W_hip = rig.user->hand_W();
-      // The others: where each is now, extrapolated from its tracked velocity over the
-      // data's age, the disc grown by half that extrapolation (for its error) and by how far
-      // it goes in one period (the guard sees only the base's own motion).
+      // The others, as the shared tracking gives them: measured at sub-step v, with the
+      // velocity over the period before it (floor_view.h makes the keep-outs of them).
       const std::int64_t v = view_index(spec, static_cast<int>(r), k, dt);
-      const double age_s = static_cast<double>(k - v) * dt;
       const FloorSample& seen = history[static_cast<std::size_t>(v)];
       const FloorSample& before = history[static_cast<std::size_t>(std::max<std::int64_t>(0, v - kSubsteps))];
       const double span_s = static_cast<double>(std::min<std::int64_t>(v, kSubsteps)) * dt;
-      const auto seen_now = [&](const Eigen::Vector2d& now, const Eigen::Vector2d& earlier) {
-        const Eigen::Vector2d velocity = span_s > 0.0 ? Eigen::Vector2d((now - earlier) / span_s) : Eigen::Vector2d::Zero();
-        return KeepOut{KeepOutKind::User, now + age_s * velocity, (0.5 * age_s + period) * velocity.norm()};
+      const auto tracked = [&](const Eigen::Vector2d& now, const Eigen::Vector2d& earlier) {
+        const Eigen::Vector2d velocity =
+            span_s > 0.0 ? Eigen::Vector2d((now - earlier) / span_s) : Eigen::Vector2d::Zero();
+        return TrackedDisc{true, static_cast<double>(v) * dt, now, velocity};
       };
+      FloorView view;
       for (std::size_t q = 0; q < n; ++q) {
-        KeepOut user = seen_now(seen.user_W[q], before.user_W[q]);
-        seen_users[r][q] = q == r ? in.user_W : user.centre_W;
-        if (q == r || !spec.see_others) continue;
-        user.radius_m += settings.human_radius_m;
-        KeepOut base = seen_now(seen.base_W[q], before.base_W[q]);
-        base.kind = KeepOutKind::Base;
-        base.radius_m += settings.robot_radius_m;
-        in.keep_outs.add(user);
-        in.keep_outs.add(base);
+        if (q == r) {
+          seen_users[r][q] = in.user_W;
+          continue;
+        }
+        const TrackedDisc user = tracked(seen.user_W[q], before.user_W[q]);
+        seen_users[r][q] = user.p_W + (t - user.t_s) * user.v_W;
+        view.rigs[view.count++] = OtherRigTrack{user, tracked(seen.base_W[q], before.base_W[q])};
       }
-      in.keep_outs_current = !spec.see_others || age_s <= spec.stale_after_s;
+      if (!spec.see_others) continue;
+      const FloorKeepOuts floor = floor_keep_outs(view, t, spec.stale_after_s, settings);
+      in.keep_outs = floor.keep_outs;
+      in.keep_outs_current = floor.current;
     }
     for (std::size_t r = 0; r < n; ++r) {
       const PlannerOutput out = rigs[r].planner->update(inputs[r]);

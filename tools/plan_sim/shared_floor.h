@@ -5,12 +5,10 @@
 // every other base's way (PlannerInput::keep_outs). Bases are velocity-controlled as in
 // the one-rig simulator (the twist held over each 0.1 s period, exact arcs).
 //
-// What a rig knows of the others comes from the shared tracking, `tracking_delay_s` old.
-// It extrapolates each other user and base over that age by its tracked velocity (over the
-// last period), and grows its disc by half the extrapolation (for its error) and by how far
-// it goes in one period (the planner's guard sees only its own base's motion). A rig whose
-// view of the others is older than `stale_after_s` holds its base (PlannerCase::Held)
-// until the data comes back.
+// What a rig knows of the others comes from the shared tracking, `tracking_delay_s` old,
+// with each one's velocity over the period before; the server's own floor_keep_outs
+// (planner/floor_view.h) makes the keep-outs of it. A rig whose view of the others is
+// older than `stale_after_s` holds its base (PlannerCase::Held) until the data comes back.
 //
 // Figures per session, judged against the truth:
 //  - base-user intrusions: a base that moves, by its own motion, into a user's contact
