@@ -1,8 +1,10 @@
 // The planner thread: the base planner at the base rate, on the newest HIP, base pose,
-// the user's motion (UserMotionEstimate) and the other rigs on the floor; and, on a rig with a lift, the lift's
-// planner (LiftPlanner), which keeps the middle of the arm's reach at the hand's height.
+// the user's motion (UserMotionEstimate) and the other rigs on the floor; and, on a rig
+// with a lift, the lift's planner (LiftPlanner), which keeps the middle of the arm's reach
+// at the hand's height.
 #include "haptic_server/server_impl.h"
 
+#include "haptic_server/floor_tracker.h"
 #include "haptic_server/user_motion_estimate.h"
 #include "realtime/periodic_timer.h"
 #include "realtime/thread_name.h"
@@ -18,7 +20,9 @@ void HapticServer::Impl::planner_thread() {
   realtime::name_current_thread("mhd-planner");
   realtime::PeriodicTimer timer(1.0 / settings.base_rate_hz);
   UserMotionEstimate user_motion;
-  FloorView floor;  // the newest the io thread gave (kept when nothing new came)
+  // The newest the io thread gave (kept when nothing new came); until then every declared
+  // rig is unseen, which holds the base.
+  FloorView floor = FloorTracker(settings.other_rigs).view();
   const std::optional<LiftPlanner> lift_planner =
       rig.lift() ? std::optional<LiftPlanner>(std::in_place, *rig.lift(), reach_centre_above_phantom_m(rig))
                  : std::nullopt;
@@ -43,7 +47,7 @@ void HapticServer::Impl::planner_thread() {
     in.hip_age_s = in.t_s - snap.t_s;
     in.base_age_s = in.t_s - base_sample_newest_t_s.load(std::memory_order_relaxed);
     if (h.known) in.head_age_s = in.t_s - h.t_s;
-    (void)floor_view.read(floor);
+    if (FloorView newest; floor_view.read(newest)) floor = newest;
     in.floor = floor;
     in.floor_timeout_s = settings.other_rigs_timeout_s;
     const BaseTwist twist = options.plan_base(in);

@@ -37,11 +37,66 @@ TEST(SimIs900Plugin, OpenNeedsValidParameters) {
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"tracker_rpy_deg", "0 0 90"}, {"tracker_quaternion_wxyz", "1 0 0 0"}}).error,
             "parameters 'tracker_rpy_deg' and 'tracker_quaternion_wxyz' exclude each other");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"dropout_sensor", "hand"}}).error,
-            "parameter 'dropout_sensor' must be one of head|base, got 'hand'");
+            "parameter 'dropout_sensor' must be one of head|base|bystander_head|bystander_base, got 'hand'");
+  EXPECT_EQ(open_plugin(file.api(), h.host, {{"bystander_head_sensor_id", "2"}}).error,
+            "parameters 'bystander_head_sensor_id' and 'bystander_base_sensor_id' go together");
+  EXPECT_EQ(open_plugin(file.api(), h.host, {{"bystander_head_sensor_id", "1"}, {"bystander_base_sensor_id", "3"}})
+                .error,
+            "the four sensors (base, head, the bystander's head and base) need different ids");
+  EXPECT_EQ(open_plugin(file.api(), h.host, {{"dropout_sensor", "bystander_base"}}).error,
+            "parameter 'dropout_sensor' is 'bystander_base' but there is no bystander");
+  EXPECT_EQ(open_plugin(file.api(), h.host,
+                        {{"bystander_head_sensor_id", "2"}, {"bystander_base_sensor_id", "3"},
+                         {"bystander_base_position_m", "nan 0 0"}})
+                .error,
+            "parameter 'bystander_base_position_m' must be three numbers 'x y z', each in [-1000, 1000] (m), got 'nan 0 0'");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"dropout_duration_s", "-1"}}).error,
             "parameter 'dropout_duration_s' must be a number in [0, 86400] (s), got '-1'");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"base_sensor_quaternion_wxyz", "0 0 0 0"}}).error,
             "parameter 'base_sensor_quaternion_wxyz' must be four numbers 'w x y z' of non-zero norm, got '0 0 0 0'");
+}
+
+TEST(SimIs900Plugin, ReportsAStandingBystanderRigBesideItsOwnSensors) {
+  const PluginFile file(MHD_SIM_IS900_PLUGIN);
+  const mhd_plugin_api& api = file.api();
+  FakeHost h;
+  const Opened opened = open_plugin(api, h.host,
+                                    {{"position_sigma_m", "0"},
+                                     {"angle_sigma_deg", "0"},
+                                     {"tracker_position_m", "0 0 0"},  // tracker frame = world
+                                     {"base_sensor_position_m", "0 0.5 0"},
+                                     {"bystander_head_sensor_id", "2"},
+                                     {"bystander_base_sensor_id", "3"},
+                                     {"bystander_head_position_m", "1 1.6 2"},
+                                     {"bystander_base_position_m", "3 0 -1"},
+                                     {"dropout_sensor", "bystander_base"},
+                                     {"dropout_start_s", "0.05"},
+                                     {"dropout_duration_s", "1"}});
+  ASSERT_NE(opened.instance, nullptr) << opened.error;
+  mhd_error err{};
+  ASSERT_EQ(api.start(opened.instance, &err), MHD_OK) << err.message;
+  ASSERT_EQ(api.simulate_until(opened.instance, 0.1, &err), MHD_OK) << err.message;
+  std::vector<mhd_tracker_sample> samples(256);
+  std::size_t count = 0;
+  ASSERT_EQ(api.tracker_read(opened.instance, samples.data(), samples.size(), &count, &err), MHD_OK);
+  int head = 0, base = 0, own = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    const mhd_tracker_sample& s = samples[i];
+    const Eigen::Vector3d p(s.p_T_m[0], s.p_T_m[1], s.p_T_m[2]);
+    if (s.sensor_id == 2) {
+      ++head;
+      EXPECT_TRUE(p.isApprox(Eigen::Vector3d(1.0, 1.6, 2.0), 1e-12));
+    } else if (s.sensor_id == 3) {
+      ++base;
+      EXPECT_TRUE(p.isApprox(Eigen::Vector3d(3.0, 0.5, -1.0), 1e-12));
+      EXPECT_LT(s.timestamp_s, 0.05);  // its dropout from 0.05 s on
+    } else {
+      ++own;
+    }
+  }
+  EXPECT_EQ(head, 18);  // k = 0..17 by 0.1 s, as the rig's own sensors
+  EXPECT_EQ(base, 9);   // k = 0..8, before the dropout
+  EXPECT_EQ(own, 36);
 }
 
 TEST(SimIs900Plugin, ReportsTheWorldsBaseAndHead) {

@@ -55,6 +55,15 @@ Is900Model::Is900Model(const Is900Config& config)
   require(config.dropout_duration_s >= 0.0 && std::isfinite(config.dropout_duration_s),
           "dropout_duration_s must be a non-negative number");
   require(config.X_BS.matrix().allFinite() && config.X_WT.matrix().allFinite(), "sensor and tracker poses must be finite");
+  if (const auto& other = config.bystander) {
+    const std::uint32_t ids[] = {config.base_sensor_id, config.head_sensor_id, other->head_sensor_id,
+                                 other->base_sensor_id};
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) require(ids[i] != ids[j], "the four sensors (base, head, the bystander's head "
+                                                                 "and base) need different ids");
+    require(other->p_W_head.allFinite() && std::isfinite(other->base_x_m) && std::isfinite(other->base_z_m),
+            "the bystander's positions must be finite");
+  }
   ring_.resize(config.buffer_capacity);
 }
 
@@ -97,6 +106,18 @@ void Is900Model::measure(double t_s, const WorldTruth& truth) {
   X_WH.translation() = truth.p_W_head;
   if (!dropped_out(config_.base_sensor_id, t_s)) push(config_.base_sensor_id, base_sequence_, t_s, X_TW_ * X_WS);
   if (!dropped_out(config_.head_sensor_id, t_s)) push(config_.head_sensor_id, head_sequence_, t_s, X_TW_ * X_WH);
+  if (!config_.bystander) return;
+  const Bystander& other = *config_.bystander;
+  WorldTruth other_base;
+  other_base.base_x_m = other.base_x_m;
+  other_base.base_z_m = other.base_z_m;
+  const Eigen::Isometry3d X_WS_other = base_pose_W(other_base) * config_.X_BS;
+  Eigen::Isometry3d X_WH_other = Eigen::Isometry3d::Identity();
+  X_WH_other.translation() = other.p_W_head;
+  if (!dropped_out(other.base_sensor_id, t_s))
+    push(other.base_sensor_id, bystander_base_sequence_, t_s, X_TW_ * X_WS_other);
+  if (!dropped_out(other.head_sensor_id, t_s))
+    push(other.head_sensor_id, bystander_head_sequence_, t_s, X_TW_ * X_WH_other);
 }
 
 bool Is900Model::dropped_out(std::uint32_t sensor_id, double t_s) const {

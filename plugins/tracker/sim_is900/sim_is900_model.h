@@ -35,6 +35,16 @@ struct WorldTruth {
   Eigen::Quaterniond q_W_head = Eigen::Quaterniond::Identity();
 };
 
+/// Another rig on the same floor, standing still: its user's head and its base, measured
+/// like the rig's own sensors (a shared floor's tracking, in a one-process simulation).
+struct Bystander {
+  std::uint32_t head_sensor_id = 2;
+  std::uint32_t base_sensor_id = 3;
+  Eigen::Vector3d p_W_head = Eigen::Vector3d::Zero();
+  double base_x_m = 0.0;
+  double base_z_m = 0.0;
+};
+
 struct Is900Config {
   double rate_hz = 180.0;
   double latency_s = 0.004;
@@ -50,6 +60,7 @@ struct Is900Config {
   Eigen::Isometry3d X_WT = Eigen::Translation3d(0.0, 2.624, 0.0) * Eigen::Quaterniond(0.5, 0.5, 0.5, -0.5);
   /// Samples held until read; when full, the oldest is dropped (and counted).
   std::size_t buffer_capacity = 256;
+  std::optional<Bystander> bystander;
   /// A dropout: the sensor with this id (none: no dropout) is not measured from
   /// dropout_start_s after start for dropout_duration_s (no samples, no sequence numbers).
   std::optional<std::uint32_t> dropout_sensor_id;
@@ -101,6 +112,8 @@ class Is900Model {
   WorldTruth truth_;  ///< the world at time_s_
   std::uint64_t base_sequence_ = 0;
   std::uint64_t head_sequence_ = 0;
+  std::uint64_t bystander_head_sequence_ = 0;
+  std::uint64_t bystander_base_sequence_ = 0;
 
   std::vector<mhd_tracker_sample> ring_;
   std::size_t oldest_ = 0;

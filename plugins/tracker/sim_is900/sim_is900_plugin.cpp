@@ -61,8 +61,30 @@ Is900Config read_config(const sdk::Params& params) {
   c.X_WT = read_pose(params, "tracker", c.X_WT);
   c.buffer_capacity = static_cast<std::size_t>(params.integer("buffer_capacity"));
   c.seed = params.integer("seed");
-  if (const auto sensor = params.optional_text("dropout_sensor")) {  // head|base: declared
-    c.dropout_sensor_id = *sensor == "head" ? c.head_sensor_id : c.base_sensor_id;
+  const auto bystander_head = params.optional_integer("bystander_head_sensor_id");
+  const auto bystander_base = params.optional_integer("bystander_base_sensor_id");
+  if (bystander_head.has_value() != bystander_base.has_value()) {
+    throw sdk::ParamError("parameters 'bystander_head_sensor_id' and 'bystander_base_sensor_id' go together");
+  }
+  if (bystander_head) {
+    Bystander other;
+    other.head_sensor_id = static_cast<std::uint32_t>(*bystander_head);
+    other.base_sensor_id = static_cast<std::uint32_t>(*bystander_base);
+    other.p_W_head = params.optional_vector3<Eigen::Vector3d>("bystander_head_position_m").value_or(other.p_W_head);
+    const Eigen::Vector3d base =
+        params.optional_vector3<Eigen::Vector3d>("bystander_base_position_m").value_or(Eigen::Vector3d::Zero());
+    other.base_x_m = base.x();
+    other.base_z_m = base.z();
+    c.bystander = other;
+  }
+  if (const auto sensor = params.optional_text("dropout_sensor")) {  // declared: one of the four
+    if (*sensor == "head") c.dropout_sensor_id = c.head_sensor_id;
+    if (*sensor == "base") c.dropout_sensor_id = c.base_sensor_id;
+    if (sensor->starts_with("bystander_") && !c.bystander) {
+      throw sdk::ParamError("parameter 'dropout_sensor' is '" + *sensor + "' but there is no bystander");
+    }
+    if (*sensor == "bystander_head") c.dropout_sensor_id = c.bystander->head_sensor_id;
+    if (*sensor == "bystander_base") c.dropout_sensor_id = c.bystander->base_sensor_id;
   }
   c.dropout_start_s = params.number("dropout_start_s");
   c.dropout_duration_s = params.number("dropout_duration_s");
@@ -97,7 +119,16 @@ class SimIs900Plugin {
       sdk::quaternion("tracker_quaternion_wxyz", nullptr, "its orientation (not with rpy)"),
       sdk::integer("buffer_capacity", "", "256", "samples kept between reads", sdk::between(1, 1048576)),
       sdk::integer("seed", "", "0", "noise seed", sdk::between(0, 4294967295.0)),
-      sdk::choice("dropout_sensor", "head|base", nullptr, "a sensor that stops reporting for a while"),
+      sdk::integer("bystander_head_sensor_id", "", nullptr,
+                   "another rig's user, standing still: the id of the sensor on its head", sdk::between(0, 4294967295.0)),
+      sdk::integer("bystander_base_sensor_id", "", nullptr, "and of the sensor on its base (with the head's)",
+                   sdk::between(0, 4294967295.0)),
+      sdk::vector3("bystander_head_position_m", "m", nullptr, "where its head is in the world (default: the origin)",
+                   sdk::between(-1000, 1000)),
+      sdk::vector3("bystander_base_position_m", "m", nullptr,
+                   "where its base stands in the world, x 0 z (heading 0; default: the origin)", sdk::between(-1000, 1000)),
+      sdk::choice("dropout_sensor", "head|base|bystander_head|bystander_base", nullptr,
+                  "a sensor that stops reporting for a while"),
       sdk::number("dropout_start_s", "s", "0", "when the dropout starts, after start()", sdk::between(0, 86400)),
       sdk::number("dropout_duration_s", "s", "0", "how long it lasts", sdk::between(0, 86400)),
   };
@@ -132,4 +163,5 @@ class SimIs900Plugin {
 
 MHD_PLUGIN_ENTRY(mhd::sim_is900::SimIs900Plugin,
                  {.kind = MHD_PLUGIN_KIND, .name = MHD_PLUGIN_NAME, .version = "1.0.0",
-                  .description = "Simulated IS-900: base and head sensors at 180 Hz with noise and 4 ms latency"})
+                  .description = "Simulated IS-900: base and head sensors at 180 Hz with noise and 4 ms latency (and, "
+                                 "optionally, a standing bystander rig's)"})
