@@ -30,6 +30,7 @@ using mhd::test::hardware::exit_status;
 using mhd::test::hardware::expect_last_command_zero;
 using mhd::test::hardware::fresh_dir;
 using mhd::test::hardware::rows_of;
+using mhd::test::hardware::write_scene_logging_the_base;
 
 using Fills = std::vector<std::pair<std::string, std::string>>;
 
@@ -38,17 +39,9 @@ constexpr double kOtherBaseZ_m = -0.35;
 constexpr double kBaseContact_m = 0.45;  // two robot radii
 constexpr const char* kSeen = R"(<param name="other_rig_sensors" value="2:3"/>)";
 
-/// scenes/shared_floor.xml in `dir`, its includes made absolute, the base logging its
-/// commands to base.csv, then `fills`; run for `duration_s`.
+/// scenes/shared_floor.xml with `fills`, the base logging to base.csv, run for `duration_s`.
 MhdRunProcess run(const fs::path& dir, Fills fills, double duration_s) {
-  fills.insert(fills.begin(),
-               {{R"(file="common/materials.xml")",
-                 std::string(R"(file=")") + MHD_SOURCE_DIR + R"(/scenes/common/materials.xml")"},
-                {R"(file="rigs/pomhi.xml")", std::string(R"(file=")") + MHD_SOURCE_DIR + R"(/scenes/rigs/pomhi.xml")"},
-                {R"(<plugin kind="base" name="sim_omni3">)",
-                 R"(<plugin kind="base" name="sim_omni3"><param name="command_log" value="base.csv"/>)"}});
-  std::ofstream(dir / "scene.xml") << mhd::test::fill_scene_template(
-      fs::path(MHD_SOURCE_DIR) / "scenes/shared_floor.xml", fills);
+  write_scene_logging_the_base(dir, "shared_floor.xml", std::move(fills));
   return MhdRunProcess({.argv = {MHD_CLI, "run", (dir / "scene.xml").string(), "--duration",
                                  std::to_string(duration_s), "-q", "--record", (dir / "run.csv").string(),
                                  "--plugin-path", MHD_SIM_PLUGIN_DIR},

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <fstream>
 
 namespace mhd::test::hardware {
 
@@ -16,6 +17,19 @@ fs::path fresh_dir(const std::string& suite, const std::string& name) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
+}
+
+fs::path write_scene_logging_the_base(const fs::path& dir, const std::string& name,
+                                      std::vector<std::pair<std::string, std::string>> fills) {
+  const std::string scenes = std::string(MHD_SOURCE_DIR) + "/scenes/";
+  fills.insert(fills.begin(),
+               {{R"(file="common/materials.xml")", R"(file=")" + scenes + R"(common/materials.xml")"},
+                {R"(file="rigs/pomhi.xml")", R"(file=")" + scenes + R"(rigs/pomhi.xml")"},
+                {R"(<plugin kind="base" name="sim_omni3">)",
+                 R"(<plugin kind="base" name="sim_omni3"><param name="command_log" value="base.csv"/>)"}});
+  const fs::path scene = dir / "scene.xml";
+  std::ofstream(scene) << fill_scene_template(scenes + name, fills);
+  return scene;
 }
 
 int exit_status(MhdRunProcess& process, std::chrono::seconds timeout) {

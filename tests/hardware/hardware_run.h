@@ -9,6 +9,7 @@
 #include <chrono>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace mhd::test::hardware {
@@ -30,6 +31,12 @@ std::vector<CommandLogRow> rows_of(const std::filesystem::path& file, const std:
 
 /// The last "command" row of `file` (a simulated base's or arm's log) is zero.
 void expect_last_command_zero(const std::filesystem::path& file, const std::string& output);
+
+/// scenes/<name> written to dir/scene.xml: its includes of common/materials.xml and
+/// rigs/pomhi.xml made absolute, its sim_omni3 base logging its commands to base.csv, then
+/// each (from, to) of `fills` applied (mhd::test::fill_scene_template). Returns the path.
+std::filesystem::path write_scene_logging_the_base(const std::filesystem::path& dir, const std::string& name,
+                                                   std::vector<std::pair<std::string, std::string>> fills);
 
 /// The run's ticks with force faded for stale tracking ("start-up, N stale"); -1 when the
 /// summary does not say.

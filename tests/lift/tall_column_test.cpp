@@ -49,15 +49,7 @@ constexpr double kRunDuration_s = 14.0;
 /// scenes/tall_column.xml in `dir`, its includes made absolute, the base
 /// logging its commands to base.csv, then `fills`.
 fs::path write_scene(const fs::path &dir, Fills fills) {
-  fills.insert(fills.begin(),
-               {{R"(file="common/materials.xml")",
-                 std::string(R"(file=")") + MHD_SOURCE_DIR + R"(/scenes/common/materials.xml")"},
-                {R"(file="rigs/pomhi.xml")", std::string(R"(file=")") + MHD_SOURCE_DIR + R"(/scenes/rigs/pomhi.xml")"},
-                {R"(<plugin kind="base" name="sim_omni3">)",
-                 R"(<plugin kind="base" name="sim_omni3"><param name="command_log" value="base.csv"/>)"}});
-  const fs::path scene = dir / "scene.xml";
-  std::ofstream(scene) << mhd::test::fill_scene_template(fs::path(MHD_SOURCE_DIR) / "scenes/tall_column.xml", fills);
-  return scene;
+  return mhd::test::hardware::write_scene_logging_the_base(dir, "tall_column.xml", std::move(fills));
 }
 
 MhdRunProcess run(const fs::path &dir, double duration_s) {

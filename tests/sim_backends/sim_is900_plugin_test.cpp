@@ -97,6 +97,8 @@ TEST(SimIs900Plugin, ReportsAStandingBystanderRigBesideItsOwnSensors) {
   EXPECT_EQ(head, 18);  // k = 0..17 by 0.1 s, as the rig's own sensors
   EXPECT_EQ(base, 9);   // k = 0..8, before the dropout
   EXPECT_EQ(own, 36);
+  ASSERT_EQ(api.stop(opened.instance, &err), MHD_OK);
+  api.close(opened.instance);
 }
 
 TEST(SimIs900Plugin, ReportsTheWorldsBaseAndHead) {
