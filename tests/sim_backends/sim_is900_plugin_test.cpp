@@ -38,16 +38,14 @@ TEST(SimIs900Plugin, OpenNeedsValidParameters) {
             "parameters 'tracker_rpy_deg' and 'tracker_quaternion_wxyz' exclude each other");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"dropout_sensor", "hand"}}).error,
             "parameter 'dropout_sensor' must be one of head|base|bystander_head|bystander_base, got 'hand'");
-  EXPECT_EQ(open_plugin(file.api(), h.host, {{"bystander_head_sensor_id", "2"}}).error,
-            "parameters 'bystander_head_sensor_id' and 'bystander_base_sensor_id' go together");
-  EXPECT_EQ(open_plugin(file.api(), h.host, {{"bystander_head_sensor_id", "1"}, {"bystander_base_sensor_id", "3"}})
-                .error,
+  EXPECT_EQ(open_plugin(file.api(), h.host, {{"bystander", "on"}, {"bystander_head_sensor_id", "1"}}).error,
+            "the four sensors (base, head, the bystander's head and base) need different ids");
+  EXPECT_EQ(open_plugin(file.api(), h.host, {{"bystander", "on"}, {"bystander_base_sensor_id", "2"}}).error,
             "the four sensors (base, head, the bystander's head and base) need different ids");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"dropout_sensor", "bystander_base"}}).error,
             "parameter 'dropout_sensor' is 'bystander_base' but there is no bystander");
   EXPECT_EQ(open_plugin(file.api(), h.host,
-                        {{"bystander_head_sensor_id", "2"}, {"bystander_base_sensor_id", "3"},
-                         {"bystander_base_position_m", "nan 0 0"}})
+                        {{"bystander", "on"}, {"bystander_base_position_m", "nan 0 0"}})
                 .error,
             "parameter 'bystander_base_position_m' must be three numbers 'x y z', each in [-1000, 1000] (m), got 'nan 0 0'");
   EXPECT_EQ(open_plugin(file.api(), h.host, {{"dropout_duration_s", "-1"}}).error,
@@ -65,8 +63,7 @@ TEST(SimIs900Plugin, ReportsAStandingBystanderRigBesideItsOwnSensors) {
                                      {"angle_sigma_deg", "0"},
                                      {"tracker_position_m", "0 0 0"},  // tracker frame = world
                                      {"base_sensor_position_m", "0 0.5 0"},
-                                     {"bystander_head_sensor_id", "2"},
-                                     {"bystander_base_sensor_id", "3"},
+                                     {"bystander", "on"},  // its sensors 2 and 3 by default
                                      {"bystander_head_position_m", "1 1.6 2"},
                                      {"bystander_base_position_m", "3 0 -1"},
                                      {"dropout_sensor", "bystander_base"},

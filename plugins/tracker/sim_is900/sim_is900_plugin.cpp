@@ -61,15 +61,10 @@ Is900Config read_config(const sdk::Params& params) {
   c.X_WT = read_pose(params, "tracker", c.X_WT);
   c.buffer_capacity = static_cast<std::size_t>(params.integer("buffer_capacity"));
   c.seed = params.integer("seed");
-  const auto bystander_head = params.optional_integer("bystander_head_sensor_id");
-  const auto bystander_base = params.optional_integer("bystander_base_sensor_id");
-  if (bystander_head.has_value() != bystander_base.has_value()) {
-    throw sdk::ParamError("parameters 'bystander_head_sensor_id' and 'bystander_base_sensor_id' go together");
-  }
-  if (bystander_head) {
+  if (params.text("bystander") == "on") {
     Bystander other;
-    other.head_sensor_id = static_cast<std::uint32_t>(*bystander_head);
-    other.base_sensor_id = static_cast<std::uint32_t>(*bystander_base);
+    other.head_sensor_id = static_cast<std::uint32_t>(params.integer("bystander_head_sensor_id"));
+    other.base_sensor_id = static_cast<std::uint32_t>(params.integer("bystander_base_sensor_id"));
     other.p_W_head = params.optional_vector3<Eigen::Vector3d>("bystander_head_position_m").value_or(other.p_W_head);
     const Eigen::Vector3d base =
         params.optional_vector3<Eigen::Vector3d>("bystander_base_position_m").value_or(Eigen::Vector3d::Zero());
@@ -119,10 +114,10 @@ class SimIs900Plugin {
       sdk::quaternion("tracker_quaternion_wxyz", nullptr, "its orientation (not with rpy)"),
       sdk::integer("buffer_capacity", "", "256", "samples kept between reads", sdk::between(1, 1048576)),
       sdk::integer("seed", "", "0", "noise seed", sdk::between(0, 4294967295.0)),
-      sdk::integer("bystander_head_sensor_id", "", nullptr,
-                   "another rig's user, standing still: the id of the sensor on its head", sdk::between(0, 4294967295.0)),
-      sdk::integer("bystander_base_sensor_id", "", nullptr, "and of the sensor on its base (with the head's)",
+      sdk::choice("bystander", "off|on", "off", "another rig standing still on the floor, measured too"),
+      sdk::integer("bystander_head_sensor_id", "", "2", "the bystander's sensor on its user's head",
                    sdk::between(0, 4294967295.0)),
+      sdk::integer("bystander_base_sensor_id", "", "3", "and the one on its base", sdk::between(0, 4294967295.0)),
       sdk::vector3("bystander_head_position_m", "m", nullptr, "where its head is in the world (default: the origin)",
                    sdk::between(-1000, 1000)),
       sdk::vector3("bystander_base_position_m", "m", nullptr,
