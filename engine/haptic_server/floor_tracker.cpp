@@ -9,10 +9,11 @@ FloorTracker::FloorTracker(const OtherRigSensorList& sensors) noexcept : sensors
   view_.count = sensors_.count;
 }
 
-std::optional<FloorSlot> FloorTracker::slot_of(std::uint32_t sensor_id) const noexcept {
-  for (std::size_t i = 0; i < sensors_.count; ++i) {
-    if (sensors_.rigs[i].head_sensor_id == sensor_id) return FloorSlot{i, false};
-    if (sensors_.rigs[i].base_sensor_id == sensor_id) return FloorSlot{i, true};
+std::optional<FloorSlot> floor_slot_of(const OtherRigSensorList& sensors, std::uint32_t sensor_id) noexcept {
+  const std::size_t count = std::min(sensors.count, kMaxOtherRigs);
+  for (std::size_t i = 0; i < count; ++i) {
+    if (sensors.rigs[i].head_sensor_id == sensor_id) return FloorSlot{i, false};
+    if (sensors.rigs[i].base_sensor_id == sensor_id) return FloorSlot{i, true};
   }
   return std::nullopt;
 }

@@ -33,6 +33,11 @@ struct FloorSlot {
   bool base = false;  ///< the rig's base (else its user)
 };
 
+/// The slot `sensor_id` feeds in `sensors`, if it is another rig's (the first
+/// min(count, kMaxOtherRigs) rigs are looked at).
+[[nodiscard]] std::optional<FloorSlot> floor_slot_of(const OtherRigSensorList& sensors,
+                                                     std::uint32_t sensor_id) noexcept;
+
 class FloorTracker {
  public:
   static constexpr double kVelocityWindow_s = 0.1;
@@ -40,7 +45,9 @@ class FloorTracker {
   explicit FloorTracker(const OtherRigSensorList& sensors) noexcept;
 
   /// The slot `sensor_id` feeds, if it is another rig's.
-  [[nodiscard]] std::optional<FloorSlot> slot_of(std::uint32_t sensor_id) const noexcept;
+  [[nodiscard]] std::optional<FloorSlot> slot_of(std::uint32_t sensor_id) const noexcept {
+    return floor_slot_of(sensors_, sensor_id);
+  }
   /// An accepted sample of the slot's sensor: the disc's centre on the floor (world x, z),
   /// measured at t_s. An older sample than the newest is ignored.
   void take(const FloorSlot& slot, double t_s, const Eigen::Vector2d& p_W) noexcept;

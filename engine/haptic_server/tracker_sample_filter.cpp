@@ -4,8 +4,6 @@
 
 #include <Eigen/Core>
 
-#include <algorithm>
-
 namespace mhd {
 
 const char* to_string(TrackerSampleVerdict verdict) noexcept {
@@ -22,11 +20,8 @@ const char* to_string(TrackerSampleVerdict verdict) noexcept {
 std::optional<std::size_t> TrackerSampleFilter::slot_of(std::uint32_t sensor_id) const noexcept {
   if (sensor_id == settings_.base_sensor_id) return 0;
   if (sensor_id == settings_.head_sensor_id) return 1;
-  const std::size_t others = std::min(settings_.other_rigs.count, kMaxOtherRigs);
-  for (std::size_t i = 0; i < others; ++i) {
-    if (sensor_id == settings_.other_rigs.rigs[i].head_sensor_id) return 2 + 2 * i;
-    if (sensor_id == settings_.other_rigs.rigs[i].base_sensor_id) return 3 + 2 * i;
-  }
+  if (const std::optional<FloorSlot> other = floor_slot_of(settings_.other_rigs, sensor_id))
+    return 2 + 2 * other->rig + (other->base ? 1 : 0);
   return std::nullopt;
 }
 
