@@ -178,6 +178,14 @@ void RigidBodyWorld::apply_force(int object, const Eigen::Vector3d& f_W_N, const
   if (f_W_N.squaredNorm() > 0.0) b.body->activate();
 }
 
+void RigidBodyWorld::add_force(int object, const Eigen::Vector3d& f_W_N, const Eigen::Vector3d& p_W_m) noexcept {
+  if (!is_body(object) || !f_W_N.allFinite() || !p_W_m.allFinite()) return;
+  Impl::Body& b = impl_->bodies[static_cast<std::size_t>(impl_->body_of_object[static_cast<std::size_t>(object)])];
+  b.f_W_N += f_W_N;
+  b.tau_W_Nm += (p_W_m - eig(b.body->getCenterOfMassPosition())).cross(f_W_N);
+  if (f_W_N.squaredNorm() > 0.0) b.body->activate();
+}
+
 void RigidBodyWorld::clear_forces() noexcept {
   for (Impl::Body& b : impl_->bodies) {
     b.f_W_N.setZero();

@@ -48,6 +48,9 @@ class RigidBodyWorld {
   /// Holds the force f_W_N acting at the point p_W_m on `object` (a body; others are
   /// ignored) until the next apply_force() or clear_forces(). Allocates nothing.
   void apply_force(int object, const Eigen::Vector3d& f_W_N, const Eigen::Vector3d& p_W_m) noexcept;
+  /// Adds f_W_N at p_W_m to what `object` holds (another hand's push on it), until the
+  /// next apply_force() or clear_forces(). Allocates nothing.
+  void add_force(int object, const Eigen::Vector3d& f_W_N, const Eigen::Vector3d& p_W_m) noexcept;
   /// No force on any body from now on.
   void clear_forces() noexcept;
   /// Sets a body's velocity now (a body thrown or caught): its origin's v_W_origin_mps and

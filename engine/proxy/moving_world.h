@@ -28,6 +28,14 @@ class MovingWorld {
   MovingWorld(const CollisionWorld& world, std::vector<std::optional<ObjectMotion>> motions,
               std::span<const std::optional<ObjectDynamics>> dynamics, const RigidBodySettings& physics = {});
 
+  /// Also makes each object with driven[i] one whose pose is set from outside
+  /// (drive(): a replica of an object another rig simulates); it is left out of the
+  /// bodies' physics. Throws std::invalid_argument unless driven has one entry per object
+  /// and no driven object has a motion or dynamics.
+  MovingWorld(const CollisionWorld& world, std::vector<std::optional<ObjectMotion>> motions,
+              std::span<const std::optional<ObjectDynamics>> dynamics, std::span<const bool> driven,
+              const RigidBodySettings& physics = {});
+
   [[nodiscard]] bool moves() const noexcept { return moving_count_ > 0 || physics_ != nullptr; }
   /// The pushable bodies' physics; null when the world has none.
   [[nodiscard]] const RigidBodyWorld* physics() const noexcept { return physics_.get(); }
@@ -51,6 +59,14 @@ class MovingWorld {
   /// shows from the next advance(). No-op for scripted or still objects.
   void set_body_velocity(int object, const ObjectTwist& twist_W) noexcept;
 
+  /// Where driven object `object` is to be, and how fast it moves, from the next place()
+  /// or advance() on. No-op for other objects. Allocates nothing.
+  void drive(int object, const Pose& X_WO, const ObjectTwist& twist_W) noexcept;
+
+  /// Adds another rig's push (f_W_N at p_W_m) to what body `object` holds, until the next
+  /// apply_reaction(). No-op for objects that are not bodies. Allocates nothing.
+  void add_push(int object, const Eigen::Vector3d& f_W_N, const Eigen::Vector3d& p_W_m) noexcept;
+
   /// The hand felt force_W_N (the force on it) with the proxy at proxy's end of tick: the
   /// bodies of its constraint planes get the reaction, at the proxy (contact_reactions),
   /// held until the next call; every other body none. Allocates nothing.
@@ -61,6 +77,9 @@ class MovingWorld {
   std::vector<std::optional<ObjectMotion>> motions_;
   std::vector<Pose> X_WO_before_;
   std::vector<ObjectTwist> twists_;
+  std::vector<char> driven_;           // [i]: object i is posed by drive()
+  std::vector<Pose> X_WO_driven_;
+  std::vector<ObjectTwist> twists_driven_;
   int moving_count_ = 0;
   std::unique_ptr<RigidBodyWorld> physics_;  // null without bodies
 };

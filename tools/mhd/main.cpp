@@ -7,6 +7,7 @@
 #include "command_exit.h"
 #include "devices_command.h"
 #include "plan_sim_command.h"
+#include "share_sim_command.h"
 #include "plugins_command.h"
 #include "proxy_replay_command.h"
 #include "replay_command.h"
@@ -52,6 +53,7 @@ int main(int argc, char** argv) {
   add_plugins_command(app);
   add_devices_command(app);
   add_plan_sim_command(app);
+  add_share_sim_command(app);
   add_cache_command(app);
   add_calibrate_command(app);
   add_replay_command(app);
