@@ -63,6 +63,19 @@ struct TopicTraits<mhd_dds_SimWorld> {
   static Qos qos() { return Qos::best_effort(4); }
 };
 
+template <>
+struct TopicTraits<mhd_dds_RigClaim> {
+  static constexpr const char* name = "mhd_rig_claim";
+  static const dds_topic_descriptor_t& descriptor() { return mhd_dds_RigClaim_desc; }
+  /// A killed claimant's claim is gone after this; then a restarted process may claim.
+  static constexpr dds_duration_t kLiveliness_ns = DDS_MSECS(1000);
+  static Qos qos() {
+    Qos q = Qos::reliable(1, /*transient_local=*/true);
+    q.automatic_liveliness(kLiveliness_ns);
+    return q;
+  }
+};
+
 /// The topic of T in `participant`, with T's name, type and QoS.
 template <class T>
 [[nodiscard]] Topic make_topic(const Participant& participant) {
