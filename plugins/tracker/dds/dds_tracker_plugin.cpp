@@ -3,11 +3,14 @@
 // blocks on a DDS waitset, so the host takes a sample as soon as it arrives. Invalid
 // samples are dropped and counted; the host reads the counts through counters (its
 // status line shows them) and they are printed to stderr when the plugin stops.
+// With `other_rigs` it also reads those rigs' samples, each validated as its own rig's,
+// and hands out sensor S of rig R as sensor 1000 R + S (dds_common/other_rigs.h).
 
 #include "dds_common/dds_convert.h"
 #include "dds_common/shared_sim_world.h"
 #include "dds_common/tracker_subscriber.h"
 #include "dds_common/dds_plugin_params.h"
+#include "dds_common/other_rigs.h"
 #include "sim_world/sim_session.h"
 
 #include <mhd/plugin_sdk.hpp>
@@ -15,9 +18,11 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <memory>
 #include <optional>
 #include <span>
 #include <stdexcept>
+#include <vector>
 
 namespace mhd::dds_tracker {
 
@@ -25,6 +30,7 @@ struct Config {
   dds::DdsEndpoint endpoint;
   dds::TrackerValidationLimits limits;
   bool publish_sim_world = false;
+  std::vector<std::uint32_t> other_rigs;
 };
 
 // Counter names in DropReason order, after "accepted", then the writers matched now and
@@ -51,6 +57,8 @@ class DdsTrackerPlugin {
                       sdk::above_up_to(0, 60)),
           sdk::number("quaternion_tolerance", "", "0.001", "| |q| - 1 | allowed", sdk::above_up_to(0, 1)),
           sdk::boolean("publish_sim_world", "false", "publish the scene's simulated world (mhd_sim_world topic)"),
+          sdk::text("other_rigs", nullptr,
+                    "rig ids whose samples this rig also reads; sensor S of rig R arrives as sensor 1000 R + S"),
       });
 
   DdsTrackerPlugin(const mhd_host& host, const sdk::Params& params)
@@ -68,7 +76,15 @@ class DdsTrackerPlugin {
   }
 
   std::size_t tracker_read(std::span<mhd_tracker_sample> out) {
-    return subscriber_.poll(out, sdk::host_now(host_), dds::realtime_ns());
+    const double host_now_s = sdk::host_now(host_);
+    const std::int64_t now_ns = dds::realtime_ns();
+    std::size_t n = subscriber_.poll(out, host_now_s, now_ns);
+    for (std::size_t i = 0; i < others_.size() && n < out.size(); ++i) {
+      const std::size_t m = others_[i]->poll(out.subspan(n), host_now_s, now_ns);
+      for (std::size_t k = n; k < n + m; ++k) out[k].sensor_id = dds::other_rig_sensor_id(config_.other_rigs[i], out[k].sensor_id);
+      n += m;
+    }
+    return n;
   }
 
   mhd_status tracker_wait(double timeout_s) {
@@ -107,6 +123,11 @@ class DdsTrackerPlugin {
   DdsTrackerPlugin(const mhd_host& host, const Config& c)
       : host_(host), config_(c), participant_(c.endpoint.domain_id, c.endpoint.config, c.endpoint.identity_dir),
         subscriber_(participant_, c.limits) {
+    for (const std::uint32_t rig : c.other_rigs) {
+      dds::TrackerValidationLimits limits = c.limits;
+      limits.rig_id = rig;
+      others_.push_back(std::make_unique<dds::TrackerSubscriber>(participant_, limits));
+    }
     if (c.publish_sim_world) {
       session_ = sim_world::SimSession::acquire(host);
       sim_world_.emplace(participant_, c.endpoint.rig_id);
@@ -123,6 +144,7 @@ class DdsTrackerPlugin {
     c.limits.restart_after_s = params.number("restart_after_s");
     c.limits.quaternion_tolerance = params.number("quaternion_tolerance");
     c.publish_sim_world = params.boolean("publish_sim_world");
+    c.other_rigs = dds::parse_other_rigs(params.optional_text("other_rigs").value_or(""), c.endpoint.rig_id);
     return c;
   }
 
@@ -130,6 +152,7 @@ class DdsTrackerPlugin {
   Config config_;
   dds::Participant participant_;
   dds::TrackerSubscriber subscriber_;
+  std::vector<std::unique_ptr<dds::TrackerSubscriber>> others_;  ///< one per config_.other_rigs
   std::shared_ptr<sim_world::SimSession> session_;  ///< with publish_sim_world: this scene's simulated world
   std::optional<dds::SimWorldPublisher> sim_world_;
 };

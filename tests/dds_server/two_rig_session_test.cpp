@@ -1,0 +1,152 @@
+// The README's two-rig session, secured as written (docs/networking.md, "Two rigs on one
+// floor"): a tracker server per rig (--shared-world) and a haptic process per rig
+// (scenes/network/pair_rig1.xml, pair_rig2.xml), each `mhd run` reading the other rig's
+// tracking. Judged from the two recordings: both users touch the dolphin, both bases move,
+// each haptic process gets the other rig's samples, and no base ever comes within the
+// keep-out of the other base or of either user (robot 0.225 m + human 0.25 m; two bases
+// 0.45 m).
+#include "dds_test_support.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace mhd::dds::two_rig_session_test {
+
+namespace fs = std::filesystem;
+using test::ChildProcess;
+
+struct Row {
+  double t_s, base_x_m, base_z_m, user_x_m, user_z_m;
+  bool contact;
+};
+
+// The rows of a recording with fresh tracking (finite poses, tracker age < 0.1 s).
+std::vector<Row> read_recording(const fs::path& csv) {
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  std::map<std::string, std::size_t> column;
+  {
+    std::istringstream header(line);
+    std::size_t i = 0;
+    for (std::string name; std::getline(header, name, ',');) column[name] = i++;
+  }
+  std::vector<Row> rows;
+  while (std::getline(in, line)) {
+    std::vector<double> v;
+    std::istringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) v.push_back(std::strtod(cell.c_str(), nullptr));
+    const auto at = [&](const char* name) { return v.at(column.at(name)); };
+    const Row r{at("t_s"), at("base_x_m"), at("base_z_m"), at("user_x_m"), at("user_z_m"), at("contact") > 0.5};
+    if (std::isfinite(r.base_x_m) && std::isfinite(r.user_x_m) && at("tracker_age_s") < 0.1) rows.push_back(r);
+  }
+  return rows;
+}
+
+TEST(TwoRigSession, SecuredTwoRigsTouchTheDolphinAndNoBaseEntersAKeepOut) {
+  const std::uint32_t domain = test::use_loopback_and_unique_domain(73);
+  const std::string source = MHD_SOURCE_DIR;
+  setenv("CYCLONEDDS_URI",
+         ("file://" + source + "/config/cyclonedds-loopback.xml,file://" + source + "/config/cyclonedds-secure.xml")
+             .c_str(),
+         1);
+  const fs::path dir = fs::path(::testing::TempDir()) / ("two_rigs_" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  const std::string make = source + "/tools/dds_security/make_rig_security.sh '" + dir.string() + "' 1 2 > '" +
+                           dir.string() + ".log' 2>&1";
+  ASSERT_EQ(std::system(make.c_str()), 0) << test::read_file(dir.string() + ".log");
+  const fs::path ids = dir / "identities";
+
+  // The scenes as shipped but for the test's domain (each DDS plugin's domain_id).
+  const auto scene_in_domain = [&](const std::string& name) {
+    std::ifstream in(fs::path(source) / "scenes/network" / name);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    for (const std::string plugin : {"<plugin kind=\"tracker\" name=\"dds\">", "<plugin kind=\"display\" name=\"dds_state\">"}) {
+      const std::size_t at = text.find(plugin);
+      text.insert(at + plugin.size(), "<param name=\"domain_id\" value=\"" + std::to_string(domain) + "\"/>");
+    }
+    text = std::string(text).replace(text.find("../common/"), 10, source + "/scenes/common/");
+    text = std::string(text).replace(text.find("../rigs/"), 8, source + "/scenes/rigs/");
+    text = std::string(text).replace(text.find("../../assets/"), 13, source + "/assets/");
+    const fs::path path = dir / name;
+    std::ofstream(path) << text;
+    return path.string();
+  };
+  std::vector<std::unique_ptr<ChildProcess>> trackers;
+  for (const std::string rig : {"1", "2"}) {
+    trackers.push_back(std::make_unique<ChildProcess>(
+        std::vector<std::string>{MHD_BIN, "tracker-server", source + "/scenes/network/tracker_rig" + rig + ".xml",
+                                 "--shared-world", "--domain-id", std::to_string(domain), "--rig-id", rig,
+                                 "--duration", "20", "--dds-identity", (ids / ("tracker-rig" + rig)).string()},
+        (dir / ("tracker" + rig + ".log")).string()));
+  }
+  std::vector<std::unique_ptr<ChildProcess>> haptics;
+  for (const std::string rig : {"1", "2"}) {
+    setenv("MHD_DDS_IDENTITY", (ids / ("haptic-rig" + rig)).string().c_str(), 1);
+    haptics.push_back(std::make_unique<ChildProcess>(
+        std::vector<std::string>{MHD_BIN, "run", scene_in_domain("pair_rig" + rig + ".xml"), "--duration", "14", "-q",
+                                 "--record", (dir / ("rig" + rig + ".csv")).string()},
+        (dir / ("haptic" + rig + ".log")).string()));
+  }
+  unsetenv("MHD_DDS_IDENTITY");
+  std::vector<std::vector<Row>> rows;
+  for (std::size_t i = 0; i < 2; ++i) {
+    const std::optional<int> rc = haptics[i]->wait_for(std::chrono::seconds(40));
+    const std::string log = test::read_file((dir / ("haptic" + std::to_string(i + 1) + ".log")).string());
+    ASSERT_TRUE(rc.has_value()) << log;
+    EXPECT_EQ(*rc, 0) << log;
+    EXPECT_NE(log.find("safe state: zero force sent, base stopped"), std::string::npos) << log;
+    // The other rig's samples came too: the server took half again as many samples as
+    // this rig's own tracker server sent and the dds tracker accepted.
+    std::smatch own, taken;
+    ASSERT_TRUE(std::regex_search(log, own, std::regex(R"(dds tracker \(rig \d\): accepted (\d+))"))) << log;
+    ASSERT_TRUE(std::regex_search(log, taken, std::regex(R"(tracker: (\d+) samples)"))) << log;
+    EXPECT_GT(std::stod(taken[1]), 1.5 * std::stod(own[1])) << log;
+    rows.push_back(read_recording(dir / ("rig" + std::to_string(i + 1) + ".csv")));
+    ASSERT_GT(rows.back().size(), 5000u) << log;
+  }
+  for (auto& t : trackers) t->terminate();
+
+  constexpr double kUserKeepOut_m = 0.225 + 0.25, kBaseKeepOut_m = 0.45;
+  double base_base_m = 1e9, base_user_m = 1e9, moved_m[2] = {0.0, 0.0};
+  std::size_t contacts[2] = {0, 0};
+  std::size_t j = 0;
+  for (const Row& a : rows[0]) {
+    while (j + 1 < rows[1].size() && rows[1][j + 1].t_s <= a.t_s) ++j;
+    const Row& b = rows[1][j];
+    if (std::abs(b.t_s - a.t_s) > 0.01) continue;  // the two clocks start within milliseconds
+    base_base_m = std::min(base_base_m, std::hypot(a.base_x_m - b.base_x_m, a.base_z_m - b.base_z_m));
+    base_user_m = std::min(base_user_m, std::hypot(a.base_x_m - b.user_x_m, a.base_z_m - b.user_z_m));
+    base_user_m = std::min(base_user_m, std::hypot(b.base_x_m - a.user_x_m, b.base_z_m - a.user_z_m));
+  }
+  for (std::size_t i = 0; i < 2; ++i) {
+    for (const Row& r : rows[i]) {
+      base_user_m = std::min(base_user_m, std::hypot(r.base_x_m - r.user_x_m, r.base_z_m - r.user_z_m));
+      moved_m[i] = std::max(moved_m[i], std::hypot(r.base_x_m - rows[i].front().base_x_m,
+                                                    r.base_z_m - rows[i].front().base_z_m));
+      contacts[i] += r.contact ? 1 : 0;
+    }
+  }
+  EXPECT_GT(base_base_m, kBaseKeepOut_m);
+  EXPECT_GT(base_user_m, kUserKeepOut_m);
+  EXPECT_GT(moved_m[0], 0.3);
+  EXPECT_GT(moved_m[1], 0.3);
+  EXPECT_GT(contacts[0], 100u);
+  EXPECT_GT(contacts[1], 100u);
+  std::error_code ec;
+  fs::remove_all(dir, ec);
+  fs::remove(dir.string() + ".log", ec);
+}
+
+}  // namespace mhd::dds::two_rig_session_test
