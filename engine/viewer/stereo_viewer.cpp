@@ -104,6 +104,14 @@ struct StereoViewer::Impl {
   std::vector<osg::ref_ptr<osg::Camera>> cameras;
   std::vector<osg::ref_ptr<CaptureCallback>> captures;
   std::unique_ptr<RigGraph> rig_graph;
+  // Other rigs (add_rig): each drawn from its own source with the scene's rig frames.
+  struct OtherRig {
+    std::shared_ptr<StateSource> source;
+    std::unique_ptr<RigGraph> graph;
+  };
+  std::vector<OtherRig> other_rigs;
+  std::optional<Rig> rig;
+  osg::ref_ptr<osg::Group> scene_root;
   std::unique_ptr<HudOverlay> hud;
   std::function<void(const InputEvent&)> input_handler;
   Pose default_head = Pose::Identity();
@@ -117,6 +125,9 @@ struct StereoViewer::Impl {
       if (std::optional<RigState> s = source->latest()) last_state = std::move(s);
     }
     if (last_state && options.show_rig) rig_graph->update(*last_state);
+    for (OtherRig& other : other_rigs) {
+      if (std::optional<RigState> s = other.source->latest()) other.graph->update(*s);
+    }
     const Pose& head =
         options.view_point == ViewPoint::Head && last_state ? last_state->X_W_head : default_head;
     const ViewGeometry geometry{options.ipd_m, options.fov_deg, options.near_m, options.far_m,
@@ -147,6 +158,8 @@ Result<std::unique_ptr<StereoViewer>, std::string> StereoViewer::open(const View
   impl->object_transforms = graph.object_transforms;
   impl->default_head = pick_default_head(graph.objects_bounds_W, options);
   if (options.show_grid) graph.root->addChild(floor_grid(3.0, 1.0, 0.25).get());
+  impl->rig = scene.rig;
+  impl->scene_root = graph.root;
   impl->rig_graph = std::make_unique<RigGraph>(scene.rig, options.force_scale_m_per_N, options.show_device);
   if (options.show_rig) graph.root->addChild(impl->rig_graph->root());
   if (options.overlay_text) {
@@ -292,5 +305,14 @@ void StereoViewer::set_object_pose(std::size_t object, const Pose& X_WO) {
 const std::vector<EyeView>& StereoViewer::views() const { return impl_->views; }
 std::uint64_t StereoViewer::frames_drawn() const { return impl_->frames; }
 const Pose& StereoViewer::default_head() const { return impl_->default_head; }
+
+void StereoViewer::add_rig(std::shared_ptr<StateSource> source) {
+  if (!source || !impl_->options.show_rig) return;
+  Impl::OtherRig other{std::move(source),
+                       std::make_unique<RigGraph>(impl_->rig, impl_->options.force_scale_m_per_N,
+                                                  impl_->options.show_device)};
+  impl_->scene_root->addChild(other.graph->root());
+  impl_->other_rigs.push_back(std::move(other));
+}
 
 }  // namespace mhd::viewer

@@ -69,6 +69,10 @@ class StereoViewer {
   void inject(const InputEvent& event);
   /// The text over the image (with options.overlay_text), from the next frame on.
   void set_overlay_text(const std::string& text);
+  /// Also draws another rig from `source` (a second user's hand, proxy, force, base and
+  /// head, e.g. another haptic process's rig state over DDS), from the next frame on. The
+  /// view stays with the first source's head. A null source is ignored.
+  void add_rig(std::shared_ptr<StateSource> source);
   /// Draws scene object `object` (its index in the scene's objects) at X_WO from the next
   /// frame on: a moving object. An index the scene does not have is ignored.
   void set_object_pose(std::size_t object, const Pose& X_WO);

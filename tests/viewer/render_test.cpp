@@ -192,6 +192,51 @@ TEST_F(Render, RigIsDrawnWhereTheStateSaysAndTheHeadModelDoesNotBlockTheEyes) {
   EXPECT_LT(corner[2], 60);
 }
 
+// A second rig (add_rig: another haptic process's state) is drawn where its state says,
+// beside the first; without it, that place shows the background.
+TEST_F(Render, AnotherRigIsDrawnWhereItsStateSays) {
+  const ViewerScene scene = scene_from(
+      "<scene version=\"1\"><include file=\"common/materials.xml\"/><object name=\"far\" material=\"smooth\"><sphere radius=\"0.01\"/><pose position=\"0 -50 0\"/></object></scene>");
+  RigState own;
+  own.X_W_head = head_looking_at({0.0, 1.6, 0.0}, {0.0, 1.6, -1.0});
+  own.p_W_hip_m = own.p_W_proxy_m = Eigen::Vector3d(-0.2, 1.55, -0.5);
+  own.base = BasePose{0.0, -1.5, 0.0};
+  RigState other = own;
+  other.X_W_head = head_looking_at({0.8, 1.6, -1.5}, {0.0, 1.6, -1.0});
+  other.p_W_hip_m = other.p_W_proxy_m = Eigen::Vector3d(0.2, 1.6, -0.6);
+  other.base = BasePose{0.8, -2.0, 0.0};
+  ViewerOptions o = small_options();
+  o.show_grid = false;
+  const auto draw = [&](bool with_other, std::vector<EyeView>& views) {
+    Result<std::unique_ptr<StereoViewer>, std::string> r =
+        StereoViewer::open(scene, o, std::make_shared<FixedStateSource>(own));
+    EXPECT_TRUE(r.ok()) << r.error_text();
+    if (!r.ok()) return RgbaImage{};
+    if (with_other) r.value()->add_rig(std::make_shared<FixedStateSource>(other));
+    r.value()->add_rig(nullptr);  // ignored
+    r.value()->frame();
+    RgbaImage image = r.value()->frame_and_capture();
+    views = r.value()->views();
+    return image;
+  };
+  std::vector<EyeView> views, views_alone;
+  const RgbaImage both = draw(true, views);
+  const RgbaImage alone = draw(false, views_alone);
+  ASSERT_EQ(views.size(), 2u);
+  for (const EyeView& v : views) {
+    Eigen::Vector2d hip, own_hip;
+    ASSERT_TRUE(project_to_pixel(v, other.p_W_hip_m, hip));
+    ASSERT_TRUE(project_to_pixel(v, own.p_W_hip_m, own_hip));
+    const std::uint8_t* h = both.pixel(static_cast<int>(hip.x()), static_cast<int>(hip.y()));
+    EXPECT_GT(h[0], 120) << "the other rig's HIP: yellow";
+    EXPECT_GT(h[1], 100);
+    const std::uint8_t* none = alone.pixel(static_cast<int>(hip.x()), static_cast<int>(hip.y()));
+    EXPECT_LT(none[0], 60) << "no other rig: background there";
+    const std::uint8_t* mine = both.pixel(static_cast<int>(own_hip.x()), static_cast<int>(own_hip.y()));
+    EXPECT_GT(mine[0], 120) << "the first rig's HIP is still drawn";
+  }
+}
+
 TEST_F(Render, MonoUsesTheWholeWidthAndRunWritesTheScreenshot) {
   const Result<ViewerScene, std::vector<std::string>> loaded = load_viewer_scene(kSource / "scenes/dolphin.xml");
   ASSERT_TRUE(loaded.ok()) << loaded.error_text();

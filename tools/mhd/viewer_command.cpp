@@ -33,6 +33,7 @@ struct ViewerCommandOptions {
   std::vector<double> look_at_m;
   // Network mode: the rig state of rig `rig_id` over DDS.
   std::uint32_t rig_id = 0;
+  std::vector<std::uint32_t> other_rig_ids;  ///< drawn too; the view stays with rig_id's head
   std::uint32_t domain_id = 0;
   double stale_after_s = 1.0;
   CLI::Option* rig_id_option = nullptr;
@@ -43,6 +44,28 @@ std::optional<Eigen::Vector3d> vector3(const std::vector<double>& v) {
   if (v.size() != 3) return std::nullopt;
   return Eigen::Vector3d(v[0], v[1], v[2]);
 }
+
+#ifdef MHD_HAVE_VIEWER_DDS
+/// Rig `rig_id`'s state over DDS; exits with the reason when it cannot subscribe.
+std::shared_ptr<mhd::viewer::StateSource> dds_source(const ViewerCommandOptions& o, std::uint32_t rig_id) {
+  mhd::viewer::DdsStateSourceOptions dds;
+  dds.rig_id = rig_id;
+  if (o.domain_id_option->count() > 0) dds.domain_id = o.domain_id;
+  dds.stale_after_s = o.stale_after_s;
+  const std::string domain =
+      dds.domain_id ? "domain " + std::to_string(*dds.domain_id) : std::string("the default domain");
+  try {
+    auto source = std::make_shared<mhd::viewer::DdsStateSource>(dds);
+    spdlog::info("drawing the rig state of rig {} from DDS ({})", rig_id, domain);
+    return source;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "mhd viewer: error: cannot subscribe to the rig state of rig {} on {}: {}\n", rig_id, domain,
+               e.what());
+    mhd::cli::exit_with(1);
+  }
+  return nullptr;
+}
+#endif
 
 void run_viewer(ViewerCommandOptions& o) {
   namespace v = mhd::viewer;
@@ -69,20 +92,7 @@ void run_viewer(ViewerCommandOptions& o) {
   std::shared_ptr<v::StateSource> source;
   if (o.rig_id_option->count() > 0) {
 #ifdef MHD_HAVE_VIEWER_DDS
-    v::DdsStateSourceOptions dds;
-    dds.rig_id = o.rig_id;
-    if (o.domain_id_option->count() > 0) dds.domain_id = o.domain_id;
-    dds.stale_after_s = o.stale_after_s;
-    const std::string domain =
-        dds.domain_id ? "domain " + std::to_string(*dds.domain_id) : std::string("the default domain");
-    try {
-      source = std::make_shared<v::DdsStateSource>(dds);
-    } catch (const std::exception& e) {
-      fmt::print(stderr, "mhd viewer: error: cannot subscribe to the rig state of rig {} on {}: {}\n", o.rig_id,
-                 domain, e.what());
-      mhd::cli::exit_with(1);
-    }
-    spdlog::info("drawing the rig state of rig {} from DDS ({})", o.rig_id, domain);
+    source = dds_source(o, o.rig_id);
 #else
     fmt::print(stderr, "mhd viewer: error: --rig-id needs DDS, and this mhd was built without Cyclone DDS\n");
     mhd::cli::exit_with(1);
@@ -99,6 +109,9 @@ void run_viewer(ViewerCommandOptions& o) {
     mhd::cli::exit_with(1);
   }
   const std::unique_ptr<v::StereoViewer> viewer = std::move(opened).value();
+#ifdef MHD_HAVE_VIEWER_DDS
+  for (const std::uint32_t other : o.other_rig_ids) viewer->add_rig(dds_source(o, other));
+#endif
   const std::atomic<bool> stop{false};
   if (const std::string e = viewer->run(stop); !e.empty()) {
     fmt::print(stderr, "mhd viewer: error: {}\n", e);
@@ -138,6 +151,10 @@ void add_viewer_command(CLI::App& app) {
                       "Network mode: draw this rig's state, read over DDS (topic mhd_rig_state, e.g. from the "
                       "haptic server's dds_state display plugin)")
           ->excludes("--demo-state");
+  cmd->add_option("--other-rig-id", options->other_rig_ids,
+                  "With --rig-id: also draw these rigs' states (hand, base, user), read over DDS; the view stays "
+                  "with --rig-id's head")
+      ->needs(options->rig_id_option);
   options->domain_id_option = cmd->add_option("--domain-id", options->domain_id,
                                               "With --rig-id: the DDS domain (default: $CYCLONEDDS_URI's)")
                                   ->check(CLI::Range(0, 232))
