@@ -129,6 +129,32 @@ TEST(SharedObjectSim, ALostLinkStopsTheRemotePushAndItComesBack) {
   EXPECT_EQ(pop_throughs(broken), 0);
 }
 
+TEST(SharedObjectSim, ACutLinkFadesTheForceFromTheReplicaAndItComesBack) {
+  // Both press opposite faces (the box stays); the link is cut from 2 s for 1 s.
+  SharedObjectSpec s = two_pushes(true);
+  s.link.loss = 0.0;
+  s.link.cut_from_s = 2.0;
+  s.link.cut_for_s = 1.0;
+  SharedObjectSpec no_fade = s;
+  no_fade.fade_stale_replica = false;
+  SharedObjectSpec whole = s;
+  whole.link.cut_for_s = 0.0;
+  const SharedObjectResult faded = simulate_shared_object(s);
+  const SharedObjectResult full = simulate_shared_object(no_fade);
+  const SharedObjectResult kept = simulate_shared_object(whole);
+  const auto at = [](const SharedObjectResult& r, double t_s) { return r.force_1_N[static_cast<std::size_t>(t_s * 1000.0) - 1]; };
+  EXPECT_GT(at(faded, 1.9), 8.0);  // pressing at the device's limit before the cut
+  // Stale after 0.1 s (plus the link's delay), none after a further 0.1 s.
+  EXPECT_LT(at(faded, 2.3), 0.01);
+  EXPECT_GT(at(full, 2.3), 8.0);   // the dual: without the fade, full force on stale data
+  EXPECT_GT(at(kept, 2.3), 8.0);   // and without the cut
+  // Fresh again from 3 s plus the delay: back in 0.3 s.
+  EXPECT_GT(at(faded, 3.4), 8.0);
+  EXPECT_EQ(faded.max_force_on_stale_N, 0.0);
+  EXPECT_GT(full.max_force_on_stale_N, 8.0);
+  EXPECT_EQ(pop_throughs(faded), 0);
+}
+
 TEST(SharedObjectSim, DrawnSessionsNeverPopThrough) {
   for (std::uint64_t seed = 500; seed < 508; ++seed) {
     SharedObjectSpec s = share_sim::draw_session(seed);

@@ -57,6 +57,8 @@ int run(const ShareSimOptions& o) {
              1e3 * s.disagreement_stale_max_m);
   fmt::print("state age (rig 1)        max {:.1f} ms (link up)\n", 1e3 * s.max_state_age_s);
   fmt::print("old-term states ignored  {}\n", s.old_term_ignored);
+  fmt::print("force on stale replica   max {:.2f} N (rig 1, its state stale for the whole fade)\n",
+             s.max_force_on_stale_N);
   fmt::print("push felt ({} sessions)  max {:.1f} ms; no link max {:.1f} ms; added max {:.1f} ms; added beyond the "
              "link's delay max {:.1f} ms\n",
              s.felt_delay_s.size(), 1e3 * max_of(s.felt_delay_s), 1e3 * max_of(s.felt_delay_no_link_s),

@@ -181,6 +181,7 @@ class Session {
     epoch_ = static_cast<std::uint32_t>(authority_1_.take_over(kBox, 0));
     const auto ticks = static_cast<std::size_t>(std::llround(spec.duration_s * spec.rate_Hz));
     r_.disagreement_m.reserve(ticks);
+    r_.force_1_N.reserve(ticks);
     r_.p_W_box.reserve(ticks);
   }
 
@@ -189,7 +190,7 @@ class Session {
     receive(t_s);
     move_hands(t_s);
     const ProxyOutput out_0 = authority_tick(t_s, k);
-    const ProxyOutput out_1 = replica_tick(t_s, k);
+    ProxyOutput out_1 = replica_tick(t_s, k);
     judge(t_s, out_0, out_1);
   }
 
@@ -264,9 +265,18 @@ class Session {
   ProxyOutput replica_tick(double t_s, std::int64_t k) {
     RigLoop& rig = rig_[1];
     rig.moving.drive(kBox, replica_.X_WO_at(t_s), replica_.twist_at(t_s));
-    const ProxyOutput out = rig.tick(t_s, dt_s_, materials_, proxy_settings_, r_.crossings[1], r_.inside[1],
-                                     r_.overlaps[1], r_.first_pop_tick[1], k);
+    ProxyOutput out = rig.tick(t_s, dt_s_, materials_, proxy_settings_, r_.crossings[1], r_.inside[1],
+                               r_.overlaps[1], r_.first_pop_tick[1], k);
     X_WO_replica_ = rig.moving.world().pose(kBox);
+    // Stale data fades the force from the replica; the scene's pose is its state at 0.
+    const double age_s = replica_.has_state() ? replica_.age_s(t_s) : t_s;
+    const double gain = spec_.fade_stale_replica ? fade_.update(age_s, dt_s_) : 1.0;
+    if (touches_box(rig.proxy, out.force_W)) {
+      out.force_W *= gain;
+      if (age_s > spec_.fade.stale_after_s + spec_.fade.fade_out_s + dt_s_) {
+        r_.max_force_on_stale_N = std::max(r_.max_force_on_stale_N, out.force_W.norm());
+      }
+    }
     V f_box_W = V::Zero();
     const ContactReactions reactions = contact_reactions(rig.proxy, out.force_W);
     for (int i = 0; i < reactions.count; ++i) {
@@ -280,6 +290,14 @@ class Session {
     return out;
   }
 
+  static bool touches_box(const ProxyState& proxy, const V& force_W) {
+    const ContactReactions reactions = contact_reactions(proxy, force_W);
+    for (int i = 0; i < reactions.count; ++i) {
+      if (reactions.on[static_cast<std::size_t>(i)].object == kBox) return true;
+    }
+    return false;
+  }
+
   // Judged from outside: forces, agreement of the two boxes, the push felt.
   void judge(double t_s, const ProxyOutput& out_0, const ProxyOutput& out_1) {
     ++r_.ticks;
@@ -288,6 +306,7 @@ class Session {
       r_.contact_ticks[i] += out[i]->in_contact ? 1 : 0;
       r_.max_force_N[i] = std::max(r_.max_force_N[i], out[i]->force_W.norm());
     }
+    r_.force_1_N.push_back(out_1.force_W.norm());
     const double d_m = (X_WO_replica_.translation() - X_WO_truth_.translation()).norm();
     if (link_up(t_s)) {
       if (replica_.has_state()) r_.max_state_age_s = std::max(r_.max_state_age_s, replica_.age_s(t_s));
@@ -331,6 +350,7 @@ class Session {
   ObjectAuthority authority_1_;
   std::uint32_t epoch_ = 0;
   ObjectReplica replica_;
+  ReplicaFade fade_{spec_.fade};
   RemotePushes pushes_0_;
   Link to_1_, to_0_;
   std::uint64_t state_sequence_ = 0, push_sequence_ = 0;
@@ -474,6 +494,7 @@ SessionsSummary simulate_sessions(std::uint64_t first_seed, int sessions, double
     s.disagreement_stale_max_m = std::max(s.disagreement_stale_max_m, r.max_disagreement_stale_m);
     s.max_state_age_s = std::max(s.max_state_age_s, r.max_state_age_s);
     s.old_term_ignored += r.old_term_ignored;
+    s.max_force_on_stale_N = std::max(s.max_force_on_stale_N, r.max_force_on_stale_N);
     all_disagreements_m.insert(all_disagreements_m.end(), r.disagreement_m.begin(), r.disagreement_m.end());
     std::optional<double> no_link_s;
     if (r.felt_delay_s && spec.link.cut_for_s <= 0.0) {

@@ -19,6 +19,7 @@
 
 #include "sharing/object_replica.h"
 #include "sharing/remote_pushes.h"
+#include "sharing/replica_fade.h"
 
 #include <cstdint>
 #include <optional>
@@ -78,6 +79,10 @@ struct SharedObjectSpec {
   int pusher = 0;               ///< PushAndRest: whose hand pushes; the other rests
   ReplicaSettings replica;
   RemotePushSettings pushes;
+  /// Rig 1's force from its replica fades while the replica's state is stale (and comes
+  /// back); false: full force whatever the replica's age, for comparison.
+  bool fade_stale_replica = true;
+  ReplicaFadeSettings fade;
   /// Rig 1 also receives a forged state of every 50th tick from a rig that held the box
   /// in an older term: it must never move the replica.
   bool forge_old_term = false;
@@ -107,6 +112,10 @@ struct SharedObjectResult {
   std::uint64_t states_sent = 0, states_obeyed = 0, states_ignored = 0, old_term_ignored = 0;
   std::uint64_t pushes_sent = 0, pushes_kept = 0;
   double max_force_N[2] = {0.0, 0.0};
+  std::vector<double> force_1_N;            ///< rig 1's force, every tick
+  /// Rig 1's largest force from touching the replica once its state has been stale for
+  /// the whole fade (stale_after_s + fade_out_s): 0 with the fade.
+  double max_force_on_stale_N = 0.0;
 };
 
 /// One session. Throws std::invalid_argument for a non-positive rate, duration, box, mass
@@ -130,6 +139,7 @@ struct SessionsSummary {
   std::vector<double> felt_delay_no_link_s;  ///< the same sessions over a link of no delay
   std::vector<double> felt_link_delay_s;     ///< their link's delay plus jitter
   std::uint64_t old_term_ignored = 0;
+  double max_force_on_stale_N = 0.0;         ///< rig 1, from a replica stale for the whole fade
   std::vector<std::string> csv_rows;         ///< one per session (csv_header())
 };
 [[nodiscard]] std::string csv_header();
