@@ -19,8 +19,7 @@ namespace mhd::share_sim {
 namespace {
 
 using V = Eigen::Vector3d;
-constexpr int kFloor = 0;
-constexpr int kBox = 1;
+constexpr int kBox = 1;  // box_on_floor: the floor is object 0
 constexpr double kGravity_mps2 = 9.81;
 constexpr double kHandOutside_m = 0.15;
 /// The rester's force rising by this much is the push felt (a clear step, well above
