@@ -4,7 +4,7 @@
 # includes it), which is why it needs only what both provide: MHD_PLUGIN_ABI_VERSION,
 # MHD_PLUGIN_INSTALL_DIR and the target MHD::plugin_abi.
 #
-# mhd_add_plugin(NAME <name> KIND <device|tracker|base|display> SOURCES ...
+# mhd_add_plugin(NAME <name> KIND <device|tracker|base|display|link> SOURCES ...
 #                [DEPS ...] [OUTPUT_DIRECTORY <dir>] [NO_INSTALL])
 # builds the MODULE library libmhd_<name>.so (target mhd_<name>), from C or C++ sources,
 # into ${MHD_PLUGIN_BUILD_DIR} (or OUTPUT_DIRECTORY), where the host's search path finds
@@ -34,7 +34,7 @@ function(mhd_add_plugin)
   if(NOT ARG_NAME MATCHES "^[A-Za-z0-9_-]+$")
     message(FATAL_ERROR "mhd_add_plugin: NAME '${ARG_NAME}' must be letters, digits, '_' and '-'")
   endif()
-  set(kinds device tracker base display)
+  set(kinds device tracker base display link)
   if(NOT ARG_KIND IN_LIST kinds)
     message(FATAL_ERROR "mhd_add_plugin(${ARG_NAME}): KIND must be one of ${kinds}, not '${ARG_KIND}'")
   endif()

@@ -101,6 +101,23 @@ void fields(A& a, C& c, F&& f) {
 }
 
 template <class A, class C, class F>
+  requires Is<A, mhd_link_message>
+void fields(A& a, C& c, F&& f) {
+  f(a.kind, c.kind);
+  f(a.object_id, c.object_id);
+  f(a.rig_id, c.rig_id);
+  f(a.term, c.term);
+  f(a.sequence, c.sequence);
+  f(a.timestamp_s, c.timestamp_s);
+  f(a.p_W_m, c.p_W_m);
+  f(a.q_W_wxyz, c.q_W_wxyz);
+  f(a.v_W_mps, c.v_W_mps);
+  f(a.w_W_radps, c.w_W_radps);
+  f(a.f_W_N, c.f_W_N);
+  f(a.p_O_m, c.p_O_m);
+}
+
+template <class A, class C, class F>
   requires Is<A, mhd_counter>
 void fields(A& a, C& c, F&& f) {
   f(a.name, c.name);
@@ -108,7 +125,8 @@ void fields(A& a, C& c, F&& f) {
 }
 
 // One field, either way: numbers and names as they are, arrays element by element, and
-// the ABI's int32 flag as the engine's bool.
+// the ABI's int32 flag as the engine's bool, the ABI's uint32 kind as the engine's enum
+// (any number: a check judges it).
 template <class To, class From>
 void assign(To& to, const From& from) {
   if constexpr (std::is_array_v<To> || std::is_array_v<From>) {
@@ -117,6 +135,8 @@ void assign(To& to, const From& from) {
     to = from != 0;
   } else if constexpr (std::same_as<From, bool>) {
     to = from ? 1 : 0;
+  } else if constexpr (std::is_enum_v<To> || std::is_enum_v<From>) {
+    to = static_cast<To>(from);
   } else {
     to = from;
   }
@@ -154,6 +174,8 @@ BaseCommand from_abi(const mhd_base_command& c) noexcept { return engine_from<Ba
 mhd_base_command to_abi(const BaseCommand& c) noexcept { return abi_from<mhd_base_command>(c); }
 DisplayFrame from_abi(const mhd_display_frame& f) noexcept { return engine_from<DisplayFrame>(f); }
 mhd_display_frame to_abi(const DisplayFrame& f) noexcept { return abi_from<mhd_display_frame>(f); }
+LinkMessage from_abi(const mhd_link_message& m) noexcept { return engine_from<LinkMessage>(m); }
+mhd_link_message to_abi(const LinkMessage& m) noexcept { return abi_from<mhd_link_message>(m); }
 CounterReading from_abi(const mhd_counter& c) noexcept { return engine_from<CounterReading>(c); }
 
 }  // namespace mhd

@@ -26,6 +26,8 @@ namespace mhd {
 [[nodiscard]] mhd_base_command to_abi(const BaseCommand& c) noexcept;
 [[nodiscard]] DisplayFrame from_abi(const mhd_display_frame& f) noexcept;
 [[nodiscard]] mhd_display_frame to_abi(const DisplayFrame& f) noexcept;
+[[nodiscard]] LinkMessage from_abi(const mhd_link_message& m) noexcept;
+[[nodiscard]] mhd_link_message to_abi(const LinkMessage& m) noexcept;
 [[nodiscard]] CounterReading from_abi(const mhd_counter& c) noexcept;
 
 }  // namespace mhd

@@ -71,6 +71,25 @@ struct BaseCommand {
   double lift_vmps = 0.0;  ///< the lift's vertical speed, up positive (0: hold)
 };
 
+/// What rigs sharing an object tell each other: the authority's state of the object, or
+/// a rig's push on it (docs/shared-objects.md).
+enum class LinkMessageKind : std::uint32_t { State = 1, Push = 2 };
+
+struct LinkMessage {
+  LinkMessageKind kind = LinkMessageKind::State;
+  std::uint32_t object_id = 0;  ///< as the scenes' <shared_object id> give it
+  std::uint32_t rig_id = 0;     ///< the sender
+  std::uint32_t term = 0;       ///< state: the authority's term
+  std::uint64_t sequence = 0;   ///< per sender and kind, increasing
+  double timestamp_s = 0.0;     ///< host clock
+  std::array<double, 3> p_W_m{};                       ///< state: the object's origin
+  std::array<double, 4> q_W_wxyz{1.0, 0.0, 0.0, 0.0};  ///< state: its orientation
+  std::array<double, 3> v_W_mps{};                     ///< state: its origin's velocity
+  std::array<double, 3> w_W_radps{};                   ///< state: its angular velocity
+  std::array<double, 3> f_W_N{};                       ///< push: the force
+  std::array<double, 3> p_O_m{};                       ///< push: where, in the object's frame
+};
+
 /// A snapshot of the rig for drawing, in the world frame.
 struct DisplayFrame {
   double timestamp_s = 0.0;

@@ -109,6 +109,31 @@ std::optional<std::string> non_finite_in(const DisplayFrame& f) {
 // A tracker quaternion is a unit quaternion up to this much error in its norm.
 constexpr double kUnitQuaternionTolerance = 1e-3;
 
+// What is wrong with link message `index` (named "messages[i].field"), or nothing. Formats
+// only what it reports.
+std::optional<std::string> link_message_problem(const LinkMessage& m, std::size_t index) {
+  if (m.kind != LinkMessageKind::State && m.kind != LinkMessageKind::Push) {
+    return fmt::format("an unknown messages[{}].kind {}", index, static_cast<std::uint32_t>(m.kind));
+  }
+  if (auto field = first_non_finite({{"timestamp_s", &m.timestamp_s, 1},
+                                     {"p_W_m", m.p_W_m.data(), 3},
+                                     {"q_W_wxyz", m.q_W_wxyz.data(), 4},
+                                     {"v_W_mps", m.v_W_mps.data(), 3},
+                                     {"w_W_radps", m.w_W_radps.data(), 3},
+                                     {"f_W_N", m.f_W_N.data(), 3},
+                                     {"p_O_m", m.p_O_m.data(), 3}})) {
+    return fmt::format("a non-finite messages[{}].{}", index, *field);
+  }
+  if (m.kind == LinkMessageKind::State) {
+    const std::array<double, 4>& q = m.q_W_wxyz;
+    const double norm = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    if (std::abs(norm - 1.0) > kUnitQuaternionTolerance) {
+      return fmt::format("messages[{}].q_W_wxyz of norm {}, not a unit quaternion", index, norm);
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::string_view to_string(PluginState state) {
@@ -399,6 +424,53 @@ Result<PluginCallStatus, PluginError> PluginInstance::display_write(const Displa
   const mhd_display_frame raw = to_abi(frame);
   return call_outcome(name(), "display_write", static_cast<StatusCode>(library_->api().display_write(handle_, &raw, &err)),
                       err);
+}
+
+Result<PluginCallStatus, PluginError> PluginInstance::link_send(std::span<const LinkMessage> messages) {
+  if (Status<PluginError> s = check_call("link_send", PluginKind::Link); !s) return s.error();
+  if (Status<PluginError> s = check_running("link_send"); !s) return s.error();
+  std::array<mhd_link_message, kMaxLinkMessagesPerCall> raw;
+  if (messages.size() > raw.size()) {
+    return error(PluginErrorKind::InvalidData,
+                 fmt::format("refused to send {} messages to link_send (at most {})", messages.size(), raw.size()));
+  }
+  for (std::size_t i = 0; i < messages.size(); ++i) {
+    if (auto problem = link_message_problem(messages[i], i)) {
+      return error(PluginErrorKind::InvalidData, fmt::format("refused to send {} to link_send", *problem));
+    }
+    raw[i] = to_abi(messages[i]);
+  }
+  mhd_error err{};
+  return call_outcome(
+      name(), "link_send",
+      static_cast<StatusCode>(library_->api().link_send(handle_, raw.data(), messages.size(), &err)), err);
+}
+
+Result<PluginCallStatus, PluginError> PluginInstance::link_read(std::span<LinkMessage> out, std::size_t& count) {
+  count = 0;
+  if (Status<PluginError> s = check_call("link_read", PluginKind::Link); !s) return s.error();
+  if (Status<PluginError> s = check_running("link_read"); !s) return s.error();
+  std::array<mhd_link_message, kMaxLinkMessagesPerCall> raw;
+  const std::size_t capacity = std::min(out.size(), raw.size());
+  std::fill_n(raw.begin(), capacity, mhd_link_message{});
+  std::size_t returned = 0;
+  mhd_error err{};
+  Result<PluginCallStatus, PluginError> outcome = call_outcome(
+      name(), "link_read",
+      static_cast<StatusCode>(library_->api().link_read(handle_, raw.data(), capacity, &returned, &err)), err);
+  if (!outcome || outcome.value() != PluginCallStatus::Ok) return outcome;
+  if (returned > capacity) {
+    return error(PluginErrorKind::InvalidData,
+                 fmt::format("link_read returned count {} for capacity {}", returned, capacity));
+  }
+  for (std::size_t i = 0; i < returned; ++i) {
+    out[i] = from_abi(raw[i]);
+    if (auto problem = link_message_problem(out[i], i)) {
+      return error(PluginErrorKind::InvalidData, fmt::format("link_read returned {}", *problem));
+    }
+  }
+  count = returned;
+  return outcome;
 }
 
 Result<PluginCallStatus, PluginError> PluginInstance::simulate_until(double t_s) {

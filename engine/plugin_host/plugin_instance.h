@@ -47,6 +47,7 @@ class PluginInstance {
   /// The most samples one tracker_read hands on, and counters one counters() call.
   static constexpr std::size_t kMaxTrackerSamplesPerRead = 256;
   static constexpr std::size_t kMaxCountersPerRead = 64;
+  static constexpr std::size_t kMaxLinkMessagesPerCall = 64;
 
   /// A Loaded instance of `library` (not null).
   explicit PluginInstance(std::shared_ptr<const PluginLibrary> library);
@@ -93,6 +94,14 @@ class PluginInstance {
   [[nodiscard]] Result<PluginCallStatus, PluginError> base_read(BaseState& out);
   [[nodiscard]] Result<PluginCallStatus, PluginError> base_write(const BaseCommand& command);
   [[nodiscard]] Result<PluginCallStatus, PluginError> display_write(const DisplayFrame& frame);
+  /// Link: hands `messages` (at most kMaxLinkMessagesPerCall) to the other rigs. A
+  /// message with a non-finite number or an unknown kind is refused before the plugin
+  /// sees any.
+  [[nodiscard]] Result<PluginCallStatus, PluginError> link_send(std::span<const LinkMessage> messages);
+  /// Link: up to out.size() messages (at most kMaxLinkMessagesPerCall) from the other
+  /// rigs; `count` is how many were written (0 unless Ok). Each is checked: a known kind,
+  /// finite numbers, a state's unit quaternion.
+  [[nodiscard]] Result<PluginCallStatus, PluginError> link_read(std::span<LinkMessage> out, std::size_t& count);
   /// Simulated backends: advance to host time t_s (WrongKind when the plugin does not simulate).
   [[nodiscard]] Result<PluginCallStatus, PluginError> simulate_until(double t_s);
   /// Tracker with tracker_wait (WrongKind otherwise): blocks up to timeout_s (clamped to

@@ -59,6 +59,10 @@ std::vector<std::string_view> missing_functions(const mhd_plugin_api& api, Plugi
       need(api.base_write != nullptr, "base_write");
       break;
     case PluginKind::Display: need(api.display_write != nullptr, "display_write"); break;
+    case PluginKind::Link:
+      need(api.link_send != nullptr, "link_send");
+      need(api.link_read != nullptr, "link_read");
+      break;
   }
   return missing;
 }

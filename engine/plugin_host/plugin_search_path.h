@@ -42,7 +42,7 @@ struct PluginFolder {
 [[nodiscard]] std::filesystem::path build_tree_root();
 
 /// Where `cmake --install` puts plugins, relative to the folder it puts mhd in, e.g.
-/// "../lib/mhd/plugins-abi5" ("../lib/x86_64-linux-gnu/..." for a /usr prefix on Debian).
+/// "../lib/mhd/plugins-abi6" ("../lib/x86_64-linux-gnu/..." for a /usr prefix on Debian).
 /// Ends with versioned_plugin_subdir().
 [[nodiscard]] std::filesystem::path installed_plugin_dir_from_bindir();
 

@@ -7,6 +7,6 @@
 
 namespace mhd {
 
-enum class PluginKind { Device, Tracker, Base, Display };
+enum class PluginKind { Device, Tracker, Base, Display, Link };
 
 }  // namespace mhd

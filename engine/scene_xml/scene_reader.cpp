@@ -756,13 +756,14 @@ class SceneReader {
     if (const auto kind = a.token("kind", Presence::Required)) {
       static const std::map<std::string, PluginKind, std::less<>> kinds = {
           {"device", PluginKind::Device}, {"tracker", PluginKind::Tracker},
-          {"base", PluginKind::Base}, {"display", PluginKind::Display}};
+          {"base", PluginKind::Base}, {"display", PluginKind::Display},
+          {"link", PluginKind::Link}};
       if (const auto it = kinds.find(*kind); it != kinds.end()) {
         plugin.kind = it->second;
       } else {
         ctx.sink.error(a.line_of("kind"),
                        concat("unknown plugin kind '", *kind,
-                              "' (expected device, tracker, base or display)"));
+                              "' (expected device, tracker, base, display or link)"));
       }
     }
     plugin.name = a.text("name", Presence::Required, Emptiness::Forbidden).value_or("");

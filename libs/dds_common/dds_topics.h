@@ -76,6 +76,14 @@ struct TopicTraits<mhd_dds_RigClaim> {
   }
 };
 
+template <>
+struct TopicTraits<mhd_dds_SharedObject> {
+  static constexpr const char* name = "mhd_shared_object";
+  static const dds_topic_descriptor_t& descriptor() { return mhd_dds_SharedObject_desc; }
+  /// Per (rig, object, kind): read every millisecond, a few cover the jitter.
+  static Qos qos() { return Qos::best_effort(8); }
+};
+
 /// The topic of T in `participant`, with T's name, type and QoS.
 template <class T>
 [[nodiscard]] Topic make_topic(const Participant& participant) {

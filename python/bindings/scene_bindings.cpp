@@ -53,6 +53,7 @@ std::string_view plugin_kind_name(PluginKind kind) {
     case PluginKind::Tracker: return "tracker";
     case PluginKind::Base: return "base";
     case PluginKind::Display: return "display";
+    case PluginKind::Link: return "link";
   }
   return "unknown";
 }

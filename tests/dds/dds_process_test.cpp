@@ -266,7 +266,7 @@ TEST(DdsProcesses, TheTrackerServerPrintsTheDiagnosticsOfASceneThatDoesNotRead) 
   ChildProcess server(server_args("broken_scene.xml", domain, 1, 1.0), log.path());
   ASSERT_EQ(server.wait_for(10s), std::optional<int>(1));
   EXPECT_NE(log.text().find(std::string(MHD_SOURCE_DIR) + "/tests/dds/data/broken_scene.xml:6: error: unknown plugin kind "
-                            "'radar' (expected device, tracker, base or display)\n"),
+                            "'radar' (expected device, tracker, base, display or link)\n"),
             std::string::npos)
       << log.text();
 }

@@ -27,9 +27,9 @@ step() { echo "---- [${SECONDS} s] $*"; }
 step "cmake --install $build --prefix $prefix"
 "$cmake_exe" --install "$build" --prefix "$prefix" >"$scratch/install.log" || { cat "$scratch/install.log"; fail "install"; }
 
-plugin_dir="$prefix/$libdir/mhd/plugins-abi5"
+plugin_dir="$prefix/$libdir/mhd/plugins-abi6"
 for f in bin/mhd bin/mhd-mesh-gen \
-         "$libdir/mhd/plugins-abi5/libmhd_sim_phantom.so" "$libdir/mhd/plugins-abi5/libmhd_null_display.so" \
+         "$libdir/mhd/plugins-abi6/libmhd_sim_phantom.so" "$libdir/mhd/plugins-abi6/libmhd_null_display.so" \
          "$libdir/mhd/libmhd_sim_world.so" \
          share/mhd/scenes/dolphin.xml share/mhd/scenes/scene.xsd share/mhd/scenes/common/materials.xml \
          share/mhd/assets/dolphin.ply share/mhd/plots/force_traces.py \

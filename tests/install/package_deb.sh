@@ -40,7 +40,7 @@ done
 
 runtime_files="$(dpkg-deb -c "$runtime")"
 dev_files="$(dpkg-deb -c "$dev")"
-for f in ./usr/bin/mhd "./usr/$libdir/mhd/plugins-abi5/libmhd_sim_phantom.so" "./usr/$libdir/mhd/libmhd_sim_world.so" \
+for f in ./usr/bin/mhd "./usr/$libdir/mhd/plugins-abi6/libmhd_sim_phantom.so" "./usr/$libdir/mhd/libmhd_sim_world.so" \
          ./usr/share/mhd/scenes/scene.xsd \
          ./usr/share/doc/mhd/LICENSE; do
   grep -qF " $f" <<<"$runtime_files" || fail "mhd lacks $f"

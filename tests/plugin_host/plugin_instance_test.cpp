@@ -463,5 +463,92 @@ TEST_F(PluginInstanceTest, DisplayFrames) {
                "plugin 'null_display': unknown parameter 'colour' (known: verbose)");
 }
 
+// A state and a push, as the haptic thread sends them.
+std::array<LinkMessage, 2> state_and_push() {
+  std::array<LinkMessage, 2> m{};
+  m[0].kind = LinkMessageKind::State;
+  m[0].object_id = 7;
+  m[0].rig_id = 1;
+  m[0].term = 2;
+  m[0].sequence = 11;
+  m[0].timestamp_s = 3.5;
+  m[0].p_W_m = {0.1, 0.2, 0.3};
+  m[0].v_W_mps = {0.5, 0.0, 0.0};
+  m[1].kind = LinkMessageKind::Push;
+  m[1].object_id = 7;
+  m[1].rig_id = 1;
+  m[1].f_W_N = {1.0, -2.0, 3.0};
+  m[1].p_O_m = {0.0, 0.0, 0.2};
+  return m;
+}
+
+TEST_F(PluginInstanceTest, LinkMessagesGoAndComeBackWhole) {
+  PluginInstance link = running("good_link");
+  EXPECT_EQ(link.kind(), PluginKind::Link);
+  const std::array<LinkMessage, 2> sent = state_and_push();
+  ASSERT_TRUE(link.link_send(sent).ok());
+  std::array<LinkMessage, 4> got{};
+  std::size_t count = 0;
+  auto read = link.link_read(got, count);
+  ASSERT_TRUE(read.ok()) << read.error().to_string();
+  ASSERT_EQ(read.value(), PluginCallStatus::Ok);
+  ASSERT_EQ(count, 2u);
+  EXPECT_EQ(got[0].kind, LinkMessageKind::State);
+  EXPECT_EQ(got[0].object_id, 7u);
+  EXPECT_EQ(got[0].rig_id, 2u);  // good_link's echo, "from the other rig"
+  EXPECT_EQ(got[0].term, 2u);
+  EXPECT_EQ(got[0].sequence, 11u);
+  EXPECT_EQ(got[0].timestamp_s, 3.5);
+  EXPECT_EQ(got[0].p_W_m, sent[0].p_W_m);
+  EXPECT_EQ(got[0].v_W_mps, sent[0].v_W_mps);
+  EXPECT_EQ(got[1].kind, LinkMessageKind::Push);
+  EXPECT_EQ(got[1].f_W_N, sent[1].f_W_N);
+  EXPECT_EQ(got[1].p_O_m, sent[1].p_O_m);
+  // Nothing more: NoData, count 0.
+  read = link.link_read(got, count);
+  ASSERT_TRUE(read.ok());
+  EXPECT_EQ(read.value(), PluginCallStatus::NoData);
+  EXPECT_EQ(count, 0u);
+}
+
+TEST_F(PluginInstanceTest, BadLinkMessagesNeverReachThePluginNorTheHost) {
+  std::array<LinkMessage, 2> m = state_and_push();
+  {
+    PluginInstance link = running("good_link");
+    m[1].f_W_N[2] = kNaN;
+    expect_error(link.link_send(m).error(), PluginErrorKind::InvalidData,
+                 "plugin 'good_link': refused to send a non-finite messages[1].f_W_N[2] to link_send");
+    m = state_and_push();
+    m[0].q_W_wxyz = {0.5, 0.0, 0.0, 0.0};
+    expect_error(link.link_send(m).error(), PluginErrorKind::InvalidData,
+                 "plugin 'good_link': refused to send messages[0].q_W_wxyz of norm 0.5, not a unit quaternion to "
+                 "link_send");
+    std::array<LinkMessage, 1> nothing{};
+    std::size_t count = 9;
+    ASSERT_TRUE(link.link_read(nothing, count).ok());
+    EXPECT_EQ(count, 0u);  // neither reached the plugin
+  }
+  const std::pair<const char*, const char*> modes[] = {
+      {"nan", "plugin 'good_link': link_read returned a non-finite messages[0].f_W_N[1]"},
+      {"bad_quat", "plugin 'good_link': link_read returned messages[0].q_W_wxyz of norm 2, not a unit quaternion"},
+      {"bad_kind", "plugin 'good_link': link_read returned an unknown messages[0].kind 9"},
+      {"too_many", "plugin 'good_link': link_read returned count 5 for capacity 4"}};
+  for (const auto& [mode, text] : modes) {
+    SCOPED_TRACE(mode);
+    PluginInstance link = running("good_link", {{"mode", mode}});
+    ASSERT_TRUE(link.link_send(state_and_push()).ok());
+    std::array<LinkMessage, 4> got{};
+    std::size_t count = 99;
+    expect_error(link.link_read(got, count).error(), PluginErrorKind::InvalidData, text);
+    EXPECT_EQ(count, 0u);
+  }
+}
+
+TEST_F(PluginInstanceTest, LinkCallsOnAnotherKindAreRefused) {
+  PluginInstance tracker = running("good_tracker");
+  const std::array<LinkMessage, 2> m = state_and_push();
+  EXPECT_EQ(tracker.link_send(m).error().kind, PluginErrorKind::WrongKind);
+}
+
 }  // namespace
 }  // namespace mhd

@@ -100,12 +100,12 @@ TEST(PluginLibrary, WrongAbiVersion) {
 
 /// `name`, a plugin of an older ABI `version`, is refused with the message that says so.
 void expect_refused_as_older(const char* name, int version) {
-  static_assert(MHD_PLUGIN_ABI_VERSION == 5u, "the refusal below names this host's version");
+  static_assert(MHD_PLUGIN_ABI_VERSION == 6u, "the refusal below names this host's version");
   const PluginError e = load_error(name);
   EXPECT_EQ(e.kind, PluginErrorKind::AbiVersionMismatch);
   EXPECT_EQ(e.to_string(), where(name) + "built for plugin ABI " + std::to_string(version) +
-                               ", this host speaks ABI 5: rebuild it against this MHD's "
-                               "mhd/plugin_abi.h (docs/plugins.md, \"Porting a plugin to ABI 5\")");
+                               ", this host speaks ABI 6: rebuild it against this MHD's "
+                               "mhd/plugin_abi.h (docs/plugins.md, \"Porting a plugin to ABI 6\")");
   EXPECT_FALSE(is_loaded(test_plugin(name)));
 }
 
@@ -125,6 +125,11 @@ TEST(PluginLibrary, AnAbi4PluginIsRefusedNamingItsVersion) {
   // A v4 base would leave the lift fields of ABI 5's base state and command unread: the
   // host never opens a v4 plugin.
   expect_refused_as_older("abi4_device", 4);
+}
+
+TEST(PluginLibrary, AnAbi5PluginIsRefusedNamingItsVersion) {
+  // A v5 table ends before link_send and link_read: reading them would read past it.
+  expect_refused_as_older("abi5_device", 5);
 }
 
 TEST(PluginLibrary, ADeclarationWhoseDefaultBreaksItsRangeIsABadTable) {

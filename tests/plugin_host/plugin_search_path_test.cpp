@@ -95,7 +95,7 @@ TEST(PluginFolders, StandardReadsTheEnvironmentAndTheExecutable) {
 }
 
 TEST(PluginFolders, AnExecutableInTheBuildTreeSearchesTheBuildTreeOnly) {
-  // "<build>/tools/lib/mhd/plugins-abi5" means nothing for a program built there.
+  // "<build>/tools/lib/mhd/plugins-abi6" means nothing for a program built there.
   const fs::path in_tree = build_tree_root() / "tools" / "mhd" / "mhd";
   const auto folders = plugin_folders({}, "", in_tree);
   EXPECT_EQ(dirs_of(folders), (std::vector<fs::path>{build_tree_plugin_dir()}));
@@ -190,9 +190,9 @@ TEST_F(PluginSearchPathTest, ListingSurvivesEveryBrokenPlugin) {
       broken.push_back(listing.loaded.error().plugin);
     }
   }
-  EXPECT_EQ(good, (std::vector<std::string>{"good_base", "good_device", "good_tracker", "nan_device", "open_fails",
+  EXPECT_EQ(good, (std::vector<std::string>{"good_base", "good_device", "good_link", "good_tracker", "nan_device", "open_fails",
                                             "rejects_unknown_param"}));
-  EXPECT_EQ(broken, (std::vector<std::string>{"abi2_device", "abi3_device", "abi4_device", "bad_param_decl", "empty_name", "entry_returns_null",
+  EXPECT_EQ(broken, (std::vector<std::string>{"abi2_device", "abi3_device", "abi4_device", "abi5_device", "bad_param_decl", "empty_name", "entry_returns_null",
                                               "garbage", "misnamed",
                                               "missing_device_read", "no_entry", "wrong_abi_version", "wrong_kind",
                                               "wrong_struct_size"}));

@@ -139,7 +139,7 @@ TEST_F(SceneXmlMalformed, DynamicFrictionAboveStatic) {
 TEST_F(SceneXmlMalformed, UnknownPluginKind) {
   EXPECT_EQ(errors_of("unknown_plugin_kind.xml"),
             (Lines{at("unknown_plugin_kind.xml", 4,
-                      "unknown plugin kind 'joystick' (expected device, tracker, base or display)")}));
+                      "unknown plugin kind 'joystick' (expected device, tracker, base, display or link)")}));
 }
 
 TEST_F(SceneXmlMalformed, FrameParentCyclesAndUnknownParents) {

@@ -1,4 +1,4 @@
-/* MHD plugin ABI, version 5. The only header a plugin includes.
+/* MHD plugin ABI, version 6. The only header a plugin includes.
  *
  * A plugin is a shared library exporting one C function, mhd_plugin_entry, that returns
  * a table of function pointers (mhd_plugin_api). The host checks the table's ABI
@@ -22,6 +22,9 @@
  * height a base reports in mhd_base_state and whose speed the host commands in
  * mhd_base_command. A base without one leaves has_lift 0 and ignores lift_vmps. A v4
  * plugin is refused.
+ * Version 6 added the link kind, which carries the states of objects several rigs share
+ * and their users' pushes between the rigs (link_send, link_read at the end of the
+ * table). A v5 plugin is refused.
  * All quantities are SI (metres, radians, seconds, newtons); device-native units
  * (millimetres, encoder counts) stay inside the plugin. Frames follow the engine's
  * X_AB naming: a pose of B given in A.
@@ -47,7 +50,7 @@
 extern "C" {
 #endif
 
-#define MHD_PLUGIN_ABI_VERSION 5u
+#define MHD_PLUGIN_ABI_VERSION 6u
 #define MHD_PLUGIN_ENTRY_SYMBOL "mhd_plugin_entry"
 #define MHD_ERROR_MESSAGE_SIZE 256
 
@@ -61,7 +64,8 @@ typedef enum mhd_plugin_kind {
   MHD_KIND_DEVICE = 1,  /* force-feedback arm */
   MHD_KIND_TRACKER = 2, /* pose tracker (head and base sensors) */
   MHD_KIND_BASE = 3,    /* mobile base */
-  MHD_KIND_DISPLAY = 4  /* visual display */
+  MHD_KIND_DISPLAY = 4, /* visual display */
+  MHD_KIND_LINK = 5     /* link to the other rigs sharing objects with this one */
 } mhd_plugin_kind;
 
 typedef enum mhd_status {
@@ -206,6 +210,35 @@ typedef struct mhd_display_frame {
   double q_W_head_wxyz[4];
 } mhd_display_frame;
 
+/* Link: what rigs sharing a pushable object tell each other (docs/shared-objects.md).
+ * The object's authority sends its state every tick; every other rig sends the push its
+ * user's hand gives the object. The host fills every field; a link carries the
+ * messages as they are and hands on what the other rigs sent, never its own. timestamp_s
+ * is the sender's host clock on send and must be the receiver's on read: a link between
+ * machines carries it on a clock both share (e.g. synchronised wall-clock time). */
+typedef enum mhd_link_message_kind {
+  MHD_LINK_STATE = 1, /* the authority's state of the object */
+  MHD_LINK_PUSH = 2   /* a rig's push on the object */
+} mhd_link_message_kind;
+
+typedef struct mhd_link_message {
+  uint32_t kind;      /* mhd_link_message_kind */
+  uint32_t object_id; /* the id the scenes' <shared_object id> give the object */
+  uint32_t rig_id;    /* the sender */
+  uint32_t term;      /* state: the authority's term (each hand-over starts a higher one) */
+  uint64_t sequence;  /* per sender and kind, increasing */
+  double timestamp_s;
+  /* State: the object's pose in the world and its twist (velocity of its origin and
+   * angular velocity, in W). */
+  double p_W_m[3];
+  double q_W_wxyz[4];
+  double v_W_mps[3];
+  double w_W_radps[3];
+  /* Push: the force on the object (W), acting at p_O_m in the object's own frame. */
+  double f_W_N[3];
+  double p_O_m[3];
+} mhd_link_message;
+
 /* ---- what the host offers a plugin -------------------------------------------- */
 
 typedef struct mhd_host {
@@ -265,6 +298,13 @@ typedef struct mhd_plugin_api {
    * second, and shows the counts in its status. */
   mhd_status (*counters)(mhd_plugin_instance* self, mhd_counter* out, size_t capacity, size_t* count,
                          mhd_error* err);
+
+  /* Link only (version 6). link_send hands count messages to the other rigs; it never
+   * waits (a link that cannot keep up drops, and counts). link_read copies up to capacity
+   * messages received since the last call; *count says how many. */
+  mhd_status (*link_send)(mhd_plugin_instance* self, const mhd_link_message* messages, size_t count, mhd_error* err);
+  mhd_status (*link_read)(mhd_plugin_instance* self, mhd_link_message* out, size_t capacity, size_t* count,
+                          mhd_error* err);
 } mhd_plugin_api;
 
 /* The one exported entry point. host_abi_version lets a plugin refuse a host it cannot

@@ -40,6 +40,8 @@
 //   counters(std::span<mhd_counter>)            -> std::size_t  counters the class keeps
 //   base_read(mhd_base_state&), base_write(const mhd_base_command&),
 //   display_write(const mhd_display_frame&), simulate_until(double t_s)
+//   link_send(std::span<const mhd_link_message>)
+//   link_read(std::span<mhd_link_message>)  -> std::size_t  messages written (0: MHD_NO_DATA)
 #ifndef MHD_PLUGIN_SDK_HPP
 #define MHD_PLUGIN_SDK_HPP
 
@@ -259,6 +261,21 @@ struct Calls {
     return with_arg(self, Need::Running, f, "display_write: NULL frame", err,
                     [](P& p, auto& frame) { return p.display_write(frame); });
   }
+  static mhd_status link_send(mhd_plugin_instance* self, const mhd_link_message* messages, size_t count,
+                              mhd_error* err) noexcept {
+    return with(self, Need::Running, err, [&](Inst& s) {
+      if (messages == nullptr && count > 0) throw std::invalid_argument("link_send: NULL messages");
+      return status_of([&] { return s.plugin.link_send(std::span<const mhd_link_message>(messages, count)); });
+    });
+  }
+  static mhd_status link_read(mhd_plugin_instance* self, mhd_link_message* out, size_t capacity, size_t* count,
+                              mhd_error* err) noexcept {
+    return with(self, Need::Running, err, [&](Inst& s) {
+      if (count == nullptr || (out == nullptr && capacity > 0)) throw std::invalid_argument("link_read: NULL output");
+      *count = s.plugin.link_read(std::span<mhd_link_message>(out, capacity));
+      return *count > 0 ? MHD_OK : MHD_NO_DATA;
+    });
+  }
   static mhd_status simulate_until(mhd_plugin_instance* self, double t_s, mhd_error* err) noexcept {
     return with(self, Need::Running, err, [&](Inst& s) { return status_of([&] { return s.plugin.simulate_until(t_s); }); });
   }
@@ -321,6 +338,8 @@ constexpr mhd_plugin_api plugin_table() {
   if constexpr (requires(P& p) { p.simulate_until(0.0); }) t.simulate_until = C::simulate_until;
   if constexpr (requires(P& p) { p.tracker_wait(0.0); }) t.tracker_wait = C::tracker_wait;
   if constexpr (requires(P& p, std::span<mhd_counter> o) { p.counters(o); }) t.counters = C::counters;
+  if constexpr (requires(P& p, std::span<const mhd_link_message> m) { p.link_send(m); }) t.link_send = C::link_send;
+  if constexpr (requires(P& p, std::span<mhd_link_message> o) { p.link_read(o); }) t.link_read = C::link_read;
   return t;
 }
 
