@@ -149,10 +149,11 @@ $(rule subscribe "$p" mhd_sim_world)
   # in simulation (the dds tracker's publish_sim_world) its simulated world, and (the
   # ros2_state display) its ROS 2 topics, which live in the default partition. It claims
   # its rig id (mhd_rig_claim), reading the others' claims of it. It may read every
-  # rig's tracker samples (the dds tracker's other_rigs: the others' users and bases).
+  # rig's tracker samples (the dds tracker's other_rigs: the others' users and bases), and
+  # every rig's shared-object messages (the dds_link), but writes those as its rig only.
   identity "haptic-rig$rig" "$(rule subscribe "$p" mhd_tracker_sample mhd_base_command mhd_rig_claim)
-$(rule subscribe 'mhd_rig*' mhd_tracker_sample)
-$(rule publish "$p" mhd_rig_state mhd_rig_status mhd_sim_world mhd_rig_claim)
+$(rule subscribe 'mhd_rig*' mhd_tracker_sample mhd_shared_object)
+$(rule publish "$p" mhd_rig_state mhd_rig_status mhd_sim_world mhd_rig_claim mhd_shared_object)
 $(rule publish '' "rt/mhd/rig$rig/*")
 "
 done
