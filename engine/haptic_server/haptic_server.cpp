@@ -48,12 +48,13 @@ const ServerSettings& HapticServer::settings() const noexcept { return impl_->se
 namespace {
 
 /// The scene's plugins by role, in the order they are opened (and started, but for the
-/// device, which starts last): device, tracker, base, displays.
+/// device, which starts last): device, tracker, base, displays, link.
 struct PluginRoles {
   const PluginDescription* device = nullptr;
   const PluginDescription* tracker = nullptr;
   const PluginDescription* base = nullptr;
   std::vector<const PluginDescription*> displays;
+  const PluginDescription* link = nullptr;
 
   explicit PluginRoles(const SceneDescription& scene) {
     for (const PluginDescription& p : scene.plugins) {
@@ -63,6 +64,8 @@ struct PluginRoles {
         tracker = &p;
       } else if (p.kind == PluginKind::Base) {
         base = &p;
+      } else if (p.kind == PluginKind::Link) {
+        link = &p;
       } else {
         displays.push_back(&p);
       }
@@ -73,6 +76,7 @@ struct PluginRoles {
     if (tracker != nullptr) order.push_back(tracker);
     if (base != nullptr) order.push_back(base);
     order.insert(order.end(), displays.begin(), displays.end());
+    if (link != nullptr) order.push_back(link);
     return order;
   }
 };
@@ -120,7 +124,8 @@ Result<OpenedServer> HapticServer::open(const SceneDescription& scene, const Com
   std::size_t next = 1;
   if (roles.tracker != nullptr) impl->tracker = &impl->plugins[next++];
   if (roles.base != nullptr) impl->base = &impl->plugins[next++];
-  for (; next < impl->plugins.size(); ++next) impl->displays.push_back(&impl->plugins[next]);
+  for (std::size_t i = 0; i < roles.displays.size(); ++i) impl->displays.push_back(&impl->plugins[next++]);
+  if (roles.link != nullptr) impl->link = &impl->plugins[next++];
   out.server = std::unique_ptr<HapticServer>(new HapticServer(std::move(impl)));
   return out;
 }
@@ -196,6 +201,7 @@ void HapticServer::Impl::run_threads(ServerReport& report, double t0_s, const st
   spawn(threads, &Impl::haptic_thread, "haptic");
   if (!desktop) spawn(threads, &Impl::planner_thread, "planner");
   if (!displays.empty()) spawn(threads, &Impl::display_thread, "display");
+  if (link != nullptr) spawn(threads, &Impl::link_thread, "link");
   std::thread recorder;
   if (recording) recorder = std::thread([this] { recorder_thread(); });
 
@@ -204,7 +210,7 @@ void HapticServer::Impl::run_threads(ServerReport& report, double t0_s, const st
   // when its own (io) thread is the one stuck, inside the tracker.
   PluginWatchdog watchdog(settings.plugin_call_timeout_s);
   std::vector<OpenedPlugin*> watched;
-  for (OpenedPlugin* p : {device, tracker, base}) {
+  for (OpenedPlugin* p : {device, tracker, base, link}) {
     if (p == nullptr) continue;
     (void)watchdog.watch(*p->watch);
     watched.push_back(p);
@@ -370,6 +376,9 @@ void HapticServer::Impl::fill_report(ServerReport& report, double elapsed_s) {
   report.base_stops_by_cause = base_stop_counts.latest();
   report.recording_rows = recording_rows_written;
   report.recording_dropped = recording_dropped.load();
+  report.shared_objects = shared_objects;
+  report.sharing = sharing_counters;
+  report.link_dropped = link_dropped.load();
   report.zero_force_sent = zero_force_sent;
   report.haptic_scheduling = scheduling;
   report.base_stop_sent = base_stop_sent.load();

@@ -89,6 +89,17 @@ enum class RunEnd {
   Fault,          ///< a plugin failed, refused to start, or the recording could not be written
 };
 
+/// A shared object at the run's end, as this rig rendered it (docs/shared-objects.md).
+struct SharedObjectEnd {
+  std::string name;
+  std::uint32_t id = 0;
+  std::uint32_t authority_rig = 0;
+  bool held_here = false;  ///< this rig was its authority (ran its physics)
+  Eigen::Vector3d p_W_start_m = Eigen::Vector3d::Zero();  ///< its origin at the start
+  Eigen::Vector3d p_W_end_m = Eigen::Vector3d::Zero();    ///< and at the end
+  double state_age_s = 0.0;  ///< of the state a replica rendered last (0 when held here)
+};
+
 struct ServerReport {
   ServerStatus status;  ///< at the end
   RunEnd ended_by = RunEnd::Fault;
@@ -102,6 +113,9 @@ struct ServerReport {
   std::uint64_t base_commands = 0, base_stops = 0;  ///< commands sent; of them zero by a guard stop
   BaseStopCounts base_stops_by_cause;  ///< stop episodes by cause, and keep-out deflections
   std::uint64_t recording_rows = 0, recording_dropped = 0;
+  std::vector<SharedObjectEnd> shared_objects;  ///< empty when the scene shares none
+  SharingCounters sharing;                      ///< what the rig sent and received
+  std::uint64_t link_dropped = 0;  ///< messages lost between the haptic thread and the link (queue full)
   bool zero_force_sent = false;  ///< the last device command was zero torque
   bool base_stop_sent = false;   ///< the last base command was zero (or there is no base)
   std::string haptic_scheduling;  ///< e.g. "SCHED_FIFO 80", or why real-time scheduling was refused

@@ -44,10 +44,12 @@ void HapticServer::Impl::haptic_thread() {
     last_t_s = t_s;
 
     drain_into(tick);
+    receive_shared(tick, t_s);
     tick.set_lift_m(lift_m_at(t_s));
     if (!read_device(t_s, info, p_D_tool_m)) break;
     const HapticTickOutput out = tick.tick(t_s, dt_s, p_D_tool_m);
     if (!write_device(t_s, out)) break;
+    send_shared(tick);
     tick_histogram.add(host.now_s() - t_s);
     publish(t_s, out);
     if (!options.recording.empty()) record(t_s, dt_s, out);
@@ -63,6 +65,7 @@ void HapticServer::Impl::haptic_thread() {
   zero_force_sent = send_zero_torque(device->instance, host);
   safety_counters = tick.safety().counters();
   startup_ticks = tick.startup_ticks();
+  note_shared_objects(tick, host.now_s());
 }
 
 void HapticServer::Impl::drain_into(HapticTick& tick) {

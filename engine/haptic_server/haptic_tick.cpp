@@ -4,8 +4,34 @@
 
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <span>
+#include <utility>
+#include <vector>
 
 namespace mhd {
+namespace {
+
+std::optional<RigSharing> sharing_of(const CompiledScene& scene) {
+  if (!scene.sharing) return std::nullopt;
+  return std::optional<RigSharing>(std::in_place, scene.sharing->rig_id, scene.sharing->objects, scene.world);
+}
+
+// The scene's objects; those another rig holds are driven (replicas), out of the physics.
+MovingWorld moving_world_of(const CompiledScene& scene, const std::optional<RigSharing>& sharing) {
+  if (!sharing) return MovingWorld(scene.world, scene.motions, scene.dynamics);
+  const std::size_t n = scene.dynamics.size();
+  const std::vector<char> replica = sharing->replicas(n);
+  std::vector<std::optional<ObjectDynamics>> dynamics = scene.dynamics;
+  const auto driven = std::make_unique<bool[]>(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    driven[i] = replica[i] != 0;
+    if (driven[i]) dynamics[i].reset();
+  }
+  return MovingWorld(scene.world, scene.motions, dynamics, std::span<const bool>(driven.get(), n));
+}
+
+}  // namespace
 
 HapticTick::HapticTick(const CompiledScene& scene, const Rig& rig, const HapticTickSettings& settings)
     : scene_(scene),
@@ -14,7 +40,8 @@ HapticTick::HapticTick(const CompiledScene& scene, const Rig& rig, const HapticT
       settings_(settings),
       predictor_(settings.prediction),
       safety_(settings.safety),
-      moving_(scene.world, scene.motions, scene.dynamics) {
+      sharing_(sharing_of(scene)),
+      moving_(moving_world_of(scene, sharing_)) {
   // One force limit: the safety stage's, which the server set from the device.
   proxy_settings_.max_force_N = settings.safety.max_force_N;
   if (rig_.lift()) lift_m_ = std::numeric_limits<double>::quiet_NaN();
@@ -66,6 +93,7 @@ HapticTickOutput HapticTick::render(double t_s, double dt_s, const Eigen::Vector
   // Without a tracker the device's own reading is the whole pose: never stale.
   safety_in.tracker_age_s = std::isnan(tracker_age_s) ? 0.0 : tracker_age_s;
 
+  if (sharing_) sharing_->before_move(t_s, moving_);
   move_objects(t_s);
   if (base.has_value() && p_D_tool_m.allFinite() && std::isfinite(lift_m_)) {
     out.base = *base;
@@ -73,6 +101,8 @@ HapticTickOutput HapticTick::render(double t_s, double dt_s, const Eigen::Vector
   } else {
     render_no_hand(base.has_value() && std::isfinite(lift_m_), safety_in, out);
   }
+  // After the reaction went to the bodies: the other rigs' pushes, and what to send.
+  if (sharing_) sharing_->after_render(t_s, proxy_, out.force_W_N, moving_);
   return out;
 }
 
@@ -110,7 +140,7 @@ void HapticTick::render_hand(double dt_s, ForceSafetyInput& safety_in, HapticTic
   out.in_contact = p.in_contact;
   out.contact_object = p.contact_object;
   out.proxy_budget_exhausted = p.budget_exhausted;
-  safety_in.force_W_N = p.force_W;
+  safety_in.force_W_N = sharing_ ? shared_force_W(out.t_s, dt_s, p.force_W) : p.force_W;
   safety_in.p_W_hip = out.p_W_hip;
   const ForceSafetyOutput s = safety_.apply(safety_in);
   out.force_W_N = s.force_W_N;
@@ -140,6 +170,11 @@ void HapticTick::render_no_hand(bool base_known, ForceSafetyInput& safety_in, Ha
   out.p_W_hip.setConstant(std::numeric_limits<double>::quiet_NaN());
   out.proxy_W_m = out.p_W_hip;
   moving_.apply_reaction(proxy_, Eigen::Vector3d::Zero());  // no hand: nothing pushes
+}
+
+Eigen::Vector3d HapticTick::shared_force_W(double t_s, double dt_s, const Eigen::Vector3d& force_W_N) noexcept {
+  // The force from a replica whose states stopped coming fades (ReplicaFade).
+  return force_W_N * sharing_->force_gain(t_s, dt_s, proxy_, force_W_N);
 }
 
 LookAheadReport HapticTick::look_ahead() noexcept {

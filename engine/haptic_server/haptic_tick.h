@@ -11,6 +11,11 @@
 // Base poses arrive from the tracker (~100-190 Hz) as base-sensor measurements and the
 // commanded base twist from the planner (10 Hz); between them BasePosePredictor gives a
 // pose for every tick, so the HIP does not leap when a sample arrives.
+// A scene that shares objects with other rigs (<sharing>) runs its part of the sharing
+// protocol in the tick (RigSharing): replicas posed before the objects move, the force
+// from a stale replica faded before safety, the other rigs' pushes held and this tick's
+// states and pushes put in its outbox after the reaction. receive_link() hands it what
+// the link brought.
 // tick() allocates nothing.
 
 #include "kinematics/base_pose.h"
@@ -21,6 +26,7 @@
 #include "proxy/proxy_look_ahead.h"
 #include "safety/force_safety.h"
 #include "scene_compiler/compiled_scene.h"
+#include "sharing/rig_sharing.h"
 
 #include <Eigen/Core>
 
@@ -100,12 +106,16 @@ class HapticTick {
   [[nodiscard]] const CollisionWorld& world() const noexcept { return moving_.world(); }
   /// Ticks on which a moving object squeezed the proxy against another surface.
   [[nodiscard]] std::uint64_t squeeze_ticks() const noexcept { return squeeze_ticks_; }
+  /// This rig's part in the objects it shares; null when the scene shares none.
+  [[nodiscard]] RigSharing* sharing() noexcept { return sharing_ ? &*sharing_ : nullptr; }
+  [[nodiscard]] const RigSharing* sharing() const noexcept { return sharing_ ? &*sharing_ : nullptr; }
 
  private:
   // render()'s steps.
   void move_objects(double t_s) noexcept;
   void render_hand(double dt_s, ForceSafetyInput& safety_in, HapticTickOutput& out) noexcept;
   void render_no_hand(bool base_known, ForceSafetyInput& safety_in, HapticTickOutput& out) noexcept;
+  [[nodiscard]] Eigen::Vector3d shared_force_W(double t_s, double dt_s, const Eigen::Vector3d& force_W_N) noexcept;
 
   const CompiledScene& scene_;
   ProxySettings proxy_settings_;  // the scene's, clamped to the run's force limit
@@ -117,6 +127,7 @@ class HapticTick {
   ProxyLookAhead look_ahead_;
   double last_rendered_dt_s_ = 0.0;
   bool rendered_last_tick_ = false;  // the last tick stepped the proxy
+  std::optional<RigSharing> sharing_;  // before moving_: it says which objects are replicas
   MovingWorld moving_;  // the scene's world, its moving objects where they are now
   std::optional<double> t0_s_;  // the first tick: scripted motions start there
   std::uint64_t squeeze_ticks_ = 0;

@@ -74,6 +74,7 @@ struct HapticServer::Impl {
   OpenedPlugin* tracker = nullptr;  ///< null on a desktop rig
   OpenedPlugin* base = nullptr;
   std::vector<OpenedPlugin*> displays;
+  OpenedPlugin* link = nullptr;  ///< the link to the rigs sharing objects; null when none
 
   // Hand-offs.
   realtime::SpscRing<BaseSensorSample> base_samples{512};
@@ -85,6 +86,9 @@ struct HapticServer::Impl {
   SharedHead head;                                  ///< io -> planner, display, recorder
   realtime::TripleBuffer<BaseTwist> planned_command;  ///< planner -> io
   realtime::TripleBuffer<FloorView> floor_view;       ///< io -> planner: the other rigs on the floor
+  realtime::SpscRing<LinkMessage> link_to_haptic{1024};    ///< link -> haptic: the other rigs' messages
+  realtime::SpscRing<LinkMessage> link_from_haptic{1024};  ///< haptic -> link: this rig's
+  std::atomic<std::uint64_t> link_dropped{0};              ///< either ring full
   realtime::WakeEvent base_sample_arrived;  ///< io -> haptic: start the tick now
   bool tick_on_tracker_sample = false;      ///< set by run(): the tracker can wake the io thread
 
@@ -117,6 +121,8 @@ struct HapticServer::Impl {
   TickHistogram tick_histogram;
   ForceSafetyCounters safety_counters;
   std::uint64_t startup_ticks = 0;  ///< ticks before the first base pose (HapticTick::startup_ticks)
+  std::vector<SharedObjectEnd> shared_objects;  ///< the shared objects as the haptic thread left them
+  SharingCounters sharing_counters;
   std::optional<CsvRecording> recording;  ///< opened by run(), written by the recorder thread
   bool zero_force_sent = false;
   std::atomic<bool> base_stop_sent{false};  ///< by the io thread, or run()'s when the io thread is stuck
@@ -196,6 +202,13 @@ struct HapticServer::Impl {
   void publish(double t_s, const HapticTickOutput& out);
   void record(double t_s, double dt_s, const HapticTickOutput& out);
   void count(const HapticTickOutput& out, const realtime::TimerStats& timer);
+  /// Shared objects (link_thread.cpp): what the link brought into the tick, and the
+  /// tick's messages out to the link. No lock, no allocation.
+  void receive_shared(HapticTick& tick, double t_s);
+  void send_shared(const HapticTick& tick);
+  void note_shared_objects(const HapticTick& tick, double t_s);
+
+  void link_thread();
 
   void io_thread();
   // The io thread's steps, in period order (io_thread.cpp); a false return (or nullopt)

@@ -95,6 +95,22 @@ struct PluginDescription {
   SourceLocation where;
 };
 
+/// An object several rigs share (<sharing><shared_object>, docs/shared-objects.md): one
+/// rig at a time (its authority) runs its physics; the others render its state.
+struct SharedObjectDescription {
+  std::string object;               ///< the <object name> shared; a pushable one
+  std::uint32_t id = 0;             ///< what the link carries: the same in every rig's scene
+  std::vector<std::uint32_t> rigs;  ///< the rigs that may hold its authority; rigs[0] holds it first
+  SourceLocation where;
+};
+
+/// <sharing rig_id="N">: this rig's id among the rigs sharing objects, and those objects.
+struct SharingDescription {
+  std::uint32_t rig_id = 0;
+  std::vector<SharedObjectDescription> objects;
+  SourceLocation where;
+};
+
 /// A block of named settings for an engine part that reads its own parameters (the
 /// simulated user, the base planner, the haptic server): <simulated_user>, <planner
 /// kind="...">, <server>, each holding <param name="..." value="..."/>. The part checks the
@@ -138,6 +154,7 @@ struct SceneDescription {
   std::optional<ParamBlock> simulated_user;  ///< <simulated_user>: who drives simulated hardware
   std::optional<ParamBlock> planner;         ///< <planner kind="...">: the base's motion planner
   std::optional<ParamBlock> server;          ///< <server>: haptic server rates, sensors, safety limits
+  std::optional<SharingDescription> sharing;  ///< <sharing>: objects shared with other rigs
 };
 
 }  // namespace mhd

@@ -8,12 +8,21 @@
 #include "geometry/object_motion.h"
 #include "material/haptic_material.h"
 #include "proxy/god_object.h"
+#include "sharing/rig_sharing.h"
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace mhd {
+
+/// The objects a scene shares with other rigs (<sharing>): this rig's id, and each
+/// object with its index in the world.
+struct CompiledSharing {
+  std::uint32_t rig_id = 0;
+  std::vector<SharedObjectDeclaration> objects;
+};
 
 struct CompiledScene {
   std::string name;
@@ -28,6 +37,7 @@ struct CompiledScene {
   std::vector<std::optional<ObjectDynamics>> dynamics;
   ProxySettings proxy;
   std::size_t triangle_count = 0;
+  std::optional<CompiledSharing> sharing;  ///< none: the scene shares nothing
 };
 
 }  // namespace mhd

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cstdint>
@@ -142,6 +143,7 @@ class Compiler {
       scene->dynamics.push_back(objects[i].dynamics);
       scene->triangle_count += shapes[i]->mesh().triangle_count();
     }
+    scene->sharing = compile_sharing(description_);
     const auto& stats = cache_.stats();
     spdlog::debug("compiled scene '{}': {} objects, {} triangles, {} distinct shapes (mesh cache: {} hits, {} misses, "
                   "{} rejected)",
@@ -151,6 +153,25 @@ class Compiler {
   }
 
  private:
+  // The scene reader has checked the declarations (scene_xml/sharing_reader.h): each
+  // object exists, once, with an id of its own and at most kMaxAuthorityRigs rigs.
+  static std::optional<CompiledSharing> compile_sharing(const SceneDescription& description) {
+    if (!description.sharing) return std::nullopt;
+    CompiledSharing out;
+    out.rig_id = description.sharing->rig_id;
+    for (const SharedObjectDescription& d : description.sharing->objects) {
+      SharedObjectDeclaration c;
+      c.id = d.id;
+      for (std::size_t i = 0; i < description.objects.size(); ++i) {
+        if (description.objects[i].name == d.object) c.object = static_cast<int>(i);
+      }
+      c.rig_count = static_cast<int>(std::min(d.rigs.size(), c.rigs.size()));
+      std::copy_n(d.rigs.begin(), c.rig_count, c.rigs.begin());
+      out.objects.push_back(c);
+    }
+    return out;
+  }
+
   static std::string check_pose(const Pose& X_WO) {
     if (!X_WO.matrix().allFinite()) return "pose is not finite";
     const Eigen::Matrix3d R = X_WO.linear();

@@ -1,3 +1,4 @@
+#include "scene_xml/sharing_reader.h"
 #include "scene_xml/scene_reader.h"
 
 #include "geometry/pose.h"
@@ -185,6 +186,8 @@ class SceneReader {
     scene_xml::check_frame_graph(scene_.rig_frames, diagnostics_);
     const Diagnostics rig = check_rig_kind(scene_);
     diagnostics_.insert(diagnostics_.end(), rig.begin(), rig.end());
+    const Diagnostics sharing = scene_xml::check_sharing(scene_);
+    diagnostics_.insert(diagnostics_.end(), sharing.begin(), sharing.end());
     if (!diagnostics_.empty()) return std::move(diagnostics_);
     return std::move(scene_);
   }
@@ -286,6 +289,8 @@ class SceneReader {
         read_param_block(e, ctx, scene_.planner, /*has_kind=*/true);
       } else if (name == "server") {
         read_param_block(e, ctx, scene_.server, /*has_kind=*/false);
+      } else if (name == "sharing") {
+        read_sharing_once(e, ctx);
       } else {
         report_unknown_element(e, root, ctx.sink);
       }
@@ -687,6 +692,16 @@ class SceneReader {
       frame.parent = *parent;
       scene_.rig_frames.push_back(std::move(frame));
     });
+  }
+
+  /// <sharing>: one per scene, across includes.
+  void read_sharing_once(const tinyxml2::XMLElement& e, const FileContext& ctx) {
+    if (scene_.sharing) {
+      ctx.sink.error(e.GetLineNum(), concat("a scene has one <sharing> (the first is at ",
+                                            where_text(scene_.sharing->where), ")"));
+      return;
+    }
+    scene_.sharing = scene_xml::read_sharing(e, ctx.sink);
   }
 
   /// <lift range="MIN MAX" max_speed="V" max_acceleration="A"/>, in the file's length unit

@@ -118,7 +118,7 @@ class RigSharing {
   std::array<SharedObjectDeclaration, kMaxObjects> objects_{};
   ObjectAuthority authority_;
   std::vector<ObjectReplica> replicas_;  // [slot]; used for the objects held elsewhere
-  std::array<ReplicaFade, kMaxObjects> fades_{};
+  std::array<ReplicaFade, kMaxObjects> fades_;
   std::array<bool, kMaxObjects> pushing_{};  // [slot]: the last push sent was not zero
   RemotePushes pushes_;
   std::uint64_t state_sequence_ = 0, push_sequence_ = 0;

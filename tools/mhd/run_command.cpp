@@ -171,6 +171,28 @@ int run(const RunOptions& opt) {
   return signal == SIGHUP || signal == SIGQUIT ? 128 + signal : 0;
 }
 
+// Each shared object where this rig left it, and what the rig sent and heard.
+void print_shared_objects(const mhd::ServerReport& r) {
+  for (const mhd::SharedObjectEnd& o : r.shared_objects) {
+    const Eigen::Vector3d moved = o.p_W_end_m - o.p_W_start_m;
+    fmt::print("shared object '{}' (id {}): authority rig {}{}; from ({:.3f}, {:.3f}, {:.3f}) to ({:.3f}, {:.3f}, "
+               "{:.3f}) m, moved {:.3f} m",
+               o.name, o.id, o.authority_rig, o.held_here ? " (this rig)" : "", o.p_W_start_m.x(), o.p_W_start_m.y(),
+               o.p_W_start_m.z(), o.p_W_end_m.x(), o.p_W_end_m.y(), o.p_W_end_m.z(), moved.norm());
+    if (o.held_here) {
+      fmt::print("\n");
+    } else {
+      fmt::print("; last state {:.3f} s old\n", o.state_age_s);
+    }
+  }
+  if (r.shared_objects.empty()) return;
+  const mhd::SharingCounters& c = r.sharing;
+  fmt::print("sharing: sent {} states, {} pushes; received {} states obeyed, {} ignored, {} pushes kept, {} ignored, "
+             "{} for unknown objects; {} dropped between the haptic thread and the link\n",
+             c.states_sent, c.pushes_sent, c.states_obeyed, c.states_ignored, c.pushes_kept, c.pushes_ignored,
+             c.unknown_object, r.link_dropped);
+}
+
 void print_summary(const RunOptions& opt, const mhd::CompiledScene& scene, const mhd::ServerReport& r) {
   const mhd::ServerStatus& s = r.status;
   fmt::print("ran {:.2f} s: {} ticks ({:.1f} Hz), {} overruns, {} deadlines missed\n", s.elapsed_s, s.ticks,
@@ -212,6 +234,7 @@ void print_summary(const RunOptions& opt, const mhd::CompiledScene& scene, const
   if (!opt.record.empty()) {
     fmt::print("recording {}: {} rows, {} dropped\n", opt.record, r.recording_rows, r.recording_dropped);
   }
+  print_shared_objects(r);
   if (desktop) {
     fmt::print("safe state: {}\n", r.zero_force_sent ? "zero force sent" : "ZERO FORCE NOT CONFIRMED");
   } else {

@@ -1,0 +1,222 @@
+// Two users push one box, with real `mhd run` processes (docs/shared-objects.md, "Two
+// processes"): scenes/network/shared_box_rig1.xml (the box's authority) and
+// shared_box_rig2.xml (a replica), each a desktop PHANToM whose simulated user leans in
+// and presses a face of the box 3 cm deep, over the dds_link in one DDS domain. Judged
+// from each process's report (where its box ended, what it sent and obeyed) and
+// recording (its forces):
+//   - pressed from opposite sides, the box stays put; pressed from one side, it moves;
+//     and both rigs leave it in the same place;
+//   - the dual of "stays put": rig 1 pressing alone (no rig 2) moves it, so rig 2's push,
+//     carried by the link, is what held it;
+//   - rig 2 alone (no authority, so no state ever comes) feels its replica's force fade
+//     to nothing, though its hand is in the box.
+#include "dds_test_support.h"
+
+#include <Eigen/Core>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <optional>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace mhd::dds::shared_box_process_test {
+
+namespace fs = std::filesystem;
+using test::ChildProcess;
+
+constexpr double kRunFor_s = 6.0;
+
+struct Placement {
+  double x_m = 0.0;
+  bool plus_z = true;  ///< on the table's +z side, facing -z; else -z, facing +z
+};
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+std::string fmt_vec(double a, double b, double c) {
+  return std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(c);
+}
+
+void replace_all(std::string& text, const std::string& from, const std::string& to) {
+  for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) {
+    text.replace(at, from.size(), to);
+  }
+}
+
+// The shipped scene of `rig` in `domain`, its device and user moved to `where`.
+fs::path write_scene(const fs::path& dir, int rig, std::uint32_t domain, const Placement& where) {
+  const fs::path network = fs::path(MHD_SOURCE_DIR) / "scenes/network";
+  std::string text = read_text(network / ("shared_box_rig" + std::to_string(rig) + ".xml"));
+  replace_all(text, "\"shared_box_common.xml\"", "\"" + (network / "shared_box_common.xml").string() + "\"");
+  const std::string link = "<plugin kind=\"link\" name=\"dds_link\">";
+  text.insert(text.find(link) + link.size(), "<param name=\"domain_id\" value=\"" + std::to_string(domain) + "\"/>");
+  const double z = where.plus_z ? 0.1 : -0.1;
+  const std::string device = fmt_vec(where.x_m, 0.755, z);
+  const std::string yaw = where.plus_z ? "0 0 0" : "0 180 0";
+  text = std::regex_replace(text, std::regex(R"(position="[^"]*" rpy_deg="[^"]*")"),
+                            "position=\"" + device + "\" rpy_deg=\"" + yaw + "\"");
+  text = std::regex_replace(text, std::regex(R"((name="phantom_position_m" value=")[^"]*")"), "$01" + device + "\"");
+  text = std::regex_replace(text, std::regex(R"((name="phantom_rpy_deg" value=")[^"]*")"), "$01" + yaw + "\"");
+  const double s = where.plus_z ? 1.0 : -1.0;
+  text = std::regex_replace(text, std::regex(R"((name="path" value=")[^"]*")"),
+                            "$01" + fmt_vec(where.x_m, 0.58 * s, 0.05) + "; " + fmt_vec(where.x_m, 0.42 * s, 0.05) +
+                                "\"");
+  text = std::regex_replace(text, std::regex(R"((name="start_heading_deg" value=")[^"]*")"),
+                            std::string("$01") + (where.plus_z ? "90" : "-90") + "\"");
+  const fs::path scene = dir / ("rig" + std::to_string(rig) + ".xml");
+  std::ofstream(scene) << text;
+  return scene;
+}
+
+struct RigEnd {
+  std::string log;
+  Eigen::Vector3d p_W_box = Eigen::Vector3d::Zero();
+  double moved_m = 0.0;
+  double states_obeyed = 0.0, pushes_sent = 0.0, pushes_kept = 0.0;
+  double max_force_N = 0.0;    ///< over the whole run, from the recording
+  std::size_t contact_ticks = 0;
+};
+
+RigEnd read_end(const fs::path& log_file, const fs::path& csv) {
+  RigEnd end;
+  end.log = test::read_file(log_file.string());
+  std::smatch m;
+  const std::regex box(R"(shared object 'box' \(id 1\): [^\n]* to \(([-0-9.]+), ([-0-9.]+), ([-0-9.]+)\) m, moved ([0-9.]+) m)");
+  if (std::regex_search(end.log, m, box)) {
+    end.p_W_box = Eigen::Vector3d(std::stod(m[1]), std::stod(m[2]), std::stod(m[3]));
+    end.moved_m = std::stod(m[4]);
+  } else {
+    ADD_FAILURE() << "no shared object in the report:\n" << end.log;
+  }
+  const std::regex sharing(R"(sharing: sent \d+ states, (\d+) pushes; received (\d+) states obeyed, \d+ ignored, (\d+) pushes kept)");
+  if (std::regex_search(end.log, m, sharing)) {
+    end.pushes_sent = std::stod(m[1]);
+    end.states_obeyed = std::stod(m[2]);
+    end.pushes_kept = std::stod(m[3]);
+  }
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  std::map<std::string, std::size_t> column;
+  {
+    std::istringstream header(line);
+    std::size_t i = 0;
+    for (std::string name; std::getline(header, name, ',');) column[name] = i++;
+  }
+  while (std::getline(in, line)) {
+    std::vector<double> v;
+    std::istringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) v.push_back(std::strtod(cell.c_str(), nullptr));
+    const Eigen::Vector3d f(v.at(column.at("force_x_N")), v.at(column.at("force_y_N")), v.at(column.at("force_z_N")));
+    end.max_force_N = std::max(end.max_force_N, f.norm());
+    end.contact_ticks += v.at(column.at("contact")) > 0.5 ? 1 : 0;
+  }
+  return end;
+}
+
+class SharedBoxProcess : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    domain_ = test::use_loopback_and_unique_domain(91);
+    dir_ = fs::path(::testing::TempDir()) / ("shared_box_" + std::to_string(getpid()) + "_" +
+                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+
+  /// Runs the rigs placed so (an empty optional: that rig does not run) at once, each
+  /// for kRunFor_s; what each reported, in rig order (absent rigs: nullopt).
+  std::vector<std::optional<RigEnd>> run(const std::vector<std::optional<Placement>>& rigs) {
+    std::vector<std::unique_ptr<ChildProcess>> processes;
+    for (std::size_t i = 0; i < rigs.size(); ++i) {
+      if (!rigs[i]) {
+        processes.push_back(nullptr);
+        continue;
+      }
+      const int rig = static_cast<int>(i) + 1;
+      const std::string name = "rig" + std::to_string(rig);
+      processes.push_back(std::make_unique<ChildProcess>(
+          std::vector<std::string>{MHD_BIN, "run", write_scene(dir_, rig, domain_, *rigs[i]).string(), "--duration",
+                                   std::to_string(kRunFor_s), "-q", "--record", (dir_ / (name + ".csv")).string()},
+          (dir_ / (name + ".log")).string()));
+    }
+    std::vector<std::optional<RigEnd>> ends;
+    for (std::size_t i = 0; i < rigs.size(); ++i) {
+      if (!processes[i]) {
+        ends.emplace_back();
+        continue;
+      }
+      const std::string name = "rig" + std::to_string(i + 1);
+      const std::optional<int> rc = processes[i]->wait_for(std::chrono::seconds(60));
+      const std::string log = test::read_file((dir_ / (name + ".log")).string());
+      EXPECT_TRUE(rc.has_value() && *rc == 0) << name << ":\n" << log;
+      EXPECT_NE(log.find("safe state: zero force sent"), std::string::npos) << log;
+      ends.push_back(read_end(dir_ / (name + ".log"), dir_ / (name + ".csv")));
+    }
+    return ends;
+  }
+
+  std::uint32_t domain_ = 0;
+  fs::path dir_;
+};
+
+constexpr Placement kPlusZ{0.0, true}, kMinusZ{0.0, false};
+
+TEST_F(SharedBoxProcess, PressedFromOppositeSidesTheBoxStaysAndBothRigsAgree) {
+  const auto ends = run({kPlusZ, kMinusZ});
+  ASSERT_TRUE(ends[0] && ends[1]);
+  const RigEnd& r1 = *ends[0];
+  const RigEnd& r2 = *ends[1];
+  // Both hands pressed the box for seconds, each through its own rendering of it.
+  EXPECT_GT(r1.contact_ticks, 1500u) << r1.log;
+  EXPECT_GT(r2.contact_ticks, 1500u) << r2.log;
+  EXPECT_GT(r2.states_obeyed, 3000.0) << r2.log;
+  EXPECT_GT(r1.pushes_kept, 1000.0) << r1.log;
+  EXPECT_LT(r1.moved_m, 0.01) << r1.log;
+  EXPECT_LT((r1.p_W_box - r2.p_W_box).norm(), 0.005) << r1.log << r2.log;
+}
+
+TEST_F(SharedBoxProcess, PressedFromOneSideTheBoxMovesAndBothRigsAgree) {
+  const auto ends = run({Placement{-0.06, true}, Placement{0.06, true}});
+  ASSERT_TRUE(ends[0] && ends[1]);
+  const RigEnd& r1 = *ends[0];
+  const RigEnd& r2 = *ends[1];
+  EXPECT_GT(r1.moved_m, 0.02) << r1.log;
+  EXPECT_LT(r1.p_W_box.z(), -0.02) << r1.log;  // away from both users, along -z
+  EXPECT_GT(r2.pushes_sent, 100.0) << r2.log;
+  EXPECT_LT((r1.p_W_box - r2.p_W_box).norm(), 0.005) << r1.log << r2.log;
+}
+
+TEST_F(SharedBoxProcess, PressedByOneRigAloneTheBoxMoves) {
+  // The dual of staying put: without rig 2's push the same hand moves the box.
+  const auto ends = run({kPlusZ, std::nullopt});
+  ASSERT_TRUE(ends[0]);
+  EXPECT_GT(ends[0]->moved_m, 0.02) << ends[0]->log;
+}
+
+TEST_F(SharedBoxProcess, AReplicaWithNoAuthorityFadesItsForce) {
+  // Rig 2 alone: no state ever comes, so the force from its replica fades out (and never
+  // comes in), while its hand goes 3 cm into the box.
+  const auto ends = run({std::nullopt, kMinusZ});
+  ASSERT_TRUE(ends[1]);
+  const RigEnd& r2 = *ends[1];
+  EXPECT_EQ(r2.states_obeyed, 0.0) << r2.log;
+  EXPECT_GT(r2.contact_ticks, 1500u) << r2.log;
+  EXPECT_LT(r2.max_force_N, 0.5) << r2.log;
+}
+
+}  // namespace mhd::dds::shared_box_process_test
