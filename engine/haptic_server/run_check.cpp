@@ -26,6 +26,31 @@ Diagnostics rig_problems(const SceneDescription& scene) {
   return errors;
 }
 
+// Shared objects need a link to the other rigs, and a link has nothing to carry
+// without them; the server drives one link.
+Diagnostics link_problems(const SceneDescription& scene) {
+  Diagnostics errors;
+  const PluginDescription* link = nullptr;
+  for (const PluginDescription& p : scene.plugins) {
+    if (p.kind != PluginKind::Link) continue;
+    if (link != nullptr) {
+      errors.push_back({p.where, "a second link plugin '" + p.name + "' (the server drives one; the first is at line " +
+                                     std::to_string(link->where.line) + ")"});
+      continue;
+    }
+    link = &p;
+  }
+  if (scene.sharing && link == nullptr) {
+    errors.push_back({scene.sharing->where, "<sharing> needs a <plugin kind=\"link\"> to carry the shared objects' "
+                                            "states and pushes to the other rigs (e.g. dds_link)"});
+  }
+  if (!scene.sharing && link != nullptr) {
+    errors.push_back({link->where, "link plugin '" + link->name + "' has nothing to carry: the scene shares no "
+                                   "object (<sharing>)"});
+  }
+  return errors;
+}
+
 }  // namespace
 
 Diagnostics check_scene_settings(const SceneDescription& scene) {
@@ -42,6 +67,8 @@ Diagnostics check_scene_settings(const SceneDescription& scene) {
     auto u = simulation::simulated_user_config_from(*scene.simulated_user);
     if (!u.ok()) errors.insert(errors.end(), u.error().begin(), u.error().end());
   }
+  const Diagnostics link = link_problems(scene);
+  errors.insert(errors.end(), link.begin(), link.end());
   return errors;
 }
 
@@ -58,39 +85,20 @@ Diagnostics check_scene_for_validate(const SceneDescription& scene, const Plugin
   return errors;
 }
 
-namespace {
-
-// Shared objects need a link to the other rigs, and a link has nothing to carry without them.
-Diagnostics link_problems(const SceneDescription& scene, const PluginDescription* link) {
-  if (scene.sharing && link == nullptr) {
-    return {{scene.sharing->where, "<sharing> needs a <plugin kind=\"link\"> to carry the shared objects' states "
-                                   "and pushes to the other rigs (e.g. dds_link)"}};
-  }
-  if (!scene.sharing && link != nullptr) {
-    return {{link->where, "link plugin '" + link->name + "' has nothing to carry: the scene shares no object "
-                          "(<sharing>)"}};
-  }
-  return {};
-}
-
-}  // namespace
-
 Diagnostics check_scene_for_run(const SceneDescription& scene, bool custom_planner) {
   Diagnostics errors = check_scene_settings(scene);
   const auto add = [&errors](const Diagnostics& more) { errors.insert(errors.end(), more.begin(), more.end()); };
   if (!scene.rig_lift) add(rig_problems(scene));  // with a lift, check_scene_settings did
   const Result<Rig, std::vector<RigError>> rig = Rig::from_scene(scene);
 
-  // One device, one tracker, at most one base and one link.
+  // One device, one tracker, at most one base (and one link: check_scene_settings).
   const PluginDescription* device = nullptr;
   const PluginDescription* tracker = nullptr;
   const PluginDescription* base = nullptr;
-  const PluginDescription* link = nullptr;
   for (const PluginDescription& p : scene.plugins) {
     const PluginDescription** slot = p.kind == PluginKind::Device    ? &device
                                      : p.kind == PluginKind::Tracker ? &tracker
                                      : p.kind == PluginKind::Base    ? &base
-                                     : p.kind == PluginKind::Link    ? &link
                                                                      : nullptr;
     if (slot == nullptr) continue;
     if (*slot != nullptr) {
@@ -101,7 +109,6 @@ Diagnostics check_scene_for_run(const SceneDescription& scene, bool custom_plann
       *slot = &p;
     }
   }
-  add(link_problems(scene, link));
   // The reader checked a file's rig kind; a description built in code is checked here.
   add(check_rig_kind(scene));
   add(check_rig_plugins_for_run(scene));

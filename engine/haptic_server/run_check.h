@@ -10,7 +10,8 @@
 
 namespace mhd {
 
-/// The settings every scene is judged by, run or not: <server> and <simulated_user>.
+/// The settings every scene is judged by, run or not: <server>, <simulated_user>, and
+/// <sharing> with its link plugin.
 [[nodiscard]] Diagnostics check_scene_settings(const SceneDescription& scene);
 
 /// What `mhd validate` and Python's `mhd.validate` judge before any mesh loads: the

@@ -107,6 +107,7 @@ struct SharedObjectDescription {
 /// <sharing rig_id="N">: this rig's id among the rigs sharing objects, and those objects.
 struct SharingDescription {
   std::uint32_t rig_id = 0;
+  bool rig_id_read = true;  ///< false: rig_id was missing or bad (reported), nothing is judged by it
   std::vector<SharedObjectDescription> objects;
   SourceLocation where;
 };

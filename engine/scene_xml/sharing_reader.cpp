@@ -56,7 +56,9 @@ SharingDescription read_sharing(const tinyxml2::XMLElement& e, const DiagnosticS
   AttributeParser a(e, sink, {"rig_id"});
   SharingDescription s;
   s.where = sink.at(e.GetLineNum());
-  s.rig_id = static_cast<std::uint32_t>(a.integer("rig_id", Presence::Required, 0, kMaxRigId).value_or(0));
+  const std::optional<int> rig_id = a.integer("rig_id", Presence::Required, 0, kMaxRigId);
+  s.rig_id = static_cast<std::uint32_t>(rig_id.value_or(0));
+  s.rig_id_read = rig_id.has_value();
   for (const tinyxml2::XMLElement* child = e.FirstChildElement(); child != nullptr;
        child = child->NextSiblingElement()) {
     if (std::string(child->Name()) != "shared_object") {
@@ -89,7 +91,7 @@ Diagnostics check_sharing(const SceneDescription& scene) {
                                   "' is not pushable: only an object with <dynamics> can be shared (its authority "
                                   "runs its physics)"});
     }
-    if (std::find(d.rigs.begin(), d.rigs.end(), sharing.rig_id) == d.rigs.end()) {
+    if (sharing.rig_id_read && std::find(d.rigs.begin(), d.rigs.end(), sharing.rig_id) == d.rigs.end()) {
       out.push_back({d.where, "shared object '" + d.object + "': rigs does not name this rig (<sharing rig_id=\"" +
                                   std::to_string(sharing.rig_id) + "\">)"});
     }

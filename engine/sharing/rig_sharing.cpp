@@ -73,7 +73,9 @@ void RigSharing::receive_state(std::uint32_t object_id, SharedObjectState state,
     return;
   }
   state.object = s;
-  if (authority_.judge(state) != StateVerdict::Obeyed || authority_.authority(s) == rig_id_) {
+  // A rig runs the body of an object it holds, for the whole run: no state moves it,
+  // not even a later term's (a hand-over away from a running rig is not supported).
+  if (authority_.authority(s) == rig_id_ || authority_.judge(state) != StateVerdict::Obeyed) {
     ++counters_.states_ignored;
     return;
   }
