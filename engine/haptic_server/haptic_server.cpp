@@ -376,7 +376,12 @@ void HapticServer::Impl::fill_report(ServerReport& report, double elapsed_s) {
   report.base_stops_by_cause = base_stop_counts.latest();
   report.recording_rows = recording_rows_written;
   report.recording_dropped = recording_dropped.load();
-  report.shared_objects = shared_objects;
+  for (int s = 0; s < shared_final_count; ++s) {
+    const SharedObjectFinal& f = shared_final[static_cast<std::size_t>(s)];
+    const auto object = static_cast<std::size_t>(f.object);
+    report.shared_objects.push_back({scene.object_names[object], f.id, f.authority_rig, f.held_here,
+                                     scene.world.pose(f.object).translation(), f.p_W_end_m, f.state_age_s});
+  }
   report.sharing = sharing_counters;
   report.link_dropped = link_dropped.load();
   report.zero_force_sent = zero_force_sent;

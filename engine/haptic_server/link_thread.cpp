@@ -122,17 +122,15 @@ void HapticServer::Impl::note_shared_objects(const HapticTick& tick, double t_s)
   const RigSharing* sharing = tick.sharing();
   if (sharing == nullptr) return;
   sharing_counters = sharing->counters();
-  for (int s = 0; s < sharing->object_count(); ++s) {
+  shared_final_count = sharing->object_count();
+  for (int s = 0; s < shared_final_count; ++s) {
     const SharedObjectDeclaration& d = sharing->declaration(s);
-    SharedObjectEnd end;
-    end.name = scene.object_names[static_cast<std::size_t>(d.object)];
-    end.id = d.id;
-    end.authority_rig = sharing->authority(s);
-    end.held_here = sharing->holds(d.object);
-    end.p_W_start_m = scene.world.pose(d.object).translation();
-    end.p_W_end_m = tick.world().pose(d.object).translation();
-    end.state_age_s = sharing->state_age_s(s, t_s);
-    shared_objects.push_back(std::move(end));
+    shared_final[static_cast<std::size_t>(s)] = {d.object,
+                                                 d.id,
+                                                 sharing->authority(s),
+                                                 sharing->holds(d.object),
+                                                 tick.world().pose(d.object).translation(),
+                                                 sharing->state_age_s(s, t_s)};
   }
 }
 

@@ -25,6 +25,7 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <limits>
@@ -121,7 +122,17 @@ struct HapticServer::Impl {
   TickHistogram tick_histogram;
   ForceSafetyCounters safety_counters;
   std::uint64_t startup_ticks = 0;  ///< ticks before the first base pose (HapticTick::startup_ticks)
-  std::vector<SharedObjectEnd> shared_objects;  ///< the shared objects as the haptic thread left them
+  /// The shared objects as the haptic thread left them (it allocates nothing: run()'s
+  /// thread makes the report's entries of them).
+  struct SharedObjectFinal {
+    int object = -1;
+    std::uint32_t id = 0, authority_rig = 0;
+    bool held_here = false;
+    Eigen::Vector3d p_W_end_m = Eigen::Vector3d::Zero();
+    double state_age_s = 0.0;
+  };
+  std::array<SharedObjectFinal, RigSharing::kMaxObjects> shared_final{};
+  int shared_final_count = 0;
   SharingCounters sharing_counters;
   std::optional<CsvRecording> recording;  ///< opened by run(), written by the recorder thread
   bool zero_force_sent = false;

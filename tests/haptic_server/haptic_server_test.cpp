@@ -487,4 +487,107 @@ TEST(HapticServer, AMissingPluginIsAnErrorAtItsLineAndNothingRuns) {
                                     scene_line_of(file, "no_such_device"))));
 }
 
+// A desktop rig sharing a box (id 1, rigs 1 2) as rig 2, with fault_device (logging its
+// commands) and fault_link playing rig 1's states of the box, given `link_params`.
+fs::path write_shared_scene(const fs::path& dir, const fs::path& device_log, const std::string& link_params) {
+  const fs::path file = dir / "shared.xml";
+  std::ofstream(file) << fmt::format(R"(<?xml version="1.0"?>
+<scene version="1" unit="m">
+  <rig kind="desktop">
+    <frame name="device" parent="world" position="0 0.5 0" rpy_deg="0 0 0"/>
+  </rig>
+  <object name="box">
+    <material stiffness_N_per_m="1000"/>
+    <box size="0.1 0.1 0.1"/>
+    <pose position="0 0.05 -0.5"/>
+    <dynamics mass_kg="1"/>
+  </object>
+  <sharing rig_id="2">
+    <shared_object object="box" id="1" rigs="1 2"/>
+  </sharing>
+  <plugins>
+    <plugin kind="device" name="fault_device">
+      <param name="command_log" value="{}"/>
+    </plugin>
+    <plugin kind="link" name="fault_link">
+      <param name="start_m" value="0 0.05 -0.5"/>
+      <param name="velocity_mps" value="0.1 0 0"/>
+{}
+    </plugin>
+  </plugins>
+  <server>
+    <param name="plugin_call_timeout_s" value="0.2"/>
+  </server>
+</scene>
+)", device_log.string(), link_params);
+  return file;
+}
+
+TEST(HapticServer, AReplicaFollowsTheStatesItsLinkBrings) {
+  const fs::path dir = temp_dir();
+  const fs::path file = write_shared_scene(dir, dir / "device.log", "");
+  Loaded l = load(file);
+  ASSERT_TRUE(l.scene);
+  auto build = HapticServer::open(*l.description, *l.scene, options_for(1.5));
+  for (const auto& d : build.diagnostics()) ADD_FAILURE() << d.to_string();
+  ASSERT_TRUE(build.ok());
+  const ServerReport r = build->server->run();
+  EXPECT_FALSE(r.error) << *r.error;
+  EXPECT_EQ(r.ended_by, RunEnd::Duration);
+  ASSERT_EQ(r.shared_objects.size(), 1u);
+  const SharedObjectEnd& box = r.shared_objects[0];
+  EXPECT_EQ(box.name, "box");
+  EXPECT_EQ(box.id, 1u);
+  EXPECT_EQ(box.authority_rig, 1u);
+  EXPECT_FALSE(box.held_here);
+  EXPECT_EQ(box.p_W_start_m, Eigen::Vector3d(0.0, 0.05, -0.5));
+  // 1.5 s at 0.1 m/s along x, as the link said (the link started a little before the run).
+  EXPECT_NEAR(box.p_W_end_m.x(), 0.15, 0.03);
+  EXPECT_NEAR(box.p_W_end_m.y(), 0.05, 1e-9);
+  EXPECT_NEAR(box.p_W_end_m.z(), -0.5, 1e-9);
+  EXPECT_LT(box.state_age_s, 0.05);
+  EXPECT_GT(r.sharing.states_obeyed, 500u);
+  EXPECT_EQ(r.sharing.states_ignored, 0u);
+  EXPECT_EQ(r.sharing.states_sent, 0u);  // a replica sends no state
+  EXPECT_EQ(r.link_dropped, 0u);
+  EXPECT_TRUE(r.zero_force_sent);
+}
+
+TEST(HapticServer, ALinkThatFailsEndsTheRunWithZeroForceNamingIt) {
+  const struct {
+    const char* params;
+    const char* error;
+  } cases[] = {
+      {R"(<param name="fail_after_reads" value="300"/><param name="fault" value="error"/>)",
+       "plugin 'fault_link': link_read failed: injected fault: hardware not responding"},
+      {R"(<param name="fail_after_reads" value="300"/><param name="fault" value="nan"/>)",
+       "plugin 'fault_link': link_read returned a non-finite messages[0].p_W_m[0]"},
+      {R"(<param name="fail_after_reads" value="300"/><param name="fault" value="deactivate"/>)",
+       "plugin 'fault_link': link_read asked to be stopped (MHD_DEACTIVATE)"},
+      {R"(<param name="fail_after_reads" value="300"/><param name="fault" value="block"/><param name="block_s" value="2"/>)",
+       "plugin 'fault_link': link_read has not returned after "},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.params);
+    const fs::path dir = temp_dir();
+    const fs::path device_log = dir / "device.log";
+    const fs::path file = write_shared_scene(dir, device_log, c.params);
+    Loaded l = load(file);
+    ASSERT_TRUE(l.scene);
+    auto build = HapticServer::open(*l.description, *l.scene, options_for(30.0));
+    ASSERT_TRUE(build.ok());
+    const ServerReport r = build->server->run();
+    ASSERT_TRUE(r.error);
+    EXPECT_EQ(r.ended_by, RunEnd::Fault);
+    EXPECT_THAT(*r.error, HasSubstr(fmt::format("{}:{}: error: {}", file.string(),
+                                                scene_line_of(file, "name=\"fault_link\""), c.error)));
+    EXPECT_TRUE(r.zero_force_sent);
+    const CommandLog device = read_log(device_log);
+    EXPECT_GT(device.count, 100u);
+    EXPECT_EQ(device.a, 0.0);
+    EXPECT_EQ(device.b, 0.0);
+    EXPECT_EQ(device.c, 0.0);
+  }
+}
+
 }  // namespace

@@ -117,7 +117,10 @@ TEST(HapticThreadHygiene, TheTrackerSampleFilterNeverAllocatesWhateverSensorsArr
 }
 
 /// The server on simulated hardware for 2.5 s, with the calls made on the thread named
-/// `thread_name` between 0.5 s and 2.2 s counted.
+/// `thread_name` between 0.5 s and 2.2 s counted. The rig (rig 2) also shares two crates
+/// on a floor away from the user: crate 1, which fault_link's rig 1 holds (a replica,
+/// moving as its states say), and crate 2, which this rig holds (its state sent every
+/// tick).
 ThreadCalls run_server_watching(const char* thread_name, ServerReport& r) {
   const fs::path dir = fs::temp_directory_path() / ("mhd_hygiene_" + std::to_string(::getpid()));
   fs::create_directories(dir);
@@ -130,6 +133,27 @@ ThreadCalls run_server_watching(const char* thread_name, ServerReport& r) {
     <box size="0.4 0.4 0.4"/>
     <pose position="0 0.8 0.226"/>
   </object>
+  <object name="floor">
+    <material stiffness_N_per_m="800"/>
+    <box size="2 0.1 2"/>
+    <pose position="4 -0.05 0"/>
+  </object>
+  <object name="crate1">
+    <material stiffness_N_per_m="800"/>
+    <box size="0.2 0.2 0.2"/>
+    <pose position="4 0.1 -0.5"/>
+    <dynamics mass_kg="1"/>
+  </object>
+  <object name="crate2">
+    <material stiffness_N_per_m="800"/>
+    <box size="0.2 0.2 0.2"/>
+    <pose position="4 0.1 0.5"/>
+    <dynamics mass_kg="1"/>
+  </object>
+  <sharing rig_id="2">
+    <shared_object object="crate1" id="1" rigs="1 2"/>
+    <shared_object object="crate2" id="2" rigs="2 1"/>
+  </sharing>
   <plugins>
     <plugin kind="device" name="sim_phantom">
       <param name="command_log" value="{1}/device.csv"/>
@@ -141,6 +165,10 @@ ThreadCalls run_server_watching(const char* thread_name, ServerReport& r) {
       <param name="command_log" value="{1}/base.csv"/>
     </plugin>
     <plugin kind="display" name="null_display"/>
+    <plugin kind="link" name="fault_link">
+      <param name="start_m" value="4 0.1 -0.5"/>
+      <param name="velocity_mps" value="0.1 0 0"/>
+    </plugin>
   </plugins>
   <planner kind="predictive"/>
   <simulated_user>
@@ -160,6 +188,7 @@ ThreadCalls run_server_watching(const char* thread_name, ServerReport& r) {
   if (!compiled.ok()) return {};
   ServerOptions o;
   o.duration_s = 2.5;
+  o.plugin_path = {MHD_FAULT_PLUGIN_DIR};  // fault_link
   o.recording = dir / "run.csv";
   auto build = HapticServer::open(*read, *compiled.value(), o);
   for (const auto& d : build.diagnostics()) ADD_FAILURE() << d.to_string();
@@ -176,6 +205,8 @@ TEST(HapticThreadHygiene, TheServerOnSimulatedHardwareNeverLocksAllocatesOrWrite
   EXPECT_GT(r.status.ticks, 1000u);      // the haptic thread ran while counting
   EXPECT_GT(r.contact_ticks, 0u);        // and rendered contact
   EXPECT_GT(r.base_commands, 0u);        // with the base and the planner at work
+  EXPECT_GT(r.sharing.states_obeyed, 1000u);  // and a replica following its link
+  EXPECT_GT(r.sharing.states_sent, 1000u);    // and a held crate's state going out
   EXPECT_EQ(c.locks, 0) << "first from " << c.first_caller;
   EXPECT_EQ(c.allocations, 0) << "first from " << c.first_caller;
   EXPECT_EQ(c.writes, 0);

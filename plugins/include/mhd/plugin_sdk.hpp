@@ -42,6 +42,8 @@
 //   display_write(const mhd_display_frame&), simulate_until(double t_s)
 //   link_send(std::span<const mhd_link_message>)
 //   link_read(std::span<mhd_link_message>)  -> std::size_t  messages written (0: MHD_NO_DATA)
+//   link_read(std::span<mhd_link_message>, std::size_t& count) -> mhd_status
+//                                               as tracker_read's form with a status
 #ifndef MHD_PLUGIN_SDK_HPP
 #define MHD_PLUGIN_SDK_HPP
 
@@ -134,6 +136,12 @@ constexpr std::span<const mhd_param_decl> params_of() {
     return {};
   }
 }
+
+/// Whether P's link_read reports its own status (and the count through a reference).
+template <class P>
+concept link_read_has_status = requires(P& p, std::span<mhd_link_message> o, std::size_t& n) {
+  { p.link_read(o, n) } -> std::same_as<mhd_status>;
+};
 
 /// Whether P's tracker_read reports its own status (and the count through a reference).
 template <class P>
@@ -272,8 +280,14 @@ struct Calls {
                               mhd_error* err) noexcept {
     return with(self, Need::Running, err, [&](Inst& s) {
       if (count == nullptr || (out == nullptr && capacity > 0)) throw std::invalid_argument("link_read: NULL output");
-      *count = s.plugin.link_read(std::span<mhd_link_message>(out, capacity));
-      return *count > 0 ? MHD_OK : MHD_NO_DATA;
+      const std::span<mhd_link_message> messages(out, capacity);
+      if constexpr (link_read_has_status<P>) {
+        *count = 0;
+        return s.plugin.link_read(messages, *count);
+      } else {
+        *count = s.plugin.link_read(messages);
+        return *count > 0 ? MHD_OK : MHD_NO_DATA;
+      }
     });
   }
   static mhd_status simulate_until(mhd_plugin_instance* self, double t_s, mhd_error* err) noexcept {
@@ -339,7 +353,9 @@ constexpr mhd_plugin_api plugin_table() {
   if constexpr (requires(P& p) { p.tracker_wait(0.0); }) t.tracker_wait = C::tracker_wait;
   if constexpr (requires(P& p, std::span<mhd_counter> o) { p.counters(o); }) t.counters = C::counters;
   if constexpr (requires(P& p, std::span<const mhd_link_message> m) { p.link_send(m); }) t.link_send = C::link_send;
-  if constexpr (requires(P& p, std::span<mhd_link_message> o) { p.link_read(o); }) t.link_read = C::link_read;
+  if constexpr (requires(P& p, std::span<mhd_link_message> o) { p.link_read(o); } || detail::link_read_has_status<P>) {
+    t.link_read = C::link_read;
+  }
   return t;
 }
 
