@@ -146,6 +146,7 @@ void HapticServer::Impl::record(double t_s, double dt_s, const HapticTickOutput&
     row.base_heading_rad = out.base.heading_rad;
   }
   row.lift_m = out.lift_m;
+  for (int i = 0; i < 3; ++i) row.p_W_shared_m[static_cast<std::size_t>(i)] = out.p_W_shared_m[i];
   row.tracker_age_s = std::isfinite(out.tracker_age_s) ? out.tracker_age_s : -1.0;
   row.safety_gain = out.safety_gain;
   row.contact = out.in_contact ? 1 : 0;

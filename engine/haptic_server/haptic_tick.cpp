@@ -102,7 +102,12 @@ HapticTickOutput HapticTick::render(double t_s, double dt_s, const Eigen::Vector
     render_no_hand(base.has_value() && std::isfinite(lift_m_), safety_in, out);
   }
   // After the reaction went to the bodies: the other rigs' pushes, and what to send.
-  if (sharing_) sharing_->after_render(t_s, proxy_, out.force_W_N, moving_);
+  if (sharing_) {
+    sharing_->after_render(t_s, proxy_, out.force_W_N, moving_);
+    if (sharing_->object_count() > 0) {
+      out.p_W_shared_m = moving_.world().pose(sharing_->declaration(0).object).translation();
+    }
+  }
   return out;
 }
 

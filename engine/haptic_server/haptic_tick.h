@@ -53,6 +53,8 @@ struct HapticTickOutput {
   Eigen::Vector3d force_D_N = Eigen::Vector3d::Zero();  ///< force_W_N in the device frame: what is sent
   BasePose base;  ///< the base pose this tick used
   double lift_m = 0.0;  ///< the lift height this tick used (0 without a lift; NaN: not known yet)
+  /// The first shared object's origin as this tick rendered it (NaN: the scene shares none).
+  Eigen::Vector3d p_W_shared_m = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
   double tracker_age_s = 0.0;  ///< HapticTick::kNoTracker (NaN) on a desktop rig
   double safety_gain = 0.0;
   int contact_object = -1;

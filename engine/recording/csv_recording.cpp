@@ -13,7 +13,8 @@ std::string_view recording_csv_header() noexcept {
   return "t_s,dt_s,tool_D_x_m,tool_D_y_m,tool_D_z_m,hip_x_m,hip_y_m,hip_z_m,proxy_x_m,proxy_y_m,proxy_z_m,"
          "force_x_N,force_y_N,force_z_N,cmd_force_x_N,cmd_force_y_N,cmd_force_z_N,"
          "force_D_x_N,force_D_y_N,force_D_z_N,base_x_m,base_z_m,base_heading_rad,"
-         "user_x_m,user_z_m,user_heading_rad,tracker_age_s,safety_gain,contact,contact_object,lift_m";
+         "user_x_m,user_z_m,user_heading_rad,tracker_age_s,safety_gain,contact,contact_object,lift_m,"
+         "shared_x_m,shared_y_m,shared_z_m";
 }
 
 CsvRecording::CsvRecording(const std::filesystem::path& path, double flush_interval_s)
@@ -44,9 +45,11 @@ void CsvRecording::write(const RecordingRow& r) {
   put3(r.force_W_N);
   put3(r.cmd_force_W_N);
   put3(r.force_D_N);
-  fmt::format_to(out, ",{},{},{},{},{},{},{},{},{},{},{}\n", r.base_x_m, r.base_z_m,
+  fmt::format_to(out, ",{},{},{},{},{},{},{},{},{},{},{}", r.base_x_m, r.base_z_m,
                  r.base_heading_rad, r.user_x_m, r.user_z_m, r.user_heading_rad, r.tracker_age_s, r.safety_gain,
                  static_cast<int>(r.contact), r.contact_object, r.lift_m);
+  put3(r.p_W_shared_m);
+  fmt::format_to(out, "\n");
   if (std::fwrite(line.data(), 1, line.size(), file_) != line.size()) {
     throw std::runtime_error(fmt::format("cannot write recording {}: {}", path_.string(), std::strerror(errno)));
   }

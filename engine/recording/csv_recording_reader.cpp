@@ -72,7 +72,10 @@ Result<std::vector<RecordingRow>> read_recording(const std::filesystem::path& fi
 
   std::map<std::string, std::size_t, std::less<>> column;
   std::vector<std::string_view> expected = split(recording_csv_header());
-  std::erase(expected, std::string_view("lift_m"));  // optional: recordings from before the lift lack it
+  // Optional: recordings from before the lift, or before shared objects, lack them.
+  for (const std::string_view optional : {"lift_m", "shared_x_m", "shared_y_m", "shared_z_m"}) {
+    std::erase(expected, optional);
+  }
   // Read a block at a time, each line within kMaxLineBytes: memory stays bounded by the
   // rows, whatever the file holds.
   std::string text;
@@ -153,6 +156,10 @@ Result<std::vector<RecordingRow>> read_recording(const std::filesystem::path& fi
     get("base_heading_rad", row.base_heading_rad);
     // Recordings from before the lift have no lift column: their arm stood at 0.
     if (column.find("lift_m") != column.end()) get("lift_m", row.lift_m);
+    // Likewise the shared object's columns (all three or none is used).
+    if (column.count("shared_x_m") != 0 && column.count("shared_y_m") != 0 && column.count("shared_z_m") != 0) {
+      get3("shared_", "_m", row.p_W_shared_m);
+    }
     get("user_x_m", row.user_x_m);
     get("user_z_m", row.user_z_m);
     get("user_heading_rad", row.user_heading_rad);

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 
 namespace mhd {
 
@@ -23,6 +24,11 @@ struct RecordingRow {
   double safety_gain = 0.0;
   std::int32_t contact_object = -1;
   std::uint8_t contact = 0;
+  /// The scene's first shared object's origin as this rig renders it (docs/shared-objects.md);
+  /// NaN when the scene shares none.
+  std::array<double, 3> p_W_shared_m{kNoShared, kNoShared, kNoShared};
+
+  static constexpr double kNoShared = std::numeric_limits<double>::quiet_NaN();
 };
 
 }  // namespace mhd

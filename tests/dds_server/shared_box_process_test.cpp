@@ -9,7 +9,11 @@
 //   - the dual of "stays put": rig 1 pressing alone (no rig 2) moves it, so rig 2's push,
 //     carried by the link, is what held it;
 //   - rig 2 alone (no authority, so no state ever comes) feels its replica's force fade
-//     to nothing, though its hand is in the box.
+//     to nothing, though its hand is in the box;
+//   - tick by tick, the two rigs' boxes (each recording's shared_* columns, on the one
+//     host clock) agree within 5 mm while both run;
+//   - secured as docs/networking.md says (make_rig_security.sh), the pair runs the same,
+//     and rig 2's identity may not run as rig 1.
 #include "dds_test_support.h"
 
 #include <Eigen/Core>
@@ -22,6 +26,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <memory>
 #include <optional>
@@ -82,8 +87,14 @@ fs::path write_scene(const fs::path& dir, int rig, std::uint32_t domain, const P
   return scene;
 }
 
+struct BoxAt {
+  double t_s;
+  Eigen::Vector3d p_W;
+};
+
 struct RigEnd {
   std::string log;
+  std::vector<BoxAt> box;      ///< the shared box as this rig rendered it, every tick
   Eigen::Vector3d p_W_box = Eigen::Vector3d::Zero();
   double moved_m = 0.0;
   double states_obeyed = 0.0, pushes_sent = 0.0, pushes_kept = 0.0;
@@ -124,8 +135,47 @@ RigEnd read_end(const fs::path& log_file, const fs::path& csv) {
     const Eigen::Vector3d f(v.at(column.at("force_x_N")), v.at(column.at("force_y_N")), v.at(column.at("force_z_N")));
     end.max_force_N = std::max(end.max_force_N, f.norm());
     end.contact_ticks += v.at(column.at("contact")) > 0.5 ? 1 : 0;
+    end.box.push_back({v.at(column.at("t_s")), Eigen::Vector3d(v.at(column.at("shared_x_m")), v.at(column.at("shared_y_m")),
+                                                               v.at(column.at("shared_z_m")))});
   }
   return end;
+}
+
+struct Agreement {
+  std::size_t ticks = 0;
+  double max_m = 0.0, p99_m = 0.0;
+};
+
+// Rig 2's box against rig 1's at the same host time (one machine, one monotonic clock),
+// over the ticks both ran, from 0.5 s after both started (the replica's first states).
+Agreement agreement(const RigEnd& one, const RigEnd& two) {
+  Agreement a;
+  if (one.box.empty() || two.box.empty()) return a;
+  const double from_s = std::max(one.box.front().t_s, two.box.front().t_s) + 0.5;
+  std::vector<double> gaps;
+  std::size_t j = 0;
+  for (const BoxAt& b : two.box) {
+    if (b.t_s < from_s) continue;
+    while (j + 1 < one.box.size() && one.box[j + 1].t_s <= b.t_s) ++j;
+    if (j + 1 >= one.box.size()) break;  // rig 1 has ended
+    const double w = (b.t_s - one.box[j].t_s) / (one.box[j + 1].t_s - one.box[j].t_s);
+    const Eigen::Vector3d p1 = one.box[j].p_W + w * (one.box[j + 1].p_W - one.box[j].p_W);
+    gaps.push_back((b.p_W - p1).norm());
+  }
+  if (gaps.empty()) return a;
+  std::sort(gaps.begin(), gaps.end());
+  a.ticks = gaps.size();
+  a.max_m = gaps.back();
+  a.p99_m = gaps[static_cast<std::size_t>(0.99 * static_cast<double>(gaps.size() - 1))];
+  return a;
+}
+
+void expect_agreement(const RigEnd& one, const RigEnd& two, const char* run) {
+  const Agreement a = agreement(one, two);
+  EXPECT_GT(a.ticks, 3000u);
+  EXPECT_LT(a.max_m, 0.005);
+  std::cout << run << ": rig 2's box against rig 1's over " << a.ticks << " ticks: p99 " << a.p99_m * 1e3
+            << " mm, max " << a.max_m * 1e3 << " mm\n";
 }
 
 class SharedBoxProcess : public ::testing::Test {
@@ -138,6 +188,31 @@ class SharedBoxProcess : public ::testing::Test {
     fs::create_directories(dir_);
   }
 
+  /// DDS Security from here on: identities for rigs 1 and 2, the secure configuration.
+  void secure() {
+    const std::string make = std::string(MHD_SOURCE_DIR) + "/tools/dds_security/make_rig_security.sh '" +
+                             (dir_ / "security").string() + "' 1 2 > '" + (dir_ / "security.log").string() + "' 2>&1";
+    ASSERT_EQ(std::system(make.c_str()), 0) << test::read_file((dir_ / "security.log").string());
+    const std::string config = std::string(MHD_SOURCE_DIR) + "/config";
+    setenv("CYCLONEDDS_URI",
+           ("file://" + config + "/cyclonedds-loopback.xml,file://" + config + "/cyclonedds-secure.xml").c_str(), 1);
+    identities_ = dir_ / "security" / "identities";
+  }
+
+  void TearDown() override { unsetenv("MHD_DDS_IDENTITY"); }
+
+  /// Starts rig `rig`'s `mhd run` (as `identity`'s haptic process when secured).
+  std::unique_ptr<ChildProcess> start(int rig, const Placement& where, int identity) {
+    const std::string name = "rig" + std::to_string(rig);
+    if (!identities_.empty()) {
+      setenv("MHD_DDS_IDENTITY", (identities_ / ("haptic-rig" + std::to_string(identity))).c_str(), 1);
+    }
+    return std::make_unique<ChildProcess>(
+        std::vector<std::string>{MHD_BIN, "run", write_scene(dir_, rig, domain_, where).string(), "--duration",
+                                 std::to_string(kRunFor_s), "-q", "--record", (dir_ / (name + ".csv")).string()},
+        (dir_ / (name + ".log")).string());
+  }
+
   /// Runs the rigs placed so (an empty optional: that rig does not run) at once, each
   /// for kRunFor_s; what each reported, in rig order (absent rigs: nullopt).
   std::vector<std::optional<RigEnd>> run(const std::vector<std::optional<Placement>>& rigs) {
@@ -148,11 +223,7 @@ class SharedBoxProcess : public ::testing::Test {
         continue;
       }
       const int rig = static_cast<int>(i) + 1;
-      const std::string name = "rig" + std::to_string(rig);
-      processes.push_back(std::make_unique<ChildProcess>(
-          std::vector<std::string>{MHD_BIN, "run", write_scene(dir_, rig, domain_, *rigs[i]).string(), "--duration",
-                                   std::to_string(kRunFor_s), "-q", "--record", (dir_ / (name + ".csv")).string()},
-          (dir_ / (name + ".log")).string()));
+      processes.push_back(start(rig, *rigs[i], rig));
     }
     std::vector<std::optional<RigEnd>> ends;
     for (std::size_t i = 0; i < rigs.size(); ++i) {
@@ -172,11 +243,13 @@ class SharedBoxProcess : public ::testing::Test {
 
   std::uint32_t domain_ = 0;
   fs::path dir_;
+  fs::path identities_;  ///< empty: unsecured
 };
 
 constexpr Placement kPlusZ{0.0, true}, kMinusZ{0.0, false};
 
-TEST_F(SharedBoxProcess, PressedFromOppositeSidesTheBoxStaysAndBothRigsAgree) {
+TEST_F(SharedBoxProcess, SecuredPressedFromOppositeSidesTheBoxStaysAndBothRigsAgree) {
+  secure();
   const auto ends = run({kPlusZ, kMinusZ});
   ASSERT_TRUE(ends[0] && ends[1]);
   const RigEnd& r1 = *ends[0];
@@ -188,6 +261,19 @@ TEST_F(SharedBoxProcess, PressedFromOppositeSidesTheBoxStaysAndBothRigsAgree) {
   EXPECT_GT(r1.pushes_kept, 1000.0) << r1.log;
   EXPECT_LT(r1.moved_m, 0.01) << r1.log;
   EXPECT_LT((r1.p_W_box - r2.p_W_box).norm(), 0.005) << r1.log << r2.log;
+  EXPECT_EQ(r1.log.find("unsecured"), std::string::npos) << r1.log;
+  expect_agreement(r1, r2, "opposite sides");
+}
+
+TEST_F(SharedBoxProcess, SecuredRig2sIdentityMayNotRunAsRig1) {
+  secure();
+  const std::unique_ptr<ChildProcess> p = start(1, kPlusZ, /*identity=*/2);
+  const std::optional<int> rc = p->wait_for(std::chrono::seconds(30));
+  const std::string log = test::read_file((dir_ / "rig1.log").string());
+  ASSERT_TRUE(rc.has_value()) << log;
+  EXPECT_NE(*rc, 0) << log;
+  EXPECT_NE(log.find("plugin 'dds_link': open failed: dds_create_writer: Not Allowed By Security"), std::string::npos)
+      << log;
 }
 
 TEST_F(SharedBoxProcess, PressedFromOneSideTheBoxMovesAndBothRigsAgree) {
@@ -199,6 +285,7 @@ TEST_F(SharedBoxProcess, PressedFromOneSideTheBoxMovesAndBothRigsAgree) {
   EXPECT_LT(r1.p_W_box.z(), -0.02) << r1.log;  // away from both users, along -z
   EXPECT_GT(r2.pushes_sent, 100.0) << r2.log;
   EXPECT_LT((r1.p_W_box - r2.p_W_box).norm(), 0.005) << r1.log << r2.log;
+  expect_agreement(r1, r2, "one side");
 }
 
 TEST_F(SharedBoxProcess, PressedByOneRigAloneTheBoxMoves) {

@@ -195,4 +195,26 @@ TEST(RecordingReader, ARecordingFromBeforeTheLiftReadsWithTheArmAtZeroAndTheLift
   EXPECT_TRUE(std::isnan(back.value()[1].lift_m));
 }
 
+TEST(RecordingReader, TheSharedObjectsColumnsRoundTripAndOlderRecordingsReadWithout) {
+  // recording_head.csv predates shared objects: no shared_* columns, every row NaN.
+  const auto old = read_recording(std::string(MHD_SOURCE_DIR) + "/tests/data/server/recording_head.csv");
+  ASSERT_TRUE(old.ok()) << old.error_text();
+  for (const RecordingRow& r : old.value()) EXPECT_TRUE(std::isnan(r.p_W_shared_m[0]));
+  const fs::path shared = temp_file("shared.csv");
+  {
+    CsvRecording out(shared, 0.0);
+    RecordingRow row = old.value().front();
+    row.p_W_shared_m = {0.125, 0.8, -0.0321};
+    out.write(row);
+    row.p_W_shared_m = {RecordingRow::kNoShared, RecordingRow::kNoShared, RecordingRow::kNoShared};
+    out.write(row);
+  }
+  const auto back = read_recording(shared);
+  ASSERT_TRUE(back.ok()) << back.error_text();
+  ASSERT_EQ(back.value().size(), 2u);
+  EXPECT_EQ(back.value()[0].p_W_shared_m, (std::array<double, 3>{0.125, 0.8, -0.0321}));
+  EXPECT_TRUE(std::isnan(back.value()[1].p_W_shared_m[2]));
+  EXPECT_EQ(back.value()[0].p_W_hip, old.value().front().p_W_hip);
+}
+
 }  // namespace

@@ -53,6 +53,14 @@ int replay(const ReplayOptions& opt) {
 
   const std::optional<mhd::SceneDescription> read = mhd::cli::read_command_scene(scene_file);
   if (!read) return 1;
+  if (read->sharing) {
+    // Its replicas moved as the other rigs' states said, which no recording holds.
+    const mhd::Diagnostic refused{read->sharing->where,
+                                  "the scene shares objects with other rigs (<sharing>); a replay cannot rerun them: "
+                                  "the other rigs' states and pushes are not in the recording"};
+    fmt::print(stderr, "mhd replay: error: {}\n", refused.to_string());
+    return 1;
+  }
   const std::unique_ptr<mhd::CompiledScene> compiled = mhd::cli::compile_command_scene(*read);
   if (!compiled) return 1;
   const mhd::Result<mhd::Rig, std::vector<mhd::RigError>> rig = mhd::Rig::from_scene(*read);
