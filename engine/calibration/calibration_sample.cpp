@@ -114,6 +114,14 @@ Result<std::vector<CalibrationSample>> parse_calibration_samples(std::string_vie
     column[k] = static_cast<std::size_t>(first - header.begin());
   }
   if (!header_ok) return errors;
+  std::optional<std::size_t> lift_column;
+  if (const auto lift = std::find(header.begin(), header.end(), kCalibrationLiftColumn); lift != header.end()) {
+    if (std::find(lift + 1, header.end(), kCalibrationLiftColumn) != header.end()) {
+      error(header_line, concat("column '", kCalibrationLiftColumn, "' appears twice"));
+      return errors;
+    }
+    lift_column = static_cast<std::size_t>(lift - header.begin());
+  }
 
   for (std::size_t i = header_index + 1; i < lines.size(); ++i) {
     if (is_skipped(lines[i])) continue;
@@ -139,6 +147,20 @@ Result<std::vector<CalibrationSample>> parse_calibration_samples(std::string_vie
         v[k] = *value;
       }
     }
+    double lift_m = 0.0;
+    if (lift_column) {
+      const std::string_view field = fields[*lift_column];
+      const std::optional<double> value = parse_number(field);
+      if (!value) {
+        error(line, concat("column '", kCalibrationLiftColumn, "': '", field, "' is not a number"));
+        line_ok = false;
+      } else if (!std::isfinite(*value)) {
+        error(line, concat("column '", kCalibrationLiftColumn, "' is not finite (", field, ")"));
+        line_ok = false;
+      } else {
+        lift_m = *value;
+      }
+    }
     if (!line_ok) continue;
     const Eigen::Quaterniond q(v[3], v[4], v[5], v[6]);
     const double norm = q.norm();
@@ -151,6 +173,7 @@ Result<std::vector<CalibrationSample>> parse_calibration_samples(std::string_vie
     sample.X_is900_base_sensor = pose_from_xyz_quaternion(Eigen::Vector3d(v[0], v[1], v[2]), q);
     sample.q_rad = Eigen::Vector3d(v[7], v[8], v[9]);
     sample.p_W_hip_measured_m = Eigen::Vector3d(v[10], v[11], v[12]);
+    sample.lift_m = lift_m;
     sample.line = line;
     samples.push_back(sample);
   }
@@ -173,7 +196,15 @@ std::string format_calibration_samples(const std::vector<CalibrationSample>& sam
                                        const std::vector<std::string>& comments) {
   std::string out;
   for (const std::string& c : comments) out += concat("# ", c, "\n");
-  out += expected_columns() + "\n";
+  // The lift's column only where a sample has the lift off 0: a lift-less rig's file is as before.
+  const bool lifted =
+      std::any_of(samples.begin(), samples.end(), [](const CalibrationSample& s) { return s.lift_m != 0.0; });
+  out += expected_columns();
+  if (lifted) {
+    out += ',';
+    out += kCalibrationLiftColumn;
+  }
+  out += '\n';
   for (const CalibrationSample& s : samples) {
     const Eigen::Quaterniond q(s.X_is900_base_sensor.linear());
     const Eigen::Vector3d& p = s.X_is900_base_sensor.translation();
@@ -184,6 +215,10 @@ std::string format_calibration_samples(const std::vector<CalibrationSample>& sam
     for (std::size_t k = 0; k < kColumnCount; ++k) {
       if (k > 0) out += ",";
       out += number_text(v[k]);
+    }
+    if (lifted) {
+      out += ',';
+      out += number_text(s.lift_m);
     }
     out += "\n";
   }

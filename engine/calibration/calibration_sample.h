@@ -28,8 +28,14 @@ struct CalibrationSample {
   Pose X_is900_base_sensor = Pose::Identity();  ///< the base station's tracker reading
   Eigen::Vector3d q_rad = Eigen::Vector3d::Zero();
   Eigen::Vector3d p_W_hip_measured_m = Eigen::Vector3d::Zero();
+  /// The lift's height when the sample was taken (column lift_m, optional: 0 without; a
+  /// rig without a lift has it at 0 for ever).
+  double lift_m = 0.0;
   int line = 0;  ///< the CSV line it came from; 0 when made in code
 };
+
+/// The optional column of the lift's height (docs/calibration.md, "With a lift").
+inline constexpr std::string_view kCalibrationLiftColumn = "lift_m";
 
 /// The columns a samples file must have (any order; more are allowed).
 inline constexpr std::array<std::string_view, 13> kCalibrationSampleColumns = {

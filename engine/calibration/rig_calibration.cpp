@@ -57,9 +57,12 @@ class Problem {
   Problem(const Rig& rig, const std::vector<CalibrationSample>& samples)
       : A_(rig.X_base_sensor_robot().linear() * rig.X_robot_phantom().linear()) {
     terms_.reserve(samples.size());
+    // The lift raises the arm along the robot's z: in base_sensor, before psi, R_SR z lift.
+    const Eigen::Vector3d lift_axis_S = rig.X_base_sensor_robot().linear() * Eigen::Vector3d::UnitZ();
     for (const CalibrationSample& s : samples) {
       const Pose X_W_S = rig.X_W_is900() * s.X_is900_base_sensor;
-      terms_.push_back({X_W_S.linear(), X_W_S.translation(), A_ * phantom_tool_position(rig.device().geometry, s.q_rad),
+      terms_.push_back({X_W_S.linear(), X_W_S.translation(),
+                        A_ * phantom_tool_position(rig.device().geometry, s.q_rad) + lift_axis_S * s.lift_m,
                         s.p_W_hip_measured_m});
     }
   }
@@ -88,7 +91,7 @@ class Problem {
   struct Term {
     Eigen::Matrix3d R_W_S;
     Eigen::Vector3d p_W_S;
-    Eigen::Vector3d a_S;  ///< R_SR R_RP p_P_tool: the arm's reach in base_sensor before psi
+    Eigen::Vector3d a_S;  ///< R_SR (R_RP p_P_tool + z lift): the arm's reach in base_sensor before psi
     Eigen::Vector3d p_W_measured;
   };
   Eigen::Matrix3d A_;
@@ -160,6 +163,23 @@ CalibrationError unobservable_error(const Conditioning& c, double max_condition)
 
 }  // namespace
 
+Diagnostics lift_problems(const Rig& rig, const std::vector<CalibrationSample>& samples, const std::string& file) {
+  constexpr double kReadingTolerance_m = 0.001;
+  Diagnostics out;
+  for (const CalibrationSample& s : samples) {
+    const SourceLocation where{file, s.line};
+    if (!rig.lift()) {
+      if (s.lift_m != 0.0) {
+        out.push_back({where, concat("lift_m ", g3(s.lift_m), " m, but the rig has no lift (<rig><lift>)")});
+      }
+    } else if (s.lift_m < rig.lift()->min_m - kReadingTolerance_m || s.lift_m > rig.lift()->max_m + kReadingTolerance_m) {
+      out.push_back({where, concat("lift_m ", g3(s.lift_m), " m is outside the lift's range [", g3(rig.lift()->min_m),
+                                   ", ", g3(rig.lift()->max_m), "] m")});
+    }
+  }
+  return out;
+}
+
 RigOffsets offsets_of(const Rig& rig) noexcept {
   RigOffsets o;
   o.p_S_robot_m = rig.X_base_sensor_robot().translation();
@@ -190,9 +210,11 @@ Pose calibrated_X_robot_phantom(const Rig& rig, const RigOffsets& offsets) noexc
 }
 
 Eigen::Vector3d predicted_p_W_hip(const Rig& rig, const RigOffsets& offsets, const Pose& X_is900_base_sensor,
-                                  const Eigen::Vector3d& q_rad) noexcept {
-  const Pose X_W_phantom = rig.X_W_is900() * X_is900_base_sensor * calibrated_X_base_sensor_robot(rig, offsets) *
-                           calibrated_X_robot_phantom(rig, offsets);
+                                  const Eigen::Vector3d& q_rad, double lift_m) noexcept {
+  Pose X_robot_phantom = calibrated_X_robot_phantom(rig, offsets);
+  X_robot_phantom.translation() += lift_m * Eigen::Vector3d::UnitZ();  // the lift: along the robot's z
+  const Pose X_W_phantom =
+      rig.X_W_is900() * X_is900_base_sensor * calibrated_X_base_sensor_robot(rig, offsets) * X_robot_phantom;
   return X_W_phantom * phantom_tool_position(rig.device().geometry, q_rad);
 }
 
@@ -201,7 +223,8 @@ ResidualStats residual_stats(const Rig& rig, const RigOffsets& offsets, const st
   stats.residuals_m.reserve(samples.size());
   Eigen::Vector3d sum_sq = Eigen::Vector3d::Zero();
   for (const CalibrationSample& s : samples) {
-    const Eigen::Vector3d r = s.p_W_hip_measured_m - predicted_p_W_hip(rig, offsets, s.X_is900_base_sensor, s.q_rad);
+    const Eigen::Vector3d r =
+        s.p_W_hip_measured_m - predicted_p_W_hip(rig, offsets, s.X_is900_base_sensor, s.q_rad, s.lift_m);
     stats.residuals_m.push_back(r);
     sum_sq += r.cwiseAbs2();
     stats.max_abs_m = stats.max_abs_m.cwiseMax(r.cwiseAbs());

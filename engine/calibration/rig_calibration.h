@@ -49,10 +49,11 @@ struct RigOffsets {
 [[nodiscard]] Pose calibrated_X_base_sensor_robot(const Rig& rig, const RigOffsets& offsets) noexcept;
 [[nodiscard]] Pose calibrated_X_robot_phantom(const Rig& rig, const RigOffsets& offsets) noexcept;
 
-/// The HIP in the world for a tracker reading and joint angles, with `offsets`.
+/// The HIP in the world for a tracker reading, joint angles and the lift's height, with
+/// `offsets`.
 [[nodiscard]] Eigen::Vector3d predicted_p_W_hip(const Rig& rig, const RigOffsets& offsets,
-                                                const Pose& X_is900_base_sensor,
-                                                const Eigen::Vector3d& q_rad) noexcept;
+                                                const Pose& X_is900_base_sensor, const Eigen::Vector3d& q_rad,
+                                                double lift_m = 0.0) noexcept;
 
 /// Per-axis and overall residual statistics (residual = measured - predicted).
 struct ResidualStats {
@@ -112,6 +113,11 @@ struct CalibrationFit {
   ResidualStats residuals_before;
   ResidualStats residuals_after;
 };
+
+/// Each sample whose lift height the rig cannot have, at its line of `file`: off 0 on a rig
+/// without a lift, or outside the lift's range (1 mm of reading error allowed).
+[[nodiscard]] Diagnostics lift_problems(const Rig& rig, const std::vector<CalibrationSample>& samples,
+                                        const std::string& file);
 
 /// Least-squares fit of (c, psi) to the samples, starting from the rig's values.
 [[nodiscard]] Result<CalibrationFit, CalibrationError> calibrate_rig(const Rig& rig,

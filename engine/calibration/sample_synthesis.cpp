@@ -84,8 +84,11 @@ std::vector<CalibrationSample> synthesize_samples(const Rig& rig, const Synthesi
       for (Eigen::Index k = 0; k < 3; ++k) q_rad(k) = random.uniform(limits.lower_rad(k), limits.upper_rad(k));
     } while (!limits.contains(q_rad));
 
+    // A rig with a lift is sampled over its whole range (the lift's reading is exact).
+    const double lift_m = rig.lift() ? random.uniform(rig.lift()->min_m, rig.lift()->max_m) : 0.0;
+
     const Pose X_is900_S_true = rig.X_is900_base_sensor_from_base(base);
-    const Eigen::Vector3d p_W_hip = predicted_p_W_hip(rig, options.truth, X_is900_S_true, q_rad);
+    const Eigen::Vector3d p_W_hip = predicted_p_W_hip(rig, options.truth, X_is900_S_true, q_rad, lift_m);
 
     CalibrationSample sample;
     sample.X_is900_base_sensor = X_is900_S_true;
@@ -96,6 +99,7 @@ std::vector<CalibrationSample> synthesize_samples(const Rig& rig, const Synthesi
           Eigen::AngleAxisd(tilt_rad.norm(), tilt_rad.normalized()).toRotationMatrix() * X_is900_S_true.linear();
     }
     sample.q_rad = q_rad;
+    sample.lift_m = lift_m;
     sample.p_W_hip_measured_m = p_W_hip + options.hip_noise_m * random.normal3();
     samples.push_back(sample);
   }

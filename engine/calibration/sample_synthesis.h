@@ -25,7 +25,8 @@ struct SynthesisOptions {
 };
 
 /// The samples; the sensor poses follow the rig's planar base path (the station's height
-/// stays what the rig's nominal pose says), the HIP comes from `truth` plus noise.
+/// stays what the rig's nominal pose says), the HIP comes from `truth` plus noise. On a
+/// rig with a lift each sample's lift height is drawn over the lift's range.
 [[nodiscard]] std::vector<CalibrationSample> synthesize_samples(const Rig& rig, const SynthesisOptions& options);
 
 /// The per-axis residual RMS that perfect offsets leave with position noise only:

@@ -129,4 +129,29 @@ TEST(CalibrationSamples, ReadsTheCheckedInFile) {
 }
 
 }  // namespace
+TEST(CalibrationSamples, TheLiftsHeightRoundTripsAndIsOptional) {
+  std::vector<CalibrationSample> samples(2);
+  samples[0].lift_m = 0.0;
+  samples[1].lift_m = -0.4375;
+  const std::string text = format_calibration_samples(samples, {});
+  EXPECT_NE(text.find(",lift_m\n"), std::string::npos) << text;
+  const Result<std::vector<CalibrationSample>> read = parse_calibration_samples(text, "lift.csv");
+  ASSERT_TRUE(read.ok()) << messages(read);
+  EXPECT_EQ(read.value()[0].lift_m, 0.0);
+  EXPECT_EQ(read.value()[1].lift_m, -0.4375);
+  // A rig without a lift writes no lift column, and a file without one reads as 0.
+  samples[1].lift_m = 0.0;
+  const std::string flat = format_calibration_samples(samples, {});
+  EXPECT_EQ(flat.find("lift_m"), std::string::npos);
+  const Result<std::vector<CalibrationSample>> none = parse_calibration_samples(flat, "flat.csv");
+  ASSERT_TRUE(none.ok());
+  EXPECT_EQ(none.value()[1].lift_m, 0.0);
+  // A height that is not a finite number is refused at its line and column.
+  std::string bad = text;
+  bad.replace(bad.rfind("-0.4375"), 7, "nan");
+  const Result<std::vector<CalibrationSample>> refused = parse_calibration_samples(bad, "lift.csv");
+  ASSERT_FALSE(refused.ok());
+  EXPECT_EQ(messages(refused), "lift.csv:3: error: column 'lift_m' is not finite (nan)\n");
+}
+
 }  // namespace mhd

@@ -340,5 +340,66 @@ TEST(RigCalibration, OrientationNoiseRaisesTheFloorNotTheError) {
   EXPECT_LT(std::abs(outcome->after.psi_rad - options.truth.psi_rad), 0.2 * kDeg);
 }
 
+/// pomhi's rig with tall_column.xml's lift: the arm from -0.6 m to +1.0 m about its frame.
+Rig lifted_rig() {
+  Result<SceneDescription> read = read_scene_file(std::filesystem::path(MHD_SOURCE_DIR) / "scenes/rigs/pomhi.xml");
+  EXPECT_TRUE(read.ok());
+  LiftDescription lift;
+  lift.min_m = -0.6;
+  lift.max_m = 1.0;
+  lift.max_speed_mps = 0.3;
+  lift.max_acceleration_mps2 = 1.0;
+  read->rig_lift = lift;
+  const Result<Rig, std::vector<RigError>> lifted = Rig::from_scene(*read);
+  EXPECT_TRUE(lifted.ok());
+  return *lifted;
+}
+
+TEST(RigCalibration, ALiftedRigCalibratesWithTheLiftsHeightAndNotWithout) {
+  const Rig rig = lifted_rig();
+  SynthesisOptions options;
+  options.samples = 400;
+  std::vector<CalibrationSample> samples = synthesize_samples(rig, options);
+  double lowest = 1e9, highest = -1e9;
+  for (const CalibrationSample& s : samples) {
+    lowest = std::min(lowest, s.lift_m);
+    highest = std::max(highest, s.lift_m);
+  }
+  EXPECT_LT(lowest, -0.4);  // the samples span the lift's range
+  EXPECT_GT(highest, 0.8);
+  const Result<CalibrationFit, CalibrationError> outcome = calibrate_rig(rig, samples);
+  ASSERT_TRUE(outcome.ok()) << outcome.error_text();
+  EXPECT_LT((outcome->p_S_phantom_m - phantom_in_sensor(rig, options.truth)).cwiseAbs().maxCoeff(), 1.5e-3);
+  EXPECT_LT(std::abs(outcome->after.psi_rad - options.truth.psi_rad), 0.2 * kDeg);
+  EXPECT_LT(outcome->residuals_after.rmse_3d_m, 2.0 * std::sqrt(3.0) * position_noise_floor_m(options));
+  // The dual: with the lift's height forgotten, not even the true offsets explain the
+  // samples, and the fit is refused (or, were it not, would leave the same residuals).
+  for (CalibrationSample& s : samples) s.lift_m = 0.0;
+  EXPECT_GT(residual_stats(rig, options.truth, samples).rmse_3d_m, 0.2);
+  const Result<CalibrationFit, CalibrationError> blind = calibrate_rig(rig, samples);
+  if (blind.ok()) {
+    EXPECT_GT(blind->residuals_after.rmse_3d_m, 0.2);
+  } else {
+    EXPECT_EQ(blind.error().kind, CalibrationErrorKind::PoorlyDetermined) << blind.error_text();
+  }
+}
+
+TEST(RigCalibration, ALiftHeightTheRigCannotHaveIsRefusedAtItsLine) {
+  std::vector<CalibrationSample> samples(3);
+  for (int i = 0; i < 3; ++i) samples[static_cast<std::size_t>(i)].line = 10 + i;
+  samples[1].lift_m = 0.25;
+  samples[2].lift_m = 1.2;
+  // A rig without a lift: any height but 0 is refused.
+  const Diagnostics none = lift_problems(pomhi_rig(), samples, "s.csv");
+  ASSERT_EQ(none.size(), 2u);
+  EXPECT_EQ(none[0].to_string(), "s.csv:11: error: lift_m 0.25 m, but the rig has no lift (<rig><lift>)");
+  // With a lift of [-0.6, 1.0] m: 1.2 m is out of range, 0.25 m is not.
+  const Diagnostics lifted = lift_problems(lifted_rig(), samples, "s.csv");
+  ASSERT_EQ(lifted.size(), 1u);
+  EXPECT_EQ(lifted[0].to_string(), "s.csv:12: error: lift_m 1.2 m is outside the lift's range [-0.6, 1] m");
+  samples[2].lift_m = 1.0005;  // within a reading's error of the top
+  EXPECT_TRUE(lift_problems(lifted_rig(), samples, "s.csv").empty());
+}
+
 }  // namespace
 }  // namespace mhd

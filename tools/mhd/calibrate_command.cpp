@@ -117,6 +117,10 @@ int calibrate(const CalibrateOptions& o, const LoadedRig& loaded) {
     print_calibration_diagnostics(read.error());
     return 1;
   }
+  if (const mhd::Diagnostics lifts = mhd::lift_problems(loaded.rig, read.value(), o.samples); !lifts.empty()) {
+    print_calibration_diagnostics(lifts);
+    return 1;
+  }
   mhd::CalibrationOptions options;
   options.split = *mhd::offset_split_from_string(o.split);
   options.estimate_psi = !o.no_psi;
