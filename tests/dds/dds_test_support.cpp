@@ -91,6 +91,23 @@ std::string read_file(const std::string& path) {
   return s.str();
 }
 
+CsvTable read_csv_table(const std::string& path) {
+  CsvTable t;
+  std::ifstream in(path);
+  std::string line;
+  if (!std::getline(in, line)) return t;
+  std::istringstream header(line);
+  std::size_t i = 0;
+  for (std::string name; std::getline(header, name, ',');) t.column[name] = i++;
+  while (std::getline(in, line)) {
+    std::vector<double> v;
+    std::istringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) v.push_back(std::strtod(cell.c_str(), nullptr));
+    t.rows.push_back(std::move(v));
+  }
+  return t;
+}
+
 OutputFile::OutputFile(const std::string& folder, const char* name)
     : path_((std::filesystem::path(folder) / ("mhd_dds_test_" + std::to_string(::getpid()) + "_" + name + ".log"))
                 .string()) {}

@@ -8,6 +8,7 @@
 #include <atomic>
 #include <chrono>
 #include <functional>
+#include <map>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -64,6 +65,16 @@ class Repeating {
 
 /// The whole content of a file ("" when it cannot be read).
 std::string read_file(const std::string& path);
+
+/// A CSV file of numbers with a header line (a haptic server recording): each row's
+/// cells, read with strtod ("nan" is NaN), and the column of each name.
+struct CsvTable {
+  std::map<std::string, std::size_t> column;
+  std::vector<std::vector<double>> rows;
+  /// Row `r`'s value in column `name` (throws std::out_of_range for an unknown name).
+  [[nodiscard]] double at(std::size_t r, const std::string& name) const { return rows.at(r).at(column.at(name)); }
+};
+CsvTable read_csv_table(const std::string& path);
 
 /// A child's output file, "<folder>/mhd_dds_test_<pid>_<name>.log", removed when the test
 /// ends.

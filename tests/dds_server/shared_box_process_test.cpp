@@ -119,24 +119,12 @@ RigEnd read_end(const fs::path& log_file, const fs::path& csv) {
     end.states_obeyed = std::stod(m[2]);
     end.pushes_kept = std::stod(m[3]);
   }
-  std::ifstream in(csv);
-  std::string line;
-  std::getline(in, line);
-  std::map<std::string, std::size_t> column;
-  {
-    std::istringstream header(line);
-    std::size_t i = 0;
-    for (std::string name; std::getline(header, name, ',');) column[name] = i++;
-  }
-  while (std::getline(in, line)) {
-    std::vector<double> v;
-    std::istringstream cells(line);
-    for (std::string cell; std::getline(cells, cell, ',');) v.push_back(std::strtod(cell.c_str(), nullptr));
-    const Eigen::Vector3d f(v.at(column.at("force_x_N")), v.at(column.at("force_y_N")), v.at(column.at("force_z_N")));
-    end.max_force_N = std::max(end.max_force_N, f.norm());
-    end.contact_ticks += v.at(column.at("contact")) > 0.5 ? 1 : 0;
-    end.box.push_back({v.at(column.at("t_s")), Eigen::Vector3d(v.at(column.at("shared_x_m")), v.at(column.at("shared_y_m")),
-                                                               v.at(column.at("shared_z_m")))});
+  const test::CsvTable t = test::read_csv_table(csv.string());
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    const auto at = [&](const char* name) { return t.at(i, name); };
+    end.max_force_N = std::max(end.max_force_N, Eigen::Vector3d(at("force_x_N"), at("force_y_N"), at("force_z_N")).norm());
+    end.contact_ticks += at("contact") > 0.5 ? 1 : 0;
+    end.box.push_back({at("t_s"), Eigen::Vector3d(at("shared_x_m"), at("shared_y_m"), at("shared_z_m"))});
   }
   return end;
 }

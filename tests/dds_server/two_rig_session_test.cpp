@@ -33,21 +33,10 @@ struct Row {
 
 // The rows of a recording with fresh tracking (finite poses, tracker age < 0.1 s).
 std::vector<Row> read_recording(const fs::path& csv) {
-  std::ifstream in(csv);
-  std::string line;
-  std::getline(in, line);
-  std::map<std::string, std::size_t> column;
-  {
-    std::istringstream header(line);
-    std::size_t i = 0;
-    for (std::string name; std::getline(header, name, ',');) column[name] = i++;
-  }
+  const test::CsvTable t = test::read_csv_table(csv.string());
   std::vector<Row> rows;
-  while (std::getline(in, line)) {
-    std::vector<double> v;
-    std::istringstream cells(line);
-    for (std::string cell; std::getline(cells, cell, ',');) v.push_back(std::strtod(cell.c_str(), nullptr));
-    const auto at = [&](const char* name) { return v.at(column.at(name)); };
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    const auto at = [&](const char* name) { return t.at(i, name); };
     const Row r{at("t_s"), at("base_x_m"), at("base_z_m"), at("user_x_m"), at("user_z_m"), at("contact") > 0.5};
     if (std::isfinite(r.base_x_m) && std::isfinite(r.user_x_m) && at("tracker_age_s") < 0.1) rows.push_back(r);
   }

@@ -94,6 +94,17 @@ class DdsLinkPlugin {
     }
   }
 
+  // The pose, twist, force and point, which the sample and the message name alike.
+  template <class From, class To>
+  static void copy_vectors(const From& from, To& to) {
+    std::copy_n(from.p_W_m, 3, to.p_W_m);
+    std::copy_n(from.q_W_wxyz, 4, to.q_W_wxyz);
+    std::copy_n(from.v_W_mps, 3, to.v_W_mps);
+    std::copy_n(from.w_W_radps, 3, to.w_W_radps);
+    std::copy_n(from.f_W_N, 3, to.f_W_N);
+    std::copy_n(from.p_O_m, 3, to.p_O_m);
+  }
+
   static Sample to_sample(const mhd_link_message& m, std::int64_t stamp_ns) {
     Sample s{};
     s.rig_id = m.rig_id;
@@ -102,12 +113,7 @@ class DdsLinkPlugin {
     s.term = m.term;
     s.sequence_number = m.sequence;
     s.timestamp_ns = stamp_ns;
-    std::copy_n(m.p_W_m, 3, s.p_W_m);
-    std::copy_n(m.q_W_wxyz, 4, s.q_W_wxyz);
-    std::copy_n(m.v_W_mps, 3, s.v_W_mps);
-    std::copy_n(m.w_W_radps, 3, s.w_W_radps);
-    std::copy_n(m.f_W_N, 3, s.f_W_N);
-    std::copy_n(m.p_O_m, 3, s.p_O_m);
+    copy_vectors(m, s);
     return s;
   }
 
@@ -119,12 +125,7 @@ class DdsLinkPlugin {
     m.term = s.term;
     m.sequence = s.sequence_number;
     m.timestamp_s = t_s;
-    std::copy_n(s.p_W_m, 3, m.p_W_m);
-    std::copy_n(s.q_W_wxyz, 4, m.q_W_wxyz);
-    std::copy_n(s.v_W_mps, 3, m.v_W_mps);
-    std::copy_n(s.w_W_radps, 3, m.w_W_radps);
-    std::copy_n(s.f_W_N, 3, m.f_W_N);
-    std::copy_n(s.p_O_m, 3, m.p_O_m);
+    copy_vectors(s, m);
     return m;
   }
 
