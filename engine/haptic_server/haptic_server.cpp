@@ -274,7 +274,7 @@ std::vector<OpenedPlugin*> HapticServer::Impl::start_plugins() {
 
 void HapticServer::Impl::open_recording() {
   try {
-    recording.emplace(options.recording, settings.record_flush_s);
+    recording.emplace(options.recording, settings.record_flush_s, scene.sharing.has_value());
   } catch (const std::exception& e) {
     fail(e.what());
   }

@@ -13,18 +13,24 @@ std::string_view recording_csv_header() noexcept {
   return "t_s,dt_s,tool_D_x_m,tool_D_y_m,tool_D_z_m,hip_x_m,hip_y_m,hip_z_m,proxy_x_m,proxy_y_m,proxy_z_m,"
          "force_x_N,force_y_N,force_z_N,cmd_force_x_N,cmd_force_y_N,cmd_force_z_N,"
          "force_D_x_N,force_D_y_N,force_D_z_N,base_x_m,base_z_m,base_heading_rad,"
-         "user_x_m,user_z_m,user_heading_rad,tracker_age_s,safety_gain,contact,contact_object,lift_m,"
-         "shared_x_m,shared_y_m,shared_z_m";
+         "user_x_m,user_z_m,user_heading_rad,tracker_age_s,safety_gain,contact,contact_object,lift_m";
 }
 
-CsvRecording::CsvRecording(const std::filesystem::path& path, double flush_interval_s)
-    : path_(path), flush_interval_s_(flush_interval_s) {
+std::string_view recording_csv_shared_columns() noexcept { return "shared_x_m,shared_y_m,shared_z_m"; }
+
+CsvRecording::CsvRecording(const std::filesystem::path& path, double flush_interval_s, bool shared_columns)
+    : path_(path), flush_interval_s_(flush_interval_s), shared_columns_(shared_columns) {
   file_ = std::fopen(path.c_str(), "w");
   if (file_ == nullptr) {
     throw std::runtime_error(fmt::format("cannot write recording {}: {}", path.string(), std::strerror(errno)));
   }
   const std::string_view header = recording_csv_header();
   std::fwrite(header.data(), 1, header.size(), file_);
+  if (shared_columns_) {
+    const std::string_view shared = recording_csv_shared_columns();
+    std::fputc(',', file_);
+    std::fwrite(shared.data(), 1, shared.size(), file_);
+  }
   std::fputc('\n', file_);
   flush();
 }
@@ -48,7 +54,7 @@ void CsvRecording::write(const RecordingRow& r) {
   fmt::format_to(out, ",{},{},{},{},{},{},{},{},{},{},{}", r.base_x_m, r.base_z_m,
                  r.base_heading_rad, r.user_x_m, r.user_z_m, r.user_heading_rad, r.tracker_age_s, r.safety_gain,
                  static_cast<int>(r.contact), r.contact_object, r.lift_m);
-  put3(r.p_W_shared_m);
+  if (shared_columns_) put3(r.p_W_shared_m);
   fmt::format_to(out, "\n");
   if (std::fwrite(line.data(), 1, line.size(), file_) != line.size()) {
     throw std::runtime_error(fmt::format("cannot write recording {}: {}", path_.string(), std::strerror(errno)));

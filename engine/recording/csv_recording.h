@@ -6,7 +6,9 @@
 //
 // Columns: t_s, dt_s, tool_D_{x,y,z}_m (the device frame), hip_{x,y,z}_m, proxy_{x,y,z}_m, force_{x,y,z}_N,
 // cmd_force_{x,y,z}_N, force_D_{x,y,z}_N (what the device got, its frame), base_x_m, base_z_m, base_heading_rad, user_x_m,
-// user_z_m, user_heading_rad, tracker_age_s, safety_gain, contact, contact_object.
+// user_z_m, user_heading_rad, tracker_age_s, safety_gain, contact, contact_object, lift_m;
+// and, in a recording of a rig that shares objects, shared_{x,y,z}_m (the first shared
+// object's origin as the rig rendered it).
 // Numbers are written in the shortest form that reads back to the same double, so a
 // replay (recording_replay.h) feeds the engine exactly the recorded inputs.
 
@@ -20,12 +22,15 @@ namespace mhd {
 
 /// The header line, without its newline.
 [[nodiscard]] std::string_view recording_csv_header() noexcept;
+/// The columns a recording of a rig that shares objects adds at the end.
+[[nodiscard]] std::string_view recording_csv_shared_columns() noexcept;
 
 class CsvRecording {
  public:
-  /// Creates (truncates) `path` and writes the header; throws std::runtime_error naming
-  /// the file and the reason when it cannot.
-  CsvRecording(const std::filesystem::path& path, double flush_interval_s);
+  /// Creates (truncates) `path` and writes the header, with the shared object's columns
+  /// when `shared_columns`; throws std::runtime_error naming the file and the reason when
+  /// it cannot.
+  CsvRecording(const std::filesystem::path& path, double flush_interval_s, bool shared_columns = false);
   ~CsvRecording();
   CsvRecording(const CsvRecording&) = delete;
   CsvRecording& operator=(const CsvRecording&) = delete;
@@ -42,6 +47,7 @@ class CsvRecording {
   std::filesystem::path path_;
   std::FILE* file_ = nullptr;
   double flush_interval_s_;
+  bool shared_columns_;
   double last_flush_t_s_ = 0.0;
   std::uint64_t rows_ = 0;
 };

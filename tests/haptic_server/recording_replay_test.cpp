@@ -202,7 +202,7 @@ TEST(RecordingReader, TheSharedObjectsColumnsRoundTripAndOlderRecordingsReadWith
   for (const RecordingRow& r : old.value()) EXPECT_TRUE(std::isnan(r.p_W_shared_m[0]));
   const fs::path shared = temp_file("shared.csv");
   {
-    CsvRecording out(shared, 0.0);
+    CsvRecording out(shared, 0.0, /*shared_columns=*/true);
     RecordingRow row = old.value().front();
     row.p_W_shared_m = {0.125, 0.8, -0.0321};
     out.write(row);
@@ -215,6 +215,13 @@ TEST(RecordingReader, TheSharedObjectsColumnsRoundTripAndOlderRecordingsReadWith
   EXPECT_EQ(back.value()[0].p_W_shared_m, (std::array<double, 3>{0.125, 0.8, -0.0321}));
   EXPECT_TRUE(std::isnan(back.value()[1].p_W_shared_m[2]));
   EXPECT_EQ(back.value()[0].p_W_hip, old.value().front().p_W_hip);
+  // Without the shared columns (a rig that shares nothing) the file is as before.
+  const fs::path plain = temp_file("plain.csv");
+  { CsvRecording out(plain, 0.0); out.write(old.value().front()); }
+  std::ifstream in(plain);
+  std::string header;
+  std::getline(in, header);
+  EXPECT_EQ(header, recording_csv_header());
 }
 
 }  // namespace
