@@ -1,8 +1,12 @@
 #include "collision/mesh_bvh.h"
 
+#include "collision/huge_pages.h"
 #include "collision/segment_triangle.h"
+#include "collision/two_halves.h"
 
 #include <algorithm>
+#include <array>
+#include <atomic>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -25,43 +29,18 @@ void free_aligned(std::byte* p) { std::free(p); }
 
 btVector3 to_bt(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
-/// Bullet's stackless layout, checked node by node: each inner node is followed by its
-/// two subtrees and its escape index spans exactly them, the root spans the whole array,
-/// and the leaves name every one of `triangles` triangles once. A tree a file hands us is
-/// walked by escape indices, so one wrong index would read past the array or skip faces.
-bool is_whole_tree_over(std::span<const btQuantizedBvhNode> nodes, std::size_t triangles) {
-  struct Open {
-    std::size_t end;   // one past the inner node's last node
-    int children = 0;  // of its two subtrees, how many have begun
-  };
-  std::vector<Open> open;
-  std::vector<bool> named(triangles, false);
-  std::size_t leaves = 0;
-  for (std::size_t i = 0; i < nodes.size(); ++i) {
-    const btQuantizedBvhNode& node = nodes[i];
-    const std::size_t limit = open.empty() ? nodes.size() : open.back().end;
-    if (open.empty() ? i != 0 : ++open.back().children > 2) return false;
-    if (node.isLeafNode()) {
-      const std::uint64_t triangle = MeshBvh::leaf_triangle(node);
-      if (triangle >= triangles || named[triangle]) return false;
-      named[triangle] = true;
-      ++leaves;
-      if (open.empty() && nodes.size() != 1) return false;  // a leaf root is the whole tree
-      // Every subtree ends with a leaf: close the inner nodes that end here.
-      while (!open.empty() && open.back().end == i + 1) {
-        if (open.back().children != 2) return false;
-        open.pop_back();
-      }
-    } else {
-      // Stored negated; INT_MIN has no positive counterpart.
-      const std::int64_t span = -static_cast<std::int64_t>(node.m_escapeIndexOrTriangleIndex);
-      if (span < 3 || static_cast<std::uint64_t>(span) > limit - i) return false;
-      if (open.empty() && static_cast<std::size_t>(span) != nodes.size()) return false;
-      open.push_back(Open{i + static_cast<std::size_t>(span)});
-    }
+/// Leaves a node's box must hold: a node's parent's box, and a leaf's quantized triangle.
+bool box_holds(const btQuantizedBvhNode& outer, const unsigned short* min, const unsigned short* max) {
+  for (int k = 0; k < 3; ++k) {
+    if (outer.m_quantizedAabbMin[k] > min[k] || outer.m_quantizedAabbMax[k] < max[k]) return false;
   }
-  return open.empty() && leaves == triangles;
+  return true;
 }
+
+/// Node arrays shorter than this are checked on one thread.
+constexpr std::size_t kParallelNodes = std::size_t{1} << 20;
+/// How far ahead of a check its node pages are mapped, and how far behind released.
+constexpr std::size_t kPageWindowNodes = std::size_t{1} << 20;
 
 }  // namespace
 
@@ -86,11 +65,14 @@ void MeshBvh::make_interface() {
     part.m_vertexType = PHY_DOUBLE;
     interface_->addIndexedMesh(part, PHY_INTEGER);
   }
-  face_normals_O_.resize(mesh_->triangles.size());
-  for (std::size_t i = 0; i < mesh_->triangles.size(); ++i) {
-    const TriangleIndices& t = mesh_->triangles[i];
-    face_normals_O_[i] = unit_face_normal(mesh_->vertices_m[t[0]], mesh_->vertices_m[t[1]], mesh_->vertices_m[t[2]]);
-  }
+  resize_in_huge_pages(face_normals_O_, mesh_->triangles.size());
+  in_two_halves(mesh_->triangles.size(), kParallelNodes, [this](std::size_t first, std::size_t last) {
+    for (std::size_t i = first; i < last; ++i) {
+      const TriangleIndices& t = mesh_->triangles[i];
+      face_normals_O_[i] = unit_face_normal(mesh_->vertices_m[t[0]], mesh_->vertices_m[t[1]], mesh_->vertices_m[t[2]]);
+    }
+    return true;
+  });
   bounds_ = mesh_bounds(*mesh_);
   const double extent = bounds_.sizes().maxCoeff();
   bvh_scale_ = extent > 0.0 ? kBvhExtentUnits / extent : 1.0;
@@ -126,7 +108,8 @@ std::unique_ptr<MeshBvh> MeshBvh::from_serialized(std::shared_ptr<const Triangle
 }
 
 std::unique_ptr<MeshBvh> MeshBvh::adopt_serialized(std::shared_ptr<const TriangleMesh> mesh,
-                                                   std::span<std::byte> serialized, std::shared_ptr<void> storage) {
+                                                   std::span<std::byte> serialized, std::shared_ptr<void> storage,
+                                                   TreePages pages) {
   if (!mesh || mesh->triangles.empty() || serialized.empty() || serialized.size() > kMaxSerializedBytes ||
       reinterpret_cast<std::uintptr_t>(serialized.data()) % kBulletAlignment != 0) {
     return nullptr;
@@ -146,52 +129,102 @@ std::unique_ptr<MeshBvh> MeshBvh::adopt_serialized(std::shared_ptr<const Triangl
   out->adopted_tree_ = tree;  // from here on the destructor releases it
   if (!tree->isQuantized()) return nullptr;
   const auto& nodes = tree->getQuantizedNodeArray();
-  if (nodes.size() <= 0 || !is_whole_tree_over({&nodes[0], static_cast<std::size_t>(nodes.size())},
-                                              out->mesh_->triangles.size())) {
-    return nullptr;
-  }
+  if (nodes.size() <= 0) return nullptr;
   // The subtree headers and the other walks would trust the file's other fields; the
-  // stackless walk needs only the nodes checked above. The quantization is this mesh's,
+  // stackless walk needs only the nodes, checked below. The quantization is this mesh's,
   // set as the build sets it, not the file's.
   tree->setTraversalMode(btQuantizedBvh::TRAVERSAL_STACKLESS);
   tree->setQuantizationValues(to_bt(out->bounds_.min() * out->bvh_scale_), to_bt(out->bounds_.max() * out->bvh_scale_));
+  out->tree_ = tree;  // quantize() for the check; the nodes are adopted only once checked
+  if (!out->tree_checks_out({&nodes[0], static_cast<std::size_t>(nodes.size())}, pages)) return nullptr;
   out->adopt_tree(tree);
-  if (!out->boxes_hold_their_triangles()) return nullptr;
   out->shape_ = std::make_unique<btBvhTriangleMeshShape>(out->interface_.get(), true, /*buildBvh=*/false);
   // Same scaling as the interface, or Bullet resets it and re-walks the tree.
   out->shape_->setOptimizedBvh(adopted, btVector3(out->bvh_scale_, out->bvh_scale_, out->bvh_scale_));
   return out;
 }
 
-bool MeshBvh::boxes_hold_their_triangles() const {
-  auto holds = [](const btQuantizedBvhNode& outer, const unsigned short* min, const unsigned short* max) {
-    for (int k = 0; k < 3; ++k) {
-      if (outer.m_quantizedAabbMin[k] > min[k] || outer.m_quantizedAabbMax[k] < max[k]) return false;
-    }
-    return true;
+bool MeshBvh::subtree_checks_out(std::span<const btQuantizedBvhNode> nodes, std::size_t begin, std::size_t end,
+                                 const btQuantizedBvhNode* parent, TreeCheckState& state) const {
+  struct Open {
+    std::size_t end;  // one past the inner node's last node
+    const btQuantizedBvhNode* node;
+    int children = 0;  // of its two subtrees, how many have begun
   };
-  // The tree's shape is checked (is_whole_tree_over): each node's parent is the nearest
-  // inner node whose span still holds it.
-  std::vector<std::ptrdiff_t> ends;
-  std::vector<const btQuantizedBvhNode*> parents;
-  for (std::ptrdiff_t i = 0; i < node_count_; ++i) {
-    const btQuantizedBvhNode& node = nodes_[i];
-    while (!ends.empty() && ends.back() <= i) {
-      ends.pop_back();
-      parents.pop_back();
+  std::vector<Open> open;
+  std::size_t window = begin;  // nodes before this are released (TreePages::Release)
+  for (std::size_t i = begin; i < end; ++i) {
+    if (state.release_pages && i % kPageWindowNodes == 0) {
+      populate_for_reading(&nodes[i], std::min(kPageWindowNodes, end - i) * sizeof(btQuantizedBvhNode));
+      if (i > window) {
+        release_file_pages(&nodes[window], (i - window) * sizeof(btQuantizedBvhNode));
+        window = i;
+      }
     }
-    if (!parents.empty() && !holds(*parents.back(), node.m_quantizedAabbMin, node.m_quantizedAabbMax)) return false;
+    const btQuantizedBvhNode& node = nodes[i];
+    const std::size_t limit = open.empty() ? end : open.back().end;
+    if (open.empty() ? i != begin : ++open.back().children > 2) return false;
+    const btQuantizedBvhNode* holder = open.empty() ? parent : open.back().node;
+    if (holder != nullptr && !box_holds(*holder, node.m_quantizedAabbMin, node.m_quantizedAabbMax)) return false;
     if (node.isLeafNode()) {
+      const std::uint64_t triangle = leaf_triangle(node);
+      if (triangle >= mesh_->triangles.size()) return false;
+      const std::uint64_t bit = std::uint64_t{1} << (triangle % 64);
+      if ((state.named[triangle / 64].fetch_or(bit, std::memory_order_relaxed) & bit) != 0) return false;
+      state.leaves.fetch_add(1, std::memory_order_relaxed);
       Eigen::AlignedBox3d box_O;
-      for (const auto v : mesh_->triangles[leaf_triangle(node)]) box_O.extend(mesh_->vertices_m[v]);
+      for (const auto v : mesh_->triangles[triangle]) box_O.extend(mesh_->vertices_m[v]);
       const QuantizedBox q = quantize(box_O);
-      if (!holds(node, q.min.data(), q.max.data())) return false;
+      if (!box_holds(node, q.min.data(), q.max.data())) return false;
+      if (open.empty() && end - begin != 1) return false;  // a leaf root is the whole subtree
+      // Every subtree ends with a leaf: close the inner nodes that end here.
+      while (!open.empty() && open.back().end == i + 1) {
+        if (open.back().children != 2) return false;
+        open.pop_back();
+      }
     } else {
-      ends.push_back(i + node.getEscapeIndex());
-      parents.push_back(&node);
+      // Stored negated; INT_MIN has no positive counterpart.
+      const std::int64_t span = -static_cast<std::int64_t>(node.m_escapeIndexOrTriangleIndex);
+      if (span < 3 || static_cast<std::uint64_t>(span) > limit - i) return false;
+      if (open.empty() && static_cast<std::size_t>(span) != end - begin) return false;
+      open.push_back(Open{i + static_cast<std::size_t>(span), &node});
     }
   }
-  return true;
+  if (state.release_pages && end > window) {
+    release_file_pages(&nodes[window], (end - window) * sizeof(btQuantizedBvhNode));
+  }
+  return open.empty();
+}
+
+bool MeshBvh::tree_checks_out(std::span<const btQuantizedBvhNode> nodes, TreePages pages) const {
+  const std::size_t triangles = mesh_->triangles.size();
+  TreeCheckState state{std::vector<std::atomic<std::uint64_t>>((triangles + 63) / 64), {0},
+                       pages == TreePages::Release};
+  const std::size_t n = nodes.size();
+  if (n == 0) return false;
+  bool whole = false;
+  if (nodes[0].isLeafNode() || n < kParallelNodes) {
+    whole = subtree_checks_out(nodes, 0, n, nullptr, state);
+  } else {
+    // The root's two subtrees are checked side by side, each against the root's box. The
+    // root spans the whole array, and its first subtree starts right after it.
+    const auto span_of = [&](std::size_t i) {
+      return nodes[i].isLeafNode() ? std::int64_t{1} : -static_cast<std::int64_t>(nodes[i].m_escapeIndexOrTriangleIndex);
+    };
+    const std::int64_t span = span_of(0);
+    const std::int64_t first_span = span_of(1);
+    if (first_span < 1) return false;
+    const std::size_t first_end = 1 + static_cast<std::size_t>(first_span);
+    if (span != static_cast<std::int64_t>(n) || first_end < 2 || first_end >= n) return false;
+    const std::array<std::size_t, 3> bounds{1, first_end, n};
+    whole = in_two_halves(2, 2, [&](std::size_t first, std::size_t last) {
+      for (std::size_t k = first; k < last; ++k) {
+        if (!subtree_checks_out(nodes, bounds[k], bounds[k + 1], &nodes[0], state)) return false;
+      }
+      return true;
+    });
+  }
+  return whole && state.leaves.load() == triangles;
 }
 
 MeshBvh::~MeshBvh() {

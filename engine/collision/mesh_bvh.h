@@ -10,6 +10,7 @@
 #include <btBulletCollisionCommon.h>
 
 #include <array>
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -45,8 +46,14 @@ class MeshBvh {
   /// alive as long as the tree. Bullet writes only the tree's header in it, so the nodes
   /// of a mapped file stay shared pages, read as the tree's walks reach them. Returns
   /// nullptr as from_serialized() does.
+  /// With TreePages::Release, `serialized` must lie in a private file mapping that nothing
+  /// wrote beyond Bullet's header: the check maps the node pages a range at a time and lets
+  /// each range go behind it, so a tree of gigabytes is never resident at once, and its
+  /// pages come back from the file as walks reach them.
+  enum class TreePages { Keep, Release };
   static std::unique_ptr<MeshBvh> adopt_serialized(std::shared_ptr<const TriangleMesh> mesh,
-                                                   std::span<std::byte> serialized, std::shared_ptr<void> storage);
+                                                   std::span<std::byte> serialized, std::shared_ptr<void> storage,
+                                                   TreePages pages = TreePages::Keep);
 
   ~MeshBvh();
   MeshBvh(const MeshBvh&) = delete;
@@ -141,7 +148,21 @@ class MeshBvh {
   MeshBvh() = default;
   void make_interface();
   void adopt_tree(btQuantizedBvh* tree);
-  [[nodiscard]] bool boxes_hold_their_triangles() const;
+  struct TreeCheckState {
+    std::vector<std::atomic<std::uint64_t>> named;  // one bit per triangle a leaf named
+    std::atomic<std::size_t> leaves;
+    bool release_pages;
+  };
+  /// A tree a file hands us, checked node by node before it is walked: Bullet's stackless
+  /// layout (each inner node followed by its two subtrees, its escape index spanning
+  /// exactly them, the root the whole array), leaves naming every triangle once, and every
+  /// box holding its children's boxes and its leaf's triangle. The root's two subtrees are
+  /// checked on two threads.
+  [[nodiscard]] bool tree_checks_out(std::span<const btQuantizedBvhNode> nodes, TreePages pages) const;
+  /// The check of the subtree rooted at `begin` that must span [begin, end), its root
+  /// held by `parent`'s box (none for the tree's root).
+  [[nodiscard]] bool subtree_checks_out(std::span<const btQuantizedBvhNode> nodes, std::size_t begin, std::size_t end,
+                                        const btQuantizedBvhNode* parent, TreeCheckState& state) const;
 
   std::shared_ptr<const TriangleMesh> mesh_;
   std::vector<Eigen::Vector3d> face_normals_O_;

@@ -1,5 +1,6 @@
 #include "mesh_io/mesh_cache.h"
 
+#include "collision/huge_pages.h"
 #include "mesh_io/byte_count_text.h"
 #include "mesh_io/mesh_cache_entry.h"
 #include "mesh_io/mesh_cache_eviction.h"
@@ -22,6 +23,7 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <future>
 #include <limits>
 #include <mutex>
 #include <set>
@@ -125,70 +127,87 @@ std::optional<Layout> check_header(const FileHeader& h, const MeshCacheKey& key,
   return layout;
 }
 
-/// Spot check that the BVH was built for this mesh in the frame MeshBvh uses now: each
-/// sampled triangle must be found by a query with its own bounding box. Catches a tree
-/// from an older MeshBvh convention that checksums cannot.
-bool bvh_finds_its_triangles(const MeshBvh& bvh) {
-  const TriangleMesh& m = bvh.mesh();
-  const std::size_t n = m.triangles.size();
-  const std::size_t samples = std::min<std::size_t>(n, 64);
-  for (std::size_t k = 0; k <= samples; ++k) {
-    const auto t = static_cast<std::uint32_t>(k == samples ? n - 1 : k * n / samples);
-    Eigen::AlignedBox3d box;
-    for (const auto v : m.triangles[t]) box.extend(m.vertices_m[v]);
-    bool found = false;
-    bvh.for_each_triangle_overlapping(box, [&](std::uint32_t i) { found = found || i == t; });
-    if (!found) return false;
+/// XXH3-128 of `bytes`, a window at a time: each window's pages are mapped in one call
+/// (not a fault each), and those from `release_from` on are let go once hashed, so a large
+/// entry is never resident at once (the tree's check maps its pages again).
+XXH128_hash_t hash_mapped(std::span<const std::byte> bytes, const std::byte* release_from) {
+  constexpr std::size_t kWindow = std::size_t{64} << 20;
+  std::unique_ptr<XXH3_state_t, XXH_errorcode (*)(XXH3_state_t*)> state(XXH3_createState(), &XXH3_freeState);
+  if (!state || XXH3_128bits_reset(state.get()) != XXH_OK) return XXH128_hash_t{0, 0};
+  for (std::size_t at = 0; at < bytes.size(); at += kWindow) {
+    const std::span<const std::byte> window = bytes.subspan(at, std::min(kWindow, bytes.size() - at));
+    populate_for_reading(window.data(), window.size());
+    XXH3_128bits_update(state.get(), window.data(), window.size());
+    if (window.data() + window.size() > release_from) {
+      const std::byte* from = std::max(window.data(), release_from);
+      release_file_pages(from, static_cast<std::size_t>(window.data() + window.size() - from));
+    }
   }
-  return true;
+  return XXH3_128bits_digest(state.get());
 }
 
-/// Builds the mesh and BVH from a whole cache file image whose header passed
-/// check_header(), adopting the tree in place in the image (which `image_owner` keeps
-/// alive); returns null with the reason if the payload fails validation.
-std::unique_ptr<MeshBvh> parse_payload(const FileHeader& h, const Layout& layout, std::span<std::byte> image,
-                                       const std::shared_ptr<void>& image_owner, std::string& why) {
-  const XXH128_hash_t payload = XXH3_128bits(image.data() + sizeof(FileHeader), image.size() - sizeof(FileHeader));
-  if (payload.low64 != h.payload_hash_low || payload.high64 != h.payload_hash_high) {
-    why = "payload checksum mismatch";
-    return nullptr;
-  }
-  auto mesh = std::make_shared<TriangleMesh>();
+/// Copies the sections before the tree into `mesh` (in huge pages) and checks them: every
+/// index in range and every corner distinct, every vertex and normal finite. Empty if
+/// they hold, else why not.
+std::string copy_mesh_sections(const FileHeader& h, const Layout& layout, std::span<const std::byte> image,
+                               TriangleMesh& mesh) {
   const auto nv = static_cast<std::size_t>(h.vertex_count);
   const auto nt = static_cast<std::size_t>(h.triangle_count);
-  mesh->vertices_m.resize(nv);
-  mesh->triangles.resize(nt);
-  mesh->vertex_normals.resize(nv);
-  std::memcpy(static_cast<void*>(mesh->vertices_m.data()), image.data() + layout.vertices, nv * sizeof(Eigen::Vector3d));
-  std::memcpy(mesh->triangles.data(), image.data() + layout.triangles, nt * sizeof(TriangleIndices));
-  std::memcpy(static_cast<void*>(mesh->vertex_normals.data()), image.data() + layout.normals, nv * sizeof(Eigen::Vector3d));
+  resize_in_huge_pages(mesh.vertices_m, nv);
+  resize_in_huge_pages(mesh.triangles, nt);
+  resize_in_huge_pages(mesh.vertex_normals, nv);
+  std::memcpy(static_cast<void*>(mesh.vertices_m.data()), image.data() + layout.vertices, nv * sizeof(Eigen::Vector3d));
+  std::memcpy(mesh.triangles.data(), image.data() + layout.triangles, nt * sizeof(TriangleIndices));
+  std::memcpy(static_cast<void*>(mesh.vertex_normals.data()), image.data() + layout.normals,
+              nv * sizeof(Eigen::Vector3d));
   // A matching checksum makes accidental corruption vanishingly unlikely; these checks
   // are cheap and keep a hand-made file from breaking the mesh invariants.
   const auto n32 = static_cast<std::uint32_t>(nv);
-  for (const auto& t : mesh->triangles) {
+  for (const auto& t : mesh.triangles) {
     if (t[0] >= n32 || t[1] >= n32 || t[2] >= n32 || t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
-      why = "triangle index out of range";
-      return nullptr;
+      return "triangle index out of range";
     }
   }
   for (std::size_t i = 0; i < nv; ++i) {
-    if (!mesh->vertices_m[i].allFinite() || !mesh->vertex_normals[i].allFinite()) {
-      why = "non-finite vertex data";
-      return nullptr;
-    }
+    if (!mesh.vertices_m[i].allFinite() || !mesh.vertex_normals[i].allFinite()) return "non-finite vertex data";
   }
-  // The sections before the tree are copied into the mesh: their pages leave memory, and
-  // the tree is adopted where it lies.
-  const std::size_t page = static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
-  if (const std::size_t copied = layout.bvh / page * page; copied > 0) ::madvise(image.data(), copied, MADV_DONTNEED);
-  auto bvh = MeshBvh::adopt_serialized(std::move(mesh), image.subspan(layout.bvh, static_cast<std::size_t>(h.bvh_bytes)),
-                                       image_owner);
-  if (!bvh) {
-    why = "invalid serialized BVH";
-  } else if (!bvh_finds_its_triangles(*bvh)) {
-    why = "BVH does not match the mesh";
-    bvh.reset();
+  return {};
+}
+
+/// Builds the mesh and BVH from a whole cache file image whose header passed
+/// check_header(), adopting the tree in place in the image (a private mapping of the
+/// file, which `image_owner` keeps alive); returns null with the reason if the payload
+/// fails validation.
+std::unique_ptr<MeshBvh> parse_payload(const FileHeader& h, const Layout& layout, std::span<std::byte> image,
+                                       const std::shared_ptr<void>& image_owner, std::string& why) {
+  // The checksum is read on a helper thread while this one copies the mesh out of the
+  // entry; the tree is adopted only after both (Bullet writes its header where it lies).
+  const std::span<const std::byte> payload = std::span<const std::byte>(image).subspan(sizeof(FileHeader));
+  std::future<XXH128_hash_t> hashed;
+  try {
+    hashed = std::async(std::launch::async, hash_mapped, payload, image.data() + layout.bvh);
+  } catch (const std::system_error&) {
+    hashed = std::async(std::launch::deferred, hash_mapped, payload, image.data() + layout.bvh);
   }
+  auto mesh = std::make_shared<TriangleMesh>();
+  why = copy_mesh_sections(h, layout, image, *mesh);
+  const XXH128_hash_t sum = hashed.get();
+  if (sum.low64 != h.payload_hash_low || sum.high64 != h.payload_hash_high) {
+    why = "payload checksum mismatch";
+    return nullptr;
+  }
+  if (!why.empty()) return nullptr;
+  // From here on the tree's pages are read where walks go: a fault maps its own page, not
+  // its neighbours (the check maps its ranges itself). The sections before the tree were
+  // copied into the mesh: their pages leave memory.
+  ::madvise(image.data(), image.size(), MADV_RANDOM);
+  release_file_pages(image.data(), layout.bvh);
+  const std::span<std::byte> tree = image.subspan(layout.bvh, static_cast<std::size_t>(h.bvh_bytes));
+  auto bvh = MeshBvh::adopt_serialized(std::move(mesh), tree, image_owner, MeshBvh::TreePages::Release);
+  // Its check holds every leaf's box to its triangle and every box to its children's, so
+  // a query by a triangle's own box finds that triangle: a tree built to another
+  // convention fails it as a hand-made one does.
+  if (!bvh) why = "invalid serialized BVH";
   return bvh;
 }
 
@@ -227,14 +246,12 @@ std::unique_ptr<MeshBvh> read_cache_file(const std::filesystem::path& path, cons
     return nullptr;
   }
   const std::shared_ptr<void> image_owner(mapped, [size](void* p) { ::munmap(p, size); });
-  ::madvise(mapped, size, MADV_SEQUENTIAL);  // the checksum reads it through once
   const std::span<std::byte> image(static_cast<std::byte*>(mapped), size);
   if (std::memcmp(image.data(), &h, sizeof h) != 0) {
     why = "file changed while read";
     return nullptr;
   }
   auto bvh = parse_payload(h, *layout, image, image_owner, why);
-  if (bvh) ::madvise(mapped, size, MADV_RANDOM);  // from now on the walks read where the hand is
   if (report) progress(what, 1.0);
   return bvh;
 }

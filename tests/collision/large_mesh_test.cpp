@@ -9,6 +9,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstring>
+#include <functional>
 #include <vector>
 
 namespace mhd {
@@ -73,6 +75,80 @@ TEST(LargeMesh, LeavesPastTwoToTheTwentyOneNameTheirTrianglesBuiltAndAdopted) {
   const auto adopted = MeshBvh::from_serialized(mesh, built.serialize_bvh());
   ASSERT_NE(adopted, nullptr) << "a valid tree of a mesh past 2^21 triangles was refused";
   expect_names_the_patch(*adopted, "adopted");
+}
+
+/// A serialized tree of mesh_past_one_bullet_part() and where its nodes lie in it: large
+/// enough (over 2^20 nodes) that an adopted copy is checked as two halves on two threads.
+struct SerializedLargeTree {
+  std::shared_ptr<TriangleMesh> mesh = test::mesh_past_one_bullet_part();
+  std::vector<std::byte> bytes;
+  std::size_t nodes_at = 0, node_count = 0, first_end = 0;  // first_end: where the root's second subtree starts
+
+  SerializedLargeTree() {
+    const MeshBvh built(mesh);
+    bytes = built.serialize_bvh();
+    auto& shape = const_cast<btBvhTriangleMeshShape&>(built.shape());  // NOLINT: Bullet is not const-correct
+    auto& nodes = shape.getOptimizedBvh()->getQuantizedNodeArray();
+    node_count = static_cast<std::size_t>(nodes[0].getEscapeIndex());
+    first_end = 1 + (nodes[1].isLeafNode() ? 1 : static_cast<std::size_t>(nodes[1].getEscapeIndex()));
+    // Bullet's format: the tree object, then its nodes.
+    nodes_at = sizeof(btQuantizedBvh) + btQuantizedBvh::getAlignmentSerializationPadding();
+    if (std::memcmp(bytes.data() + nodes_at, &nodes[0], node_count * sizeof(btQuantizedBvhNode)) != 0) nodes_at = 0;
+  }
+  btQuantizedBvhNode* node(std::vector<std::byte>& copy, std::size_t i) const {
+    return reinterpret_cast<btQuantizedBvhNode*>(copy.data() + nodes_at) + i;
+  }
+  std::size_t leaf_from(std::vector<std::byte>& copy, std::size_t i) const {
+    while (!node(copy, i)->isLeafNode()) ++i;
+    return i;
+  }
+};
+
+TEST(LargeMesh, ATreeCheckedInTwoHalvesRefusesAFaultInEitherHalfAndAcceptsAWholeOne) {
+  static const SerializedLargeTree tree;
+  ASSERT_NE(tree.nodes_at, 0u) << "the nodes lie after the tree object";
+  ASSERT_GE(tree.node_count, std::size_t{1} << 20);
+  ASSERT_GT(tree.first_end, 2u);
+  ASSERT_LT(tree.first_end, tree.node_count);
+  // Whole, it is adopted and answers.
+  const auto whole = MeshBvh::from_serialized(tree.mesh, tree.bytes);
+  ASSERT_NE(whole, nullptr);
+  expect_names_the_patch(*whole, "checked in two halves");
+
+  const auto refused = [&](const char* what, const std::function<void(std::vector<std::byte>&)>& edit) {
+    auto copy = tree.bytes;
+    edit(copy);
+    EXPECT_EQ(MeshBvh::from_serialized(tree.mesh, copy), nullptr) << what;
+  };
+  refused("a leaf of the second half naming a triangle of the first", [&](std::vector<std::byte>& c) {
+    const std::size_t a = tree.leaf_from(c, tree.first_end / 2);
+    const std::size_t b = tree.leaf_from(c, tree.first_end + (tree.node_count - tree.first_end) / 2);
+    tree.node(c, b)->m_escapeIndexOrTriangleIndex = tree.node(c, a)->m_escapeIndexOrTriangleIndex;
+  });
+  refused("a leaf of the first half naming a triangle of the second", [&](std::vector<std::byte>& c) {
+    const std::size_t a = tree.leaf_from(c, tree.first_end / 3);
+    const std::size_t b = tree.leaf_from(c, tree.node_count - 9);
+    tree.node(c, a)->m_escapeIndexOrTriangleIndex = tree.node(c, b)->m_escapeIndexOrTriangleIndex;
+  });
+  refused("a leaf box of the second half shrunk off its triangle", [&](std::vector<std::byte>& c) {
+    btQuantizedBvhNode* leaf = tree.node(c, tree.leaf_from(c, tree.node_count - 100));
+    leaf->m_quantizedAabbMax[1] = leaf->m_quantizedAabbMin[1];
+  });
+  refused("the first subtree spanning into the second", [&](std::vector<std::byte>& c) {
+    tree.node(c, 1)->m_escapeIndexOrTriangleIndex -= 2;  // stored negated: two nodes further
+  });
+  refused("the first subtree ending early", [&](std::vector<std::byte>& c) {
+    tree.node(c, 1)->m_escapeIndexOrTriangleIndex += 2;
+  });
+  refused("an inner node of the second half turned leaf", [&](std::vector<std::byte>& c) {
+    std::size_t inner = tree.first_end + 1;
+    while (tree.node(c, inner)->isLeafNode()) ++inner;
+    tree.node(c, inner)->m_escapeIndexOrTriangleIndex = 0;
+  });
+  refused("the second subtree's root outside the root's box", [&](std::vector<std::byte>& c) {
+    btQuantizedBvhNode* root = tree.node(c, 0);
+    root->m_quantizedAabbMax[2] = root->m_quantizedAabbMin[2];
+  });
 }
 
 TEST(LargeMesh, ATreeTooLargeForBulletsSerializedFormatIsNotSerialized) {

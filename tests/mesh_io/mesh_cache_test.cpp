@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <climits>
 #include <cstring>
 #include <functional>
@@ -208,6 +209,22 @@ std::uint64_t mapped_bytes_of(const std::filesystem::path& file) {
     if (line.size() <= name.size() || !line.ends_with(name) || line[line.size() - name.size() - 1] != ' ') continue;
     const auto dash = line.find('-'), space = line.find(' ');
     bytes += std::stoull(line.substr(dash + 1, space - dash - 1), nullptr, 16) - std::stoull(line.substr(0, dash), nullptr, 16);
+  }
+  return bytes;
+}
+
+// Bytes of `file`'s mappings in this process that are resident (/proc/self/smaps, Rss).
+std::uint64_t resident_bytes_of(const std::filesystem::path& file) {
+  std::ifstream smaps("/proc/self/smaps");
+  std::uint64_t bytes = 0;
+  bool in_file = false;
+  const std::string name = file.string();
+  for (std::string line; std::getline(smaps, line);) {
+    if (line.find('-') < line.find(' ') && std::isxdigit(static_cast<unsigned char>(line[0])) != 0) {
+      in_file = line.size() > name.size() && line.ends_with(name) && line[line.size() - name.size() - 1] == ' ';
+    } else if (in_file && line.starts_with("Rss:")) {
+      bytes += std::stoull(line.substr(4)) * 1024;
+    }
   }
   return bytes;
 }
@@ -410,6 +427,31 @@ TEST_F(MeshCacheTest, AMeshPastOneBulletPartRoundTripsAndIsTouchedWhereItsLastTr
   EXPECT_EQ(from_cache, query(*cold->bvh, patch));
   EXPECT_TRUE(std::includes(from_cache.begin(), from_cache.end(), must.begin(), must.end()));
   EXPECT_GE(from_cache.front(), test::kPatchFirstTriangle);
+}
+
+TEST_F(MeshCacheTest, AHitLetsTheEntrysPagesGoOnceCheckedAndTheyComeBackWhereTheTreeIsWalked) {
+  // After a hit the mesh is copied out and the tree checked; the entry's pages leave the
+  // process (it is mapped, not resident), and a walk brings back the pages it reads, with
+  // the answers of the built tree.
+  const auto file = dir_ / "past_one_part.ply";
+  test::write_binary_ply(file, *test::mesh_past_one_bullet_part());
+  MeshCache cache(cache_dir_);
+  cache.set_limit_bytes(std::uint64_t{1} << 30);
+  const Result<CachedMesh, MeshLoadError> cold = cache.load(file, Eigen::Vector3d::Ones());
+  ASSERT_TRUE(cold.ok()) << cold.error_text();
+  const Result<CachedMesh, MeshLoadError> warm = cache.load(file, Eigen::Vector3d::Ones());
+  ASSERT_TRUE(warm.ok()) << warm.error_text();
+  ASSERT_EQ(warm->outcome, CacheOutcome::Hit) << warm->rejected_reason;
+  const std::uint64_t entry_bytes = std::filesystem::file_size(warm->cache_file);
+  ASSERT_GE(mapped_bytes_of(warm->cache_file), entry_bytes);
+  const std::uint64_t after_load = resident_bytes_of(warm->cache_file);
+  EXPECT_LT(after_load, entry_bytes / 10) << "of " << entry_bytes << " bytes mapped";
+  // Every triangle is found again from the walked pages, as the built tree finds it.
+  for (const auto& box : random_boxes(mesh_bounds(warm->mesh()), 200)) {
+    ASSERT_EQ(query(*warm->bvh, box), query(*cold->bvh, box));
+  }
+  EXPECT_EQ(query(*warm->bvh, warm->bvh->bounds()).size(), warm->mesh().triangle_count());
+  EXPECT_GT(resident_bytes_of(warm->cache_file), after_load);
 }
 
 /// An entry's checksums say only that the bytes are the ones written, not that a careful
