@@ -18,7 +18,6 @@
 #include <mutex>
 #include <random>
 #include <stdexcept>
-#include <unordered_map>
 
 namespace mhd::verify {
 namespace {
@@ -55,20 +54,10 @@ double first_param(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Res
 }
 
 // Bit pattern of a vertex for exact welding; -0.0 and 0.0 weld.
-struct VertexKey {
-  std::array<std::uint64_t, 3> bits;
-  friend bool operator==(const VertexKey&, const VertexKey&) = default;
-};
-struct VertexKeyHash {
-  std::size_t operator()(const VertexKey& k) const {
-    std::uint64_t h = 0x9e3779b97f4a7c15ULL;
-    for (std::uint64_t b : k.bits) h = (h ^ b) * 0x100000001b3ULL + (h >> 29);
-    return static_cast<std::size_t>(h);
-  }
-};
+using VertexKey = std::array<std::uint64_t, 3>;
 VertexKey key_of(const Eigen::Vector3d& v) {
-  return {{std::bit_cast<std::uint64_t>(v.x() + 0.0), std::bit_cast<std::uint64_t>(v.y() + 0.0),
-           std::bit_cast<std::uint64_t>(v.z() + 0.0)}};
+  return {std::bit_cast<std::uint64_t>(v.x() + 0.0), std::bit_cast<std::uint64_t>(v.y() + 0.0),
+          std::bit_cast<std::uint64_t>(v.z() + 0.0)};
 }
 
 bool triangle_indices_valid(const TriangleIndices& t, std::size_t vertex_count) {
@@ -76,32 +65,44 @@ bool triangle_indices_valid(const TriangleIndices& t, std::size_t vertex_count) 
 }
 
 // Even edge incidence after exact welding (a mod-2 cycle: ray parity is well defined).
+// Sorted arrays, not hash maps: at tens of millions of triangles a map's nodes would take
+// more memory than the oracle itself, and a freed array goes back to the system.
 bool mesh_is_closed(const TriangleMesh& mesh) {
   const std::size_t n = mesh.vertices_m.size();
-  std::unordered_map<VertexKey, std::uint32_t, VertexKeyHash> weld;
-  weld.reserve(n);
+  // Weld: vertices with identical coordinates share the id of the first in sorted order.
   std::vector<std::uint32_t> canonical(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    auto [it, inserted] = weld.try_emplace(key_of(mesh.vertices_m[i]), static_cast<std::uint32_t>(weld.size()));
-    canonical[i] = it->second;
+  {
+    std::vector<std::uint32_t> order(n);
+    for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<std::uint32_t>(i);
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+      return key_of(mesh.vertices_m[a]) < key_of(mesh.vertices_m[b]);
+    });
+    for (std::size_t k = 0; k < n; ++k) {
+      const bool same = k > 0 && key_of(mesh.vertices_m[order[k]]) == key_of(mesh.vertices_m[order[k - 1]]);
+      canonical[order[k]] = same ? canonical[order[k - 1]] : order[k];
+    }
   }
-  std::unordered_map<std::uint64_t, std::uint32_t> edge_count;
-  edge_count.reserve(mesh.triangles.size() * 2);
-  std::size_t used = 0;
+  std::vector<std::uint64_t> edges;
+  edges.reserve(mesh.triangles.size() * 3);
   for (const TriangleIndices& t : mesh.triangles) {
     if (!triangle_indices_valid(t, n)) continue;
     const std::array<std::uint32_t, 3> c{canonical[t[0]], canonical[t[1]], canonical[t[2]]};
     if (c[0] == c[1] || c[1] == c[2] || c[2] == c[0]) continue;
-    ++used;
-    for (int e = 0; e < 3; ++e) {
-      const std::uint32_t u = c[static_cast<std::size_t>(e)];
-      const std::uint32_t v = c[static_cast<std::size_t>((e + 1) % 3)];
-      const std::uint64_t key = (std::uint64_t{std::min(u, v)} << 32) | std::max(u, v);
-      ++edge_count[key];
+    for (std::size_t e = 0; e < 3; ++e) {
+      const std::uint32_t u = c[e];
+      const std::uint32_t v = c[(e + 1) % 3];
+      edges.push_back((std::uint64_t{std::min(u, v)} << 32) | std::max(u, v));
     }
   }
-  if (used == 0) return false;
-  return std::all_of(edge_count.begin(), edge_count.end(), [](const auto& kv) { return kv.second % 2 == 0; });
+  if (edges.empty()) return false;
+  std::sort(edges.begin(), edges.end());
+  for (std::size_t k = 0; k < edges.size();) {
+    std::size_t run = k + 1;
+    while (run < edges.size() && edges[run] == edges[k]) ++run;
+    if ((run - k) % 2 != 0) return false;
+    k = run;
+  }
+  return true;
 }
 
 }  // namespace
