@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cctype>
 #include <climits>
+#include <cmath>
 #include <cstring>
 #include <functional>
 #include <cstdlib>
@@ -452,6 +453,44 @@ TEST_F(MeshCacheTest, AHitLetsTheEntrysPagesGoOnceCheckedAndTheyComeBackWhereThe
   }
   EXPECT_EQ(query(*warm->bvh, warm->bvh->bounds()).size(), warm->mesh().triangle_count());
   EXPECT_GT(resident_bytes_of(warm->cache_file), after_load);
+}
+
+TEST_F(MeshCacheTest, AMeshLargeEnoughForTwoThreadsLoadsFromTheCacheAsBuilt) {
+  // Just over 2^20 triangles and tree nodes: the face normals and the tree's check run on
+  // two threads, beside the checksum's thread (the threads ThreadSanitizer watches here).
+  constexpr int kQuads = 725;  // 725^2 quads, 1,051,250 triangles
+  const auto mesh = std::make_shared<TriangleMesh>();
+  for (int j = 0; j <= kQuads; ++j) {
+    for (int i = 0; i <= kQuads; ++i) {
+      mesh->vertices_m.emplace_back(double(i) / kQuads, double(j) / kQuads, 0.01 * std::sin(i * 0.1 + j * 0.07));
+    }
+  }
+  const auto id = [](int i, int j) { return static_cast<std::uint32_t>(j * (kQuads + 1) + i); };
+  for (int j = 0; j < kQuads; ++j) {
+    for (int i = 0; i < kQuads; ++i) {
+      mesh->triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      mesh->triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  }
+  ASSERT_GT(mesh->triangle_count(), std::size_t{1} << 20);
+  const auto file = dir_ / "two_threads.ply";
+  test::write_binary_ply(file, *mesh);
+  MeshCache cache(cache_dir_);
+  cache.set_limit_bytes(std::uint64_t{1} << 30);
+  const Result<CachedMesh, MeshLoadError> cold = cache.load(file, Eigen::Vector3d::Ones());
+  ASSERT_TRUE(cold.ok()) << cold.error_text();
+  const Result<CachedMesh, MeshLoadError> warm = cache.load(file, Eigen::Vector3d::Ones());
+  ASSERT_TRUE(warm.ok()) << warm.error_text();
+  ASSERT_EQ(warm->outcome, CacheOutcome::Hit) << warm->rejected_reason;
+  EXPECT_EQ(warm->mesh().triangles, cold->mesh().triangles);
+  for (std::uint32_t t = 0; t < warm->mesh().triangle_count(); t += 997) {
+    ASSERT_EQ(warm->bvh->face_normal_O(t), cold->bvh->face_normal_O(t)) << t;
+  }
+  const std::uint32_t last = static_cast<std::uint32_t>(warm->mesh().triangle_count() - 1);
+  EXPECT_EQ(warm->bvh->face_normal_O(last), cold->bvh->face_normal_O(last));
+  for (const auto& box : random_boxes(mesh_bounds(warm->mesh()), 40)) {
+    ASSERT_EQ(query(*warm->bvh, box), query(*cold->bvh, box));
+  }
 }
 
 /// An entry's checksums say only that the bytes are the ones written, not that a careful

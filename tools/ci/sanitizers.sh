@@ -60,6 +60,11 @@ tsan_exclude=(
   # The secured tests are not in TSan's set for that reason (dds_security_tests is not a
   # target); this one lives in dds_server_tests. The unsecured DDS server tests stay.
   'ThreeProcessExample\.Secured'
+  # The mesh cache's two meshes past 2^21 triangles take about 50 s each under TSan; the
+  # same threads (checksum, face normals, the tree's two halves) run in
+  # AMeshLargeEnoughForTwoThreadsLoadsFromTheCacheAsBuilt, which stays.
+  'MeshCacheTest\.AMeshPastOneBulletPart'
+  'MeshCacheTest\.AHitLetsTheEntrysPages'
 )
 
 # ThreadSanitizer: every test binary whose code starts threads (the haptic server's five
@@ -77,6 +82,7 @@ tsan_targets=(
   dds_server_tests            # the server fed over DDS by another process
   viewer_tests                # the viewer's latest-state hand-off (rig_state_test)
   viewer_dds_tests            # the viewer's DDS state source
+  mesh_io_tests               # a cache hit: checksum thread, two-thread face normals and tree check
 )
 
 # ---- helpers --------------------------------------------------------------------------
