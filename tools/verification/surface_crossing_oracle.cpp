@@ -107,6 +107,9 @@ bool mesh_is_closed(const TriangleMesh& mesh) {
 
 }  // namespace
 
+/// One distance hint per this many triangles (distance_to_surface).
+constexpr std::size_t kDistanceHintStride = 16;
+
 struct SurfaceCrossingOracle::Impl {
   // Every triangle, world frame, in input order (degenerate ones included).
   std::vector<std::array<Eigen::Vector3d, 3>> triangles_W;
@@ -158,10 +161,18 @@ struct SurfaceCrossingOracle::Impl {
   void build(std::span<const PlacedMesh> meshes) {
     bounds_W.setEmpty();
     closed.reserve(meshes.size());
+    std::size_t total = 0;
     for (const PlacedMesh& placed : meshes) {
       touchable.push_back(placed.touchable);
       one_sided = one_sided || placed.touchable != TouchableFaces::Both;
+      total += placed.mesh->triangles.size();
     }
+    // Reserved, not grown: a doubling vector of tens of millions of triangles holds up to
+    // twice what it needs, and three times while it moves.
+    triangles_W.reserve(total);
+    refs.reserve(total);
+    cgal_triangles.reserve(total);
+    cgal_triangle_source.reserve(total);
     for (std::size_t i = 0; i < meshes.size(); ++i) {
       const TriangleMesh& mesh = *meshes[i].mesh;
       const Pose& X_WO = meshes[i].X_WO;
@@ -462,7 +473,19 @@ bool SurfaceCrossingOracle::point_inside_closed_mesh(const Eigen::Vector3d& p_W)
 double SurfaceCrossingOracle::distance_to_surface(const Eigen::Vector3d& p_W) const {
   Impl& m = *impl_;
   std::call_once(m.distance_once, [&m] {
-    if (!m.triangle_tree.empty()) m.triangle_tree.accelerate_distance_queries();
+    // The search starts from the nearest of these hints and still finds the nearest
+    // triangle, so any set of hints gives the same distance. One triangle in
+    // kDistanceHintStride keeps CGAL's hint tree, which would otherwise hold a point per
+    // triangle (about 170 bytes a triangle), small.
+    if (!m.triangle_tree.empty()) {
+      std::vector<TriangleTree::Point_and_primitive_id> hints;
+      hints.reserve(m.cgal_triangles.size() / kDistanceHintStride + 1);
+      for (std::size_t k = 0; k < m.cgal_triangles.size(); k += kDistanceHintStride) {
+        const auto it = m.cgal_triangles.cbegin() + static_cast<std::ptrdiff_t>(k);
+        hints.emplace_back(it->vertex(0), it);
+      }
+      m.triangle_tree.accelerate_distance_queries(hints.cbegin(), hints.cend());
+    }
     if (!m.segment_tree.empty()) m.segment_tree.accelerate_distance_queries();
   });
   const Point p = to_point(p_W);
