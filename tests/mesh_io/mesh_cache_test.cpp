@@ -406,7 +406,8 @@ TEST_F(MeshCacheTest, LargeMeshesReportProgress) {
 TEST_F(MeshCacheTest, AMeshPastOneBulletPartRoundTripsAndIsTouchedWhereItsLastTrianglesAre) {
   // Past 2^21 triangles a tree spans several Bullet parts: its cache entry is kept and
   // used, not rejected and rebuilt on every load, and the adopted tree finds the last
-  // triangles (the only ones in the box below) as the built one does.
+  // triangles (the only ones in the box below) as the built one does. Once checked, the
+  // entry's pages leave memory, and come back where the tree is walked.
   const auto file = dir_ / "past_one_part.ply";
   test::write_binary_ply(file, *test::mesh_past_one_bullet_part());
   MeshCache cache(cache_dir_);
@@ -418,7 +419,12 @@ TEST_F(MeshCacheTest, AMeshPastOneBulletPartRoundTripsAndIsTouchedWhereItsLastTr
   ASSERT_TRUE(cold->written);
   const Result<CachedMesh, MeshLoadError> warm = cache.load(file, Eigen::Vector3d::Ones());
   ASSERT_TRUE(warm.ok()) << warm.error_text();
-  EXPECT_EQ(warm->outcome, CacheOutcome::Hit) << warm->rejected_reason;
+  ASSERT_EQ(warm->outcome, CacheOutcome::Hit) << warm->rejected_reason;
+  // Once checked, the entry's pages leave the process: it is mapped, not resident.
+  const std::uint64_t entry_bytes = std::filesystem::file_size(warm->cache_file);
+  ASSERT_GE(mapped_bytes_of(warm->cache_file), entry_bytes);
+  const std::uint64_t after_load = resident_bytes_of(warm->cache_file);
+  EXPECT_LT(after_load, entry_bytes / 10) << "of " << entry_bytes << " bytes mapped";
   EXPECT_EQ(warm->mesh().triangles, cold->mesh().triangles);
   const Eigen::AlignedBox3d patch(Eigen::Vector3d(0.45, 0.45, 0.4), Eigen::Vector3d(0.55, 0.55, 0.6));
   const auto must = brute_force(warm->mesh(), patch);
@@ -428,26 +434,7 @@ TEST_F(MeshCacheTest, AMeshPastOneBulletPartRoundTripsAndIsTouchedWhereItsLastTr
   EXPECT_EQ(from_cache, query(*cold->bvh, patch));
   EXPECT_TRUE(std::includes(from_cache.begin(), from_cache.end(), must.begin(), must.end()));
   EXPECT_GE(from_cache.front(), test::kPatchFirstTriangle);
-}
-
-TEST_F(MeshCacheTest, AHitLetsTheEntrysPagesGoOnceCheckedAndTheyComeBackWhereTheTreeIsWalked) {
-  // After a hit the mesh is copied out and the tree checked; the entry's pages leave the
-  // process (it is mapped, not resident), and a walk brings back the pages it reads, with
-  // the answers of the built tree.
-  const auto file = dir_ / "past_one_part.ply";
-  test::write_binary_ply(file, *test::mesh_past_one_bullet_part());
-  MeshCache cache(cache_dir_);
-  cache.set_limit_bytes(std::uint64_t{1} << 30);
-  const Result<CachedMesh, MeshLoadError> cold = cache.load(file, Eigen::Vector3d::Ones());
-  ASSERT_TRUE(cold.ok()) << cold.error_text();
-  const Result<CachedMesh, MeshLoadError> warm = cache.load(file, Eigen::Vector3d::Ones());
-  ASSERT_TRUE(warm.ok()) << warm.error_text();
-  ASSERT_EQ(warm->outcome, CacheOutcome::Hit) << warm->rejected_reason;
-  const std::uint64_t entry_bytes = std::filesystem::file_size(warm->cache_file);
-  ASSERT_GE(mapped_bytes_of(warm->cache_file), entry_bytes);
-  const std::uint64_t after_load = resident_bytes_of(warm->cache_file);
-  EXPECT_LT(after_load, entry_bytes / 10) << "of " << entry_bytes << " bytes mapped";
-  // Every triangle is found again from the walked pages, as the built tree finds it.
+  // Walks bring back the pages they read, and answer as the built tree everywhere.
   for (const auto& box : random_boxes(mesh_bounds(warm->mesh()), 200)) {
     ASSERT_EQ(query(*warm->bvh, box), query(*cold->bvh, box));
   }
