@@ -29,7 +29,7 @@ void free_aligned(std::byte* p) { std::free(p); }
 
 btVector3 to_bt(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
-/// Leaves a node's box must hold: a node's parent's box, and a leaf's quantized triangle.
+/// True when `outer`'s box holds [min, max]: a parent's box holds its children's, a leaf's its triangle's.
 bool box_holds(const btQuantizedBvhNode& outer, const unsigned short* min, const unsigned short* max) {
   for (int k = 0; k < 3; ++k) {
     if (outer.m_quantizedAabbMin[k] > min[k] || outer.m_quantizedAabbMax[k] < max[k]) return false;
