@@ -47,6 +47,14 @@ asan_exclude=(
   # 0.239 m of a user (0.56 m and more in every release run); whether the lagging base
   # drove in or a user walked into it is not yet told apart. It runs in the release suite.
   'TwoRigSession\.'
+  # The shared-box tests that hold two real-time `mhd run` processes to agree on a box
+  # within 5 mm while it is pressed (from opposite sides, secured or not, or from one).
+  # Instrumented, on 2026-11-30, rig 1's loop overran 10 times and the box slid 62 mm
+  # (1-2 mm in the release runs), so the agreement measured how far the sanitizer let one
+  # loop fall behind. They run in the release suite; the other SharedBoxProcess tests (one
+  # rig alone, a replica with no authority) stay here.
+  'SharedBoxProcess\.(Secured)?PressedFromOppositeSides'
+  'SharedBoxProcess\.PressedFromOneSide'
 )
 tsan_exclude=(
   # DeclaredParams walks every in-tree plugin by loading and unloading it, libmhd_dds.so
