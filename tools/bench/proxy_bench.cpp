@@ -4,7 +4,11 @@
 // out of the proxy's work budget, the most sweeps in one tick, and the exact pop-through
 // count, and the look-ahead between ticks timed apart (--no-look-ahead: none). Prints a
 // Markdown table. --force-shading shades every object, for the cost of shading.
+// --hip-path drives every scene along one recorded path (--write-path's) and times the
+// ticks only: no oracle is built, so meshes too large for it (100 M triangles) can be set
+// beside a smaller mesh of the same shape in one run; nothing is judged there.
 
+#include "recording/hip_path_csv.h"
 #include "scene_compiler/scene_compiler.h"
 #include "scene_xml/scene_reader.h"
 #include "stress/tour_transit.h"
@@ -18,6 +22,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -123,6 +128,38 @@ bool write_hip_csv(const std::filesystem::path& file, const mhd::verify::StrokeS
   return static_cast<bool>(out);
 }
 
+// One row of the table; the exact counts read "not judged" where no oracle ran.
+void print_row(const std::string& name, std::size_t triangles, const mhd::verify::StrokeRunReport& r,
+               bool no_look_ahead, bool judged) {
+  const auto& c = r.contact_updates;
+  const auto& a = r.all_updates;
+  const auto& l = r.look_ahead_updates;
+  const std::string look_ahead =
+      no_look_ahead ? std::string("off")
+                    : fmt::format("{:.2f} / {:.2f} / {:.2f} / {:.1f}", l.median_us, l.p99_us, l.p999_us, l.max_us);
+  const auto count = [&](std::size_t n) { return judged ? fmt::format("{}", n) : std::string("not judged"); };
+  fmt::print("| {} | {} | {} | {:.2f} | {:.2f} | {:.2f} | {:.1f} | {} | {:.2f} | {:.2f} | {:.2f} | {:.1f} | {} | {} "
+             "| {} | {} | {} | {} | {} |\n",
+             name, triangles, c.count, c.median_us, c.p99_us, c.p999_us, c.max_us, a.count, a.median_us, a.p99_us,
+             a.p999_us, a.max_us, r.budget_exhausted_ticks, r.max_sweeps, r.max_plane_count, count(r.pop_throughs),
+             count(r.ticks_inside), count(r.follow_failures), look_ahead);
+  std::fflush(stdout);
+}
+
+// A recorded HIP path as one stroke, or nullopt after printing the file's problem.
+std::optional<mhd::verify::StrokeSet> read_hip_path(const std::string& file) {
+  mhd::HipPathCsvReader reader{std::filesystem::path(file)};
+  mhd::verify::Stroke path;
+  while (const auto sample = reader.next()) path.p_W_hip.push_back(sample->p_W_hip_m);
+  if (reader.error()) {
+    fmt::print(stderr, "{}\n", reader.error()->to_string());
+    return std::nullopt;
+  }
+  mhd::verify::StrokeSet set;
+  set.strokes.push_back(std::move(path));
+  return set;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -154,7 +191,18 @@ int main(int argc, char** argv) {
   std::string path_dir;
   app.add_option("--write-path", path_dir,
                  "Also write each scene's HIP path to DIR/<scene>.csv, for mhd proxy-replay (before/after checks)");
+  std::string hip_path;
+  auto* hip_path_option =
+      app.add_option("--hip-path", hip_path,
+                     "Drive every scene along this HIP path (a --write-path file) and time the ticks only: no "
+                     "exact oracle is built, and pop-throughs, ticks inside and follow failures are not judged");
+  hip_path_option->excludes("--write-path")->excludes("--reset-each-stroke");
   CLI11_PARSE(app, argc, argv);
+  std::optional<mhd::verify::StrokeSet> given_path;
+  if (!hip_path.empty()) {
+    given_path = read_hip_path(hip_path);
+    if (!given_path) return 1;
+  }
 
   fmt::print("| scene | triangles | contact updates | median µs | p99 µs | p99.9 µs | max µs | all updates "
              "| all median µs | all p99 µs | all p99.9 µs | all max µs | budget exhausted | max sweeps "
@@ -180,6 +228,11 @@ int main(int argc, char** argv) {
       continue;
     }
     const auto& scene = *compiled.value();
+    if (given_path) {
+      const auto r = mhd::verify::time_strokes(scene, *given_path, rate, !no_look_ahead);
+      print_row(file + (shade_all ? " (shaded)" : ""), scene.triangle_count, r, no_look_ahead, false);
+      continue;
+    }
     const mhd::verify::SurfaceCrossingOracle oracle(scene.world);
     mhd::verify::AnchorStrokeParams params;
     params.speed_m_per_s = speed;
@@ -196,17 +249,7 @@ int main(int argc, char** argv) {
       }
     }
     const auto r = mhd::verify::run_strokes(scene, oracle, set, rate, !no_look_ahead);
-    const auto& c = r.contact_updates;
-    const auto& a = r.all_updates;
-    const auto& l = r.look_ahead_updates;
-    const std::string look_ahead =
-        no_look_ahead ? std::string("off")
-                      : fmt::format("{:.2f} / {:.2f} / {:.2f} / {:.1f}", l.median_us, l.p99_us, l.p999_us, l.max_us);
-    fmt::print("| {} | {} | {} | {:.2f} | {:.2f} | {:.2f} | {:.1f} | {} | {:.2f} | {:.2f} | {:.2f} | {:.1f} | {} | {} "
-               "| {} | {} | {} | {} | {} |\n",
-               shade_all ? file + " (shaded)" : file, scene.triangle_count, c.count, c.median_us, c.p99_us,
-               c.p999_us, c.max_us, a.count, a.median_us, a.p99_us, a.p999_us, a.max_us, r.budget_exhausted_ticks,
-               r.max_sweeps, r.max_plane_count, r.pop_throughs, r.ticks_inside, r.follow_failures, look_ahead);
+    print_row(shade_all ? file + " (shaded)" : file, scene.triangle_count, r, no_look_ahead, true);
     std::fflush(stdout);
     if (r.pop_throughs != 0 || r.ticks_inside != 0 || r.follow_failures != 0) status = 1;
   }

@@ -52,4 +52,10 @@ struct StrokeRunReport {
 [[nodiscard]] StrokeRunReport run_strokes(const CompiledScene& scene, const SurfaceCrossingOracle& oracle,
                                           const StrokeSet& strokes, double rate_Hz, bool look_ahead = true);
 
+/// run_strokes() timing the ticks only: nothing is judged (the exact counts stay 0), so no
+/// oracle is built. For meshes whose oracle does not fit in memory (about 250 bytes a
+/// triangle beside the engine's), driven along a path made on a coarser mesh of the shape.
+[[nodiscard]] StrokeRunReport time_strokes(const CompiledScene& scene, const StrokeSet& strokes, double rate_Hz,
+                                           bool look_ahead = true);
+
 }  // namespace mhd::verify
