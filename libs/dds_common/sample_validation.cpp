@@ -64,15 +64,7 @@ std::optional<DropReason> TrackerSampleValidator::reason(const mhd_dds_TrackerSa
   const double norm = std::sqrt(s.q_T_wxyz[0] * s.q_T_wxyz[0] + s.q_T_wxyz[1] * s.q_T_wxyz[1] +
                                 s.q_T_wxyz[2] * s.q_T_wxyz[2] + s.q_T_wxyz[3] * s.q_T_wxyz[3]);
   if (!(std::abs(norm - 1.0) <= limits_.quaternion_tolerance)) return DropReason::BadQuaternion;
-  // now_ns - timestamp_ns would overflow for a timestamp more than ~292 years from now
-  // (the peer sends any 64-bit value): such a sample is stale or from the future.
-  std::int64_t age_ns = 0;
-  if (__builtin_sub_overflow(now_ns, s.timestamp_ns, &age_ns)) {
-    return s.timestamp_ns < 0 ? DropReason::Stale : DropReason::Future;
-  }
-  const double age_s = static_cast<double>(age_ns) / kNsPerS;
-  if (age_s > limits_.max_age_s) return DropReason::Stale;
-  if (-age_s > limits_.max_future_s) return DropReason::Future;
+  if (const std::optional<DropReason> r = age_reason(s.timestamp_ns, now_ns)) return r;
   for (const SensorState& sensor : sensors_) {
     if (sensor.sensor_id != s.sensor_id) continue;
     const double since_last_s = static_cast<double>(now_ns - sensor.last_accepted_ns) / kNsPerS;
@@ -81,6 +73,26 @@ std::optional<DropReason> TrackerSampleValidator::reason(const mhd_dds_TrackerSa
     }
   }
   return std::nullopt;
+}
+
+std::optional<DropReason> TrackerSampleValidator::age_reason(std::int64_t timestamp_ns, std::int64_t now_ns) const {
+  // now_ns - timestamp_ns would overflow for a timestamp more than ~292 years from now
+  // (the peer sends any 64-bit value): such a sample is stale or from the future.
+  std::int64_t age_ns = 0;
+  if (__builtin_sub_overflow(now_ns, timestamp_ns, &age_ns)) {
+    return timestamp_ns < 0 ? DropReason::Stale : DropReason::Future;
+  }
+  const double age_s = static_cast<double>(age_ns) / kNsPerS;
+  if (age_s > limits_.max_age_s) return DropReason::Stale;
+  if (-age_s > limits_.max_future_s) return DropReason::Future;
+  return std::nullopt;
+}
+
+bool TrackerSampleValidator::expired(const mhd_dds_TrackerSample& s, std::int64_t now_ns) {
+  if (age_reason(s.timestamp_ns, now_ns) != DropReason::Stale) return false;
+  --counts_.accepted;
+  ++counts_.dropped[static_cast<std::size_t>(DropReason::Stale)];
+  return true;
 }
 
 std::optional<DropReason> TrackerSampleValidator::check(const mhd_dds_TrackerSample& s, std::int64_t now_ns) {

@@ -59,6 +59,9 @@ class TrackerSampleValidator {
   /// Checks `sample` against the limits at receive time `now_ns` (CLOCK_REALTIME);
   /// nullopt: accepted (and remembered as its sensor's latest). Counts either way.
   std::optional<DropReason> check(const mhd_dds_TrackerSample& sample, std::int64_t now_ns);
+  /// Whether an accepted sample is older than max_age_s at `now_ns`, when it is handed
+  /// out; if so it is counted as stale instead of accepted.
+  bool expired(const mhd_dds_TrackerSample& sample, std::int64_t now_ns);
 
   [[nodiscard]] const DropCounts& counts() const { return counts_; }
   [[nodiscard]] const TrackerValidationLimits& limits() const { return limits_; }
@@ -70,6 +73,7 @@ class TrackerSampleValidator {
     std::int64_t last_accepted_ns;  ///< receive time
   };
   std::optional<DropReason> reason(const mhd_dds_TrackerSample& sample, std::int64_t now_ns) const;
+  std::optional<DropReason> age_reason(std::int64_t timestamp_ns, std::int64_t now_ns) const;
   TrackerValidationLimits limits_;
   std::vector<SensorState> sensors_;
   DropCounts counts_;

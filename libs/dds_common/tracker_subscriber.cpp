@@ -24,6 +24,8 @@ std::size_t TrackerSubscriber::poll(std::span<mhd_tracker_sample> out, double ho
     }
     if (taken.empty()) break;
   }
+  // What waited here since an earlier call may have aged past max_age_s.
+  std::erase_if(pending_, [&](const mhd_dds_TrackerSample& s) { return validator_.expired(s, now_ns); });
   const std::size_t n = std::min(out.size(), pending_.size());
   for (std::size_t i = 0; i < n; ++i) {
     out[i] = from_dds(pending_[i], host_from_realtime(pending_[i].timestamp_ns, host_now_s, now_ns));

@@ -24,7 +24,7 @@ class TrackerSubscriber {
   /// Takes what DDS has, validates it at `now_ns` and writes up to out.size() accepted
   /// samples, oldest first, stamped on the host clock (`host_now_s` read with now_ns).
   /// Accepted samples that do not fit wait for the next call (up to 256, then the
-  /// oldest are lost). Never blocks.
+  /// oldest are lost), and are dropped as stale once older than max_age_s. Never blocks.
   std::size_t poll(std::span<mhd_tracker_sample> out, double host_now_s, std::int64_t now_ns);
   /// Blocks until samples arrive or timeout_ns passes; true at once when accepted
   /// samples still wait for poll().
