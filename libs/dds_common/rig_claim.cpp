@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cstring>
 #include <ctime>
+#include <thread>
 #include <tuple>
 
 namespace mhd::dds {
@@ -70,7 +72,27 @@ RigClaim::RigClaim(const Participant& participant, std::uint32_t rig_id, std::in
 }
 
 RigClaim::~RigClaim() {
-  if (!refused_self_) (void)dds_dispose(writer_.handle(), &sample_);
+  if (refused_self_ && !withdrawn_) {
+    // A refused process ends at once: its claim stays until the holder has counted it
+    // (and said so), but no longer than a claim takes to settle.
+    const auto end = std::chrono::steady_clock::now() + std::chrono::nanoseconds(settle_ns_);
+    while (!withdrawn_ && std::chrono::steady_clock::now() < end) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+      take();
+      if (holder_counted_self()) withdraw();
+    }
+  }
+  withdraw();
+}
+
+bool RigClaim::holder_counted_self() const {
+  return counted_by_.contains(holder_key_);
+}
+
+void RigClaim::withdraw() {
+  if (withdrawn_) return;
+  withdrawn_ = true;
+  (void)dds_dispose(writer_.handle(), &sample_);
 }
 
 bool RigClaim::older_than_self(const Key& key, const Live& claim) const {
@@ -91,8 +113,15 @@ void RigClaim::take() {
       if (s.rig_id != rig_id_ || key == Key{self_.host_id, self_.pid}) continue;
       if (infos[i].valid_data) {
         Live claim{s.claimed_ns, std::string(s.host, strnlen(s.host, sizeof(s.host)))};
-        // A younger claim is counted even when it was withdrawn before this take.
-        if (!refused_self_ && !older_than_self(key, claim) && counted_.insert(key).second) ++refused_;
+        if (Key{s.refused_host_id, s.refused_pid} == Key{self_.host_id, self_.pid}) counted_by_.insert(key);
+        // A younger claim is counted even when it was withdrawn before this take; the
+        // claim written again with its key tells that claimant it may go.
+        if (!refused_self_ && !older_than_self(key, claim) && counted_.insert(key).second) {
+          ++refused_;
+          sample_.refused_host_id = key.first;
+          sample_.refused_pid = key.second;
+          writer_.write(sample_);
+        }
         if (infos[i].instance_state == DDS_IST_ALIVE) live_[key] = std::move(claim);
       }
       if (infos[i].instance_state != DDS_IST_ALIVE) live_.erase(key);
@@ -102,14 +131,21 @@ void RigClaim::take() {
 }
 
 RigClaim::Standing RigClaim::update(std::int64_t now_ns) {
-  if (refused_self_) return Standing::Refused;
+  if (refused_self_) {
+    if (!withdrawn_) {
+      take();
+      if (holder_counted_self()) withdraw();
+    }
+    return Standing::Refused;
+  }
   take();
   for (const auto& [key, claim] : live_) {
     if (older_than_self(key, claim)) {
       refused_self_ = true;
       holder_ = claim;
+      holder_key_ = key;
       holder_name_ = claim.host + ":" + std::to_string(key.second);
-      (void)dds_dispose(writer_.handle(), &sample_);
+      if (holder_counted_self()) withdraw();
       return Standing::Refused;
     }
   }

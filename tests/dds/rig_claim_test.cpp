@@ -1,6 +1,6 @@
 // One process per rig id (rig_claim.h), in one process with claimants standing in for
 // processes: the oldest live claim holds the rig, a younger one is refused naming the
-// holder and counted by it; a claim of another rig is no conflict; a withdrawn claim
+// holder and counted by it, even one that goes at once; a claim of another rig is no conflict; a withdrawn claim
 // frees the rig; two claims made at once settle on exactly one holder.
 
 #include "dds_common/rig_claim.h"
@@ -10,6 +10,7 @@
 
 #include <chrono>
 #include <functional>
+#include <optional>
 #include <thread>
 
 namespace mhd::dds::rig_claim_test {
@@ -51,6 +52,27 @@ TEST(RigClaim, TheOldestClaimHoldsAYoungerOneIsRefusedAndCounted) {
   std::this_thread::sleep_for(std::chrono::nanoseconds(kSettle_ns));
   EXPECT_EQ(a.update(realtime_ns()), Standing::Holding);
   EXPECT_EQ(a.refused(), 2u);
+}
+
+TEST(RigClaim, AClaimantRefusedAndGoneAtOnceIsStillCountedByTheHolder) {
+  const std::uint32_t domain = test::use_loopback_and_unique_domain(95);
+  const Participant a_process(domain);
+  RigClaim a(a_process, 6, kSettle_ns, claimant(100), realtime_ns());
+  // Processes that claim, hear the holder and end as soon as they are refused, while
+  // the holder runs its loop.
+  constexpr std::uint64_t kClaimants = 4;
+  for (std::uint64_t i = 0; i < kClaimants; ++i) {
+    test::ChildProcess b({MHD_DDS_TEST_RIG_CLAIMANT, "--domain-id", std::to_string(domain), "--rig-id", "6"});
+    const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    std::optional<int> rc;
+    while (!rc && std::chrono::steady_clock::now() < end) {
+      EXPECT_NE(a.update(realtime_ns()), Standing::Refused);
+      rc = b.wait_for(std::chrono::milliseconds(5));
+    }
+    ASSERT_EQ(rc, 0) << "claimant " << i;
+  }
+  // Each was counted before it ended: no later read is needed.
+  EXPECT_EQ(a.refused(), kClaimants);
 }
 
 TEST(RigClaim, ClaimsOfOtherRigsAreNoConflict) {

@@ -55,13 +55,6 @@ asan_exclude=(
   # rig alone, a replica with no authority) stay here.
   'SharedBoxProcess\.(Secured)?PressedFromOppositeSides'
   'SharedBoxProcess\.PressedFromOneSide'
-  # RigClaimProcess.ASecondProcess... also asserts that the holder logs the claimant it
-  # refused. Instrumented, on 2026-11-30, the second process was refused, never
-  # published and exited as it should, but the holder never heard its claim: the second
-  # withdrew and exited before the holder's discovery reached its writer. That count can
-  # miss a claimant that comes and goes that fast (a real race, not yet fixed; the
-  # refusal itself holds). It runs in the release suite.
-  'RigClaimProcess\.ASecondProcessWithTheRigIdIsRefused'
 )
 tsan_exclude=(
   # DeclaredParams walks every in-tree plugin by loading and unloading it, libmhd_dds.so
