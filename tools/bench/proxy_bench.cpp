@@ -228,9 +228,10 @@ int main(int argc, char** argv) {
       continue;
     }
     const auto& scene = *compiled.value();
+    const std::string name = shade_all ? file + " (shaded)" : file;
     if (given_path) {
       const auto r = mhd::verify::time_strokes(scene, *given_path, rate, !no_look_ahead);
-      print_row(file + (shade_all ? " (shaded)" : ""), scene.triangle_count, r, no_look_ahead, false);
+      print_row(name, scene.triangle_count, r, no_look_ahead, false);
       continue;
     }
     const mhd::verify::SurfaceCrossingOracle oracle(scene.world);
@@ -249,8 +250,7 @@ int main(int argc, char** argv) {
       }
     }
     const auto r = mhd::verify::run_strokes(scene, oracle, set, rate, !no_look_ahead);
-    print_row(shade_all ? file + " (shaded)" : file, scene.triangle_count, r, no_look_ahead, true);
-    std::fflush(stdout);
+    print_row(name, scene.triangle_count, r, no_look_ahead, true);
     if (r.pop_throughs != 0 || r.ticks_inside != 0 || r.follow_failures != 0) status = 1;
   }
   return status;

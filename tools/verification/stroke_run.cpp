@@ -49,7 +49,7 @@ StrokeRunReport drive_strokes(const CompiledScene& scene, const SurfaceCrossingO
     if (stroke.p_W_hip.empty()) continue;
     ++report.strokes;
     record.clear();
-    record.reserve(stroke.p_W_hip.size());
+    if (oracle != nullptr) record.reserve(stroke.p_W_hip.size());
     ProxyState state;
     reset_proxy(state, stroke.p_W_hip.front());
     ProxyLookAhead ahead;
@@ -74,7 +74,7 @@ StrokeRunReport drive_strokes(const CompiledScene& scene, const SurfaceCrossingO
       report.max_plane_count = std::max(report.max_plane_count, out.plane_count);
       if (out.budget_exhausted) ++report.budget_exhausted_ticks;
       report.max_sweeps = std::max(report.max_sweeps, out.sweeps);
-      record.push_back(make_tick_sample(hip, out, state));
+      if (oracle != nullptr) record.push_back(make_tick_sample(hip, out, state));  // only the oracle reads it
       if (look_ahead) {
         const auto t2 = Clock::now();
         (void)ahead.run(scene.world, scene.materials, scene.proxy, state, dt_s);
