@@ -4,11 +4,11 @@
 // claimant) and reads the other claims of N. The oldest live claim holds the rig: a
 // younger claimant is refused, withdraws its claim and must never publish as N; the
 // holder counts each claimant it refused, and writes its claim again naming the last
-// one: a refused claim stays until its holder has named it (bounded by `settle_ns`
-// when the process ends), so that a process refused and gone at once is still counted. A claim is not trusted until `settle_ns` after
-// it was made (discovery must have had time to bring the older claims), so a refused
-// process has published nothing. A claim lives as long as its process (liveliness), so
-// a rig whose process died can be claimed again.
+// one: a refused claim stays until its holder has named it (bounded by `settle_ns` when
+// the process ends), so that a process refused and gone at once is still counted. A
+// claim is not trusted until `settle_ns` after it was made (discovery must have had time
+// to bring the older claims), so a refused process has published nothing. A claim lives
+// as long as its process (liveliness), so a rig whose process died can be claimed again.
 
 #include "dds_common/dds_topics.h"
 
