@@ -34,4 +34,27 @@ TEST_F(StrokeRunTest, TimingAloneStepsTheProxyAsTheJudgedRunDoes) {
   EXPECT_EQ(time_strokes(scene(), strokes, 1000.0, false).look_ahead_updates.count, 0U);
 }
 
+// Strokes joined into one continuous run are still counted one by one, and each is judged
+// at the tick it begins; a run of separate strokes resets the proxy at each, so none of
+// them can begin behind a surface.
+TEST_F(StrokeRunTest, EveryStrokeOfAContinuousRunIsCountedAsBegun) {
+  ASSERT_NO_FATAL_FAILURE(load(kBallScene));
+  const StrokeSet separate = anchor_strokes(8129, 5);
+  StrokeSet joined;
+  joined.strokes.emplace_back();
+  for (const Stroke& s : separate.strokes) {
+    joined.strokes.front().stroke_starts.push_back(joined.strokes.front().p_W_hip.size());
+    joined.strokes.front().p_W_hip.insert(joined.strokes.front().p_W_hip.end(), s.p_W_hip.begin(), s.p_W_hip.end());
+  }
+  const StrokeRunReport apart = run_strokes(scene(), oracle(), separate, 1000.0);
+  EXPECT_EQ(apart.strokes, 5U);
+  EXPECT_EQ(apart.strokes_begun, 5U);
+  EXPECT_EQ(apart.strokes_starting_behind, 0U);
+  const StrokeRunReport together = run_strokes(scene(), oracle(), joined, 1000.0);
+  EXPECT_EQ(together.strokes, 1U);
+  EXPECT_EQ(together.strokes_begun, 5U);
+  EXPECT_EQ(together.ticks, apart.ticks);
+  EXPECT_LE(together.strokes_starting_behind, together.held_ticks);
+}
+
 }  // namespace mhd::test::stroke_run_test

@@ -92,6 +92,11 @@ TEST(DriveProxy, AFrontOnlySheetHoldsTheHandInFrontAndLetsItOutFromBehind) {
     // Held: the hand 2 cm above, its proxy under the sheet (both sides touchable only).
     EXPECT_EQ(count_held_ticks(oracle, risen) > 0, faces == TouchableFaces::Both);
     EXPECT_EQ(count_held_ticks(oracle, pressed), 0U);  // pressing in from the front is no hold
+    // Taken as where a next stroke starts, the last tick starts it behind the sheet (both
+    // sides touchable only); the first, its proxy at the hand, starts none behind.
+    const std::vector<std::size_t> starts = {0, risen.size() - 1};
+    EXPECT_EQ(count_strokes_starting_behind(oracle, risen, starts), faces == TouchableFaces::Both ? 1U : 0U);
+    EXPECT_EQ(count_strokes_starting_behind(oracle, risen, std::vector<std::size_t>{0}), 0U);
     if (faces == TouchableFaces::Front) {
       EXPECT_EQ(risen.back().proxy_W, risen.back().p_W_hip);
       EXPECT_EQ(risen.back().force_W, Vector3d::Zero());

@@ -107,6 +107,7 @@ mhd::verify::StrokeSet join_in_free_space(const mhd::verify::SurfaceCrossingOrac
       path.p_W_hip.insert(path.p_W_hip.end(), legs.begin() + 1, legs.end() - 1);
     }
     const auto end = stroke.p_W_hip.begin() + static_cast<std::ptrdiff_t>(last_free_sample(oracle, stroke)) + 1;
+    path.stroke_starts.push_back(path.p_W_hip.size());
     path.p_W_hip.insert(path.p_W_hip.end(), stroke.p_W_hip.begin(), end);
     last = &stroke;
   }
@@ -251,6 +252,8 @@ int main(int argc, char** argv) {
     }
     const auto r = mhd::verify::run_strokes(scene, oracle, set, rate, !no_look_ahead);
     print_row(name, scene.triangle_count, r, no_look_ahead, true);
+    fmt::print(stderr, "{}: held behind a surface on {} ticks; {} of {} strokes started behind\n", name, r.held_ticks,
+               r.strokes_starting_behind, r.strokes_begun);
     if (r.pop_throughs != 0 || r.ticks_inside != 0 || r.follow_failures != 0) status = 1;
   }
   return status;

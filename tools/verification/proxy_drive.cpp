@@ -95,12 +95,25 @@ std::size_t count_ticks_inside(const SurfaceCrossingOracle& oracle, const TickRe
   return inside;
 }
 
+namespace {
+
+bool is_held(const SurfaceCrossingOracle& oracle, const TickSample& s) {
+  return (s.proxy_W - s.p_W_hip).norm() > kHeldGap_m && oracle.segment_meets_a_front(s.p_W_hip, s.proxy_W);
+}
+
+}  // namespace
+
 std::size_t count_held_ticks(const SurfaceCrossingOracle& oracle, const TickRecord& records) {
   std::size_t held = 0;
-  for (const TickSample& s : records) {
-    if ((s.proxy_W - s.p_W_hip).norm() > kHeldGap_m && oracle.segment_meets_a_front(s.p_W_hip, s.proxy_W)) ++held;
-  }
+  for (const TickSample& s : records) held += is_held(oracle, s) ? 1 : 0;
   return held;
+}
+
+std::size_t count_strokes_starting_behind(const SurfaceCrossingOracle& oracle, const TickRecord& records,
+                                          std::span<const std::size_t> starts) {
+  std::size_t behind = 0;
+  for (const std::size_t tick : starts) behind += tick < records.size() && is_held(oracle, records[tick]) ? 1 : 0;
+  return behind;
 }
 
 }  // namespace mhd::verify

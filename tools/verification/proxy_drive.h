@@ -78,6 +78,12 @@ inline constexpr double kHeldGap_m = 0.010;
 /// the front of an open surface while the proxy stays behind it. Zero on a surface
 /// touchable from the front only.
 [[nodiscard]] std::size_t count_held_ticks(const SurfaceCrossingOracle& oracle, const TickRecord& records);
+/// Of the strokes that begin at the ticks `starts` of one continuous run, those whose
+/// first tick is held (as count_held_ticks judges it): the proxy left behind a surface
+/// by the strokes before. Starts past the record are not counted.
+[[nodiscard]] std::size_t count_strokes_starting_behind(const SurfaceCrossingOracle& oracle,
+                                                        const TickRecord& records,
+                                                        std::span<const std::size_t> starts);
 
 /// A tick that broke "otherwise go to the hand" (follow_check.h).
 struct FollowFailure {

@@ -3,6 +3,7 @@
 #include "proxy/proxy_look_ahead.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 
@@ -85,6 +86,12 @@ StrokeRunReport drive_strokes(const CompiledScene& scene, const SurfaceCrossingO
     report.pop_throughs += count_crossings(*oracle, record);
     report.ticks_inside += count_ticks_inside(*oracle, record);
     report.held_ticks += count_held_ticks(*oracle, record);
+    const std::array<std::size_t, 1> first{0};
+    const std::span<const std::size_t> starts = stroke.stroke_starts.empty()
+                                                    ? std::span<const std::size_t>(first)
+                                                    : std::span<const std::size_t>(stroke.stroke_starts);
+    report.strokes_begun += starts.size();
+    report.strokes_starting_behind += count_strokes_starting_behind(*oracle, record, starts);
     const FollowCheck follow_check = find_follow_failures(*oracle, record, follow);
     report.follow_failures += follow_check.failures.size();
     report.max_free_gap_m = std::max(report.max_free_gap_m, follow_check.max_free_gap_m);

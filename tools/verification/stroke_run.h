@@ -41,6 +41,10 @@ struct StrokeRunReport {
   std::size_t pop_throughs = 0;  ///< proxy moves that touched the surface (exact check)
   std::size_t ticks_inside = 0;  ///< ticks that ended inside a closed object
   std::size_t held_ticks = 0;    ///< ticks held behind a face the hand is in front of (count_held_ticks)
+  /// Strokes begun, each joined one of a continuous run counted (Stroke::stroke_starts),
+  /// and those begun with the proxy held behind a surface (count_strokes_starting_behind).
+  std::size_t strokes_begun = 0;
+  std::size_t strokes_starting_behind = 0;
   /// Ticks where the proxy did not go to a HIP it could reach (follow_check.h, exact,
   /// tolerance kFollowTolerance_m at the scene's stiffest material).
   std::size_t follow_failures = 0;

@@ -41,6 +41,9 @@ struct Stroke {
   double speed_m_per_s = 0.0;
   /// Fast strokes: angle between the travel direction and the surface plane.
   double grazing_angle_rad = 0.0;
+  /// A continuous run that joins several strokes through free space: the index in
+  /// p_W_hip where each of them begins. Empty for a single stroke.
+  std::vector<std::size_t> stroke_starts;
 };
 
 struct StrokeSet {
