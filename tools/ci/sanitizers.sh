@@ -55,6 +55,13 @@ asan_exclude=(
   # rig alone, a replica with no authority) stay here.
   'SharedBoxProcess\.(Secured)?PressedFromOppositeSides'
   'SharedBoxProcess\.PressedFromOneSide'
+  # SharedFloorRun.LosingTheOtherRigsDataHoldsTheBaseUntilItIsBack times the base's stop
+  # against a 2 s dropout in a real-time `mhd run`. Instrumented, on 2026-11-30, it failed
+  # once in a clean CI run (bases 0.435 m apart, 0.45 m asked) and 5 times in 5 with the
+  # two cores loaded (5-26 overruns, 11-53 deadlines missed a run); the release build,
+  # loaded the same way, passed 3 of 3. It runs in the release suite; the other
+  # SharedFloorRun tests, which passed loaded under ASan, stay here.
+  'SharedFloorRun\.LosingTheOtherRigsDataHoldsTheBaseUntilItIsBack'
 )
 tsan_exclude=(
   # DeclaredParams walks every in-tree plugin by loading and unloading it, libmhd_dds.so
