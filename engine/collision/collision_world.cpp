@@ -143,6 +143,7 @@ std::optional<SweepHit> CollisionWorld::sweep_among(int only_object, const Eigen
                                                     std::span<const TriangleRef> ignore, SweepWork* work,
                                                     SweepCandidates* near) const {
   if (near != nullptr) near->bind(geometry_id_);
+  if (work != nullptr) work->tested_count = 0;
   // Exact shapes over the whole segment, triangles piece by piece; the earlier hit wins.
   const std::optional<SweepHit> exact = sweep_exact(only_object, a_W, b_W, skin_m, ignore, work);
   if (work != nullptr && work->exhausted) return std::nullopt;
@@ -184,6 +185,9 @@ std::optional<SweepHit> CollisionWorld::sweep_among(int only_object, const Eigen
           return;
         }
         ++work->triangle_tests;
+        if (work->tested_count < SweepWork::kMaxTested) {
+          work->tested[static_cast<std::size_t>(work->tested_count++)] = TriangleRef{object, ti};
+        }
       }
       const TriangleIndices& t = mesh.triangles[ti];
       const auto hit = sweep_point_triangle(a_O, b_O, mesh.vertices_m[t[0]], mesh.vertices_m[t[1]],

@@ -10,6 +10,7 @@
 #include "geometry/touchable_faces.h"
 #include "geometry/shading_normals.h"
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -48,6 +49,12 @@ struct SweepWork {
   int triangle_tests = 0;
   int max_triangle_tests = std::numeric_limits<int>::max();
   bool exhausted = false;
+  /// The first triangles the latest sweep tested (hit or not), in the order tested: where
+  /// a caller may look first for the face beyond an edge the sweep ran along. A hint only:
+  /// nothing here is needed for a sweep's answer.
+  static constexpr int kMaxTested = 8;
+  std::array<TriangleRef, kMaxTested> tested;
+  int tested_count = 0;
 };
 
 class CollisionWorld {

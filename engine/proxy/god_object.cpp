@@ -205,6 +205,7 @@ ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMateri
     state.plane_count = previous_plane_count;
   }
   out.sweeps = work.sweeps;
+  out.sweeps_at_once = work.sweeps_at_once;
   out.triangle_tests = work.sweep.triangle_tests;
   out.budget_exhausted = work.exhausted;
   state.proxy_W = motion.p;

@@ -68,6 +68,9 @@ struct ProxyOutput {
   bool force_clamped = false;
   bool sticking = false;
   int sweeps = 0;               ///< sweeps this tick made
+  /// Of those, the ones answered by testing known triangles alone: a triangle that stops
+  /// the leg at once (nothing can come before it), so the world was not swept.
+  int sweeps_at_once = 0;
   int triangle_tests = 0;       ///< triangles those sweeps tested
   bool budget_exhausted = false;  ///< the tick hit its work budget and stopped early
 };

@@ -203,8 +203,10 @@ bool add_constraint(Motion& m, const SweepHit& hit, double skin_m) {
     if (m.plane_count == kMaxHalfSpaces && !drop_farthest_inactive_plane(m, skin_m)) return false;
     plane = m.plane_count++;
     m.planes[at(plane)] = HalfSpace{hit.normal_W, offset};
-    m.plane_triangles[at(plane)] = hit.where;
   }
+  // A plane is named by the last of its triangles met: the one the proxy has come to (past
+  // a diagonal, on a coplanar twin), where the next tick looks first.
+  m.plane_triangles[at(plane)] = hit.where;
   m.ignored[at(m.ignored_count)] = IgnoredTriangle{hit.where, plane};
   m.ignored_refs[at(m.ignored_count)] = hit.where;
   ++m.ignored_count;
@@ -256,6 +258,104 @@ void advance(Motion& m, const Eigen::Vector3d& to, const std::optional<SweepHit>
   }
 }
 
+// The face the proxy is over after sliding off every face it held, past a convex edge:
+// of the triangles the last sweep tested (the slide's, which passed along that edge), the
+// first the segment to the goal meets, if it meets one for real (not a graze).
+std::optional<SweepHit> face_beyond_edge(const CollisionWorld& world, SweepWork& last, double skin_m,
+                                         const Eigen::Vector3d& p, const Eigen::Vector3d& goal) {
+  std::optional<SweepHit> first;
+  for (int i = 0; i < last.tested_count; ++i) {
+    const TriangleRef& t = last.tested[at(i)];
+    ++last.triangle_tests;
+    auto hit = world.sweep_triangle(t, p, goal, skin_m);
+    if (!hit || (first && !(hit->t_stop < first->t_stop)) || only_grazes(world, t, p, goal, skin_m)) continue;
+    first = hit;
+  }
+  return first;
+}
+
+// True when a collected triangle (of plane `plane`, or of any plane when it is negative)
+// stops the leg from m.p to `to` at once (within the least step) and for real, not as a
+// graze. A sweep of the whole world would then stop the proxy where it is as well: no hit
+// comes before one at once. Counted as the sweep it stands for, so what a tick may do
+// stays the same.
+bool collected_blocks_at_once(const CollisionWorld& world, double skin_m, const Motion& m, const Eigen::Vector3d& to,
+                              int plane, TickWork& work) {
+  if (work.sweeps >= work.max_sweeps) return false;
+  const double length = (to - m.p).norm();
+  for (int j = 0; j < m.ignored_count; ++j) {
+    const IgnoredTriangle& t = m.ignored[at(j)];
+    if (plane >= 0 && t.plane != plane) continue;
+    ++work.sweep.triangle_tests;
+    const auto hit = world.sweep_triangle(t.triangle, m.p, to, skin_m);
+    if (hit && hit->t_stop * length <= kMinStepPerSkin * skin_m && !only_grazes(world, t.triangle, m.p, to, skin_m)) {
+      ++work.sweeps;
+      ++work.sweeps_at_once;
+      return true;
+    }
+  }
+  return false;
+}
+
+// A triangle the last sweep tested (work.sweep.tested) that stops the leg from m.p to `to`
+// at once and for real, or nothing. As with a collected one, a sweep of the whole world
+// would stop the proxy where it is too; this finds a face that holds the proxy (a coplanar
+// twin past a diagonal it stopped beside) without that sweep, counted as the sweep.
+std::optional<SweepHit> tested_blocks_at_once(const CollisionWorld& world, double skin_m, const Motion& m,
+                                              const Eigen::Vector3d& to, TickWork& work) {
+  if (work.sweeps >= work.max_sweeps) return std::nullopt;
+  const double length = (to - m.p).norm();
+  for (int i = 0; i < work.sweep.tested_count; ++i) {
+    const TriangleRef& t = work.sweep.tested[at(i)];
+    if (is_collected(m, t)) continue;
+    ++work.sweep.triangle_tests;
+    auto hit = world.sweep_triangle(t, m.p, to, skin_m);
+    if (hit && hit->t_stop * length <= kMinStepPerSkin * skin_m && !only_grazes(world, t, m.p, to, skin_m)) {
+      ++work.sweeps;
+      ++work.sweeps_at_once;
+      hit->t_stop = 0.0;
+      return hit;
+    }
+  }
+  return std::nullopt;
+}
+
+enum class Step { Stay, Moved, OutOfWork };
+
+// Off every face past a convex edge, the proxy would sweep towards the goal to find the
+// face beyond, then slide along it: two sweeps. When the face beyond is known (see
+// face_beyond_edge), one leg goes straight to the goal's foot on its plane instead, swept
+// against everything, so it crosses nothing whichever face the guess is; the guess only
+// decides where the leg ends. Ending there unhit, the proxy rests on that plane as on a
+// constraint it met.
+Step slide_onto_face_beyond(const CollisionWorld& world, double skin_m, const Eigen::Vector3d& goal, Motion& m,
+                            ProxyState& state, TickWork& work) {
+  const auto beyond = face_beyond_edge(world, work.sweep, skin_m, m.p, goal);
+  if (!beyond) return Step::Stay;
+  const HalfSpace plane{beyond->normal_W, beyond->plane_offset_m + skin_m};
+  const auto target = project_onto_half_spaces(goal, std::span<const HalfSpace>(&plane, 1),
+                                               kFeasibleTolerancePerSkin * skin_m);
+  if (!target) return Step::Stay;
+  if ((*target - m.p).norm() <= kMinStepPerSkin * skin_m) {
+    // Already at the goal's foot on that plane (a coplanar twin past a diagonal): it holds
+    // the proxy where it is, if the proxy is over it, so that it is not released at once.
+    if (!world.projects_onto_triangle(beyond->where, m.p, 0.0)) return Step::Stay;
+    if (!add_constraint(m, *beyond, skin_m)) {
+      work.exhausted = true;
+      return Step::OutOfWork;
+    }
+    return Step::Moved;
+  }
+  std::optional<SweepHit> hit;
+  if (!sweep_past_grazes(world, work, m.p, *target, skin_m, {}, hit)) return Step::OutOfWork;
+  advance(m, *target, hit, state);
+  if (!add_constraint(m, hit ? *hit : *beyond, skin_m)) {
+    work.exhausted = true;
+    return Step::OutOfWork;
+  }
+  return Step::Moved;
+}
+
 enum class Release { None, Moved, OutOfWork };
 
 // Least gain in distance to the goal, as a fraction of it, that a release must make and
@@ -286,6 +386,7 @@ Release release_one_plane(const CollisionWorld& world, double skin_m, const Eige
     for (int j = 0; j < m.ignored_count; ++j) {
       if (m.ignored[at(j)].plane != i) keep[at(k++)] = m.ignored[at(j)].triangle;
     }
+    if (collected_blocks_at_once(world, skin_m, m, *target, i, work)) continue;  // plane i holds
     std::optional<SweepHit> hit;
     if (!sweep_past_grazes(world, work, m.p, *target, skin_m, std::span<const TriangleRef>(keep.data(), at(k)), hit)) {
       return Release::OutOfWork;
@@ -336,15 +437,21 @@ void solve_motion(const CollisionWorld& world, double skin_m, const Eigen::Vecto
   append_path(state, start);
   std::optional<SweepHit> hit;
   // The straight segment first, nothing ignored: if it is free the proxy is at the goal.
-  // A proxy pressed onto the face it rested on finds that face in the way at once (t_stop
-  // 0, no earlier hit exists), and that needs no sweep of the whole world: the constraint
-  // is a real one (not a graze), and the proxy does not move before the next, full, sweeps.
+  // A proxy pressed onto the face it rested on finds that face in the way at once (within
+  // the least step; rounding leaves it a hair over one skin off as often as under), and
+  // that needs no sweep of the whole world: no hit comes before one at once, the
+  // constraint is a real one (not a graze), and the proxy does not move before the next,
+  // full, sweeps.
   // It counts as a sweep of the budget all the same: what a tick may do stays the same.
   if (resting_on != nullptr && (goal - m.p).norm() > min_step && work.sweeps < work.max_sweeps) {
     hit = world.sweep_triangle(*resting_on, m.p, goal, skin_m);
-    if (hit && (hit->t_stop != 0.0 || only_grazes(world, *resting_on, m.p, goal, skin_m))) hit.reset();
+    if (hit && (hit->t_stop * (goal - m.p).norm() > min_step || only_grazes(world, *resting_on, m.p, goal, skin_m))) {
+      hit.reset();
+    }
     if (hit) {
+      hit->t_stop = 0.0;
       ++work.sweeps;
+      ++work.sweeps_at_once;
       ++work.sweep.triangle_tests;
     }
   }
@@ -394,11 +501,28 @@ void solve_motion(const CollisionWorld& world, double skin_m, const Eigen::Vecto
       if (on_exact) continue;
     }
     // Off a triangle past a convex edge, whether this step moved or an earlier one did.
-    if (release_passed_constraints(world, m, skin_m)) continue;
+    if (release_passed_constraints(world, m, skin_m)) {
+      if (m.plane_count == 0 && slide_onto_face_beyond(world, skin_m, goal, m, state, work) == Step::OutOfWork) {
+        return;
+      }
+      continue;
+    }
     if (m.plane_count == 0 || (goal - m.p).norm() <= min_step) return;  // at the goal
     if (single_face_under(world, m)) return;  // pressed onto one face: a minimum
     // At the minimum over the collected planes. Check it against the surface itself:
-    // the straight segment to the goal, nothing ignored.
+    // the straight segment to the goal, nothing ignored (no sweep needed when a collected
+    // triangle blocks it at once).
+    if (const auto at_once = tested_blocks_at_once(world, skin_m, m, goal, work)) {
+      if (!add_constraint(m, *at_once, skin_m)) {
+        work.exhausted = true;
+        return;
+      }
+      continue;
+    }
+    if (collected_blocks_at_once(world, skin_m, m, goal, -1, work)) {
+      if (release_one_plane(world, skin_m, goal, m, state, work) != Release::Moved) return;
+      continue;
+    }
     if (!sweep_past_grazes(world, work, m.p, goal, skin_m, {}, hit)) return;
     if (!hit) {
       advance(m, goal, hit, state);

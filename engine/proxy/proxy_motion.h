@@ -24,6 +24,8 @@ struct IgnoredTriangle {
 // The work one tick may still do; shared by the passes of a tick.
 struct TickWork {
   int sweeps = 0;
+  // Of those, the ones answered by testing known triangles alone (found at once).
+  int sweeps_at_once = 0;
   int max_sweeps = kMaxProxySweeps;
   SweepWork sweep;
   bool exhausted = false;  // the budget (or the constraint store) ran out

@@ -2,11 +2,11 @@
 // (`mhd-proxy-bench --write-path`, or any `mhd proxy-replay` HIP CSV) through step_proxy and
 // writes one row per tick: its time as it came (first_us: the caches hold what the earlier
 // ticks left there), the least time of the same tick run again from a copy of the state
-// (again_us: everything it needs is in the cache), and what it did (sweeps, triangle tests,
-// candidate-list gathers, planes). A tick slow the first time and fast again waited on
-// memory; one slow both times did work. --evict-every N streams 64 MiB through the cache
-// before every Nth tick that follows a contact tick (column `evicted`), for ticks that
-// start with nothing cached. Diagnostic only: not run by ctest, no targets.
+// (again_us: everything it needs is in the cache), and what it did (sweeps, those answered
+// at once, triangle tests, candidate-list gathers, planes). A tick slow the first time and
+// fast again waited on memory; one slow both times did work. --evict-every N streams
+// 64 MiB through the cache before every Nth tick that follows a contact tick (column
+// `evicted`), for ticks that start with nothing cached. Diagnostic only: not run by ctest, no targets.
 
 #include "proxy/god_object.h"
 #include "recording/hip_path_csv.h"
@@ -72,8 +72,8 @@ int main(int argc, char** argv) {
 
   std::vector<unsigned char> junk(evict_every > 0 ? kEvictBytes : 0, 1);
   unsigned sink = 0;
-  fmt::print(out, "tick,first_us,again_us,contact,planes,sweeps,triangle_tests,gathers,candidates,after_contact,"
-                  "hip_step_mm,proxy_to_hip_mm,proxy_step_mm,evicted\n");
+  fmt::print(out, "tick,first_us,again_us,contact,planes,sweeps,sweeps_at_once,triangle_tests,gathers,candidates,"
+                  "after_contact,hip_step_mm,proxy_to_hip_mm,proxy_step_mm,evicted\n");
   mhd::ProxyState state;
   mhd::reset_proxy(state, hips_W.front());
   using Clock = std::chrono::steady_clock;
@@ -99,8 +99,8 @@ int main(int argc, char** argv) {
       again_us = r == 0 ? us : std::min(again_us, us);
     }
     const Eigen::Vector3d& p_W_hip_previous = hips_W[i > 0 ? i - 1 : 0];
-    fmt::print(out, "{},{:.3f},{:.3f},{},{},{},{},{},{},{},{:.4f},{:.4f},{:.4f},{}\n", i, first_us, again_us,
-               o.in_contact ? 1 : 0, o.plane_count, o.sweeps, o.triangle_tests,
+    fmt::print(out, "{},{:.3f},{:.3f},{},{},{},{},{},{},{},{},{:.4f},{:.4f},{:.4f},{}\n", i, first_us, again_us,
+               o.in_contact ? 1 : 0, o.plane_count, o.sweeps, o.sweeps_at_once, o.triangle_tests,
                state.near.gathers() - gathers_before, state.near.size(), after_contact ? 1 : 0,
                (hips_W[i] - p_W_hip_previous).norm() * 1e3, (o.proxy_W - hips_W[i]).norm() * 1e3,
                (o.proxy_W - before.proxy_W).norm() * 1e3, evicted ? 1 : 0);
