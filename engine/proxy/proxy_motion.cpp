@@ -274,48 +274,44 @@ std::optional<SweepHit> face_beyond_edge(const CollisionWorld& world, SweepWork&
   return first;
 }
 
-// True when a collected triangle (of plane `plane`, or of any plane when it is negative)
-// stops the leg from m.p to `to` at once (within the least step) and for real, not as a
-// graze. A sweep of the whole world would then stop the proxy where it is as well: no hit
-// comes before one at once. Counted as the sweep it stands for, so what a tick may do
-// stays the same.
+// `t`'s hit on the leg from p to `to` when it stops the leg at once (within the least step)
+// and for real, not as a graze; else nothing. No hit comes before one at once, so a sweep
+// of the whole world would stop the proxy where it is too: the hit answers that sweep and
+// is counted as one (and apart, as at once), so what a tick may do stays the same.
+std::optional<SweepHit> hit_at_once(const CollisionWorld& world, const TriangleRef& t, const Eigen::Vector3d& p,
+                                    const Eigen::Vector3d& to, double skin_m, TickWork& work) {
+  if (work.sweeps >= work.max_sweeps) return std::nullopt;
+  ++work.sweep.triangle_tests;
+  auto hit = world.sweep_triangle(t, p, to, skin_m);
+  if (!hit || hit->t_stop * (to - p).norm() > kMinStepPerSkin * skin_m || only_grazes(world, t, p, to, skin_m)) {
+    return std::nullopt;
+  }
+  hit->t_stop = 0.0;
+  ++work.sweeps;
+  ++work.sweeps_at_once;
+  return hit;
+}
+
+// Whether a collected triangle (of plane `plane`, or of any plane when it is negative)
+// stops the leg from m.p to `to` at once (hit_at_once).
 bool collected_blocks_at_once(const CollisionWorld& world, double skin_m, const Motion& m, const Eigen::Vector3d& to,
                               int plane, TickWork& work) {
-  if (work.sweeps >= work.max_sweeps) return false;
-  const double length = (to - m.p).norm();
   for (int j = 0; j < m.ignored_count; ++j) {
     const IgnoredTriangle& t = m.ignored[at(j)];
-    if (plane >= 0 && t.plane != plane) continue;
-    ++work.sweep.triangle_tests;
-    const auto hit = world.sweep_triangle(t.triangle, m.p, to, skin_m);
-    if (hit && hit->t_stop * length <= kMinStepPerSkin * skin_m && !only_grazes(world, t.triangle, m.p, to, skin_m)) {
-      ++work.sweeps;
-      ++work.sweeps_at_once;
-      return true;
-    }
+    if ((plane < 0 || t.plane == plane) && hit_at_once(world, t.triangle, m.p, to, skin_m, work)) return true;
   }
   return false;
 }
 
-// A triangle the last sweep tested (work.sweep.tested) that stops the leg from m.p to `to`
-// at once and for real, or nothing. As with a collected one, a sweep of the whole world
-// would stop the proxy where it is too; this finds a face that holds the proxy (a coplanar
-// twin past a diagonal it stopped beside) without that sweep, counted as the sweep.
+// A triangle not collected that the last sweep tested (work.sweep.tested) and that stops
+// the leg from m.p to `to` at once (hit_at_once): a face holding the proxy, such as a
+// coplanar twin past a diagonal it stopped beside.
 std::optional<SweepHit> tested_blocks_at_once(const CollisionWorld& world, double skin_m, const Motion& m,
                                               const Eigen::Vector3d& to, TickWork& work) {
-  if (work.sweeps >= work.max_sweeps) return std::nullopt;
-  const double length = (to - m.p).norm();
   for (int i = 0; i < work.sweep.tested_count; ++i) {
     const TriangleRef& t = work.sweep.tested[at(i)];
     if (is_collected(m, t)) continue;
-    ++work.sweep.triangle_tests;
-    auto hit = world.sweep_triangle(t, m.p, to, skin_m);
-    if (hit && hit->t_stop * length <= kMinStepPerSkin * skin_m && !only_grazes(world, t, m.p, to, skin_m)) {
-      ++work.sweeps;
-      ++work.sweeps_at_once;
-      hit->t_stop = 0.0;
-      return hit;
-    }
+    if (auto hit = hit_at_once(world, t, m.p, to, skin_m, work)) return hit;
   }
   return std::nullopt;
 }
@@ -437,23 +433,11 @@ void solve_motion(const CollisionWorld& world, double skin_m, const Eigen::Vecto
   append_path(state, start);
   std::optional<SweepHit> hit;
   // The straight segment first, nothing ignored: if it is free the proxy is at the goal.
-  // A proxy pressed onto the face it rested on finds that face in the way at once (within
-  // the least step; rounding leaves it a hair over one skin off as often as under), and
-  // that needs no sweep of the whole world: no hit comes before one at once, the
-  // constraint is a real one (not a graze), and the proxy does not move before the next,
-  // full, sweeps.
-  // It counts as a sweep of the budget all the same: what a tick may do stays the same.
-  if (resting_on != nullptr && (goal - m.p).norm() > min_step && work.sweeps < work.max_sweeps) {
-    hit = world.sweep_triangle(*resting_on, m.p, goal, skin_m);
-    if (hit && (hit->t_stop * (goal - m.p).norm() > min_step || only_grazes(world, *resting_on, m.p, goal, skin_m))) {
-      hit.reset();
-    }
-    if (hit) {
-      hit->t_stop = 0.0;
-      ++work.sweeps;
-      ++work.sweeps_at_once;
-      ++work.sweep.triangle_tests;
-    }
+  // A proxy pressed onto the face it rested on finds that face in the way at once, which
+  // needs no sweep of the whole world (hit_at_once; at once is within the least step, as
+  // rounding leaves the proxy a hair over one skin off as often as under).
+  if (resting_on != nullptr && (goal - m.p).norm() > min_step) {
+    hit = hit_at_once(world, *resting_on, m.p, goal, skin_m, work);
   }
   if (!hit && !sweep_past_grazes(world, work, m.p, goal, skin_m, {}, hit)) return;
   advance(m, goal, hit, state);
