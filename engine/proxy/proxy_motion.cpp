@@ -332,19 +332,16 @@ Step slide_onto_face_beyond(const CollisionWorld& world, double skin_m, const Ei
   const auto target = project_onto_half_spaces(goal, std::span<const HalfSpace>(&plane, 1),
                                                kFeasibleTolerancePerSkin * skin_m);
   if (!target) return Step::Stay;
-  if ((*target - m.p).norm() <= kMinStepPerSkin * skin_m) {
-    // Already at the goal's foot on that plane (a coplanar twin past a diagonal): it holds
-    // the proxy where it is, if the proxy is over it, so that it is not released at once.
-    if (!world.projects_onto_triangle(beyond->where, m.p, 0.0)) return Step::Stay;
-    if (!add_constraint(m, *beyond, skin_m)) {
-      work.exhausted = true;
-      return Step::OutOfWork;
-    }
-    return Step::Moved;
-  }
   std::optional<SweepHit> hit;
-  if (!sweep_past_grazes(world, work, m.p, *target, skin_m, {}, hit)) return Step::OutOfWork;
-  advance(m, *target, hit, state);
+  if ((*target - m.p).norm() <= kMinStepPerSkin * skin_m) {
+    // Already at the goal's foot on that plane (a coplanar twin past a diagonal): the face
+    // holds the proxy where it is if it stops the segment to the goal at once.
+    hit = hit_at_once(world, beyond->where, m.p, goal, skin_m, work);
+    if (!hit) return Step::Stay;
+  } else {
+    if (!sweep_past_grazes(world, work, m.p, *target, skin_m, {}, hit)) return Step::OutOfWork;
+    advance(m, *target, hit, state);
+  }
   if (!add_constraint(m, hit ? *hit : *beyond, skin_m)) {
     work.exhausted = true;
     return Step::OutOfWork;
