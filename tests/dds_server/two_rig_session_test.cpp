@@ -31,14 +31,17 @@ struct Row {
   bool contact;
 };
 
-// The rows of a recording with fresh tracking (finite poses, tracker age < 0.1 s).
+// The rows of a recording with fresh tracking (finite poses, tracker age in [0, 0.1) s).
+// A row from before the first sample records age -1 and the base's default pose, the
+// same for both rigs, so it says nothing of where either base was.
 std::vector<Row> read_recording(const fs::path& csv) {
   const test::CsvTable t = test::read_csv_table(csv.string());
   std::vector<Row> rows;
   for (std::size_t i = 0; i < t.rows.size(); ++i) {
     const auto at = [&](const char* name) { return t.at(i, name); };
     const Row r{at("t_s"), at("base_x_m"), at("base_z_m"), at("user_x_m"), at("user_z_m"), at("contact") > 0.5};
-    if (std::isfinite(r.base_x_m) && std::isfinite(r.user_x_m) && at("tracker_age_s") < 0.1) rows.push_back(r);
+    const double age_s = at("tracker_age_s");
+    if (std::isfinite(r.base_x_m) && std::isfinite(r.user_x_m) && age_s >= 0.0 && age_s < 0.1) rows.push_back(r);
   }
   return rows;
 }
