@@ -2,6 +2,7 @@
 
 #include "collision/huge_pages.h"
 #include "collision/segment_triangle.h"
+#include "collision/split_tree_build.h"
 #include "collision/two_halves.h"
 
 #include <algorithm>
@@ -53,18 +54,7 @@ void MeshBvh::make_interface() {
   interface_ = std::make_unique<btTriangleIndexVertexArray>();
   // One Bullet part per kPartTriangles triangles, all over the same vertices: a leaf then
   // names (part, index in part), and part * kPartTriangles + index is the mesh's triangle.
-  for (std::size_t first = 0; first < mesh_->triangles.size(); first += kPartTriangles) {
-    btIndexedMesh part;
-    part.m_numTriangles = static_cast<int>(std::min<std::size_t>(kPartTriangles, mesh_->triangles.size() - first));
-    part.m_triangleIndexBase = reinterpret_cast<const unsigned char*>(mesh_->triangles.data() + first);
-    part.m_triangleIndexStride = static_cast<int>(sizeof(TriangleIndices));
-    part.m_indexType = PHY_INTEGER;
-    part.m_numVertices = static_cast<int>(mesh_->vertices_m.size());
-    part.m_vertexBase = reinterpret_cast<const unsigned char*>(mesh_->vertices_m.data());
-    part.m_vertexStride = static_cast<int>(sizeof(Eigen::Vector3d));
-    part.m_vertexType = PHY_DOUBLE;
-    interface_->addIndexedMesh(part, PHY_INTEGER);
-  }
+  add_mesh_parts(*interface_, mesh_->triangles, mesh_->vertices_m, kPartTriangles);
   resize_in_huge_pages(face_normals_O_, mesh_->triangles.size());
   in_two_halves(mesh_->triangles.size(), kParallelNodes, [this](std::size_t first, std::size_t last) {
     for (std::size_t i = first; i < last; ++i) {
@@ -83,8 +73,17 @@ void MeshBvh::make_interface() {
 
 MeshBvh::MeshBvh(std::shared_ptr<const TriangleMesh> mesh) : mesh_(std::move(mesh)) {
   make_interface();
-  shape_ = std::make_unique<btBvhTriangleMeshShape>(interface_.get(), /*quantized=*/true,
-                                                     /*buildBvh=*/true);
+  if (mesh_->triangles.size() >= kSplitBuildMinTriangles) {
+    built_tree_ = build_tree_in_two_halves(*mesh_, bvh_scale_, to_bt(bounds_.min() * bvh_scale_),
+                                           to_bt(bounds_.max() * bvh_scale_));
+  }
+  if (built_tree_) {
+    shape_ = std::make_unique<btBvhTriangleMeshShape>(interface_.get(), /*quantized=*/true, /*buildBvh=*/false);
+    // Same scaling as the interface, or Bullet resets it and builds the tree again.
+    shape_->setOptimizedBvh(built_tree_.get(), btVector3(bvh_scale_, bvh_scale_, bvh_scale_));
+  } else {
+    shape_ = std::make_unique<btBvhTriangleMeshShape>(interface_.get(), /*quantized=*/true, /*buildBvh=*/true);
+  }
   adopt_tree(shape_->getOptimizedBvh());
 }
 
@@ -239,7 +238,7 @@ std::uint64_t MeshBvh::serialized_bytes(std::uint64_t nodes, std::uint64_t subtr
          subtrees * sizeof(btBvhSubtreeInfo) + nodes * sizeof(btQuantizedBvhNode);
 }
 
-std::vector<std::byte> MeshBvh::serialize_bvh() const {
+MeshBvh::SerializedTree MeshBvh::serialize_tree() const {
   // Bullet's API is not const-correct; this only reads the subtree count.
   auto* tree = const_cast<btQuantizedBvh*>(tree_);  // NOLINT
   const std::uint64_t bytes = serialized_bytes(static_cast<std::uint64_t>(node_count_),
@@ -251,12 +250,16 @@ std::vector<std::byte> MeshBvh::serialize_bvh() const {
   const unsigned size = tree_->calculateSerializeBufferSize();
   if (size != bytes) throw std::runtime_error("MeshBvh: Bullet's serialized size is not the one counted");
   const std::size_t padded = (size + kBulletAlignment - 1) / kBulletAlignment * kBulletAlignment;
-  std::unique_ptr<std::byte[], void (*)(std::byte*)> buffer(
-      static_cast<std::byte*>(std::aligned_alloc(kBulletAlignment, padded)), &free_aligned);
-  if (!buffer || !tree_->serialize(buffer.get(), size, /*swapEndian=*/false)) {
+  SerializedTree out{{static_cast<std::byte*>(std::aligned_alloc(kBulletAlignment, padded)), &free_aligned}, size};
+  if (!out.bytes || !tree_->serialize(out.bytes.get(), size, /*swapEndian=*/false)) {
     throw std::runtime_error("MeshBvh: Bullet failed to serialize the BVH");
   }
-  return {buffer.get(), buffer.get() + size};
+  return out;
+}
+
+std::vector<std::byte> MeshBvh::serialize_bvh() const {
+  const SerializedTree tree = serialize_tree();
+  return {tree.bytes.get(), tree.bytes.get() + tree.size};
 }
 
 MeshBvh::QuantizedBox MeshBvh::quantize(const Eigen::AlignedBox3d& box_O) const {

@@ -59,8 +59,17 @@ class MeshBvh {
   MeshBvh(const MeshBvh&) = delete;
   MeshBvh& operator=(const MeshBvh&) = delete;
 
-  /// The BVH in Bullet's own in-place format (the cache stores it verbatim). Throws
-  /// std::length_error for a tree over kMaxSerializedBytes.
+  /// The BVH in Bullet's own in-place format (the cache stores it verbatim), in a
+  /// 16-byte-aligned buffer of its own. Throws std::length_error for a tree over
+  /// kMaxSerializedBytes.
+  struct SerializedTree {
+    std::unique_ptr<std::byte, void (*)(std::byte*)> bytes{nullptr, nullptr};
+    std::size_t size = 0;
+    [[nodiscard]] std::span<const std::byte> span() const { return {bytes.get(), size}; }
+  };
+  [[nodiscard]] SerializedTree serialize_tree() const;
+  /// serialize_tree() copied into a vector (for small trees and tests; the cache writes
+  /// the buffer itself, which for a large mesh is gigabytes).
   [[nodiscard]] std::vector<std::byte> serialize_bvh() const;
 
   /// Bullet's serialized format counts its bytes in an unsigned int and writes every node
@@ -170,6 +179,8 @@ class MeshBvh {
   // Bullet sees the mesh scaled by this (see make_interface); queries are scaled alike.
   double bvh_scale_ = 1.0;
   std::unique_ptr<btTriangleIndexVertexArray> interface_;
+  // A large mesh's tree built in two halves (split_tree_build.h); shape_ uses it, not owns it.
+  std::unique_ptr<btOptimizedBvh> built_tree_;
   std::unique_ptr<btBvhTriangleMeshShape> shape_;
   // Backing store of a deserialized BVH (Bullet's in-place format points into it): a
   // buffer of our own, or a cache file's mapping.

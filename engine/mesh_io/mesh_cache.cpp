@@ -402,9 +402,9 @@ Result<CachedMesh, MeshLoadError> MeshCache::load(const std::filesystem::path& f
 void MeshCache::store(const std::filesystem::path& mesh_file, const std::filesystem::path& target,
                       const MeshCacheKey& key, const MeshBvh& bvh, CachedMesh& result) {
   const TriangleMesh& mesh = bvh.mesh();
-  std::vector<std::byte> serialized;
+  MeshBvh::SerializedTree serialized;
   try {
-    serialized = bvh.serialize_bvh();
+    serialized = bvh.serialize_tree();
   } catch (const std::exception& e) {
     ++stats_.write_failures;
     spdlog::warn("mesh cache: not caching '{}': {}", mesh_file.string(), e.what());
@@ -416,7 +416,7 @@ void MeshCache::store(const std::filesystem::path& mesh_file, const std::filesys
   if (absolute_ec || source.size() > kMaxSourceBytes) source.clear();
   const std::size_t limit = std::numeric_limits<std::size_t>::max() / 2;
   const auto layout = layout_for(mesh.vertices_m.size(), mesh.triangles.size(), mesh.vertex_normals.size(),
-                                 serialized.size(), source.size(), limit);
+                                 serialized.size, source.size(), limit);
   if (!layout || mesh.vertex_normals.size() != mesh.vertices_m.size()) {
     ++stats_.write_failures;
     return;
@@ -434,7 +434,7 @@ void MeshCache::store(const std::filesystem::path& mesh_file, const std::filesys
   add(layout->vertices, mesh.vertices_m.data(), mesh.vertices_m.size() * sizeof(Eigen::Vector3d));
   add(layout->triangles, mesh.triangles.data(), mesh.triangles.size() * sizeof(TriangleIndices));
   add(layout->normals, mesh.vertex_normals.data(), mesh.vertex_normals.size() * sizeof(Eigen::Vector3d));
-  add(layout->bvh, serialized.data(), serialized.size());
+  add(layout->bvh, serialized.bytes.get(), serialized.size);
   add(layout->source, source.data(), source.size());
 
   std::unique_ptr<XXH3_state_t, XXH_errorcode (*)(XXH3_state_t*)> state(XXH3_createState(), &XXH3_freeState);
@@ -458,7 +458,7 @@ void MeshCache::store(const std::filesystem::path& mesh_file, const std::filesys
   h.vertex_count = mesh.vertices_m.size();
   h.triangle_count = mesh.triangles.size();
   h.normal_count = mesh.vertex_normals.size();
-  h.bvh_bytes = serialized.size();
+  h.bvh_bytes = serialized.size;
   h.source_bytes = source.size();
   h.payload_bytes = layout->end - sizeof(FileHeader);
   h.payload_hash_low = payload.low64;
