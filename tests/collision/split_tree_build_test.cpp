@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <random>
 #include <vector>
 
@@ -46,7 +47,8 @@ std::vector<Eigen::AlignedBox3d> random_boxes(std::uint32_t seed, const Eigen::A
   std::mt19937 rng(seed);
   std::vector<Eigen::AlignedBox3d> boxes;
   for (int i = 0; i < 8; ++i) {
-    const Eigen::Vector3d unit = Eigen::Vector3d::NullaryExpr([&] { return std::uniform_real_distribution<>(0, 1)(rng); });
+    std::uniform_real_distribution<> uniform(0.0, 1.0);
+    const Eigen::Vector3d unit(uniform(rng), uniform(rng), uniform(rng));
     Eigen::Vector3d at = within.min() + unit.cwiseProduct(within.sizes());
     at.z() = within.min().z();  // on the lowest triangles
     boxes.emplace_back(at - Eigen::Vector3d::Constant(size), at + Eigen::Vector3d::Constant(size));
@@ -82,6 +84,38 @@ TEST(SplitTreeBuild, AShuffledLargeMeshIsSplitInSpaceAndEveryLeafNamesItsTriangl
   std::vector<Eigen::AlignedBox3d> boxes = random_boxes(7, built.bounds(), 0.004);
   boxes.emplace_back(Eigen::Vector3d(0.49, 0.49, 0.49), Eigen::Vector3d(0.51, 0.51, 0.51));  // the patch above
   expect_every_overlap_reported(built, boxes);
+}
+
+TEST(SplitTreeBuild, ASmallMeshBuiltInTwoHalvesPassesTheTreeCheck) {
+  // The two-thread build called directly on a grid small enough for ThreadSanitizer: the
+  // tree it makes, with the quantization MeshBvh gives the mesh, is adopted and answers.
+  auto mesh = std::make_shared<TriangleMesh>();
+  constexpr int kQuads = 40;
+  for (int j = 0; j <= kQuads; ++j) {
+    for (int i = 0; i <= kQuads; ++i) mesh->vertices_m.emplace_back(i * 0.01, j * 0.01, 0.001 * ((i * j) % 7));
+  }
+  const auto id = [](int i, int j) { return static_cast<std::uint32_t>(j * (kQuads + 1) + i); };
+  for (int j = 0; j < kQuads; ++j) {
+    for (int i = 0; i < kQuads; ++i) {
+      mesh->triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      mesh->triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  }
+  std::shuffle(mesh->triangles.begin(), mesh->triangles.end(), std::mt19937(3));
+  const MeshBvh whole(mesh);  // for the scale and bounds the tree is quantized by
+  const double scale = whole.bvh_scale();
+  const Eigen::Vector3d lo = whole.bounds().min() * scale, hi = whole.bounds().max() * scale;
+  const std::unique_ptr<btOptimizedBvh> tree =
+      build_tree_in_two_halves(*mesh, scale, btVector3(lo.x(), lo.y(), lo.z()), btVector3(hi.x(), hi.y(), hi.z()));
+  ASSERT_NE(tree, nullptr);
+  const unsigned size = tree->calculateSerializeBufferSize();
+  const std::size_t padded = (size + 15) / 16 * 16;
+  const std::unique_ptr<std::byte, void (*)(void*)> buffer(static_cast<std::byte*>(std::aligned_alloc(16, padded)),
+                                                           &std::free);
+  ASSERT_TRUE(tree->serialize(buffer.get(), size, /*swapEndian=*/false));
+  const auto adopted = MeshBvh::from_serialized(mesh, {buffer.get(), size});
+  ASSERT_NE(adopted, nullptr) << "the tree built in two halves fails the cached tree's check";
+  expect_every_overlap_reported(*adopted, random_boxes(5, adopted->bounds(), 0.02));
 }
 
 TEST(SplitTreeBuild, CentresOnOnePlaneAcrossTheLongestAxisAreBuiltWhole) {

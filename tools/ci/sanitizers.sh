@@ -79,6 +79,11 @@ tsan_exclude=(
   # threads (checksum, face normals, the tree's two halves) run in
   # AMeshLargeEnoughForTwoThreadsLoadsFromTheCacheAsBuilt, which stays.
   'MeshCacheTest\.AMeshPastOneBulletPart'
+  # Meshes of 2^21 triangles (a minute or more each under TSan). The two-thread tree
+  # build they go through runs in SplitTreeBuild.ASmallMeshBuiltInTwoHalvesPassesTheTreeCheck,
+  # which stays.
+  'LargeMesh\.'
+  'SplitTreeBuild\.(AShuffled|CentresOnOnePlane)'
 )
 
 # ThreadSanitizer: every test binary whose code starts threads (the haptic server's five
@@ -97,6 +102,7 @@ tsan_targets=(
   viewer_tests                # the viewer's latest-state hand-off (rig_state_test)
   viewer_dds_tests            # the viewer's DDS state source
   mesh_io_tests               # a cache hit: checksum thread, two-thread face normals and tree check
+  collision_tests             # a tree built in two halves on two threads
 )
 
 # ---- helpers --------------------------------------------------------------------------
