@@ -65,7 +65,6 @@ class MeshBvh {
   struct SerializedTree {
     std::unique_ptr<std::byte, void (*)(std::byte*)> bytes{nullptr, nullptr};
     std::size_t size = 0;
-    [[nodiscard]] std::span<const std::byte> span() const { return {bytes.get(), size}; }
   };
   [[nodiscard]] SerializedTree serialize_tree() const;
   /// serialize_tree() copied into a vector (for small trees and tests; the cache writes

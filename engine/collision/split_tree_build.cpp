@@ -94,13 +94,9 @@ std::array<Half, 2> split_at_median(const TriangleMesh& mesh, int axis, double l
     bin[t] = static_cast<std::uint16_t>(std::clamp(at, 0.0, static_cast<double>(kMedianBins - 1)));
     ++count[bin[t]];
   }
-  std::size_t median_bin = 0;
-  for (std::size_t below = 0; median_bin < kMedianBins; ++median_bin) {
-    below += count[median_bin];
-    if (2 * below >= n) break;
-  }
-  std::size_t first_count = 0;
-  for (std::size_t b = 0; b <= median_bin && b < kMedianBins; ++b) first_count += count[b];
+  // The first bin at which half the triangles are in or below it (the last bin at most).
+  std::size_t median_bin = 0, first_count = count[0];
+  while (2 * first_count < n && median_bin + 1 < kMedianBins) first_count += count[++median_bin];
   std::array<Half, 2> halves;
   halves[0].triangles.reserve(first_count);
   halves[0].mesh_triangle.reserve(first_count);
