@@ -4,8 +4,11 @@
 #   tools/ci/sanitizers.sh tsan   the tests that start threads, built with ThreadSanitizer
 #                                 (preset tsan; only their targets are built)
 #   tools/ci/sanitizers.sh [all]  both (what CI runs, after the release tests)
-# Any sanitizer report fails its test (the run aborts on the first report) and any
-# failing test fails this script. Each phase prints its wall time.
+# Any sanitizer report fails its test (the run aborts on the first report) and fails this
+# script. A test that fails with no sanitizer report in the output (an assertion on timing,
+# which instrumentation slows several times) runs once more, alone with its binary's
+# other failures; if it then passes it is named as flaky in the summary, and otherwise it
+# fails this script. Each phase prints its wall time.
 #
 # Environment: MHD_CI_JOBS (default 2) build and test jobs; MHD_ASAN_BUILD_DIR and
 # MHD_TSAN_BUILD_DIR (default build/asan, build/tsan) to build elsewhere;
@@ -109,6 +112,8 @@ tsan_targets=(
 
 summary=()
 failed=0
+failed_tests=()
+flaky_tests=()
 
 now() { date +%s.%N; }
 phase() {  # phase <label> <command...>: runs it, prints and records its wall time
@@ -129,6 +134,46 @@ phase() {  # phase <label> <command...>: runs it, prints and records its wall ti
 
 join_regex() { local IFS='|'; echo "$*"; }
 
+# The names of the tests ctest saw fail in <build dir>, one per line: CI shows only the end
+# of the log, and a test phase can end thousands of lines above it.
+failed_in() {
+  local log="$1/Testing/Temporary/LastTestsFailed.log"
+  [ -f "$log" ] && sed 's/^[0-9]*://' "$log"
+}
+
+# What a sanitizer prints when it finds something (LeakSanitizer's report says ERROR too).
+sanitizer_report='ERROR: AddressSanitizer|ERROR: LeakSanitizer|WARNING: ThreadSanitizer|runtime error:'
+
+# ctest_rerun_unreported <label> <build dir> <ctest args...>: runs the tests; when some
+# fail and their output holds no sanitizer report, runs those once more.
+ctest_rerun_unreported() {
+  local label="$1" dir="$2" rc name
+  shift 2
+  local log="$dir/Testing/Temporary/sanitizer_ctest.log"
+  ctest --test-dir "$dir" --output-log "$log" "$@" && return 0
+  rc=$?
+  local first=()
+  mapfile -t first < <(failed_in "$dir")
+  if grep -qE "$sanitizer_report" "$log" || [ ${#first[@]} -eq 0 ]; then
+    for name in "${first[@]}"; do failed_tests+=("$label $name"); done
+    return $rc
+  fi
+  echo "==== sanitizers: $label: ${#first[@]} test(s) failed with no sanitizer report; once more:"
+  printf '  %s\n' "${first[@]}"
+  ctest --test-dir "$dir" --rerun-failed --output-on-failure --timeout 300 --output-log "$log.rerun" && {
+    for name in "${first[@]}"; do flaky_tests+=("$label $name"); done
+    return 0
+  }
+  rc=$?
+  local again=()
+  mapfile -t again < <(failed_in "$dir")
+  for name in "${again[@]}"; do failed_tests+=("$label $name"); done
+  for name in "${first[@]}"; do
+    printf '%s\n' "${again[@]}" | grep -qxF -- "$name" || flaky_tests+=("$label $name")
+  done
+  return $rc
+}
+
 supp() {  # supp <file>: the suppressions option for a file in tools/ci, if it exists
   [ -f "$root/tools/ci/$1" ] && echo ":suppressions=$root/tools/ci/$1"
 }
@@ -140,11 +185,12 @@ run_asan() {
   phase "asan build" cmake --build "$asan_dir" -j "$jobs" || return
   local exclude=()
   [ ${#asan_exclude[@]} -eq 0 ] || exclude=(-E "$(join_regex "${asan_exclude[@]}")")
-  phase "asan test" env \
-    ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:check_initialization_order=1:strict_init_order=1$(supp asan.supp)" \
-    LSAN_OPTIONS="print_suppressions=0$(supp lsan.supp)" \
-    UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1$(supp ubsan.supp)" \
-    ctest --test-dir "$asan_dir" -j "$jobs" --output-on-failure --timeout 300 "${exclude[@]}" "${extra_ctest[@]}"
+  export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:check_initialization_order=1:strict_init_order=1$(supp asan.supp)"
+  export LSAN_OPTIONS="print_suppressions=0$(supp lsan.supp)"
+  export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1$(supp ubsan.supp)"
+  phase "asan test" ctest_rerun_unreported asan "$asan_dir" \
+    -j "$jobs" --output-on-failure --timeout 300 "${exclude[@]}" "${extra_ctest[@]}"
+  unset ASAN_OPTIONS LSAN_OPTIONS UBSAN_OPTIONS
 }
 
 # ---- ThreadSanitizer ------------------------------------------------------------------
@@ -167,9 +213,10 @@ print(",".join(str(i + 1) for i, t in enumerate(tests)
     failed=1
     return 1
   fi
-  phase "tsan test" env TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1$(supp tsan.supp)" \
-    ctest --test-dir "$tsan_dir" -j "$jobs" --output-on-failure --timeout 300 \
-    -I "0,0,0,$numbers" "${extra_ctest[@]}"
+  export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1$(supp tsan.supp)"
+  phase "tsan test" ctest_rerun_unreported tsan "$tsan_dir" \
+    -j "$jobs" --output-on-failure --timeout 300 -I "0,0,0,$numbers" "${extra_ctest[@]}"
+  unset TSAN_OPTIONS
 }
 
 t_start=$(now)
@@ -183,6 +230,14 @@ total=$(awk -v a="$t_start" -v b="$(now)" 'BEGIN { printf "%.0f", b - a }')
 echo "==== sanitizers: summary ($mode, $jobs jobs)"
 printf '  %s\n' "${summary[@]}"
 printf '  %-28s %5s s\n' "total" "$total"
+if [ ${#flaky_tests[@]} -gt 0 ]; then
+  echo "==== sanitizers: flaky (failed with no sanitizer report, passed when run again)"
+  printf '  %s\n' "${flaky_tests[@]}"
+fi
+if [ ${#failed_tests[@]} -gt 0 ]; then
+  echo "==== sanitizers: failed tests"
+  printf '  %s\n' "${failed_tests[@]}"
+fi
 if [ $failed -ne 0 ]; then
   echo "==== sanitizers: FAILED" >&2
   exit 1
