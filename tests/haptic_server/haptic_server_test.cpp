@@ -411,6 +411,16 @@ TEST(HapticServer, ADeviceCallThatBlocksTooLongEndsTheRunAndStopsTheBase) {
   EXPECT_EQ(device.c, 0.0);
 }
 
+/// How a run went, for a failed expectation on it: how it ended and what the threads did.
+std::string run_summary(const ServerReport& r) {
+  const char* ended = r.ended_by == RunEnd::Duration ? "duration" : r.ended_by == RunEnd::StopRequested ? "stop" : "fault";
+  return fmt::format("ended by {} after {:.2f} s: {} ticks ({} before the first pose, {} stale, {} faulty, {} missed "
+                     "deadlines), {} tracker samples ({} rejected, last {:.3f} s old), {} base commands; error: {}",
+                     ended, r.status.elapsed_s, r.status.ticks, r.startup_ticks, r.stale_ticks, r.fault_ticks,
+                     r.missed_deadlines, r.status.tracker_samples, r.status.tracker_rejected, r.status.tracker_age_s,
+                     r.base_commands, r.error.value_or("none"));
+}
+
 TEST(HapticServer, ATrackerStuckInACallEndsTheRunWithTheBaseStopped) {
   const fs::path dir = temp_dir();
   const fs::path device_log = dir / "device.log", base_log = dir / "base.log";
@@ -434,7 +444,9 @@ TEST(HapticServer, ATrackerStuckInACallEndsTheRunWithTheBaseStopped) {
   auto build = HapticServer::open(*l.description, *l.scene, o);
   ASSERT_TRUE(build.ok());
   const ServerReport r = build->server->run();
-  ASSERT_TRUE(r.error);
+  // The 300 reads take about 0.3 s at the io thread's 1 kHz, and the next read blocks
+  // 0.6 s, six times the call timeout: the run ends well before its 30 s.
+  ASSERT_TRUE(r.error) << run_summary(r);
   EXPECT_THAT(*r.error, HasSubstr(fmt::format("{}:{}: error: plugin 'fault_tracker': tracker_read has not returned after ",
                                               file.string(), scene_line_of(file, "name=\"fault_tracker\""))));
   EXPECT_TRUE(r.base_stop_sent);
