@@ -74,8 +74,8 @@ void MeshBvh::make_interface() {
 MeshBvh::MeshBvh(std::shared_ptr<const TriangleMesh> mesh) : mesh_(std::move(mesh)) {
   make_interface();
   if (mesh_->triangles.size() >= kSplitBuildMinTriangles) {
-    built_tree_ = build_tree_in_two_halves(*mesh_, bvh_scale_, to_bt(bounds_.min() * bvh_scale_),
-                                           to_bt(bounds_.max() * bvh_scale_));
+    built_tree_ = build_tree_in_pieces(*mesh_, bvh_scale_, to_bt(bounds_.min() * bvh_scale_),
+                                       to_bt(bounds_.max() * bvh_scale_));
   }
   if (built_tree_) {
     shape_ = std::make_unique<btBvhTriangleMeshShape>(interface_.get(), /*quantized=*/true, /*buildBvh=*/false);

@@ -178,7 +178,7 @@ class MeshBvh {
   // Bullet sees the mesh scaled by this (see make_interface); queries are scaled alike.
   double bvh_scale_ = 1.0;
   std::unique_ptr<btTriangleIndexVertexArray> interface_;
-  // A large mesh's tree built in two halves (split_tree_build.h); shape_ uses it, not owns it.
+  // A large mesh's tree built in pieces (split_tree_build.h); shape_ uses it, not owns it.
   std::unique_ptr<btOptimizedBvh> built_tree_;
   std::unique_ptr<btBvhTriangleMeshShape> shape_;
   // Backing store of a deserialized BVH (Bullet's in-place format points into it): a

@@ -1,130 +1,261 @@
 #include "collision/split_tree_build.h"
 
 #include "collision/mesh_bvh.h"
+#include "collision/two_halves.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
-#include <cstring>
 #include <future>
+#include <stdexcept>
+#include <string>
 #include <system_error>
 #include <vector>
 
 namespace mhd {
 namespace {
 
-/// Bins of the histogram the median centre is taken from: a half may hold one bin's
-/// triangles more than the other, which only shifts work between the two threads.
-constexpr std::size_t kMedianBins = std::size_t{1} << 16;
-
 static_assert(MeshBvh::kPartTriangles == (1u << (31 - MAX_NUM_PARTS_IN_BITS)),
               "a leaf's index within its part has the bits Bullet leaves it");
+static_assert(kPieceTriangles >= 2 && kPieceTriangles <= MeshBvh::kPartTriangles);
 
-/// One half of the mesh: its triangles, and which of the mesh's each one is.
-struct Half {
-  std::vector<TriangleIndices> triangles;
-  std::vector<std::uint32_t> mesh_triangle;
+/// A triangle of the mesh and its centre, quantized over the mesh's box.
+struct Item {
+  std::uint32_t triangle;
+  std::array<std::uint16_t, 3> centre;
 };
 
-/// Bullet's tree with access to its arrays, to rename leaves and join two trees.
-class JoinableTree : public btOptimizedBvh {
- public:
-  /// Room for the build's `leaves` leaves (which it would otherwise grow by doubling) and
-  /// for `nodes` nodes, so that neither the build nor a later join moves the arrays.
-  void reserve(std::size_t leaves, std::size_t nodes) {
-    m_quantizedLeafNodes.reserve(static_cast<int>(leaves));
-    m_quantizedContiguousNodes.reserve(static_cast<int>(nodes));
-  }
+/// The bounds of a range's quantized centres.
+struct CentreBounds {
+  std::array<std::uint16_t, 3> lo{0xffff, 0xffff, 0xffff};
+  std::array<std::uint16_t, 3> hi{0, 0, 0};
 
-  /// Renames each leaf from its (part, index) in `half` to the mesh triangle it is.
-  void rename_leaves(const Half& half) {
-    for (int i = 0; i < m_curNodeIndex; ++i) {
-      btQuantizedBvhNode& node = m_quantizedContiguousNodes[i];
-      if (!node.isLeafNode()) continue;
-      const std::uint32_t mesh_triangle = half.mesh_triangle[MeshBvh::leaf_triangle(node)];
-      node.m_escapeIndexOrTriangleIndex =
-          static_cast<int>(((mesh_triangle / MeshBvh::kPartTriangles) << (31 - MAX_NUM_PARTS_IN_BITS)) |
-                           (mesh_triangle % MeshBvh::kPartTriangles));
-    }
-  }
-
-  /// Makes this tree a root over itself and `second` (built with the same quantization):
-  /// the root, this tree's nodes, then `second`'s, as Bullet lays out every inner node.
-  void join(JoinableTree& second) {
-    const int first_nodes = m_curNodeIndex;
-    const int second_nodes = second.m_curNodeIndex;
-    const btQuantizedBvhNode& a = m_quantizedContiguousNodes[0];
-    const btQuantizedBvhNode& b = second.m_quantizedContiguousNodes[0];
-    btQuantizedBvhNode root{};
+  void extend(const std::array<std::uint16_t, 3>& c) {
     for (int k = 0; k < 3; ++k) {
-      root.m_quantizedAabbMin[k] = std::min(a.m_quantizedAabbMin[k], b.m_quantizedAabbMin[k]);
-      root.m_quantizedAabbMax[k] = std::max(a.m_quantizedAabbMax[k], b.m_quantizedAabbMax[k]);
+      lo[k] = std::min(lo[k], c[k]);
+      hi[k] = std::max(hi[k], c[k]);
     }
-    root.m_escapeIndexOrTriangleIndex = -(1 + first_nodes + second_nodes);
-    m_quantizedContiguousNodes.resize(1 + first_nodes + second_nodes);
-    btQuantizedBvhNode* nodes = &m_quantizedContiguousNodes[0];
-    std::memmove(static_cast<void*>(nodes + 1), nodes, static_cast<std::size_t>(first_nodes) * sizeof(root));
-    nodes[0] = root;
-    std::memcpy(static_cast<void*>(nodes + 1 + first_nodes), &second.m_quantizedContiguousNodes[0],
-                static_cast<std::size_t>(second_nodes) * sizeof(root));
-    second.m_quantizedContiguousNodes.clear();
-    // The subtree headers (Bullet's cache-friendly walk and refit use them) move with
-    // their subtrees; both children of the new root are larger than a header covers.
-    for (int i = 0; i < m_SubtreeHeaders.size(); ++i) m_SubtreeHeaders[i].m_rootNodeIndex += 1;
-    for (int i = 0; i < second.m_SubtreeHeaders.size(); ++i) {
-      btBvhSubtreeInfo header = second.m_SubtreeHeaders[i];
-      header.m_rootNodeIndex += 1 + first_nodes;
-      m_SubtreeHeaders.push_back(header);
-    }
-    m_subtreeHeaderCount = m_SubtreeHeaders.size();
-    m_curNodeIndex = 1 + first_nodes + second_nodes;
+  }
+  void extend(const CentreBounds& b) {
+    extend(b.lo);
+    extend(b.hi);
   }
 };
 
-/// The two halves of the mesh at the median of the triangles' centres along `axis`.
-std::array<Half, 2> split_at_median(const TriangleMesh& mesh, int axis, double lo, double hi) {
-  const std::size_t n = mesh.triangles.size();
-  // A centre's coordinate times 3 (the sum of the corners'), binned over the bounds.
-  const double scale = hi > lo ? static_cast<double>(kMedianBins) / (3.0 * (hi - lo)) : 0.0;
-  std::vector<std::uint16_t> bin(n);
-  std::vector<std::size_t> count(kMedianBins, 0);
-  for (std::size_t t = 0; t < n; ++t) {
-    const TriangleIndices& c = mesh.triangles[t];
-    const double sum = mesh.vertices_m[c[0]][axis] + mesh.vertices_m[c[1]][axis] + mesh.vertices_m[c[2]][axis];
-    const double at = (sum - 3.0 * lo) * scale;
-    bin[t] = static_cast<std::uint16_t>(std::clamp(at, 0.0, static_cast<double>(kMedianBins - 1)));
-    ++count[bin[t]];
-  }
-  // The first bin at which half the triangles are in or below it (the last bin at most).
-  std::size_t median_bin = 0, first_count = count[0];
-  while (2 * first_count < n && median_bin + 1 < kMedianBins) first_count += count[++median_bin];
-  std::array<Half, 2> halves;
-  halves[0].triangles.reserve(first_count);
-  halves[0].mesh_triangle.reserve(first_count);
-  halves[1].triangles.reserve(n - first_count);
-  halves[1].mesh_triangle.reserve(n - first_count);
-  for (std::size_t t = 0; t < n; ++t) {
-    Half& half = halves[bin[t] <= median_bin ? 0 : 1];
-    half.triangles.push_back(mesh.triangles[t]);
-    half.mesh_triangle.push_back(static_cast<std::uint32_t>(t));
-  }
-  return halves;
-}
+/// The node count of a subtree over `triangles` leaves: Bullet's trees are binary with
+/// one triangle a leaf, as are the levels built here.
+std::size_t subtree_nodes(std::size_t triangles) { return 2 * triangles - 1; }
 
-/// Bullet's tree of one half, its leaves naming the mesh's triangles, with room for
-/// `nodes` nodes; the half is let go once built.
-std::unique_ptr<JoinableTree> build_half(Half& half, const TriangleMesh& mesh, double scale,
-                                         const btVector3& aabb_min, const btVector3& aabb_max, std::size_t nodes) {
-  btTriangleIndexVertexArray parts;
-  add_mesh_parts(parts, half.triangles, mesh.vertices_m, MeshBvh::kPartTriangles);
-  parts.setScaling(btVector3(scale, scale, scale));
-  parts.setPremadeAabb(aabb_min, aabb_max);
-  auto tree = std::make_unique<JoinableTree>();
-  tree->reserve(half.triangles.size(), nodes);
-  tree->build(&parts, /*useQuantizedAabbCompression=*/true, aabb_min, aabb_max);
-  tree->rename_leaves(half);
-  half = Half{};  // let go before the join
-  return tree;
-}
+/// The whole tree: Bullet's object with its node array sized for the whole mesh, which
+/// the pieces and the inner nodes above them fill in place.
+class AssembledTree : public btOptimizedBvh {
+ public:
+  AssembledTree(const btVector3& aabb_min, const btVector3& aabb_max, std::size_t nodes) {
+    // What btOptimizedBvh::build sets before it builds a quantized tree.
+    setQuantizationValues(aabb_min, aabb_max);
+    m_useQuantization = true;
+    m_quantizedContiguousNodes.resize(static_cast<int>(nodes));
+    m_curNodeIndex = static_cast<int>(nodes);
+  }
+
+  btQuantizedBvhNode* nodes() { return &m_quantizedContiguousNodes[0]; }
+
+  void add_headers(const std::vector<btBvhSubtreeInfo>& headers) {
+    for (const btBvhSubtreeInfo& header : headers) m_SubtreeHeaders.push_back(header);
+    m_subtreeHeaderCount = m_SubtreeHeaders.size();
+  }
+};
+
+/// Bullet's tree of one piece, with access to its arrays.
+class PieceTree : public btOptimizedBvh {
+ public:
+  [[nodiscard]] std::size_t node_count() const { return static_cast<std::size_t>(m_curNodeIndex); }
+
+  /// Copies the piece's nodes to `out`, each leaf renamed from its index in `items` to
+  /// the mesh triangle it is, and its subtree headers (Bullet's cache-friendly walk and
+  /// refit use them) to `headers`, moved to where the nodes went.
+  void place(btQuantizedBvhNode* out, std::size_t at, std::span<const Item> items,
+             std::vector<btBvhSubtreeInfo>& headers) const {
+    for (std::size_t i = 0; i < node_count(); ++i) {
+      btQuantizedBvhNode node = m_quantizedContiguousNodes[static_cast<int>(i)];
+      if (node.isLeafNode()) {
+        const std::uint32_t triangle = items[MeshBvh::leaf_triangle(node)].triangle;
+        node.m_escapeIndexOrTriangleIndex =
+            static_cast<int>(((triangle / MeshBvh::kPartTriangles) << (31 - MAX_NUM_PARTS_IN_BITS)) |
+                             (triangle % MeshBvh::kPartTriangles));
+      }
+      out[at + i] = node;
+    }
+    for (int i = 0; i < m_SubtreeHeaders.size(); ++i) {
+      btBvhSubtreeInfo header = m_SubtreeHeaders[i];
+      header.m_rootNodeIndex += static_cast<int>(at);
+      headers.push_back(header);
+    }
+  }
+};
+
+/// What each building thread keeps to itself.
+struct Worker {
+  std::vector<TriangleIndices> piece;
+  std::vector<std::uint32_t> histogram;
+  std::vector<btBvhSubtreeInfo> headers;
+};
+
+class PieceBuilder {
+ public:
+  PieceBuilder(const TriangleMesh& mesh, double scale, const btVector3& aabb_min, const btVector3& aabb_max)
+      : mesh_(mesh), scale_(scale), aabb_min_(aabb_min), aabb_max_(aabb_max),
+        tree_(std::make_unique<AssembledTree>(aabb_min, aabb_max, subtree_nodes(mesh.triangles.size()))),
+        nodes_(tree_->nodes()) {}
+
+  std::unique_ptr<btOptimizedBvh> build() {
+    const CentreBounds bounds = make_items();
+    std::array<Worker, 2> workers;
+    build_range(0, mesh_.triangles.size(), 0, bounds, workers[0], &workers[1]);
+    items_.reset();
+    for (const Worker& w : workers) tree_->add_headers(w.headers);
+    return std::move(tree_);
+  }
+
+ private:
+  /// Each triangle with its centre, quantized to 16 bits over the mesh's box (on two
+  /// threads), and the bounds of all the centres.
+  CentreBounds make_items() {
+    const std::size_t n = mesh_.triangles.size();
+    // Every item is written below: no need to zero 12 bytes a triangle first.
+    items_ = std::make_unique_for_overwrite<Item[]>(n);
+    std::array<double, 3> to_steps{};
+    for (int k = 0; k < 3; ++k) {
+      const double extent = aabb_max_[k] - aabb_min_[k];
+      to_steps[k] = extent > 0.0 ? 65535.0 / extent : 0.0;
+      step_[k] = extent / 65535.0;
+    }
+    std::array<CentreBounds, 2> halves;
+    in_two_halves(n, std::size_t{1} << 16, [&](std::size_t first, std::size_t last) {
+      CentreBounds& bounds = halves[first == 0 ? 0 : 1];
+      for (std::size_t t = first; t < last; ++t) {
+        const TriangleIndices& c = mesh_.triangles[t];
+        Item& item = items_[t];
+        item.triangle = static_cast<std::uint32_t>(t);
+        for (int k = 0; k < 3; ++k) {
+          const double centre =
+              (mesh_.vertices_m[c[0]][k] + mesh_.vertices_m[c[1]][k] + mesh_.vertices_m[c[2]][k]) * scale_ / 3.0;
+          item.centre[k] = static_cast<std::uint16_t>(std::clamp((centre - aabb_min_[k]) * to_steps[k], 0.0, 65535.0));
+        }
+        bounds.extend(item.centre);
+      }
+      return true;
+    });
+    // The second half's bounds are empty (lo above hi) when the pass was not split.
+    if (halves[1].lo[0] <= halves[1].hi[0]) halves[0].extend(halves[1]);
+    return halves[0];
+  }
+
+  /// The subtree over items [begin, end) at node `at`, built by `worker`: split at the
+  /// median centre until a piece is small enough for Bullet. With a `helper`, the first
+  /// split's second half is built by it on another thread.
+  void build_range(std::size_t begin, std::size_t end, std::size_t at, const CentreBounds& bounds, Worker& worker,
+                   Worker* helper) {
+    const std::size_t n = end - begin;
+    // Longest in space: each axis is quantized over the mesh's own extent along it.
+    int axis = 0;
+    for (int k = 1; k < 3; ++k) {
+      if ((bounds.hi[k] - bounds.lo[k]) * step_[k] > (bounds.hi[axis] - bounds.lo[axis]) * step_[axis]) axis = k;
+    }
+    const auto extent = static_cast<std::uint32_t>(bounds.hi[axis] - bounds.lo[axis]);
+    if (n <= kPieceTriangles || extent == 0) {
+      build_piece(begin, end, at, worker);
+      return;
+    }
+    CentreBounds first_bounds, second_bounds;
+    const std::size_t mid =
+        split_at_median(begin, end, axis, bounds.lo[axis], extent, worker.histogram, first_bounds, second_bounds);
+    const std::size_t first_at = at + 1;
+    const std::size_t second_at = first_at + subtree_nodes(mid - begin);
+    nodes_[at].m_escapeIndexOrTriangleIndex = -static_cast<int>(subtree_nodes(n));
+    std::future<void> second;
+    if (helper != nullptr) {
+      const auto build_second = [&, helper] { build_range(mid, end, second_at, second_bounds, *helper, nullptr); };
+      try {
+        second = std::async(std::launch::async, build_second);
+      } catch (const std::system_error&) {
+        second = std::async(std::launch::deferred, build_second);
+      }
+    }
+    build_range(begin, mid, first_at, first_bounds, worker, nullptr);
+    if (second.valid()) {
+      second.get();
+    } else {
+      build_range(mid, end, second_at, second_bounds, worker, nullptr);
+    }
+    // The inner node's box holds its two children's.
+    btQuantizedBvhNode& node = nodes_[at];
+    const btQuantizedBvhNode& a = nodes_[first_at];
+    const btQuantizedBvhNode& b = nodes_[second_at];
+    for (int k = 0; k < 3; ++k) {
+      node.m_quantizedAabbMin[k] = std::min(a.m_quantizedAabbMin[k], b.m_quantizedAabbMin[k]);
+      node.m_quantizedAabbMax[k] = std::max(a.m_quantizedAabbMax[k], b.m_quantizedAabbMax[k]);
+    }
+  }
+
+  /// Moves the items of [begin, end) whose centre along `axis` is at or below the median
+  /// to the front, and returns where the others start. Both sides are never empty: the
+  /// lowest centre is in the first and the highest in the second.
+  std::size_t split_at_median(std::size_t begin, std::size_t end, int axis, std::uint16_t lo, std::uint32_t extent,
+                              std::vector<std::uint32_t>& histogram, CentreBounds& first_bounds,
+                              CentreBounds& second_bounds) {
+    const std::size_t n = end - begin;
+    // Bins of 2^shift quantization steps, no more of them than the range has items
+    // (times two, and at least 256): the histogram then costs no more than the pass.
+    const std::size_t most_bins = std::max<std::size_t>(256, 2 * n);
+    unsigned shift = 0;
+    while ((extent >> shift) + 1 > most_bins) ++shift;
+    const std::uint32_t bins = (extent >> shift) + 1;
+    const auto bin_of = [&](const Item& item) {
+      return static_cast<std::uint32_t>(item.centre[axis] - lo) >> shift;
+    };
+    histogram.assign(bins, 0);
+    for (std::size_t i = begin; i < end; ++i) ++histogram[bin_of(items_[i])];
+    std::uint32_t median = 0;
+    std::size_t below = histogram[0];
+    while (2 * below < n && median + 2 < bins) below += histogram[++median];
+    // Hoare's partition: the first side takes the bins up to the median.
+    std::size_t i = begin, j = end;
+    while (true) {
+      while (i < j && bin_of(items_[i]) <= median) first_bounds.extend(items_[i++].centre);
+      while (i < j && bin_of(items_[j - 1]) > median) second_bounds.extend(items_[--j].centre);
+      if (i >= j) break;
+      std::swap(items_[i], items_[j - 1]);
+    }
+    return i;
+  }
+
+  /// Bullet's tree of the items [begin, end), placed at node `at`.
+  void build_piece(std::size_t begin, std::size_t end, std::size_t at, Worker& worker) {
+    const std::span<const Item> items(items_.get() + begin, end - begin);
+    worker.piece.clear();
+    for (const Item& item : items) worker.piece.push_back(mesh_.triangles[item.triangle]);
+    btTriangleIndexVertexArray parts;
+    add_mesh_parts(parts, worker.piece, mesh_.vertices_m, MeshBvh::kPartTriangles);
+    parts.setScaling(btVector3(scale_, scale_, scale_));
+    parts.setPremadeAabb(aabb_min_, aabb_max_);
+    PieceTree piece;
+    piece.build(&parts, /*useQuantizedAabbCompression=*/true, aabb_min_, aabb_max_);
+    if (piece.node_count() != subtree_nodes(items.size())) {
+      throw std::logic_error("build_tree_in_pieces: Bullet built " + std::to_string(piece.node_count()) +
+                             " nodes over " + std::to_string(items.size()) + " triangles");
+    }
+    piece.place(nodes_, at, items, worker.headers);
+  }
+
+  const TriangleMesh& mesh_;
+  double scale_;
+  btVector3 aabb_min_, aabb_max_;
+  std::unique_ptr<AssembledTree> tree_;
+  btQuantizedBvhNode* nodes_;
+  std::array<double, 3> step_{};  // the length of one quantization step along each axis
+  std::unique_ptr<Item[]> items_;  // one per triangle, reordered by the splits
+};
 
 }  // namespace
 
@@ -144,28 +275,12 @@ void add_mesh_parts(btTriangleIndexVertexArray& parts, std::span<const TriangleI
   }
 }
 
-std::unique_ptr<btOptimizedBvh> build_tree_in_two_halves(const TriangleMesh& mesh, double scale,
-                                                         const btVector3& aabb_min, const btVector3& aabb_max) {
-  const btVector3 extent = aabb_max - aabb_min;
-  const int axis = extent.maxAxis();
-  std::array<Half, 2> halves = split_at_median(mesh, axis, aabb_min[axis] / scale, aabb_max[axis] / scale);
-  if (halves[0].triangles.empty() || halves[1].triangles.empty()) return nullptr;
-  std::future<std::unique_ptr<JoinableTree>> second;
-  // Bullet sizes a tree's node array at 2 per leaf: the first half's is made room for
-  // the whole tree's, which the join then fills in place.
-  const std::size_t n = mesh.triangles.size();
-  const auto build_second = [&] {
-    return build_half(halves[1], mesh, scale, aabb_min, aabb_max, 2 * halves[1].triangles.size());
-  };
-  try {
-    second = std::async(std::launch::async, build_second);
-  } catch (const std::system_error&) {
-    second = std::async(std::launch::deferred, build_second);
+std::unique_ptr<btOptimizedBvh> build_tree_in_pieces(const TriangleMesh& mesh, double scale,
+                                                     const btVector3& aabb_min, const btVector3& aabb_max) {
+  if (!MeshBvh::holds(mesh.triangles.size())) {
+    throw std::length_error("build_tree_in_pieces: " + std::to_string(mesh.triangles.size()) + " triangles");
   }
-  std::unique_ptr<JoinableTree> tree = build_half(halves[0], mesh, scale, aabb_min, aabb_max, 2 * n);
-  const std::unique_ptr<JoinableTree> second_tree = second.get();
-  tree->join(*second_tree);
-  return tree;
+  return PieceBuilder(mesh, scale, aabb_min, aabb_max).build();
 }
 
 }  // namespace mhd

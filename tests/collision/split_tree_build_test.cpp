@@ -1,7 +1,7 @@
-// A large mesh's tree built in two halves on two threads (collision/split_tree_build.h):
-// split in space whatever the triangles' order, every leaf naming its triangle once and
-// every box holding what it must (the cached tree's check), and every triangle a box
-// overlaps reported; and a mesh whose centres the median cannot split is built whole.
+// A large mesh's tree built in pieces on two threads (collision/split_tree_build.h): split
+// in space whatever the triangles' order, every leaf naming its triangle once and every
+// box holding what it must (the cached tree's check), and every triangle a box overlaps
+// reported; at every size around a piece's, and where the centres cannot be split.
 
 #include "collision/mesh_bvh.h"
 #include "collision/split_tree_build.h"
@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <random>
 #include <vector>
@@ -86,56 +87,96 @@ TEST(SplitTreeBuild, AShuffledLargeMeshIsSplitInSpaceAndEveryLeafNamesItsTriangl
   expect_every_overlap_reported(built, boxes);
 }
 
-TEST(SplitTreeBuild, ASmallMeshBuiltInTwoHalvesPassesTheTreeCheck) {
-  // The two-thread build called directly on a grid small enough for ThreadSanitizer: the
-  // tree it makes, with the quantization MeshBvh gives the mesh, is adopted and answers.
+/// A grid of `quads` x `quads` squares, two triangles each, over [0, quads / 100] in x and
+/// y with a little relief, its triangles shuffled by `seed`.
+std::shared_ptr<TriangleMesh> shuffled_grid(int quads, std::uint32_t seed) {
   auto mesh = std::make_shared<TriangleMesh>();
-  constexpr int kQuads = 40;
-  for (int j = 0; j <= kQuads; ++j) {
-    for (int i = 0; i <= kQuads; ++i) mesh->vertices_m.emplace_back(i * 0.01, j * 0.01, 0.001 * ((i * j) % 7));
+  for (int j = 0; j <= quads; ++j) {
+    for (int i = 0; i <= quads; ++i) mesh->vertices_m.emplace_back(i * 0.01, j * 0.01, 0.001 * ((i * j) % 7));
   }
-  const auto id = [](int i, int j) { return static_cast<std::uint32_t>(j * (kQuads + 1) + i); };
-  for (int j = 0; j < kQuads; ++j) {
-    for (int i = 0; i < kQuads; ++i) {
+  const auto id = [quads](int i, int j) { return static_cast<std::uint32_t>(j * (quads + 1) + i); };
+  for (int j = 0; j < quads; ++j) {
+    for (int i = 0; i < quads; ++i) {
       mesh->triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
       mesh->triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
     }
   }
-  std::shuffle(mesh->triangles.begin(), mesh->triangles.end(), std::mt19937(3));
+  std::shuffle(mesh->triangles.begin(), mesh->triangles.end(), std::mt19937(seed));
+  return mesh;
+}
+
+/// The mesh's tree built in pieces, with the quantization MeshBvh gives the mesh, then
+/// serialized and adopted as a cache entry is: null when it fails the cached tree's check.
+std::unique_ptr<MeshBvh> built_in_pieces_and_adopted(const std::shared_ptr<TriangleMesh>& mesh) {
   const MeshBvh whole(mesh);  // for the scale and bounds the tree is quantized by
   const double scale = whole.bvh_scale();
   const Eigen::Vector3d lo = whole.bounds().min() * scale, hi = whole.bounds().max() * scale;
   const std::unique_ptr<btOptimizedBvh> tree =
-      build_tree_in_two_halves(*mesh, scale, btVector3(lo.x(), lo.y(), lo.z()), btVector3(hi.x(), hi.y(), hi.z()));
-  ASSERT_NE(tree, nullptr);
+      build_tree_in_pieces(*mesh, scale, btVector3(lo.x(), lo.y(), lo.z()), btVector3(hi.x(), hi.y(), hi.z()));
+  EXPECT_NE(tree, nullptr);
+  if (!tree) return nullptr;
   const unsigned size = tree->calculateSerializeBufferSize();
   const std::size_t padded = (size + 15) / 16 * 16;
   const std::unique_ptr<std::byte, void (*)(void*)> buffer(static_cast<std::byte*>(std::aligned_alloc(16, padded)),
                                                            &std::free);
-  ASSERT_TRUE(tree->serialize(buffer.get(), size, /*swapEndian=*/false));
-  const auto adopted = MeshBvh::from_serialized(mesh, {buffer.get(), size});
-  ASSERT_NE(adopted, nullptr) << "the tree built in two halves fails the cached tree's check";
+  EXPECT_TRUE(tree->serialize(buffer.get(), size, /*swapEndian=*/false));
+  return MeshBvh::from_serialized(mesh, {buffer.get(), size});
+}
+
+TEST(SplitTreeBuild, ASmallMeshBuiltInPiecesPassesTheTreeCheck) {
+  // The two-thread build called directly on a grid small enough for ThreadSanitizer, of
+  // 3200 triangles: a dozen pieces under levels split here.
+  const auto mesh = shuffled_grid(40, 3);
+  ASSERT_GT(mesh->triangle_count(), 8 * kPieceTriangles);
+  const auto adopted = built_in_pieces_and_adopted(mesh);
+  ASSERT_NE(adopted, nullptr) << "the tree built in pieces fails the cached tree's check";
   expect_every_overlap_reported(*adopted, random_boxes(5, adopted->bounds(), 0.02));
 }
 
-TEST(SplitTreeBuild, CentresOnOnePlaneAcrossTheLongestAxisAreBuiltWhole) {
-  // Every triangle centred on x = 0 across [-1, 1] in x, the longest axis: the median
-  // leaves one half empty, so the tree is built whole, and holds as well.
-  auto mesh = std::make_shared<TriangleMesh>();
-  const std::size_t n = kSplitBuildMinTriangles;
-  mesh->vertices_m.reserve(3 * n);
-  mesh->triangles.reserve(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    const double y = static_cast<double>(k) / static_cast<double>(n);
+TEST(SplitTreeBuild, EveryTriangleCountAroundAPiecesSizeMakesAWholeTree) {
+  // One triangle, a piece less one, one, and one more, and so on: each layout of levels
+  // split here over pieces of Bullet's makes a tree that passes the check and answers.
+  const std::size_t p = kPieceTriangles;
+  for (const std::size_t count : {std::size_t{1}, std::size_t{2}, std::size_t{3}, p - 1, p, p + 1, 2 * p - 1, 2 * p,
+                                  2 * p + 1, 4 * p + 3}) {
+    auto mesh = shuffled_grid(static_cast<int>(std::ceil(std::sqrt(static_cast<double>(count) / 2.0))),
+                              static_cast<std::uint32_t>(count));
+    mesh->triangles.resize(count);
+    const auto adopted = built_in_pieces_and_adopted(mesh);
+    ASSERT_NE(adopted, nullptr) << count << " triangles";
+    Eigen::AlignedBox3d all = adopted->bounds();
+    all.extend(all.min() - Eigen::Vector3d::Constant(1e-3)).extend(all.max() + Eigen::Vector3d::Constant(1e-3));
+    EXPECT_EQ(reported(*adopted, all).size(), count) << count << " triangles";
+  }
+}
+
+TEST(SplitTreeBuild, CentresOnOnePointAreOnePieceOfAnySize) {
+  // Triangles centred on one point cannot be split by their centres: however many, they
+  // are one piece, which Bullet builds, beside the rest of the mesh split as usual.
+  auto mesh = shuffled_grid(20, 9);
+  const std::size_t grid = mesh->triangles.size();
+  constexpr int kConcentric = 3 * static_cast<int>(kPieceTriangles) + 7;
+  for (int k = 1; k <= kConcentric; ++k) {
+    const double r = 0.02 * k / kConcentric;
     const auto first = static_cast<std::uint32_t>(mesh->vertices_m.size());
-    mesh->vertices_m.emplace_back(-1.0, y, 0.0);
-    mesh->vertices_m.emplace_back(1.0, y, 0.0);
-    mesh->vertices_m.emplace_back(0.0, y + 0.25, 0.1);
+    for (int c = 0; c < 3; ++c) {
+      const double a = 2.0 * 3.141592653589793 * c / 3.0 + k;
+      mesh->vertices_m.emplace_back(0.1 + r * std::cos(a), 0.1 + r * std::sin(a), 0.05);
+    }
     mesh->triangles.push_back({first, first + 1, first + 2});
   }
-  const MeshBvh built(mesh);
-  ASSERT_NE(MeshBvh::from_serialized(mesh, built.serialize_bvh()), nullptr);
-  expect_every_overlap_reported(built, random_boxes(11, built.bounds(), 0.01));
+  std::shuffle(mesh->triangles.begin(), mesh->triangles.end(), std::mt19937(4));
+  ASSERT_EQ(mesh->triangles.size(), grid + kConcentric);
+  const auto adopted = built_in_pieces_and_adopted(mesh);
+  ASSERT_NE(adopted, nullptr);
+  // A box around the common centre meets every concentric triangle.
+  const Eigen::AlignedBox3d centre(Eigen::Vector3d(0.0999, 0.0999, 0.0499), Eigen::Vector3d(0.1001, 0.1001, 0.0501));
+  std::size_t concentric_reported = 0;
+  for (const std::uint32_t t : reported(*adopted, centre)) {
+    concentric_reported += mesh->vertices_m[mesh->triangles[t][0]].z() == 0.05 ? 1 : 0;
+  }
+  EXPECT_EQ(concentric_reported, static_cast<std::size_t>(kConcentric));
+  expect_every_overlap_reported(*adopted, random_boxes(13, adopted->bounds(), 0.01));
 }
 
 }  // namespace split_tree_build_test

@@ -79,14 +79,14 @@ tsan_exclude=(
   # target); this one lives in dds_server_tests. The unsecured DDS server tests stay.
   'ThreeProcessExample\.Secured'
   # The mesh cache's mesh past 2^21 triangles takes about a minute under TSan; the same
-  # threads (checksum, face normals, the tree's two halves) run in
+  # threads (checksum, face normals, the tree's pieces) run in
   # AMeshLargeEnoughForTwoThreadsLoadsFromTheCacheAsBuilt, which stays.
   'MeshCacheTest\.AMeshPastOneBulletPart'
   # Meshes of 2^21 triangles (a minute or more each under TSan). The two-thread tree
-  # build they go through runs in SplitTreeBuild.ASmallMeshBuiltInTwoHalvesPassesTheTreeCheck,
+  # build they go through runs in SplitTreeBuild.ASmallMeshBuiltInPiecesPassesTheTreeCheck,
   # which stays.
   'LargeMesh\.'
-  'SplitTreeBuild\.(AShuffled|CentresOnOnePlane)'
+  'SplitTreeBuild\.AShuffled'
 )
 
 # ThreadSanitizer: every test binary whose code starts threads (the haptic server's five
@@ -105,7 +105,7 @@ tsan_targets=(
   viewer_tests                # the viewer's latest-state hand-off (rig_state_test)
   viewer_dds_tests            # the viewer's DDS state source
   mesh_io_tests               # a cache hit: checksum thread, two-thread face normals and tree check
-  collision_tests             # a tree built in two halves on two threads
+  collision_tests             # a tree built in pieces on two threads
 )
 
 # ---- helpers --------------------------------------------------------------------------
