@@ -150,6 +150,8 @@ ctest_rerun_unreported() {
   local label="$1" dir="$2" rc name
   shift 2
   local log="$dir/Testing/Temporary/sanitizer_ctest.log"
+  # A list left by an earlier run in this folder must not pass for this run's.
+  rm -f "$dir/Testing/Temporary/LastTestsFailed.log"
   ctest --test-dir "$dir" --output-log "$log" "$@" && return 0
   rc=$?
   local first=()
