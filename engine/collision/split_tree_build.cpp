@@ -31,7 +31,7 @@ struct CentreBounds {
   std::array<std::uint16_t, 3> hi{0, 0, 0};
 
   void extend(const std::array<std::uint16_t, 3>& c) {
-    for (int k = 0; k < 3; ++k) {
+    for (std::size_t k = 0; k < 3; ++k) {
       lo[k] = std::min(lo[k], c[k]);
       hi[k] = std::max(hi[k], c[k]);
     }
@@ -125,22 +125,23 @@ class PieceBuilder {
     // Every item is written below: no need to zero 12 bytes a triangle first.
     items_ = std::make_unique_for_overwrite<Item[]>(n);
     std::array<double, 3> to_steps{};
-    for (int k = 0; k < 3; ++k) {
-      const double extent = aabb_max_[k] - aabb_min_[k];
+    for (std::size_t k = 0; k < 3; ++k) {
+      const double extent = aabb_max_[static_cast<int>(k)] - aabb_min_[static_cast<int>(k)];
       to_steps[k] = extent > 0.0 ? 65535.0 / extent : 0.0;
       step_[k] = extent / 65535.0;
     }
     std::array<CentreBounds, 2> halves;
     in_two_halves(n, std::size_t{1} << 16, [&](std::size_t first, std::size_t last) {
-      CentreBounds& bounds = halves[first == 0 ? 0 : 1];
+      CentreBounds& bounds = halves[first == 0 ? 0u : 1u];
       for (std::size_t t = first; t < last; ++t) {
         const TriangleIndices& c = mesh_.triangles[t];
         Item& item = items_[t];
         item.triangle = static_cast<std::uint32_t>(t);
-        for (int k = 0; k < 3; ++k) {
-          const double centre =
-              (mesh_.vertices_m[c[0]][k] + mesh_.vertices_m[c[1]][k] + mesh_.vertices_m[c[2]][k]) * scale_ / 3.0;
-          item.centre[k] = static_cast<std::uint16_t>(std::clamp((centre - aabb_min_[k]) * to_steps[k], 0.0, 65535.0));
+        const Eigen::Vector3d centre =
+            (mesh_.vertices_m[c[0]] + mesh_.vertices_m[c[1]] + mesh_.vertices_m[c[2]]) * (scale_ / 3.0);
+        for (std::size_t k = 0; k < 3; ++k) {
+          const double steps = (centre[static_cast<Eigen::Index>(k)] - aabb_min_[static_cast<int>(k)]) * to_steps[k];
+          item.centre[k] = static_cast<std::uint16_t>(std::clamp(steps, 0.0, 65535.0));
         }
         bounds.extend(item.centre);
       }
@@ -158,8 +159,8 @@ class PieceBuilder {
                    Worker* helper) {
     const std::size_t n = end - begin;
     // Longest in space: each axis is quantized over the mesh's own extent along it.
-    int axis = 0;
-    for (int k = 1; k < 3; ++k) {
+    std::size_t axis = 0;
+    for (std::size_t k = 1; k < 3; ++k) {
       if ((bounds.hi[k] - bounds.lo[k]) * step_[k] > (bounds.hi[axis] - bounds.lo[axis]) * step_[axis]) axis = k;
     }
     const auto extent = static_cast<std::uint32_t>(bounds.hi[axis] - bounds.lo[axis]);
@@ -201,7 +202,8 @@ class PieceBuilder {
   /// Moves the items of [begin, end) whose centre along `axis` is at or below the median
   /// to the front, and returns where the others start. Both sides are never empty: the
   /// lowest centre is in the first and the highest in the second.
-  std::size_t split_at_median(std::size_t begin, std::size_t end, int axis, std::uint16_t lo, std::uint32_t extent,
+  std::size_t split_at_median(std::size_t begin, std::size_t end, std::size_t axis, std::uint16_t lo,
+                              std::uint32_t extent,
                               std::vector<std::uint32_t>& histogram, CentreBounds& first_bounds,
                               CentreBounds& second_bounds) {
     const std::size_t n = end - begin;
