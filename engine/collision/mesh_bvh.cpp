@@ -56,14 +56,23 @@ void MeshBvh::make_interface() {
   // names (part, index in part), and part * kPartTriangles + index is the mesh's triangle.
   add_mesh_parts(*interface_, mesh_->triangles, mesh_->vertices_m, kPartTriangles);
   resize_in_huge_pages(face_normals_O_, mesh_->triangles.size());
-  in_two_halves(mesh_->triangles.size(), kParallelNodes, [this](std::size_t first, std::size_t last) {
+  // The bounds in the same pass, each half of the triangles taking the same share of the
+  // vertices (the shares cover them all, once).
+  const std::size_t triangle_count = mesh_->triangles.size();
+  const std::size_t vertex_count = mesh_->vertices_m.size();
+  std::array<Eigen::AlignedBox3d, 2> half_bounds;
+  in_two_halves(triangle_count, kParallelNodes, [&](std::size_t first, std::size_t last) {
     for (std::size_t i = first; i < last; ++i) {
       const TriangleIndices& t = mesh_->triangles[i];
       face_normals_O_[i] = unit_face_normal(mesh_->vertices_m[t[0]], mesh_->vertices_m[t[1]], mesh_->vertices_m[t[2]]);
     }
+    Eigen::AlignedBox3d& box = half_bounds[first == 0 ? std::size_t{0} : std::size_t{1}];
+    for (std::size_t v = first * vertex_count / triangle_count; v < last * vertex_count / triangle_count; ++v) {
+      box.extend(mesh_->vertices_m[v]);
+    }
     return true;
   });
-  bounds_ = mesh_bounds(*mesh_);
+  bounds_ = half_bounds[0].extend(half_bounds[1]);
   const double extent = bounds_.sizes().maxCoeff();
   bvh_scale_ = extent > 0.0 ? kBvhExtentUnits / extent : 1.0;
   interface_->setScaling(btVector3(bvh_scale_, bvh_scale_, bvh_scale_));
@@ -143,6 +152,28 @@ std::unique_ptr<MeshBvh> MeshBvh::adopt_serialized(std::shared_ptr<const Triangl
   return out;
 }
 
+void MeshBvh::prefetch_leaf_data(std::span<const btQuantizedBvhNode> nodes, std::size_t i,
+                                  std::size_t end) const {
+  // A leaf's triangle and its corners lie anywhere in their arrays: the check waits on
+  // memory for them unless asked for ahead, its triangle kFarAhead nodes before it is
+  // checked and its corners (the triangle then at hand) kNearAhead nodes before.
+  constexpr std::size_t kFarAhead = 32;
+  constexpr std::size_t kNearAhead = 16;
+  const std::size_t triangles = mesh_->triangles.size();
+  if (i + kFarAhead < end && nodes[i + kFarAhead].isLeafNode()) {
+    const std::uint64_t t = leaf_triangle(nodes[i + kFarAhead]);
+    if (t < triangles) __builtin_prefetch(&mesh_->triangles[t]);
+  }
+  if (i + kNearAhead < end && nodes[i + kNearAhead].isLeafNode()) {
+    const std::uint64_t t = leaf_triangle(nodes[i + kNearAhead]);
+    if (t < triangles) {
+      for (const auto v : mesh_->triangles[t]) {
+        if (v < mesh_->vertices_m.size()) __builtin_prefetch(&mesh_->vertices_m[v]);
+      }
+    }
+  }
+}
+
 bool MeshBvh::subtree_checks_out(std::span<const btQuantizedBvhNode> nodes, std::size_t begin, std::size_t end,
                                  const btQuantizedBvhNode* parent, TreeCheckState& state) const {
   struct Open {
@@ -152,14 +183,21 @@ bool MeshBvh::subtree_checks_out(std::span<const btQuantizedBvhNode> nodes, std:
   };
   std::vector<Open> open;
   std::size_t window = begin;  // nodes before this are released (TreePages::Release)
+  // Read once and counted here: the other thread's subtree shares `state`, and a write to
+  // it per leaf, or a read of the line such a write moves, costs most of the check.
+  const bool release_pages = state.release_pages;
+  std::atomic<std::uint64_t>* const named = state.named.data();
+  const std::size_t triangle_count = mesh_->triangles.size();
+  std::size_t leaves = 0;
   for (std::size_t i = begin; i < end; ++i) {
-    if (state.release_pages && i % kPageWindowNodes == 0) {
+    if (release_pages && i % kPageWindowNodes == 0) {
       populate_for_reading(&nodes[i], std::min(kPageWindowNodes, end - i) * sizeof(btQuantizedBvhNode));
       if (i > window) {
         release_file_pages(&nodes[window], (i - window) * sizeof(btQuantizedBvhNode));
         window = i;
       }
     }
+    prefetch_leaf_data(nodes, i, end);
     const btQuantizedBvhNode& node = nodes[i];
     const std::size_t limit = open.empty() ? end : open.back().end;
     if (open.empty() ? i != begin : ++open.back().children > 2) return false;
@@ -167,10 +205,10 @@ bool MeshBvh::subtree_checks_out(std::span<const btQuantizedBvhNode> nodes, std:
     if (holder != nullptr && !box_holds(*holder, node.m_quantizedAabbMin, node.m_quantizedAabbMax)) return false;
     if (node.isLeafNode()) {
       const std::uint64_t triangle = leaf_triangle(node);
-      if (triangle >= mesh_->triangles.size()) return false;
+      if (triangle >= triangle_count) return false;
       const std::uint64_t bit = std::uint64_t{1} << (triangle % 64);
-      if ((state.named[triangle / 64].fetch_or(bit, std::memory_order_relaxed) & bit) != 0) return false;
-      state.leaves.fetch_add(1, std::memory_order_relaxed);
+      if ((named[triangle / 64].fetch_or(bit, std::memory_order_relaxed) & bit) != 0) return false;
+      ++leaves;
       Eigen::AlignedBox3d box_O;
       for (const auto v : mesh_->triangles[triangle]) box_O.extend(mesh_->vertices_m[v]);
       const QuantizedBox q = quantize(box_O);
@@ -189,9 +227,10 @@ bool MeshBvh::subtree_checks_out(std::span<const btQuantizedBvhNode> nodes, std:
       open.push_back(Open{i + static_cast<std::size_t>(span), &node});
     }
   }
-  if (state.release_pages && end > window) {
+  if (release_pages && end > window) {
     release_file_pages(&nodes[window], (end - window) * sizeof(btQuantizedBvhNode));
   }
+  state.leaves.fetch_add(leaves, std::memory_order_relaxed);
   return open.empty();
 }
 
