@@ -81,12 +81,12 @@ TriangleMesh make_sphere_mesh(double radius_m, int subdivisions) {
 
   // Icosahedron on the unit sphere.
   const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-  std::vector<Eigen::Vector3d> v = {
+  MeshArray<Eigen::Vector3d> v = {
       {-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
       {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1},
   };
   for (auto& p : v) p.normalize();
-  std::vector<TriangleIndices> tris = {
+  MeshArray<TriangleIndices> tris = {
       {0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
       {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
       {3, 8, 9},  {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1},
@@ -106,7 +106,7 @@ TriangleMesh make_sphere_mesh(double radius_m, int subdivisions) {
       if (inserted) v.push_back((v[a] + v[b]).normalized());
       return it->second;
     };
-    std::vector<TriangleIndices> next;
+    MeshArray<TriangleIndices> next;
     next.reserve(tris.size() * 4);
     for (const auto& tri : tris) {
       const std::uint32_t ab = midpoint(tri[0], tri[1]);

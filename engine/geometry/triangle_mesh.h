@@ -4,6 +4,8 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "geometry/mesh_array.h"
+
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -14,11 +16,11 @@ using TriangleIndices = std::array<std::uint32_t, 3>;
 
 struct TriangleMesh {
   /// Vertex positions p_O (object frame), metres, the object's scale already applied.
-  std::vector<Eigen::Vector3d> vertices_m;
+  MeshArray<Eigen::Vector3d> vertices_m;
   /// Counter-clockwise seen from the outside where the mesh has an outside.
-  std::vector<TriangleIndices> triangles;
+  MeshArray<TriangleIndices> triangles;
   /// Unit, area-weighted vertex normals (for force shading); empty until computed.
-  std::vector<Eigen::Vector3d> vertex_normals;
+  MeshArray<Eigen::Vector3d> vertex_normals;
 
   [[nodiscard]] std::size_t triangle_count() const { return triangles.size(); }
 };

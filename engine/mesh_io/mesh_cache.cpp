@@ -146,20 +146,23 @@ XXH128_hash_t hash_mapped(std::span<const std::byte> bytes, const std::byte* rel
   return XXH3_128bits_digest(state.get());
 }
 
-/// Copies the sections before the tree into `mesh` (in huge pages) and checks them: every
-/// index in range and every corner distinct, every vertex and normal finite. Empty if
-/// they hold, else why not.
-std::string copy_mesh_sections(const FileHeader& h, const Layout& layout, std::span<const std::byte> image,
-                               TriangleMesh& mesh) {
+/// The n elements of a section at `offset` of an entry's image. The layout puts each
+/// section on a 16-byte boundary and a mapping starts on a page, so they lie aligned.
+template <class T>
+std::span<T> section_of(std::span<std::byte> image, std::size_t offset, std::size_t n) {
+  return {reinterpret_cast<T*>(image.data() + offset), n};
+}
+
+/// Adopts the sections before the tree as `mesh`'s arrays where they lie in the image
+/// (kept alive by `image_owner`) and checks them there: every index in range and every
+/// corner distinct, every vertex and normal finite. Empty if they hold, else why not.
+std::string adopt_mesh_sections(const FileHeader& h, const Layout& layout, std::span<std::byte> image,
+                                const std::shared_ptr<void>& image_owner, TriangleMesh& mesh) {
   const auto nv = static_cast<std::size_t>(h.vertex_count);
   const auto nt = static_cast<std::size_t>(h.triangle_count);
-  resize_in_huge_pages(mesh.vertices_m, nv);
-  resize_in_huge_pages(mesh.triangles, nt);
-  resize_in_huge_pages(mesh.vertex_normals, nv);
-  std::memcpy(static_cast<void*>(mesh.vertices_m.data()), image.data() + layout.vertices, nv * sizeof(Eigen::Vector3d));
-  std::memcpy(mesh.triangles.data(), image.data() + layout.triangles, nt * sizeof(TriangleIndices));
-  std::memcpy(static_cast<void*>(mesh.vertex_normals.data()), image.data() + layout.normals,
-              nv * sizeof(Eigen::Vector3d));
+  mesh.vertices_m = adopt_mesh_array(section_of<Eigen::Vector3d>(image, layout.vertices, nv), image_owner);
+  mesh.triangles = adopt_mesh_array(section_of<TriangleIndices>(image, layout.triangles, nt), image_owner);
+  mesh.vertex_normals = adopt_mesh_array(section_of<Eigen::Vector3d>(image, layout.normals, nv), image_owner);
   // A matching checksum makes accidental corruption vanishingly unlikely; these checks
   // are cheap and keep a hand-made file from breaking the mesh invariants.
   const auto n32 = static_cast<std::uint32_t>(nv);
@@ -180,8 +183,8 @@ std::string copy_mesh_sections(const FileHeader& h, const Layout& layout, std::s
 /// fails validation.
 std::unique_ptr<MeshBvh> parse_payload(const FileHeader& h, const Layout& layout, std::span<std::byte> image,
                                        const std::shared_ptr<void>& image_owner, std::string& why) {
-  // The checksum is read on a helper thread while this one copies the mesh out of the
-  // entry; the tree is adopted only after both (Bullet writes its header where it lies).
+  // The checksum is read on a helper thread while this one checks the mesh where it lies
+  // in the entry; the tree is adopted only after both (Bullet writes its header there).
   const std::span<const std::byte> payload = std::span<const std::byte>(image).subspan(sizeof(FileHeader));
   std::future<XXH128_hash_t> hashed;
   try {
@@ -190,7 +193,7 @@ std::unique_ptr<MeshBvh> parse_payload(const FileHeader& h, const Layout& layout
     hashed = std::async(std::launch::deferred, hash_mapped, payload, image.data() + layout.bvh);
   }
   auto mesh = std::make_shared<TriangleMesh>();
-  why = copy_mesh_sections(h, layout, image, *mesh);
+  why = adopt_mesh_sections(h, layout, image, image_owner, *mesh);
   const XXH128_hash_t sum = hashed.get();
   if (sum.low64 != h.payload_hash_low || sum.high64 != h.payload_hash_high) {
     why = "payload checksum mismatch";
@@ -198,10 +201,9 @@ std::unique_ptr<MeshBvh> parse_payload(const FileHeader& h, const Layout& layout
   }
   if (!why.empty()) return nullptr;
   // From here on the tree's pages are read where walks go: a fault maps its own page, not
-  // its neighbours (the check maps its ranges itself). The sections before the tree were
-  // copied into the mesh: their pages leave memory.
+  // its neighbours (the check maps its ranges itself). The mesh's pages, just checked,
+  // stay mapped: sweeps read its triangles without a fault.
   ::madvise(image.data(), image.size(), MADV_RANDOM);
-  release_file_pages(image.data(), layout.bvh);
   const std::span<std::byte> tree = image.subspan(layout.bvh, static_cast<std::size_t>(h.bvh_bytes));
   auto bvh = MeshBvh::adopt_serialized(std::move(mesh), tree, image_owner, MeshBvh::TreePages::Release);
   // Its check holds every leaf's box to its triangle and every box to its children's, so

@@ -91,7 +91,7 @@ void weld_identical_positions(TriangleMesh& mesh) {
   std::unordered_map<PositionKey, std::uint32_t, PositionKeyHash> first;
   first.reserve(mesh.vertices_m.size());
   std::vector<std::uint32_t> remap(mesh.vertices_m.size());
-  std::vector<Eigen::Vector3d> kept;
+  MeshArray<Eigen::Vector3d> kept;
   kept.reserve(mesh.vertices_m.size());
   for (std::size_t i = 0; i < mesh.vertices_m.size(); ++i) {
     auto [it, inserted] = first.try_emplace(key_of(mesh.vertices_m[i]), static_cast<std::uint32_t>(kept.size()));
