@@ -117,7 +117,7 @@ std::unique_ptr<MeshBvh> MeshBvh::from_serialized(std::shared_ptr<const Triangle
 
 std::unique_ptr<MeshBvh> MeshBvh::adopt_serialized(std::shared_ptr<const TriangleMesh> mesh,
                                                    std::span<std::byte> serialized, std::shared_ptr<void> storage,
-                                                   TreePages pages) {
+                                                   TreePages pages, const std::function<bool()>& ready) {
   if (!mesh || mesh->triangles.empty() || serialized.empty() || serialized.size() > kMaxSerializedBytes ||
       reinterpret_cast<std::uintptr_t>(serialized.data()) % kBulletAlignment != 0) {
     return nullptr;
@@ -125,6 +125,7 @@ std::unique_ptr<MeshBvh> MeshBvh::adopt_serialized(std::shared_ptr<const Triangl
   std::unique_ptr<MeshBvh> out(new MeshBvh());
   out->mesh_ = std::move(mesh);
   out->make_interface();
+  if (ready && !ready()) return nullptr;
   out->serialized_storage_ = std::move(storage);
   // Bullet's own adoption path: it builds a btQuantizedBvh in the buffer and hands it out
   // as btOptimizedBvh* (which adds no data). Our calls go through the object's true

@@ -13,6 +13,7 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <type_traits>
@@ -50,10 +51,14 @@ class MeshBvh {
   /// wrote beyond Bullet's header: the check maps the node pages a range at a time and lets
   /// each range go behind it, so a tree of gigabytes is never resident at once, and its
   /// pages come back from the file as walks reach them.
+  /// With `ready`, the mesh's face normals are computed first and `ready()` is called
+  /// before anything is written in `serialized`; if it returns false nothing is adopted
+  /// (nullptr). A caller still reading the buffer, such as its checksum, finishes there.
   enum class TreePages { Keep, Release };
   static std::unique_ptr<MeshBvh> adopt_serialized(std::shared_ptr<const TriangleMesh> mesh,
                                                    std::span<std::byte> serialized, std::shared_ptr<void> storage,
-                                                   TreePages pages = TreePages::Keep);
+                                                   TreePages pages = TreePages::Keep,
+                                                   const std::function<bool()>& ready = {});
 
   ~MeshBvh();
   MeshBvh(const MeshBvh&) = delete;

@@ -184,7 +184,8 @@ std::string adopt_mesh_sections(const FileHeader& h, const Layout& layout, std::
 std::unique_ptr<MeshBvh> parse_payload(const FileHeader& h, const Layout& layout, std::span<std::byte> image,
                                        const std::shared_ptr<void>& image_owner, std::string& why) {
   // The checksum is read on a helper thread while this one checks the mesh where it lies
-  // in the entry; the tree is adopted only after both (Bullet writes its header there).
+  // in the entry and computes its face normals; the tree is adopted only after the
+  // checksum holds (Bullet writes the tree's header where it lies).
   const std::span<const std::byte> payload = std::span<const std::byte>(image).subspan(sizeof(FileHeader));
   std::future<XXH128_hash_t> hashed;
   try {
@@ -192,20 +193,30 @@ std::unique_ptr<MeshBvh> parse_payload(const FileHeader& h, const Layout& layout
   } catch (const std::system_error&) {
     hashed = std::async(std::launch::deferred, hash_mapped, payload, image.data() + layout.bvh);
   }
+  const auto checksum_holds = [&] {
+    const XXH128_hash_t sum = hashed.get();
+    return sum.low64 == h.payload_hash_low && sum.high64 == h.payload_hash_high;
+  };
   auto mesh = std::make_shared<TriangleMesh>();
   why = adopt_mesh_sections(h, layout, image, image_owner, *mesh);
-  const XXH128_hash_t sum = hashed.get();
-  if (sum.low64 != h.payload_hash_low || sum.high64 != h.payload_hash_high) {
+  if (!why.empty()) {
+    if (!checksum_holds()) why = "payload checksum mismatch";
+    return nullptr;
+  }
+  bool checksum_held = true;
+  const std::span<std::byte> tree = image.subspan(layout.bvh, static_cast<std::size_t>(h.bvh_bytes));
+  auto bvh = MeshBvh::adopt_serialized(std::move(mesh), tree, image_owner, MeshBvh::TreePages::Release, [&] {
+    checksum_held = checksum_holds();
+    // From here on the tree's pages are read where walks go: a fault maps its own page,
+    // not its neighbours (the check maps its ranges itself). The mesh's pages, just
+    // checked, stay mapped: sweeps read its triangles without a fault.
+    if (checksum_held) ::madvise(image.data(), image.size(), MADV_RANDOM);
+    return checksum_held;
+  });
+  if (!checksum_held) {
     why = "payload checksum mismatch";
     return nullptr;
   }
-  if (!why.empty()) return nullptr;
-  // From here on the tree's pages are read where walks go: a fault maps its own page, not
-  // its neighbours (the check maps its ranges itself). The mesh's pages, just checked,
-  // stay mapped: sweeps read its triangles without a fault.
-  ::madvise(image.data(), image.size(), MADV_RANDOM);
-  const std::span<std::byte> tree = image.subspan(layout.bvh, static_cast<std::size_t>(h.bvh_bytes));
-  auto bvh = MeshBvh::adopt_serialized(std::move(mesh), tree, image_owner, MeshBvh::TreePages::Release);
   // Its check holds every leaf's box to its triangle and every box to its children's, so
   // a query by a triangle's own box finds that triangle: a tree built to another
   // convention fails it as a hand-made one does.

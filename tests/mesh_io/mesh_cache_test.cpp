@@ -288,6 +288,11 @@ TEST_F(MeshCacheTest, FlippedBytesAreRejectedAndRebuilt) {
     const Result<CachedMesh, MeshLoadError> again = cache.load(mesh_file_, Eigen::Vector3d::Ones());
     ASSERT_TRUE(again.ok());
     EXPECT_EQ(again->outcome, CacheOutcome::Rejected);
+    // Past the header, the checksum names it, wherever the byte lies: it is judged before
+    // the mesh's own checks speak and before the tree is adopted.
+    if (at >= sizeof(mesh_cache_entry::FileHeader)) {
+      EXPECT_EQ(again->rejected_reason, "payload checksum mismatch");
+    }
     EXPECT_EQ(again->mesh().vertices_m, cold->mesh().vertices_m);
     EXPECT_TRUE(again->written);
     EXPECT_EQ(std::filesystem::file_size(cold->cache_file), bytes.size());
