@@ -45,7 +45,7 @@ constexpr std::size_t kPageWindowNodes = std::size_t{1} << 20;
 
 }  // namespace
 
-void MeshBvh::make_interface() {
+bool MeshBvh::make_interface(MeshArray<Eigen::Vector3d> given_face_normals_O) {
   if (mesh_->triangles.empty()) throw std::invalid_argument("MeshBvh: mesh has no triangles");
   if (!holds(mesh_->triangles.size())) {
     throw std::length_error("MeshBvh: " + std::to_string(mesh_->triangles.size()) + " triangles, more than the " +
@@ -55,33 +55,48 @@ void MeshBvh::make_interface() {
   // One Bullet part per kPartTriangles triangles, all over the same vertices: a leaf then
   // names (part, index in part), and part * kPartTriangles + index is the mesh's triangle.
   add_mesh_parts(*interface_, mesh_->triangles, mesh_->vertices_m, kPartTriangles);
-  resize_in_huge_pages(face_normals_O_, mesh_->triangles.size());
+  const std::size_t triangle_count = mesh_->triangles.size();
+  const bool given = !given_face_normals_O.empty();
+  if (given) {
+    if (given_face_normals_O.size() != triangle_count) return false;
+    face_normals_O_ = std::move(given_face_normals_O);
+  } else {
+    resize_in_huge_pages(face_normals_O_, triangle_count);
+  }
   // The bounds in the same pass, each half of the triangles taking the same share of the
   // vertices (the shares cover them all, once).
-  const std::size_t triangle_count = mesh_->triangles.size();
   const std::size_t vertex_count = mesh_->vertices_m.size();
   std::array<Eigen::AlignedBox3d, 2> half_bounds;
-  in_two_halves(triangle_count, kParallelNodes, [&](std::size_t first, std::size_t last) {
+  const bool normals_hold = in_two_halves(triangle_count, kParallelNodes, [&](std::size_t first, std::size_t last) {
+    bool hold = true;
     for (std::size_t i = first; i < last; ++i) {
       const TriangleIndices& t = mesh_->triangles[i];
-      face_normals_O_[i] = unit_face_normal(mesh_->vertices_m[t[0]], mesh_->vertices_m[t[1]], mesh_->vertices_m[t[2]]);
+      const Eigen::Vector3d n = unit_face_normal(mesh_->vertices_m[t[0]], mesh_->vertices_m[t[1]], mesh_->vertices_m[t[2]]);
+      if (!given) {
+        face_normals_O_[i] = n;
+      } else if (!((face_normals_O_[i] - n).cwiseAbs().maxCoeff() <= kFaceNormalTolerance)) {
+        hold = false;  // NaN too
+        break;
+      }
     }
     Eigen::AlignedBox3d& box = half_bounds[first == 0 ? std::size_t{0} : std::size_t{1}];
     for (std::size_t v = first * vertex_count / triangle_count; v < last * vertex_count / triangle_count; ++v) {
       box.extend(mesh_->vertices_m[v]);
     }
-    return true;
+    return hold;
   });
+  if (!normals_hold) return false;
   bounds_ = half_bounds[0].extend(half_bounds[1]);
   const double extent = bounds_.sizes().maxCoeff();
   bvh_scale_ = extent > 0.0 ? kBvhExtentUnits / extent : 1.0;
   interface_->setScaling(btVector3(bvh_scale_, bvh_scale_, bvh_scale_));
   // The bounds are known; without them Bullet walks every triangle to find them.
   interface_->setPremadeAabb(to_bt(bounds_.min() * bvh_scale_), to_bt(bounds_.max() * bvh_scale_));
+  return true;
 }
 
 MeshBvh::MeshBvh(std::shared_ptr<const TriangleMesh> mesh) : mesh_(std::move(mesh)) {
-  make_interface();
+  (void)make_interface();  // computes the normals: always true
   if (mesh_->triangles.size() >= kSplitBuildMinTriangles) {
     built_tree_ = build_tree_in_pieces(*mesh_, bvh_scale_, to_bt(bounds_.min() * bvh_scale_),
                                        to_bt(bounds_.max() * bvh_scale_));
@@ -117,15 +132,17 @@ std::unique_ptr<MeshBvh> MeshBvh::from_serialized(std::shared_ptr<const Triangle
 
 std::unique_ptr<MeshBvh> MeshBvh::adopt_serialized(std::shared_ptr<const TriangleMesh> mesh,
                                                    std::span<std::byte> serialized, std::shared_ptr<void> storage,
-                                                   TreePages pages, const std::function<bool()>& ready) {
+                                                   TreePages pages, const std::function<bool()>& ready,
+                                                   MeshArray<Eigen::Vector3d> face_normals_O) {
   if (!mesh || mesh->triangles.empty() || serialized.empty() || serialized.size() > kMaxSerializedBytes ||
       reinterpret_cast<std::uintptr_t>(serialized.data()) % kBulletAlignment != 0) {
     return nullptr;
   }
   std::unique_ptr<MeshBvh> out(new MeshBvh());
   out->mesh_ = std::move(mesh);
-  out->make_interface();
+  const bool normals_hold = out->make_interface(std::move(face_normals_O));
   if (ready && !ready()) return nullptr;
+  if (!normals_hold) return nullptr;
   out->serialized_storage_ = std::move(storage);
   // Bullet's own adoption path: it builds a btQuantizedBvh in the buffer and hands it out
   // as btOptimizedBvh* (which adds no data). Our calls go through the object's true

@@ -51,6 +51,9 @@ class MeshBvh {
   /// wrote beyond Bullet's header: the check maps the node pages a range at a time and lets
   /// each range go behind it, so a tree of gigabytes is never resident at once, and its
   /// pages come back from the file as walks reach them.
+  /// `face_normals_O`, where given (one per triangle, such as a cache entry's), are taken
+  /// for the face normals once each is within kFaceNormalTolerance of its triangle's own;
+  /// else nothing is adopted (nullptr). Where not given, they are computed.
   /// With `ready`, the mesh's face normals are computed first and `ready()` is called
   /// before anything is written in `serialized`; if it returns false nothing is adopted
   /// (nullptr). A caller still reading the buffer, such as its checksum, finishes there.
@@ -58,7 +61,8 @@ class MeshBvh {
   static std::unique_ptr<MeshBvh> adopt_serialized(std::shared_ptr<const TriangleMesh> mesh,
                                                    std::span<std::byte> serialized, std::shared_ptr<void> storage,
                                                    TreePages pages = TreePages::Keep,
-                                                   const std::function<bool()>& ready = {});
+                                                   const std::function<bool()>& ready = {},
+                                                   MeshArray<Eigen::Vector3d> face_normals_O = {});
 
   ~MeshBvh();
   MeshBvh(const MeshBvh&) = delete;
@@ -89,9 +93,15 @@ class MeshBvh {
   [[nodiscard]] const Eigen::AlignedBox3d& bounds() const { return bounds_; }
   [[nodiscard]] const btBvhTriangleMeshShape& shape() const { return *shape_; }
   /// Unit counter-clockwise normal of triangle t in the mesh frame, zero for a triangle of
-  /// zero area: unit_face_normal() of its corners, computed once when the tree is made or
-  /// adopted (24 bytes per triangle), so a sweep's triangle test does not redo it.
+  /// zero area: unit_face_normal() of its corners, computed when the tree is built or
+  /// taken from a cache entry once checked against it (24 bytes per triangle), so a
+  /// sweep's triangle test does not redo it.
   [[nodiscard]] const Eigen::Vector3d& face_normal_O(std::uint32_t t) const { return face_normals_O_[t]; }
+  /// All of them, in triangle order (what a cache entry stores).
+  [[nodiscard]] std::span<const Eigen::Vector3d> face_normals_O() const { return face_normals_O_; }
+  /// How far a given face normal may lie from the one its corners give (per coordinate):
+  /// rounding of another build of the same sum, never a turn of the face.
+  static constexpr double kFaceNormalTolerance = 1e-12;
 
   /// Bullet sees the mesh scaled by this (largest extent 1e4 units, see mesh_bvh.cpp):
   /// shape() is in those units.
@@ -159,7 +169,9 @@ class MeshBvh {
 
  private:
   MeshBvh() = default;
-  void make_interface();
+  // Sets up Bullet's view of the mesh, its bounds and face normals: computed, or the given
+  // ones checked (false where one is off, see adopt_serialized()).
+  [[nodiscard]] bool make_interface(MeshArray<Eigen::Vector3d> given_face_normals_O = {});
   void adopt_tree(btQuantizedBvh* tree);
   struct TreeCheckState {
     std::vector<std::atomic<std::uint64_t>> named;  // one bit per triangle a leaf named
@@ -181,7 +193,7 @@ class MeshBvh {
                                         const btQuantizedBvhNode* parent, TreeCheckState& state) const;
 
   std::shared_ptr<const TriangleMesh> mesh_;
-  std::vector<Eigen::Vector3d> face_normals_O_;
+  MeshArray<Eigen::Vector3d> face_normals_O_;
   Eigen::AlignedBox3d bounds_;
   // Bullet sees the mesh scaled by this (see make_interface); queries are scaled alike.
   double bvh_scale_ = 1.0;

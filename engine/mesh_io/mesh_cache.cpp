@@ -205,6 +205,10 @@ std::unique_ptr<MeshBvh> parse_payload(const FileHeader& h, const Layout& layout
   }
   bool checksum_held = true;
   const std::span<std::byte> tree = image.subspan(layout.bvh, static_cast<std::size_t>(h.bvh_bytes));
+  // The face normals are the entry's too, checked against the triangles' own as they
+  // are taken.
+  auto face_normals_O = adopt_mesh_array(section_of<Eigen::Vector3d>(image, layout.face_normals, mesh->triangles.size()),
+                                         std::shared_ptr<const void>(image_owner));
   auto bvh = MeshBvh::adopt_serialized(std::move(mesh), tree, image_owner, MeshBvh::TreePages::Release, [&] {
     checksum_held = checksum_holds();
     // From here on the tree's pages are read where walks go: a fault maps its own page,
@@ -212,7 +216,7 @@ std::unique_ptr<MeshBvh> parse_payload(const FileHeader& h, const Layout& layout
     // checked, stay mapped: sweeps read its triangles without a fault.
     if (checksum_held) ::madvise(image.data(), image.size(), MADV_RANDOM);
     return checksum_held;
-  });
+  }, std::move(face_normals_O));
   if (!checksum_held) {
     why = "payload checksum mismatch";
     return nullptr;
@@ -447,6 +451,7 @@ void MeshCache::store(const std::filesystem::path& mesh_file, const std::filesys
   add(layout->vertices, mesh.vertices_m.data(), mesh.vertices_m.size() * sizeof(Eigen::Vector3d));
   add(layout->triangles, mesh.triangles.data(), mesh.triangles.size() * sizeof(TriangleIndices));
   add(layout->normals, mesh.vertex_normals.data(), mesh.vertex_normals.size() * sizeof(Eigen::Vector3d));
+  add(layout->face_normals, bvh.face_normals_O().data(), bvh.face_normals_O().size_bytes());
   add(layout->bvh, serialized.bytes.get(), serialized.size);
   add(layout->source, source.data(), source.size());
 

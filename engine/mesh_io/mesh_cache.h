@@ -31,7 +31,8 @@ namespace mhd {
 /// 2: the loader welds unshared files itself instead of assimp's JoinIdenticalVertices.
 /// 3: a mesh past 2^21 triangles is split into Bullet parts (MeshBvh::kPartTriangles).
 /// 4: an entry ends with the absolute path of the mesh file that wrote it.
-inline constexpr std::uint32_t kMeshCacheFormatVersion = 4;
+/// 5: an entry holds its face normals, adopted where they lie.
+inline constexpr std::uint32_t kMeshCacheFormatVersion = 5;
 
 /// Meshes with at least this many triangles report progress.
 inline constexpr std::size_t kProgressMinTriangles = 100'000;

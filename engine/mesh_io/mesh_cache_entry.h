@@ -1,7 +1,8 @@
 #pragma once
 // The layout of one mesh cache entry (mesh_cache.h): a 128-byte header, then vertices
-// (double), triangles (uint32), vertex normals (double) and Bullet's serialized BVH, each
-// section 16-byte aligned, then the path of the mesh file that wrote it. MeshCache reads
+// (double), triangles (uint32), vertex normals (double), face normals (double, one per
+// triangle) and Bullet's serialized BVH, each section 16-byte aligned, then the path of
+// the mesh file that wrote it. MeshCache reads
 // and writes it; tests and the cache fuzzer craft entries with seal().
 
 #include "geometry/triangle_mesh.h"
@@ -55,7 +56,7 @@ static_assert(std::is_trivially_copyable_v<TriangleIndices>);
 
 /// Byte offsets of the payload sections, relative to the file start.
 struct Layout {
-  std::size_t vertices, triangles, normals, bvh, source, end;
+  std::size_t vertices, triangles, normals, face_normals, bvh, source, end;
 };
 
 /// Layout for the given counts; nullopt if it would not fit in `limit` bytes (checked

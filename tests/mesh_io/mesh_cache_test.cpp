@@ -2,6 +2,7 @@
 
 #include "mesh_io/mesh_cache_entry.h"
 
+#include "collision/segment_triangle.h"
 #include "geometry/primitive_mesh.h"
 #include "support/large_mesh.h"
 #include "test_mesh_files.h"
@@ -425,8 +426,8 @@ TEST_F(MeshCacheTest, AMeshPastOneBulletPartRoundTripsAndIsTouchedWhereItsLastTr
   const Result<CachedMesh, MeshLoadError> warm = cache.load(file, Eigen::Vector3d::Ones());
   ASSERT_TRUE(warm.ok()) << warm.error_text();
   ASSERT_EQ(warm->outcome, CacheOutcome::Hit) << warm->rejected_reason;
-  // The mesh's arrays are the entry's own pages, not a copy; the tree's pages leave the
-  // process once checked: they are mapped, not resident.
+  // The mesh's arrays and its face normals are the entry's own pages, not a copy; the
+  // tree's pages leave the process once checked: they are mapped, not resident.
   const TriangleMesh& adopted = warm->mesh();
   EXPECT_TRUE(adopted.vertices_m.get_allocator().adopted());
   EXPECT_TRUE(adopted.triangles.get_allocator().adopted());
@@ -434,7 +435,7 @@ TEST_F(MeshCacheTest, AMeshPastOneBulletPartRoundTripsAndIsTouchedWhereItsLastTr
   EXPECT_FALSE(cold->mesh().vertices_m.get_allocator().adopted());
   const std::uint64_t entry_bytes = std::filesystem::file_size(warm->cache_file);
   const std::uint64_t mesh_bytes = 2 * adopted.vertices_m.size() * sizeof(Eigen::Vector3d) +
-                                   adopted.triangles.size() * sizeof(TriangleIndices);
+                                   adopted.triangles.size() * (sizeof(TriangleIndices) + sizeof(Eigen::Vector3d));
   ASSERT_GE(mapped_bytes_of(warm->cache_file), entry_bytes);
   const std::uint64_t after_load = resident_bytes_of(warm->cache_file);
   EXPECT_LT(after_load, mesh_bytes + (entry_bytes - mesh_bytes) / 10) << "of " << entry_bytes << " bytes mapped";
@@ -574,14 +575,34 @@ TEST_F(HostileTreeTest, AnEscapeIndexPastItsParentIsRejected) {
 
 TEST_F(HostileTreeTest, AVertexMovedOutOfItsTrianglesBoxesIsRejected) {
   // The sphere is symmetric: a vertex moved to its opposite keeps the mesh's bounds, and
-  // its triangles now cross the sphere, far outside their leaves' boxes.
+  // its triangles now cross the sphere, far outside their leaves' boxes. Their face
+  // normals are written as the moved corners give them, so only the boxes tell.
   expect_rejected_entry([](std::vector<char>& bytes, const mesh_cache_entry::Layout& layout, const CachedMesh& cold) {
-    const std::size_t vertex = cold.mesh().vertices_m.size() / 2 + 3;
-    Eigen::Vector3d v;
-    char* at = bytes.data() + layout.vertices + vertex * sizeof(Eigen::Vector3d);
-    std::memcpy(v.data(), at, sizeof v);
-    v = -v;
-    std::memcpy(at, v.data(), sizeof v);
+    TriangleMesh moved = cold.mesh();
+    const std::size_t vertex = moved.vertices_m.size() / 2 + 3;
+    moved.vertices_m[vertex] = -moved.vertices_m[vertex];
+    std::memcpy(bytes.data() + layout.vertices + vertex * sizeof(Eigen::Vector3d), moved.vertices_m[vertex].data(),
+                sizeof(Eigen::Vector3d));
+    for (std::size_t t = 0; t < moved.triangles.size(); ++t) {
+      const auto& c = moved.triangles[t];
+      if (c[0] != vertex && c[1] != vertex && c[2] != vertex) continue;
+      const Eigen::Vector3d n = unit_face_normal(moved.vertices_m[c[0]], moved.vertices_m[c[1]], moved.vertices_m[c[2]]);
+      std::memcpy(bytes.data() + layout.face_normals + t * sizeof(Eigen::Vector3d), n.data(), sizeof n);
+    }
+  });
+}
+
+TEST_F(HostileTreeTest, AFaceNormalTurnedIsRejected) {
+  // A sweep trusts a triangle's face normal for its side: one turned away from its
+  // corners' is refused, though the tree and the checksum hold.
+  expect_rejected_entry([](std::vector<char>& bytes, const mesh_cache_entry::Layout& layout, const CachedMesh& cold) {
+    const std::size_t t = cold.mesh().triangles.size() / 2 + 5;
+    char* at = bytes.data() + layout.face_normals + t * sizeof(Eigen::Vector3d);
+    Eigen::Vector3d n;
+    std::memcpy(n.data(), at, sizeof n);
+    ASSERT_NEAR(n.norm(), 1.0, 1e-12);
+    n = -n;
+    std::memcpy(at, n.data(), sizeof n);
   });
 }
 

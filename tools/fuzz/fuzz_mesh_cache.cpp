@@ -13,7 +13,9 @@
 //  - the load of a good mesh file never fails, whatever the entry holds;
 //  - a rejected entry gives a reason and the mesh rebuilt from the file;
 //  - an adopted entry gives a mesh whose indices are in range and whose data are finite,
-//    and whose tree finds each of its triangles by that triangle's own box.
+//    whose face normals are its triangles' own, and whose tree finds each of its triangles by
+//    that triangle's own box.
+#include "collision/segment_triangle.h"
 #include "geometry/primitive_mesh.h"
 #include "mesh_io/mesh_cache.h"
 #include "mesh_io/mesh_cache_entry.h"
@@ -111,6 +113,13 @@ void check_adopted(const mhd::CachedMesh& hit) {
   }
   for (std::size_t i = 0; i < m.vertices_m.size(); ++i) {
     if (!m.vertices_m[i].allFinite() || !m.vertex_normals.at(i).allFinite()) violated("adopted non-finite data");
+  }
+  for (std::uint32_t t = 0; t < m.triangles.size(); ++t) {
+    const auto& c = m.triangles[t];
+    const Eigen::Vector3d n = mhd::unit_face_normal(m.vertices_m[c[0]], m.vertices_m[c[1]], m.vertices_m[c[2]]);
+    if (!((hit.bvh->face_normal_O(t) - n).cwiseAbs().maxCoeff() <= mhd::MeshBvh::kFaceNormalTolerance)) {
+      violated("an adopted face normal is not its triangle's: " + std::to_string(t));
+    }
   }
   for (std::uint32_t t = 0; t < m.triangles.size(); ++t) {
     Eigen::AlignedBox3d box;
