@@ -184,11 +184,11 @@ class MeshBvh {
   /// box holding its children's boxes and its leaf's triangle. The root's two subtrees are
   /// checked on two threads.
   [[nodiscard]] bool tree_checks_out(std::span<const btQuantizedBvhNode> nodes, TreePages pages) const;
-  /// The check of the subtree rooted at `begin` that must span [begin, end), its root
-  /// held by `parent`'s box (none for the tree's root).
   /// Asks for the triangle and corners of the leaves a little past node i (before `end`)
   /// while node i is checked.
   void prefetch_leaf_data(std::span<const btQuantizedBvhNode> nodes, std::size_t i, std::size_t end) const;
+  /// The check of the subtree rooted at `begin` that must span [begin, end), its root
+  /// held by `parent`'s box (none for the tree's root).
   [[nodiscard]] bool subtree_checks_out(std::span<const btQuantizedBvhNode> nodes, std::size_t begin, std::size_t end,
                                         const btQuantizedBvhNode* parent, TreeCheckState& state) const;
 
