@@ -346,8 +346,10 @@ Eigen::Vector3d CollisionWorld::shaded_normal_W(const TriangleRef& ref, const Ei
   wc = std::max(wc, 0.0);
   const double sum = wa + wb + wc;
   if (!(sum > 0.0)) return face;
-  const Eigen::Vector3d blended_O = (wa * mesh.vertex_normals[t[0]] + wb * mesh.vertex_normals[t[1]] +
-                                     wc * mesh.vertex_normals[t[2]]) / sum;
+  const Eigen::Vector3d blended_O = (wa * mesh.vertex_normals[t[0]].cast<double>() +
+                                     wb * mesh.vertex_normals[t[1]].cast<double>() +
+                                     wc * mesh.vertex_normals[t[2]].cast<double>()) /
+                                    sum;
   const double len = blended_O.norm();
   if (!(len > 0.0)) return face;
   return o.X_WO.linear() * (blended_O / len);

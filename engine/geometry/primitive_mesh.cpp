@@ -28,7 +28,7 @@ std::uint32_t index_of(std::size_t i) { return static_cast<std::uint32_t>(i); }
 void set_radial_normals(TriangleMesh& mesh) {
   mesh.vertex_normals.resize(mesh.vertices_m.size());
   for (std::size_t i = 0; i < mesh.vertices_m.size(); ++i) {
-    mesh.vertex_normals[i] = mesh.vertices_m[i].normalized();
+    mesh.vertex_normals[i] = mesh.vertices_m[i].normalized().cast<float>();
   }
 }
 
@@ -42,7 +42,7 @@ TriangleMesh make_plane_mesh(double size_x_m, double size_y_m) {
   TriangleMesh mesh;
   mesh.vertices_m = {{-hx, -hy, 0.0}, {hx, -hy, 0.0}, {hx, hy, 0.0}, {-hx, hy, 0.0}};
   mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
-  mesh.vertex_normals.assign(4, Eigen::Vector3d::UnitZ());
+  mesh.vertex_normals.assign(4, Eigen::Vector3f::UnitZ());
   return mesh;
 }
 

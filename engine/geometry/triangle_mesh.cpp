@@ -5,17 +5,19 @@
 namespace mhd {
 
 void compute_vertex_normals(TriangleMesh& mesh) {
-  mesh.vertex_normals.assign(mesh.vertices_m.size(), Eigen::Vector3d::Zero());
+  // Summed in double, so that many small faces round as one; stored in single precision.
+  std::vector<Eigen::Vector3d> sums(mesh.vertices_m.size(), Eigen::Vector3d::Zero());
   for (const auto& t : mesh.triangles) {
     const Eigen::Vector3d& a = mesh.vertices_m[t[0]];
     const Eigen::Vector3d& b = mesh.vertices_m[t[1]];
     const Eigen::Vector3d& c = mesh.vertices_m[t[2]];
     const Eigen::Vector3d area_normal = (b - a).cross(c - a);  // length = 2 * area
-    for (auto i : t) mesh.vertex_normals[i] += area_normal;
+    for (auto i : t) sums[i] += area_normal;
   }
-  for (auto& n : mesh.vertex_normals) {
-    const double len = n.norm();
-    n = len > 0.0 ? Eigen::Vector3d(n / len) : Eigen::Vector3d::Zero();
+  mesh.vertex_normals.resize(sums.size());
+  for (std::size_t i = 0; i < sums.size(); ++i) {
+    const double len = sums[i].norm();
+    mesh.vertex_normals[i] = len > 0.0 ? Eigen::Vector3f((sums[i] / len).cast<float>()) : Eigen::Vector3f::Zero();
   }
 }
 

@@ -19,8 +19,10 @@ struct TriangleMesh {
   MeshArray<Eigen::Vector3d> vertices_m;
   /// Counter-clockwise seen from the outside where the mesh has an outside.
   MeshArray<TriangleIndices> triangles;
-  /// Unit, area-weighted vertex normals (for force shading); empty until computed.
-  MeshArray<Eigen::Vector3d> vertex_normals;
+  /// Unit, area-weighted vertex normals; empty until computed. Single precision: they
+  /// only give directions to shade by (rounding of about 1e-7 rad), and it halves their
+  /// memory, which a large mesh keeps resident.
+  MeshArray<Eigen::Vector3f> vertex_normals;
 
   [[nodiscard]] std::size_t triangle_count() const { return triangles.size(); }
 };

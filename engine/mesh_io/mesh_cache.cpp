@@ -162,7 +162,7 @@ std::string adopt_mesh_sections(const FileHeader& h, const Layout& layout, std::
   const auto nt = static_cast<std::size_t>(h.triangle_count);
   mesh.vertices_m = adopt_mesh_array(section_of<Eigen::Vector3d>(image, layout.vertices, nv), image_owner);
   mesh.triangles = adopt_mesh_array(section_of<TriangleIndices>(image, layout.triangles, nt), image_owner);
-  mesh.vertex_normals = adopt_mesh_array(section_of<Eigen::Vector3d>(image, layout.normals, nv), image_owner);
+  mesh.vertex_normals = adopt_mesh_array(section_of<Eigen::Vector3f>(image, layout.normals, nv), image_owner);
   // A matching checksum makes accidental corruption vanishingly unlikely; these checks
   // are cheap and keep a hand-made file from breaking the mesh invariants.
   const auto n32 = static_cast<std::uint32_t>(nv);
@@ -450,7 +450,7 @@ void MeshCache::store(const std::filesystem::path& mesh_file, const std::filesys
   };
   add(layout->vertices, mesh.vertices_m.data(), mesh.vertices_m.size() * sizeof(Eigen::Vector3d));
   add(layout->triangles, mesh.triangles.data(), mesh.triangles.size() * sizeof(TriangleIndices));
-  add(layout->normals, mesh.vertex_normals.data(), mesh.vertex_normals.size() * sizeof(Eigen::Vector3d));
+  add(layout->normals, mesh.vertex_normals.data(), mesh.vertex_normals.size() * sizeof(Eigen::Vector3f));
   add(layout->face_normals, bvh.face_normals_O().data(), bvh.face_normals_O().size_bytes());
   add(layout->bvh, serialized.bytes.get(), serialized.size);
   add(layout->source, source.data(), source.size());

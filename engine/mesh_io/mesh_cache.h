@@ -32,7 +32,8 @@ namespace mhd {
 /// 3: a mesh past 2^21 triangles is split into Bullet parts (MeshBvh::kPartTriangles).
 /// 4: an entry ends with the absolute path of the mesh file that wrote it.
 /// 5: an entry holds its face normals, adopted where they lie.
-inline constexpr std::uint32_t kMeshCacheFormatVersion = 5;
+/// 6: vertex normals are single precision.
+inline constexpr std::uint32_t kMeshCacheFormatVersion = 6;
 
 /// Meshes with at least this many triangles report progress.
 inline constexpr std::size_t kProgressMinTriangles = 100'000;

@@ -9,14 +9,14 @@ namespace mhd::mesh_cache_entry {
 std::optional<Layout> layout_for(std::uint64_t vertices, std::uint64_t triangles, std::uint64_t normals,
                                  std::uint64_t bvh_bytes, std::uint64_t source_bytes, std::uint64_t limit) {
   if (vertices > limit / sizeof(Eigen::Vector3d) || triangles > limit / sizeof(Eigen::Vector3d) ||
-      normals > limit / sizeof(Eigen::Vector3d) || bvh_bytes > limit || source_bytes > kMaxSourceBytes) {
+      normals > limit / sizeof(Eigen::Vector3f) || bvh_bytes > limit || source_bytes > kMaxSourceBytes) {
     return std::nullopt;
   }
   Layout l{};
   l.vertices = sizeof(FileHeader);
   l.triangles = align_up(l.vertices + static_cast<std::size_t>(vertices) * sizeof(Eigen::Vector3d));
   l.normals = align_up(l.triangles + static_cast<std::size_t>(triangles) * sizeof(TriangleIndices));
-  l.face_normals = align_up(l.normals + static_cast<std::size_t>(normals) * sizeof(Eigen::Vector3d));
+  l.face_normals = align_up(l.normals + static_cast<std::size_t>(normals) * sizeof(Eigen::Vector3f));
   l.bvh = align_up(l.face_normals + static_cast<std::size_t>(triangles) * sizeof(Eigen::Vector3d));
   l.source = l.bvh + static_cast<std::size_t>(bvh_bytes);
   l.end = l.source + static_cast<std::size_t>(source_bytes);

@@ -49,6 +49,7 @@ struct FileHeader {
 static_assert(sizeof(FileHeader) == 128);
 static_assert(std::is_trivially_copyable_v<FileHeader>);
 static_assert(sizeof(Eigen::Vector3d) == 3 * sizeof(double), "vertices are stored as packed doubles");
+static_assert(sizeof(Eigen::Vector3f) == 3 * sizeof(float), "vertex normals are stored as packed floats");
 static_assert(sizeof(TriangleIndices) == 3 * sizeof(std::uint32_t));
 static_assert(std::is_trivially_copyable_v<TriangleIndices>);
 

@@ -22,6 +22,8 @@ inline osg::Vec3 to_osg(const Eigen::Vector3d& v) {
   return {static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z())};
 }
 
+inline osg::Vec3 to_osg(const Eigen::Vector3f& v) { return {v.x(), v.y(), v.z()}; }
+
 inline osg::Matrixd to_osg(const Eigen::Matrix4d& m) {
   osg::Matrixd out;
   for (int r = 0; r < 4; ++r) {
