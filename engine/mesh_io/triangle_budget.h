@@ -9,9 +9,11 @@
 namespace mhd {
 
 struct TriangleBudget {
-  /// Peak bytes a load takes per triangle (assimp's copy, the mesh, normals and tree):
-  /// 8.7 GB at 50 M triangles, measured with /usr/bin/time -v on `mhd validate`.
-  static constexpr std::uint64_t kLoadBytesPerTriangle = 175;
+  /// Peak bytes a load takes per triangle (assimp's copy, the mesh, normals and tree),
+  /// with a twentieth to spare: 7.1 GB at 50 M triangles and 14.2 GB at 100 M, 142 bytes
+  /// a triangle, measured with /usr/bin/time on `mhd validate` (docs/benchmarks.md,
+  /// "Meshes at size").
+  static constexpr std::uint64_t kLoadBytesPerTriangle = 150;
 
   std::uint64_t max_triangles = 0;
   std::uint64_t used = 0;  ///< triangles loaded before this mesh

@@ -68,7 +68,7 @@ TEST(BoundedLoading, AHeaderClaimingMoreThanMemoryHoldsIsRefusedBeforeLoading) {
   // A billion triangles, what a scene may declare, in the units a user reads.
   const TriangleBudget machine{1'000'000'000, 0, std::uint64_t{24} << 30};
   EXPECT_EQ(machine.memory_refusal("the header claims", 1'000'000'000, "faces"),
-            "the header claims 1000000000 faces, about 163.0 GiB to load, more than the 24.0 GiB of memory available");
+            "the header claims 1000000000 faces, about 139.7 GiB to load, more than the 24.0 GiB of memory available");
   EXPECT_EQ(machine.memory_refusal("the header claims", 100'000'000, "faces"), "");
   // This machine's figure is read, and the repository's meshes fit it.
   EXPECT_GT(available_memory_bytes(), std::uint64_t{1} << 28);
