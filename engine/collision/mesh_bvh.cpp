@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -38,6 +39,14 @@ bool box_holds(const btQuantizedBvhNode& outer, const unsigned short* min, const
   return true;
 }
 
+/// True when `given` is unit_face_normal(a, b, c) within MeshBvh::kFaceNormalTolerance
+/// per coordinate (NaN never is): the face normal a file gives, which the sweeps trust.
+bool face_normal_holds(const Eigen::Vector3d& given, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                       const Eigen::Vector3d& c) {
+  const Eigen::Vector3d n = unit_face_normal(a, b, c);
+  return (given - n).cwiseAbs().maxCoeff() <= MeshBvh::kFaceNormalTolerance;
+}
+
 /// Node arrays shorter than this are checked on one thread.
 constexpr std::size_t kParallelNodes = std::size_t{1} << 20;
 /// How far ahead of a check its node pages are mapped, and how far behind released.
@@ -45,7 +54,7 @@ constexpr std::size_t kPageWindowNodes = std::size_t{1} << 20;
 
 }  // namespace
 
-bool MeshBvh::make_interface(MeshArray<Eigen::Vector3d> given_face_normals_O) {
+bool MeshBvh::make_interface(MeshArray<Eigen::Vector3d> given_face_normals_O, bool check_mesh) {
   if (mesh_->triangles.empty()) throw std::invalid_argument("MeshBvh: mesh has no triangles");
   if (!holds(mesh_->triangles.size())) {
     throw std::length_error("MeshBvh: " + std::to_string(mesh_->triangles.size()) + " triangles, more than the " +
@@ -64,28 +73,32 @@ bool MeshBvh::make_interface(MeshArray<Eigen::Vector3d> given_face_normals_O) {
     resize_in_huge_pages(face_normals_O_, triangle_count);
   }
   // The bounds in the same pass, each half of the triangles taking the same share of the
-  // vertices (the shares cover them all, once).
+  // vertices (the shares cover them all, once). Given normals are checked by the tree's
+  // check instead, leaf by leaf, where it has the triangle's corners at hand, and so are
+  // a checked mesh's triangles.
   const std::size_t vertex_count = mesh_->vertices_m.size();
+  const bool check_normals = check_mesh && mesh_->vertex_normals.size() == vertex_count;
+  if (check_mesh && !check_normals && !mesh_->vertex_normals.empty()) return false;
   std::array<Eigen::AlignedBox3d, 2> half_bounds;
-  const bool normals_hold = in_two_halves(triangle_count, kParallelNodes, [&](std::size_t first, std::size_t last) {
-    bool hold = true;
-    for (std::size_t i = first; i < last; ++i) {
-      const TriangleIndices& t = mesh_->triangles[i];
-      const Eigen::Vector3d n = unit_face_normal(mesh_->vertices_m[t[0]], mesh_->vertices_m[t[1]], mesh_->vertices_m[t[2]]);
-      if (!given) {
-        face_normals_O_[i] = n;
-      } else if (!((face_normals_O_[i] - n).cwiseAbs().maxCoeff() <= kFaceNormalTolerance)) {
-        hold = false;  // NaN too
-        break;
+  const bool mesh_holds = in_two_halves(triangle_count, kParallelNodes, [&](std::size_t first, std::size_t last) {
+    if (!given) {
+      for (std::size_t i = first; i < last; ++i) {
+        const TriangleIndices& t = mesh_->triangles[i];
+        if (check_mesh && (t[0] >= vertex_count || t[1] >= vertex_count || t[2] >= vertex_count)) return false;
+        face_normals_O_[i] =
+            unit_face_normal(mesh_->vertices_m[t[0]], mesh_->vertices_m[t[1]], mesh_->vertices_m[t[2]]);
       }
     }
     Eigen::AlignedBox3d& box = half_bounds[first == 0 ? std::size_t{0} : std::size_t{1}];
+    bool finite = true;
     for (std::size_t v = first * vertex_count / triangle_count; v < last * vertex_count / triangle_count; ++v) {
-      box.extend(mesh_->vertices_m[v]);
+      const Eigen::Vector3d& p = mesh_->vertices_m[v];
+      box.extend(p);
+      if (check_mesh) finite = finite && p.allFinite() && (!check_normals || mesh_->vertex_normals[v].allFinite());
     }
-    return hold;
+    return finite;
   });
-  if (!normals_hold) return false;
+  if (!mesh_holds) return false;
   bounds_ = half_bounds[0].extend(half_bounds[1]);
   const double extent = bounds_.sizes().maxCoeff();
   bvh_scale_ = extent > 0.0 ? kBvhExtentUnits / extent : 1.0;
@@ -95,7 +108,7 @@ bool MeshBvh::make_interface(MeshArray<Eigen::Vector3d> given_face_normals_O) {
   return true;
 }
 
-MeshBvh::MeshBvh(std::shared_ptr<const TriangleMesh> mesh) : mesh_(std::move(mesh)) {
+MeshBvh::MeshBvh(std::shared_ptr<const TriangleMesh> mesh, MeshOrder order) : mesh_(std::move(mesh)) {
   (void)make_interface();  // computes the normals: always true
   if (mesh_->triangles.size() >= kSplitBuildMinTriangles) {
     built_tree_ = build_tree_in_pieces(*mesh_, bvh_scale_, to_bt(bounds_.min() * bvh_scale_),
@@ -108,7 +121,70 @@ MeshBvh::MeshBvh(std::shared_ptr<const TriangleMesh> mesh) : mesh_(std::move(mes
   } else {
     shape_ = std::make_unique<btBvhTriangleMeshShape>(interface_.get(), /*quantized=*/true, /*buildBvh=*/true);
   }
+  if (order == MeshOrder::Leaves) put_mesh_in_leaf_order(*shape_->getOptimizedBvh());
   adopt_tree(shape_->getOptimizedBvh());
+}
+
+void MeshBvh::put_mesh_in_leaf_order(btQuantizedBvh& tree) {
+  const TriangleMesh& given = *mesh_;
+  const std::size_t triangle_count = given.triangles.size();
+  const std::size_t vertex_count = given.vertices_m.size();
+  btQuantizedBvhNode* const nodes = &tree.getQuantizedNodeArray()[0];
+  const std::size_t node_count = nodes[0].isLeafNode() ? 1 : static_cast<std::size_t>(nodes[0].getEscapeIndex());
+  // 1. The leaves renamed in walk order; given_of[k] is the given triangle leaf k named.
+  std::vector<std::uint32_t> given_of;
+  resize_in_huge_pages(given_of, triangle_count);
+  std::size_t leaves = 0;
+  for (std::size_t i = 0; i < node_count; ++i) {
+    btQuantizedBvhNode& node = nodes[i];
+    if (!node.isLeafNode()) continue;
+    if (leaves == triangle_count) throw std::logic_error("MeshBvh: the tree has more leaves than triangles");
+    given_of[leaves] = static_cast<std::uint32_t>(leaf_triangle(node));
+    node.m_escapeIndexOrTriangleIndex = leaf_code(leaves);
+    ++leaves;
+  }
+  if (leaves != triangle_count) throw std::logic_error("MeshBvh: the tree has fewer leaves than triangles");
+  // 2. The face normals in the new order, the given ones let go first: the load's peak
+  // of memory holds one copy of them.
+  {
+    MeshArray<Eigen::Vector3d> face_normals_O;
+    resize_in_huge_pages(face_normals_O, triangle_count);
+    for (std::size_t k = 0; k < triangle_count; ++k) face_normals_O[k] = face_normals_O_[given_of[k]];
+    face_normals_O_ = std::move(face_normals_O);
+  }
+  // 3. Each vertex numbered where a triangle first uses it, the unused ones after.
+  auto ordered = std::make_shared<TriangleMesh>();
+  resize_in_huge_pages(ordered->triangles, triangle_count);
+  std::vector<std::uint32_t> new_vertex;
+  new_vertex.assign(vertex_count, std::numeric_limits<std::uint32_t>::max());
+  std::uint32_t next = 0;
+  for (std::size_t k = 0; k < triangle_count; ++k) {
+    const TriangleIndices& t = given.triangles[given_of[k]];
+    for (std::size_t c = 0; c < 3; ++c) {
+      std::uint32_t& v = new_vertex[t[c]];
+      if (v == std::numeric_limits<std::uint32_t>::max()) v = next++;
+      ordered->triangles[k][c] = v;
+    }
+  }
+  for (std::uint32_t& v : new_vertex) {
+    if (v == std::numeric_limits<std::uint32_t>::max()) v = next++;
+  }
+  given_of = {};
+  // 4. The vertices and their normals moved to their new places.
+  resize_in_huge_pages(ordered->vertices_m, vertex_count);
+  for (std::size_t v = 0; v < vertex_count; ++v) ordered->vertices_m[new_vertex[v]] = given.vertices_m[v];
+  if (!given.vertex_normals.empty()) {
+    resize_in_huge_pages(ordered->vertex_normals, vertex_count);
+    for (std::size_t v = 0; v < vertex_count; ++v) ordered->vertex_normals[new_vertex[v]] = given.vertex_normals[v];
+  }
+  // 5. Bullet's parts point at the new arrays: the same parts, over the same counts.
+  IndexedMeshArray& parts = interface_->getIndexedMeshArray();
+  for (int p = 0; p < parts.size(); ++p) {
+    parts[p].m_triangleIndexBase = reinterpret_cast<const unsigned char*>(
+        ordered->triangles.data() + static_cast<std::size_t>(p) * kPartTriangles);
+    parts[p].m_vertexBase = reinterpret_cast<const unsigned char*>(ordered->vertices_m.data());
+  }
+  mesh_ = std::move(ordered);
 }
 
 void MeshBvh::adopt_tree(btQuantizedBvh* tree) {
@@ -140,9 +216,12 @@ std::unique_ptr<MeshBvh> MeshBvh::adopt_serialized(std::shared_ptr<const Triangl
   }
   std::unique_ptr<MeshBvh> out(new MeshBvh());
   out->mesh_ = std::move(mesh);
-  const bool normals_hold = out->make_interface(std::move(face_normals_O));
-  if (ready && !ready()) return nullptr;
-  if (!normals_hold) return nullptr;
+  // Whatever fails, a caller reading the buffer is waited for before it is let go.
+  const auto refused = [&] {
+    if (ready) (void)ready();
+    return nullptr;
+  };
+  if (!out->make_interface(std::move(face_normals_O), /*check_mesh=*/true)) return refused();
   out->serialized_storage_ = std::move(storage);
   // Bullet's own adoption path: it builds a btQuantizedBvh in the buffer and hands it out
   // as btOptimizedBvh* (which adds no data). Our calls go through the object's true
@@ -150,19 +229,20 @@ std::unique_ptr<MeshBvh> MeshBvh::adopt_serialized(std::shared_ptr<const Triangl
   btOptimizedBvh* adopted = btOptimizedBvh::deSerializeInPlace(serialized.data(),
                                                                static_cast<unsigned>(serialized.size()),
                                                                /*swapEndian=*/false);
-  if (adopted == nullptr) return nullptr;
+  if (adopted == nullptr) return refused();
   auto* tree = reinterpret_cast<btQuantizedBvh*>(adopted);
   out->adopted_tree_ = tree;  // from here on the destructor releases it
-  if (!tree->isQuantized()) return nullptr;
+  if (!tree->isQuantized()) return refused();
   const auto& nodes = tree->getQuantizedNodeArray();
-  if (nodes.size() <= 0) return nullptr;
+  if (nodes.size() <= 0) return refused();
   // The subtree headers and the other walks would trust the file's other fields; the
   // stackless walk needs only the nodes, checked below. The quantization is this mesh's,
   // set as the build sets it, not the file's.
   tree->setTraversalMode(btQuantizedBvh::TRAVERSAL_STACKLESS);
   tree->setQuantizationValues(to_bt(out->bounds_.min() * out->bvh_scale_), to_bt(out->bounds_.max() * out->bvh_scale_));
   out->tree_ = tree;  // quantize() for the check; the nodes are adopted only once checked
-  if (!out->tree_checks_out({&nodes[0], static_cast<std::size_t>(nodes.size())}, pages)) return nullptr;
+  if (!out->tree_checks_out({&nodes[0], static_cast<std::size_t>(nodes.size())}, pages)) return refused();
+  if (ready && !ready()) return nullptr;
   out->adopt_tree(tree);
   out->shape_ = std::make_unique<btBvhTriangleMeshShape>(out->interface_.get(), true, /*buildBvh=*/false);
   // Same scaling as the interface, or Bullet resets it and re-walks the tree.
@@ -170,30 +250,9 @@ std::unique_ptr<MeshBvh> MeshBvh::adopt_serialized(std::shared_ptr<const Triangl
   return out;
 }
 
-void MeshBvh::prefetch_leaf_data(std::span<const btQuantizedBvhNode> nodes, std::size_t i,
-                                  std::size_t end) const {
-  // A leaf's triangle and its corners lie anywhere in their arrays: the check waits on
-  // memory for them unless asked for ahead, its triangle kFarAhead nodes before it is
-  // checked and its corners (the triangle then at hand) kNearAhead nodes before.
-  constexpr std::size_t kFarAhead = 32;
-  constexpr std::size_t kNearAhead = 16;
-  const std::size_t triangles = mesh_->triangles.size();
-  if (i + kFarAhead < end && nodes[i + kFarAhead].isLeafNode()) {
-    const std::uint64_t t = leaf_triangle(nodes[i + kFarAhead]);
-    if (t < triangles) __builtin_prefetch(&mesh_->triangles[t]);
-  }
-  if (i + kNearAhead < end && nodes[i + kNearAhead].isLeafNode()) {
-    const std::uint64_t t = leaf_triangle(nodes[i + kNearAhead]);
-    if (t < triangles) {
-      for (const auto v : mesh_->triangles[t]) {
-        if (v < mesh_->vertices_m.size()) __builtin_prefetch(&mesh_->vertices_m[v]);
-      }
-    }
-  }
-}
-
 bool MeshBvh::subtree_checks_out(std::span<const btQuantizedBvhNode> nodes, std::size_t begin, std::size_t end,
-                                 const btQuantizedBvhNode* parent, TreeCheckState& state) const {
+                                 const btQuantizedBvhNode* parent, std::uint64_t* named,
+                                 TreeCheckState& state) const {
   struct Open {
     std::size_t end;  // one past the inner node's last node
     const btQuantizedBvhNode* node;
@@ -204,8 +263,8 @@ bool MeshBvh::subtree_checks_out(std::span<const btQuantizedBvhNode> nodes, std:
   // Read once and counted here: the other thread's subtree shares `state`, and a write to
   // it per leaf, or a read of the line such a write moves, costs most of the check.
   const bool release_pages = state.release_pages;
-  std::atomic<std::uint64_t>* const named = state.named.data();
   const std::size_t triangle_count = mesh_->triangles.size();
+  const std::size_t vertex_count = mesh_->vertices_m.size();
   std::size_t leaves = 0;
   for (std::size_t i = begin; i < end; ++i) {
     if (release_pages && i % kPageWindowNodes == 0) {
@@ -215,7 +274,6 @@ bool MeshBvh::subtree_checks_out(std::span<const btQuantizedBvhNode> nodes, std:
         window = i;
       }
     }
-    prefetch_leaf_data(nodes, i, end);
     const btQuantizedBvhNode& node = nodes[i];
     const std::size_t limit = open.empty() ? end : open.back().end;
     if (open.empty() ? i != begin : ++open.back().children > 2) return false;
@@ -225,11 +283,19 @@ bool MeshBvh::subtree_checks_out(std::span<const btQuantizedBvhNode> nodes, std:
       const std::uint64_t triangle = leaf_triangle(node);
       if (triangle >= triangle_count) return false;
       const std::uint64_t bit = std::uint64_t{1} << (triangle % 64);
-      if ((named[triangle / 64].fetch_or(bit, std::memory_order_relaxed) & bit) != 0) return false;
+      if ((named[triangle / 64] & bit) != 0) return false;
+      named[triangle / 64] |= bit;
       ++leaves;
-      Eigen::AlignedBox3d box_O;
-      for (const auto v : mesh_->triangles[triangle]) box_O.extend(mesh_->vertices_m[v]);
-      const QuantizedBox q = quantize(box_O);
+      const TriangleIndices& corners = mesh_->triangles[triangle];
+      if (corners[0] >= vertex_count || corners[1] >= vertex_count || corners[2] >= vertex_count ||
+          corners[0] == corners[1] || corners[1] == corners[2] || corners[0] == corners[2]) {
+        return false;
+      }
+      const Eigen::Vector3d& a = mesh_->vertices_m[corners[0]];
+      const Eigen::Vector3d& b = mesh_->vertices_m[corners[1]];
+      const Eigen::Vector3d& c = mesh_->vertices_m[corners[2]];
+      if (!face_normal_holds(face_normals_O_[triangle], a, b, c)) return false;
+      const QuantizedBox q = quantize(Eigen::AlignedBox3d(a.cwiseMin(b).cwiseMin(c), a.cwiseMax(b).cwiseMax(c)));
       if (!box_holds(node, q.min.data(), q.max.data())) return false;
       if (open.empty() && end - begin != 1) return false;  // a leaf root is the whole subtree
       // Every subtree ends with a leaf: close the inner nodes that end here.
@@ -254,14 +320,18 @@ bool MeshBvh::subtree_checks_out(std::span<const btQuantizedBvhNode> nodes, std:
 
 bool MeshBvh::tree_checks_out(std::span<const btQuantizedBvhNode> nodes, TreePages pages) const {
   const std::size_t triangles = mesh_->triangles.size();
-  TreeCheckState state{std::vector<std::atomic<std::uint64_t>>((triangles + 63) / 64), {0},
-                       pages == TreePages::Release};
+  TreeCheckState state{{0}, pages == TreePages::Release};
+  // One bit per triangle for each thread's leaves: a triangle named twice has its bit set
+  // twice in one, or once in both.
+  std::array<std::vector<std::uint64_t>, 2> named;
+  named[0].assign((triangles + 63) / 64, 0);
   const std::size_t n = nodes.size();
   if (n == 0) return false;
   bool whole = false;
   if (nodes[0].isLeafNode() || n < kParallelNodes) {
-    whole = subtree_checks_out(nodes, 0, n, nullptr, state);
+    whole = subtree_checks_out(nodes, 0, n, nullptr, named[0].data(), state);
   } else {
+    named[1].assign(named[0].size(), 0);
     // The root's two subtrees are checked side by side, each against the root's box. The
     // root spans the whole array, and its first subtree starts right after it.
     const auto span_of = [&](std::size_t i) {
@@ -275,10 +345,11 @@ bool MeshBvh::tree_checks_out(std::span<const btQuantizedBvhNode> nodes, TreePag
     const std::array<std::size_t, 3> bounds{1, first_end, n};
     whole = in_two_halves(2, 2, [&](std::size_t first, std::size_t last) {
       for (std::size_t k = first; k < last; ++k) {
-        if (!subtree_checks_out(nodes, bounds[k], bounds[k + 1], &nodes[0], state)) return false;
+        if (!subtree_checks_out(nodes, bounds[k], bounds[k + 1], &nodes[0], named[k].data(), state)) return false;
       }
       return true;
     });
+    for (std::size_t w = 0; whole && w < named[0].size(); ++w) whole = (named[0][w] & named[1][w]) == 0;
   }
   return whole && state.leaves.load() == triangles;
 }

@@ -34,11 +34,22 @@ class MeshBvh {
     return triangles >= 1 && triangles <= kMaxTriangles;
   }
 
+  /// The order of the mesh() a tree is built over. With Leaves, the mesh's triangles are
+  /// put in the order of the tree's leaves and its vertices in the order those triangles
+  /// first use them (unused ones last): a walk, a sweep and the cached tree's check then
+  /// read neighbouring triangles and corners from neighbouring memory, where a large
+  /// mesh's file order scatters them over gigabytes. The triangles, vertices and vertex
+  /// normals are the same, renumbered: mesh() is a new mesh, and triangle numbers are no
+  /// longer the given mesh's.
+  enum class MeshOrder { AsGiven, Leaves };
+
   /// Builds the BVH. Precondition: mesh has at least one triangle, all indices valid.
-  explicit MeshBvh(std::shared_ptr<const TriangleMesh> mesh);
+  explicit MeshBvh(std::shared_ptr<const TriangleMesh> mesh, MeshOrder order = MeshOrder::AsGiven);
 
   /// Adopts a BVH produced by serialize_bvh() for the same mesh (the BVH cache).
-  /// Returns nullptr if the buffer is not a valid serialized BVH for this mesh.
+  /// Returns nullptr if the buffer is not a valid serialized BVH for this mesh, or the
+  /// mesh is not one (a triangle's corner out of range or repeated, a vertex or vertex
+  /// normal not finite): a file hands both.
   static std::unique_ptr<MeshBvh> from_serialized(std::shared_ptr<const TriangleMesh> mesh,
                                                   std::span<const std::byte> serialized);
 
@@ -54,10 +65,15 @@ class MeshBvh {
   /// `face_normals_O`, where given (one per triangle, such as a cache entry's), are taken
   /// for the face normals once each is within kFaceNormalTolerance of its triangle's own;
   /// else nothing is adopted (nullptr). Where not given, they are computed.
-  /// With `ready`, the mesh's face normals are computed first and `ready()` is called
-  /// before anything is written in `serialized`; if it returns false nothing is adopted
-  /// (nullptr). A caller still reading the buffer, such as its checksum, finishes there.
+  /// With `ready`, `ready()` is called once the mesh and the tree are checked, or as soon
+  /// as they fail; if it returns false nothing is adopted (nullptr). A caller still
+  /// reading the buffer, such as its checksum, finishes there. Until then the adoption
+  /// has written only the first kSerializedHeadBytes of `serialized` (Bullet's header),
+  /// so that the caller may read the rest meanwhile, and that head as it was from a copy.
   enum class TreePages { Keep, Release };
+  /// The bytes at the start of a serialized tree that adopting it writes: Bullet's tree
+  /// object, built again where it lies. Never the nodes.
+  static constexpr std::size_t kSerializedHeadBytes = sizeof(btQuantizedBvh);
   static std::unique_ptr<MeshBvh> adopt_serialized(std::shared_ptr<const TriangleMesh> mesh,
                                                    std::span<std::byte> serialized, std::shared_ptr<void> storage,
                                                    TreePages pages = TreePages::Keep,
@@ -111,6 +127,13 @@ class MeshBvh {
   [[nodiscard]] static std::uint64_t leaf_triangle(const btQuantizedBvhNode& leaf) {
     return static_cast<std::uint64_t>(leaf.getPartId()) * kPartTriangles +
            static_cast<std::uint64_t>(leaf.getTriangleIndex());
+  }
+
+  /// A leaf's stored name of the mesh's triangle `triangle` (below kMaxTriangles + 1):
+  /// its part in the upper bits, its index in that part in the lower 21.
+  [[nodiscard]] static int leaf_code(std::uint64_t triangle) {
+    return static_cast<int>(((triangle / kPartTriangles) << (31 - MAX_NUM_PARTS_IN_BITS)) |
+                            (triangle % kPartTriangles));
   }
 
   /// A box on the tree's grid: Bullet's 16-bit quantization of the mesh's bounds.
@@ -170,27 +193,31 @@ class MeshBvh {
  private:
   MeshBvh() = default;
   // Sets up Bullet's view of the mesh, its bounds and face normals: computed, or the given
-  // ones checked (false where one is off, see adopt_serialized()).
-  [[nodiscard]] bool make_interface(MeshArray<Eigen::Vector3d> given_face_normals_O = {});
+  // ones taken (false where their count is off; tree_checks_out() holds each to its
+  // triangle). With `check_mesh` (a mesh a file hands us), false too where a vertex or
+  // vertex normal is not finite, or a corner out of range where normals are computed.
+  [[nodiscard]] bool make_interface(MeshArray<Eigen::Vector3d> given_face_normals_O = {}, bool check_mesh = false);
   void adopt_tree(btQuantizedBvh* tree);
+  /// MeshOrder::Leaves for a built tree: renames its leaves 0, 1, 2 ... in walk order and
+  /// makes mesh_ and the face normals the given ones in that order.
+  void put_mesh_in_leaf_order(btQuantizedBvh& tree);
   struct TreeCheckState {
-    std::vector<std::atomic<std::uint64_t>> named;  // one bit per triangle a leaf named
     std::atomic<std::size_t> leaves;
     bool release_pages;
   };
   /// A tree a file hands us, checked node by node before it is walked: Bullet's stackless
   /// layout (each inner node followed by its two subtrees, its escape index spanning
-  /// exactly them, the root the whole array), leaves naming every triangle once, and every
-  /// box holding its children's boxes and its leaf's triangle. The root's two subtrees are
-  /// checked on two threads.
+  /// exactly them, the root the whole array), leaves naming every triangle once, each
+  /// leaf's triangle three distinct corners in range, every box holding its children's
+  /// boxes and its leaf's triangle, and each leaf's face normal its triangle's own. The
+  /// root's two subtrees are checked on two threads.
   [[nodiscard]] bool tree_checks_out(std::span<const btQuantizedBvhNode> nodes, TreePages pages) const;
-  /// Asks for the triangle and corners of the leaves a little past node i (before `end`)
-  /// while node i is checked.
-  void prefetch_leaf_data(std::span<const btQuantizedBvhNode> nodes, std::size_t i, std::size_t end) const;
   /// The check of the subtree rooted at `begin` that must span [begin, end), its root
-  /// held by `parent`'s box (none for the tree's root).
+  /// held by `parent`'s box (none for the tree's root). `named` has a bit per triangle,
+  /// set for each leaf that names it: this thread's own, so that no bit is shared.
   [[nodiscard]] bool subtree_checks_out(std::span<const btQuantizedBvhNode> nodes, std::size_t begin, std::size_t end,
-                                        const btQuantizedBvhNode* parent, TreeCheckState& state) const;
+                                        const btQuantizedBvhNode* parent, std::uint64_t* named,
+                                        TreeCheckState& state) const;
 
   std::shared_ptr<const TriangleMesh> mesh_;
   MeshArray<Eigen::Vector3d> face_normals_O_;

@@ -80,9 +80,7 @@ class PieceTree : public btOptimizedBvh {
       btQuantizedBvhNode node = m_quantizedContiguousNodes[static_cast<int>(i)];
       if (node.isLeafNode()) {
         const std::uint32_t triangle = items[MeshBvh::leaf_triangle(node)].triangle;
-        node.m_escapeIndexOrTriangleIndex =
-            static_cast<int>(((triangle / MeshBvh::kPartTriangles) << (31 - MAX_NUM_PARTS_IN_BITS)) |
-                             (triangle % MeshBvh::kPartTriangles));
+        node.m_escapeIndexOrTriangleIndex = MeshBvh::leaf_code(triangle);
       }
       out[at + i] = node;
     }

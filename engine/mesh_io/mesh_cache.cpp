@@ -1,6 +1,7 @@
 #include "mesh_io/mesh_cache.h"
 
 #include "collision/huge_pages.h"
+#include "collision/split_tree_build.h"
 #include "mesh_io/byte_count_text.h"
 #include "mesh_io/mesh_cache_entry.h"
 #include "mesh_io/mesh_cache_eviction.h"
@@ -129,20 +130,27 @@ std::optional<Layout> check_header(const FileHeader& h, const MeshCacheKey& key,
 
 /// XXH3-128 of `bytes`, a window at a time: each window's pages are mapped in one call
 /// (not a fault each), and those from `release_from` on are let go once hashed, so a large
-/// entry is never resident at once (the tree's check maps its pages again).
-XXH128_hash_t hash_mapped(std::span<const std::byte> bytes, const std::byte* release_from) {
+/// entry is never resident at once (the tree's check maps its pages again). The bytes at
+/// `head_at` are read from `head`, a copy taken before the tree's adoption writes there.
+XXH128_hash_t hash_mapped(std::span<const std::byte> bytes, const std::byte* release_from, std::size_t head_at,
+                          std::span<const std::byte> head) {
   constexpr std::size_t kWindow = std::size_t{64} << 20;
   std::unique_ptr<XXH3_state_t, XXH_errorcode (*)(XXH3_state_t*)> state(XXH3_createState(), &XXH3_freeState);
   if (!state || XXH3_128bits_reset(state.get()) != XXH_OK) return XXH128_hash_t{0, 0};
-  for (std::size_t at = 0; at < bytes.size(); at += kWindow) {
-    const std::span<const std::byte> window = bytes.subspan(at, std::min(kWindow, bytes.size() - at));
-    populate_for_reading(window.data(), window.size());
-    XXH3_128bits_update(state.get(), window.data(), window.size());
-    if (window.data() + window.size() > release_from) {
-      const std::byte* from = std::max(window.data(), release_from);
-      release_file_pages(from, static_cast<std::size_t>(window.data() + window.size() - from));
+  const auto hash_range = [&](std::span<const std::byte> range) {
+    for (std::size_t at = 0; at < range.size(); at += kWindow) {
+      const std::span<const std::byte> window = range.subspan(at, std::min(kWindow, range.size() - at));
+      populate_for_reading(window.data(), window.size());
+      XXH3_128bits_update(state.get(), window.data(), window.size());
+      if (window.data() + window.size() > release_from) {
+        const std::byte* from = std::max(window.data(), release_from);
+        release_file_pages(from, static_cast<std::size_t>(window.data() + window.size() - from));
+      }
     }
-  }
+  };
+  hash_range(bytes.first(head_at));
+  XXH3_128bits_update(state.get(), head.data(), head.size());
+  hash_range(bytes.subspan(head_at + head.size()));
   return XXH3_128bits_digest(state.get());
 }
 
@@ -154,27 +162,17 @@ std::span<T> section_of(std::span<std::byte> image, std::size_t offset, std::siz
 }
 
 /// Adopts the sections before the tree as `mesh`'s arrays where they lie in the image
-/// (kept alive by `image_owner`) and checks them there: every index in range and every
-/// corner distinct, every vertex and normal finite. Empty if they hold, else why not.
-std::string adopt_mesh_sections(const FileHeader& h, const Layout& layout, std::span<std::byte> image,
-                                const std::shared_ptr<void>& image_owner, TriangleMesh& mesh) {
+/// (kept alive by `image_owner`). MeshBvh::adopt_serialized() checks them there, in the
+/// passes that read them anyway: every index in range and every corner distinct, every
+/// vertex and normal finite. A matching checksum makes accidental corruption vanishingly
+/// unlikely; the checks keep a hand-made file from breaking the mesh's invariants.
+void adopt_mesh_sections(const FileHeader& h, const Layout& layout, std::span<std::byte> image,
+                         const std::shared_ptr<void>& image_owner, TriangleMesh& mesh) {
   const auto nv = static_cast<std::size_t>(h.vertex_count);
   const auto nt = static_cast<std::size_t>(h.triangle_count);
   mesh.vertices_m = adopt_mesh_array(section_of<Eigen::Vector3d>(image, layout.vertices, nv), image_owner);
   mesh.triangles = adopt_mesh_array(section_of<TriangleIndices>(image, layout.triangles, nt), image_owner);
   mesh.vertex_normals = adopt_mesh_array(section_of<Eigen::Vector3f>(image, layout.normals, nv), image_owner);
-  // A matching checksum makes accidental corruption vanishingly unlikely; these checks
-  // are cheap and keep a hand-made file from breaking the mesh invariants.
-  const auto n32 = static_cast<std::uint32_t>(nv);
-  for (const auto& t : mesh.triangles) {
-    if (t[0] >= n32 || t[1] >= n32 || t[2] >= n32 || t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
-      return "triangle index out of range";
-    }
-  }
-  for (std::size_t i = 0; i < nv; ++i) {
-    if (!mesh.vertices_m[i].allFinite() || !mesh.vertex_normals[i].allFinite()) return "non-finite vertex data";
-  }
-  return {};
 }
 
 /// Builds the mesh and BVH from a whole cache file image whose header passed
@@ -183,26 +181,30 @@ std::string adopt_mesh_sections(const FileHeader& h, const Layout& layout, std::
 /// fails validation.
 std::unique_ptr<MeshBvh> parse_payload(const FileHeader& h, const Layout& layout, std::span<std::byte> image,
                                        const std::shared_ptr<void>& image_owner, std::string& why) {
-  // The checksum is read on a helper thread while this one checks the mesh where it lies
-  // in the entry and computes its face normals; the tree is adopted only after the
-  // checksum holds (Bullet writes the tree's header where it lies).
+  // The checksum is read on a helper thread while this one (and another) check the mesh,
+  // its face normals and the tree where they lie in the entry; the tree is adopted only
+  // once the checksum holds too.
   const std::span<const std::byte> payload = std::span<const std::byte>(image).subspan(sizeof(FileHeader));
+  // The tree's head as the file has it: adopting the tree rebuilds Bullet's object there
+  // while the checksum is still being read. Its page is never let go (that would drop
+  // what the adoption wrote); the tree's other pages are.
+  std::array<std::byte, MeshBvh::kSerializedHeadBytes> head_copy{};
+  const std::span<const std::byte> head(head_copy.data(), std::min<std::size_t>(head_copy.size(), h.bvh_bytes));
+  std::memcpy(head_copy.data(), image.data() + layout.bvh, head.size());
+  const std::size_t head_at = layout.bvh - sizeof(FileHeader);
+  const std::byte* const release_from = image.data() + layout.bvh + head.size();
   std::future<XXH128_hash_t> hashed;
   try {
-    hashed = std::async(std::launch::async, hash_mapped, payload, image.data() + layout.bvh);
+    hashed = std::async(std::launch::async, hash_mapped, payload, release_from, head_at, head);
   } catch (const std::system_error&) {
-    hashed = std::async(std::launch::deferred, hash_mapped, payload, image.data() + layout.bvh);
+    hashed = std::async(std::launch::deferred, hash_mapped, payload, release_from, head_at, head);
   }
   const auto checksum_holds = [&] {
     const XXH128_hash_t sum = hashed.get();
     return sum.low64 == h.payload_hash_low && sum.high64 == h.payload_hash_high;
   };
   auto mesh = std::make_shared<TriangleMesh>();
-  why = adopt_mesh_sections(h, layout, image, image_owner, *mesh);
-  if (!why.empty()) {
-    if (!checksum_holds()) why = "payload checksum mismatch";
-    return nullptr;
-  }
+  adopt_mesh_sections(h, layout, image, image_owner, *mesh);
   bool checksum_held = true;
   const std::span<std::byte> tree = image.subspan(layout.bvh, static_cast<std::size_t>(h.bvh_bytes));
   // The face normals are the entry's too, checked against the triangles' own as they
@@ -212,8 +214,8 @@ std::unique_ptr<MeshBvh> parse_payload(const FileHeader& h, const Layout& layout
   auto bvh = MeshBvh::adopt_serialized(std::move(mesh), tree, image_owner, MeshBvh::TreePages::Release, [&] {
     checksum_held = checksum_holds();
     // From here on the tree's pages are read where walks go: a fault maps its own page,
-    // not its neighbours (the check maps its ranges itself). The mesh's pages, just
-    // checked, stay mapped: sweeps read its triangles without a fault.
+    // not its neighbours. The mesh's pages, just checked, stay mapped: sweeps read its
+    // triangles without a fault.
     if (checksum_held) ::madvise(image.data(), image.size(), MADV_RANDOM);
     return checksum_held;
   }, std::move(face_normals_O));
@@ -407,7 +409,11 @@ Result<CachedMesh, MeshLoadError> MeshCache::load(const std::filesystem::path& f
   const bool big = mesh->triangle_count() >= kProgressMinTriangles;
   const std::string what = fmt::format("building BVH of {} ({} triangles)", name, mesh->triangle_count());
   if (big && progress) progress(what, 0.0);
-  auto bvh = std::make_shared<const MeshBvh>(std::move(mesh));
+  // A mesh large enough to be built in pieces is kept in its leaves' order: its file's
+  // order would scatter a tick's triangles, and the cached tree's check, over gigabytes.
+  const auto order = mesh->triangle_count() >= kSplitBuildMinTriangles ? MeshBvh::MeshOrder::Leaves
+                                                                       : MeshBvh::MeshOrder::AsGiven;
+  auto bvh = std::make_shared<const MeshBvh>(std::move(mesh), order);
   if (big && progress) progress(what, 1.0);
   result.bvh = bvh;
 

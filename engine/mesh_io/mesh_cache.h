@@ -33,7 +33,8 @@ namespace mhd {
 /// 4: an entry ends with the absolute path of the mesh file that wrote it.
 /// 5: an entry holds its face normals, adopted where they lie.
 /// 6: vertex normals are single precision.
-inline constexpr std::uint32_t kMeshCacheFormatVersion = 6;
+/// 7: a mesh built in pieces is stored in its tree's leaf order (MeshBvh::MeshOrder).
+inline constexpr std::uint32_t kMeshCacheFormatVersion = 7;
 
 /// Meshes with at least this many triangles report progress.
 inline constexpr std::size_t kProgressMinTriangles = 100'000;

@@ -20,6 +20,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <optional>
 #include <random>
 #include <string>
@@ -279,9 +280,18 @@ TEST_F(MeshCacheTest, FlippedBytesAreRejectedAndRebuilt) {
   const Result<CachedMesh, MeshLoadError> cold = cache.load(mesh_file_, Eigen::Vector3d::Ones());
   ASSERT_TRUE(cold.ok());
   const auto bytes = read_bytes(cold->cache_file);
-  // Header fields, vertices, triangles, normals and the BVH at the very end.
-  for (const std::size_t at : {std::size_t{0}, std::size_t{20}, std::size_t{60}, std::size_t{127}, std::size_t{128},
-                               bytes.size() / 4, bytes.size() / 2, bytes.size() * 3 / 4, bytes.size() - 1}) {
+  mesh_cache_entry::FileHeader h;
+  std::memcpy(&h, bytes.data(), sizeof h);
+  const auto layout = mesh_cache_entry::layout_for(h.vertex_count, h.triangle_count, h.normal_count, h.bvh_bytes,
+                                                   h.source_bytes, bytes.size());
+  ASSERT_TRUE(layout.has_value());
+  // Header fields, vertices, triangles, normals, the tree's head (which its adoption
+  // writes while the checksum is read: the checksum reads the file's) and its first node,
+  // and the BVH at the very end.
+  const std::size_t head = layout->bvh, head_end = layout->bvh + MeshBvh::kSerializedHeadBytes;
+  const std::vector<std::size_t> flipped{0, 20, 60, 127, 128, bytes.size() / 4, bytes.size() / 2, head, head + 8,
+                                        head_end - 1, head_end, bytes.size() * 3 / 4, bytes.size() - 1};
+  for (const std::size_t at : flipped) {
     SCOPED_TRACE(at);
     auto bad = bytes;
     bad[at] = static_cast<char>(bad[at] ^ 0x10);
@@ -298,7 +308,7 @@ TEST_F(MeshCacheTest, FlippedBytesAreRejectedAndRebuilt) {
     EXPECT_TRUE(again->written);
     EXPECT_EQ(std::filesystem::file_size(cold->cache_file), bytes.size());
   }
-  EXPECT_EQ(cache.stats().rejected, 9u);
+  EXPECT_EQ(cache.stats().rejected, flipped.size());
   EXPECT_EQ(cache.load(mesh_file_, Eigen::Vector3d::Ones())->outcome, CacheOutcome::Hit);
 }
 
@@ -409,7 +419,7 @@ TEST_F(MeshCacheTest, LargeMeshesReportProgress) {
   EXPECT_TRUE(calls.empty());
 }
 
-TEST_F(MeshCacheTest, AMeshPastOneBulletPartRoundTripsAndIsTouchedWhereItsLastTrianglesAre) {
+TEST_F(MeshCacheTest, AMeshPastOneBulletPartRoundTripsInLeafOrderAndIsTouchedWhereItsLastTrianglesAre) {
   // Past 2^21 triangles a tree spans several Bullet parts: its cache entry is kept and
   // used, not rejected and rebuilt on every load, and the adopted tree finds the last
   // triangles (the only ones in the box below) as the built one does. Once checked, the
@@ -440,14 +450,34 @@ TEST_F(MeshCacheTest, AMeshPastOneBulletPartRoundTripsAndIsTouchedWhereItsLastTr
   const std::uint64_t after_load = resident_bytes_of(warm->cache_file);
   EXPECT_LT(after_load, mesh_bytes + (entry_bytes - mesh_bytes) / 10) << "of " << entry_bytes << " bytes mapped";
   EXPECT_EQ(warm->mesh().triangles, cold->mesh().triangles);
+  // Built in pieces, the mesh is kept in its leaves' order: leaf k names triangle k, past
+  // 2^21 too.
+  std::uint32_t next = 0;
+  bool in_leaf_order = true;
+  warm->bvh->for_each_triangle_overlapping(warm->bvh->bounds(),
+                                           [&](std::uint32_t t) { in_leaf_order = in_leaf_order && t == next++; });
+  EXPECT_TRUE(in_leaf_order);
+  const auto on_patch = [&](std::uint32_t t) {
+    const TriangleMesh& m = warm->mesh();
+    return m.vertices_m[m.triangles[t][0]].z() == 0.5 && m.vertices_m[m.triangles[t][1]].z() == 0.5 &&
+           m.vertices_m[m.triangles[t][2]].z() == 0.5;
+  };
   const Eigen::AlignedBox3d patch(Eigen::Vector3d(0.45, 0.45, 0.4), Eigen::Vector3d(0.55, 0.55, 0.6));
   const auto must = brute_force(warm->mesh(), patch);
   ASSERT_FALSE(must.empty());
-  EXPECT_GE(must.front(), test::kPatchFirstTriangle);
+  EXPECT_TRUE(std::all_of(must.begin(), must.end(), on_patch));
   const auto from_cache = query(*warm->bvh, patch);
   EXPECT_EQ(from_cache, query(*cold->bvh, patch));
   EXPECT_TRUE(std::includes(from_cache.begin(), from_cache.end(), must.begin(), must.end()));
-  EXPECT_GE(from_cache.front(), test::kPatchFirstTriangle);
+  EXPECT_TRUE(std::all_of(from_cache.begin(), from_cache.end(), on_patch)) << "a leaf names a triangle far from its box";
+  // The last triangles, wherever they lie, are found there.
+  for (std::uint32_t t = static_cast<std::uint32_t>(warm->mesh().triangle_count()) - 64;
+       t < warm->mesh().triangle_count(); ++t) {
+    Eigen::AlignedBox3d own;
+    for (const auto v : warm->mesh().triangles[t]) own.extend(warm->mesh().vertices_m[v]);
+    const auto found = query(*warm->bvh, own);
+    ASSERT_TRUE(std::binary_search(found.begin(), found.end(), t)) << "triangle " << t;
+  }
   // Walks bring back the pages they read, and answer as the built tree everywhere.
   for (const auto& box : random_boxes(mesh_bounds(warm->mesh()), 200)) {
     ASSERT_EQ(query(*warm->bvh, box), query(*cold->bvh, box));
@@ -603,6 +633,47 @@ TEST_F(HostileTreeTest, AFaceNormalTurnedIsRejected) {
     ASSERT_NEAR(n.norm(), 1.0, 1e-12);
     n = -n;
     std::memcpy(at, n.data(), sizeof n);
+  });
+}
+
+/// Writes `value` over the `index`th element of the entry's section at `offset`.
+template <class T>
+void overwrite(std::vector<char>& bytes, std::size_t offset, std::size_t index, const T& value) {
+  std::memcpy(bytes.data() + offset + index * sizeof(T), &value, sizeof(T));
+}
+
+TEST_F(HostileTreeTest, ATriangleCornerOutOfRangeIsRejected) {
+  expect_rejected_entry([](std::vector<char>& bytes, const mesh_cache_entry::Layout& layout, const CachedMesh& cold) {
+    TriangleIndices t = cold.mesh().triangles[cold.mesh().triangles.size() / 3];
+    t[2] = static_cast<std::uint32_t>(cold.mesh().vertices_m.size());
+    overwrite(bytes, layout.triangles, cold.mesh().triangles.size() / 3, t);
+  });
+}
+
+TEST_F(HostileTreeTest, ATriangleWithARepeatedCornerIsRejected) {
+  // Its face normal written as the corners give it (none) and its box still holding it:
+  // only the corners' own check sees it.
+  expect_rejected_entry([](std::vector<char>& bytes, const mesh_cache_entry::Layout& layout, const CachedMesh& cold) {
+    const std::size_t k = cold.mesh().triangles.size() / 2 + 9;
+    TriangleIndices t = cold.mesh().triangles[k];
+    t[1] = t[0];
+    overwrite(bytes, layout.triangles, k, t);
+    overwrite(bytes, layout.face_normals, k, Eigen::Vector3d::Zero().eval());
+  });
+}
+
+TEST_F(HostileTreeTest, ANonFiniteVertexIsRejected) {
+  expect_rejected_entry([](std::vector<char>& bytes, const mesh_cache_entry::Layout& layout, const CachedMesh& cold) {
+    overwrite(bytes, layout.vertices, cold.mesh().vertices_m.size() - 2,
+              Eigen::Vector3d(0.0, std::numeric_limits<double>::quiet_NaN(), 0.0));
+  });
+}
+
+TEST_F(HostileTreeTest, ANonFiniteVertexNormalIsRejected) {
+  // Only shading reads it, and a force shaded by it would not be finite.
+  expect_rejected_entry([](std::vector<char>& bytes, const mesh_cache_entry::Layout& layout, const CachedMesh& cold) {
+    overwrite(bytes, layout.normals, cold.mesh().vertices_m.size() / 2,
+              Eigen::Vector3f(std::numeric_limits<float>::infinity(), 0.0F, 0.0F));
   });
 }
 
