@@ -295,8 +295,14 @@ bool MeshBvh::subtree_checks_out(std::span<const btQuantizedBvhNode> nodes, std:
       const Eigen::Vector3d& b = mesh_->vertices_m[corners[1]];
       const Eigen::Vector3d& c = mesh_->vertices_m[corners[2]];
       if (!face_normal_holds(face_normals_O_[triangle], a, b, c)) return false;
-      const QuantizedBox q = quantize(Eigen::AlignedBox3d(a.cwiseMin(b).cwiseMin(c), a.cwiseMax(b).cwiseMax(c)));
-      if (!box_holds(node, q.min.data(), q.max.data())) return false;
+      // quantize() of the triangle's box, inline: returned through a call, its box cost
+      // the check more than the rounding itself.
+      const Eigen::Vector3d lo = a.cwiseMin(b).cwiseMin(c) * bvh_scale_;
+      const Eigen::Vector3d hi = a.cwiseMax(b).cwiseMax(c) * bvh_scale_;
+      std::array<std::uint16_t, 3> q_min{}, q_max{};
+      tree_->quantizeWithClamp(q_min.data(), to_bt(lo), 0);
+      tree_->quantizeWithClamp(q_max.data(), to_bt(hi), 1);
+      if (!box_holds(node, q_min.data(), q_max.data())) return false;
       if (open.empty() && end - begin != 1) return false;  // a leaf root is the whole subtree
       // Every subtree ends with a leaf: close the inner nodes that end here.
       while (!open.empty() && open.back().end == i + 1) {
