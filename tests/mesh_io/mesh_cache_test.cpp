@@ -636,6 +636,56 @@ TEST_F(HostileTreeTest, AFaceNormalTurnedIsRejected) {
   });
 }
 
+// The face normal's tolerance from both sides: a stored normal turned, or lengthened, by
+// four times MeshBvh::kFaceNormalTolerance is refused; by a tenth of it, kept as stored.
+TEST_F(HostileTreeTest, AFaceNormalIsKeptWithinItsToleranceAndRefusedPastIt) {
+  const auto edited = [](const Eigen::Vector3d& n, bool turn, double by) -> Eigen::Vector3d {
+    if (!turn) return (1.0 + by) * n;
+    return std::cos(by) * n + std::sin(by) * n.unitOrthogonal();
+  };
+  const auto normal_at = [](const std::vector<char>& bytes, std::size_t offset) {
+    Eigen::Vector3d n;
+    std::memcpy(n.data(), bytes.data() + offset, sizeof n);
+    return n;
+  };
+  for (const bool turn : {true, false}) {
+    SCOPED_TRACE(turn ? "turned" : "lengthened");
+    std::filesystem::remove_all(cache_dir_);  // each case from a cold load
+    expect_rejected_entry([&](std::vector<char>& bytes, const mesh_cache_entry::Layout& layout, const CachedMesh& cold) {
+      const std::size_t at = layout.face_normals + (cold.mesh().triangles.size() / 2 + 5) * sizeof(Eigen::Vector3d);
+      const Eigen::Vector3d n = edited(normal_at(bytes, at), turn, 4.0 * MeshBvh::kFaceNormalTolerance);
+      std::memcpy(bytes.data() + at, n.data(), sizeof n);
+    });
+    // The dual: a tenth of the tolerance is kept, and the sweeps get the stored normal.
+    MeshCache cache(cache_dir_);
+    std::filesystem::path entry;
+    std::size_t t = 0;
+    {
+      // Let go before the entry is rewritten: a hit maps it.
+      const Result<CachedMesh, MeshLoadError> cold = cache.load(mesh_file_, Eigen::Vector3d::Ones());
+      ASSERT_TRUE(cold.ok());
+      entry = cold->cache_file;
+      t = cold->mesh().triangles.size() / 2 + 5;
+    }
+    auto bytes = read_bytes(entry);
+    mesh_cache_entry::FileHeader h;
+    std::memcpy(&h, bytes.data(), sizeof h);
+    const auto layout = mesh_cache_entry::layout_for(h.vertex_count, h.triangle_count, h.normal_count, h.bvh_bytes,
+                                                     h.source_bytes, bytes.size());
+    ASSERT_TRUE(layout.has_value());
+    const std::size_t at = layout->face_normals + t * sizeof(Eigen::Vector3d);
+    const Eigen::Vector3d n = edited(normal_at(bytes, at), turn, 0.1 * MeshBvh::kFaceNormalTolerance);
+    ASSERT_NE(n, normal_at(bytes, at));
+    std::memcpy(bytes.data() + at, n.data(), sizeof n);
+    mesh_cache_entry::seal(std::as_writable_bytes(std::span(bytes)));
+    write_bytes(entry, bytes);
+    const Result<CachedMesh, MeshLoadError> again = cache.load(mesh_file_, Eigen::Vector3d::Ones());
+    ASSERT_TRUE(again.ok());
+    EXPECT_EQ(again->outcome, CacheOutcome::Hit) << again->rejected_reason;
+    EXPECT_EQ(again->bvh->face_normal_O(static_cast<std::uint32_t>(t)), n);
+  }
+}
+
 /// Writes `value` over the `index`th element of the entry's section at `offset`.
 template <class T>
 void overwrite(std::vector<char>& bytes, std::size_t offset, std::size_t index, const T& value) {
