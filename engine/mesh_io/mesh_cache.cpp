@@ -3,6 +3,7 @@
 #include "collision/huge_pages.h"
 #include "collision/split_tree_build.h"
 #include "mesh_io/byte_count_text.h"
+#include "mesh_io/content_hash.h"
 #include "mesh_io/mesh_cache_entry.h"
 #include "mesh_io/mesh_cache_eviction.h"
 #include "mesh_io/regular_file.h"
@@ -15,7 +16,6 @@
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
-#include <xxhash.h>
 
 #include <algorithm>
 #include <array>
@@ -132,16 +132,16 @@ std::optional<Layout> check_header(const FileHeader& h, const MeshCacheKey& key,
 /// (not a fault each), and those from `release_from` on are let go once hashed, so a large
 /// entry is never resident at once (the tree's check maps its pages again). The bytes at
 /// `head_at` are read from `head`, a copy taken before the tree's adoption writes there.
-XXH128_hash_t hash_mapped(std::span<const std::byte> bytes, const std::byte* release_from, std::size_t head_at,
+ContentHash::Digest hash_mapped(std::span<const std::byte> bytes, const std::byte* release_from, std::size_t head_at,
                           std::span<const std::byte> head) {
   constexpr std::size_t kWindow = std::size_t{64} << 20;
-  std::unique_ptr<XXH3_state_t, XXH_errorcode (*)(XXH3_state_t*)> state(XXH3_createState(), &XXH3_freeState);
-  if (!state || XXH3_128bits_reset(state.get()) != XXH_OK) return XXH128_hash_t{0, 0};
+  ContentHash state;
+  if (!state.ok()) return {};
   const auto hash_range = [&](std::span<const std::byte> range) {
     for (std::size_t at = 0; at < range.size(); at += kWindow) {
       const std::span<const std::byte> window = range.subspan(at, std::min(kWindow, range.size() - at));
       populate_for_reading(window.data(), window.size());
-      XXH3_128bits_update(state.get(), window.data(), window.size());
+      state.update(window);
       if (window.data() + window.size() > release_from) {
         const std::byte* from = std::max(window.data(), release_from);
         release_file_pages(from, static_cast<std::size_t>(window.data() + window.size() - from));
@@ -149,9 +149,9 @@ XXH128_hash_t hash_mapped(std::span<const std::byte> bytes, const std::byte* rel
     }
   };
   hash_range(bytes.first(head_at));
-  XXH3_128bits_update(state.get(), head.data(), head.size());
+  state.update(head);
   hash_range(bytes.subspan(head_at + head.size()));
-  return XXH3_128bits_digest(state.get());
+  return state.digest();
 }
 
 /// The n elements of a section at `offset` of an entry's image. The layout puts each
@@ -193,14 +193,14 @@ std::unique_ptr<MeshBvh> parse_payload(const FileHeader& h, const Layout& layout
   std::memcpy(head_copy.data(), image.data() + layout.bvh, head.size());
   const std::size_t head_at = layout.bvh - sizeof(FileHeader);
   const std::byte* const release_from = image.data() + layout.bvh + head.size();
-  std::future<XXH128_hash_t> hashed;
+  std::future<ContentHash::Digest> hashed;
   try {
     hashed = std::async(std::launch::async, hash_mapped, payload, release_from, head_at, head);
   } catch (const std::system_error&) {
     hashed = std::async(std::launch::deferred, hash_mapped, payload, release_from, head_at, head);
   }
   const auto checksum_holds = [&] {
-    const XXH128_hash_t sum = hashed.get();
+    const ContentHash::Digest sum = hashed.get();
     return sum.low64 == h.payload_hash_low && sum.high64 == h.payload_hash_high;
   };
   auto mesh = std::make_shared<TriangleMesh>();
@@ -297,8 +297,8 @@ std::optional<MeshCacheKey> mesh_cache_key(const std::filesystem::path& file, co
   if (!opened.ok()) return std::nullopt;
   Fd fd(opened.release());
   ::posix_fadvise(fd.fd, 0, 0, POSIX_FADV_SEQUENTIAL);
-  std::unique_ptr<XXH3_state_t, XXH_errorcode (*)(XXH3_state_t*)> state(XXH3_createState(), &XXH3_freeState);
-  if (!state || XXH3_128bits_reset(state.get()) != XXH_OK) return std::nullopt;
+  ContentHash state;
+  if (!state.ok()) return std::nullopt;
   constexpr std::size_t kChunk = std::size_t{4} << 20;
   const auto buffer = std::make_unique_for_overwrite<std::byte[]>(kChunk);
   for (;;) {
@@ -306,13 +306,13 @@ std::optional<MeshCacheKey> mesh_cache_key(const std::filesystem::path& file, co
     if (n < 0 && errno == EINTR) continue;
     if (n < 0) return std::nullopt;
     if (n == 0) break;
-    XXH3_128bits_update(state.get(), buffer.get(), static_cast<std::size_t>(n));
+    state.update(buffer.get(), static_cast<std::size_t>(n));
   }
   // +0.0 folds -0.0 so equal scales give equal keys.
   const HashInput extra{kMeshCacheFormatVersion, BT_BULLET_VERSION,
                         {scale_to_m.x() + 0.0, scale_to_m.y() + 0.0, scale_to_m.z() + 0.0}};
-  XXH3_128bits_update(state.get(), &extra, sizeof extra);
-  const XXH128_hash_t h = XXH3_128bits_digest(state.get());
+  state.update(&extra, sizeof extra);
+  const ContentHash::Digest h = state.digest();
   return MeshCacheKey{h.low64, h.high64};
 }
 
@@ -461,13 +461,13 @@ void MeshCache::store(const std::filesystem::path& mesh_file, const std::filesys
   add(layout->bvh, serialized.bytes.get(), serialized.size);
   add(layout->source, source.data(), source.size());
 
-  std::unique_ptr<XXH3_state_t, XXH_errorcode (*)(XXH3_state_t*)> state(XXH3_createState(), &XXH3_freeState);
-  if (!state || XXH3_128bits_reset(state.get()) != XXH_OK) {
+  ContentHash state;
+  if (!state.ok()) {
     ++stats_.write_failures;
     return;
   }
-  for (const auto& p : parts) XXH3_128bits_update(state.get(), p.data(), p.size());
-  const XXH128_hash_t payload = XXH3_128bits_digest(state.get());
+  for (const auto& p : parts) state.update(p);
+  const ContentHash::Digest payload = state.digest();
 
   FileHeader h{};
   h.magic = kMagic;

@@ -1,5 +1,7 @@
 #include "mesh_io/mesh_cache_entry.h"
 
+#include "mesh_io/content_hash.h"
+
 #include <xxhash.h>
 
 #include <cstring>
@@ -33,7 +35,9 @@ void seal(std::span<std::byte> image) {
   if (image.size() < sizeof(FileHeader)) return;
   FileHeader h;
   std::memcpy(&h, image.data(), sizeof h);
-  const XXH128_hash_t payload = XXH3_128bits(image.data() + sizeof h, image.size() - sizeof h);
+  ContentHash hash;
+  hash.update(image.subspan(sizeof h));
+  const ContentHash::Digest payload = hash.digest();
   h.payload_hash_low = payload.low64;
   h.payload_hash_high = payload.high64;
   h.header_hash = header_hash(h);
