@@ -102,14 +102,26 @@ bool MeshBvh::make_interface(MeshArray<Eigen::Vector3d> given_face_normals_O, bo
             unit_face_normal(mesh_->vertices_m[t[0]], mesh_->vertices_m[t[1]], mesh_->vertices_m[t[2]]);
       }
     }
-    Eigen::AlignedBox3d& box = half_bounds[first == 0 ? std::size_t{0} : std::size_t{1}];
-    bool finite = true;
-    for (std::size_t v = first * vertex_count / triangle_count; v < last * vertex_count / triangle_count; ++v) {
-      const Eigen::Vector3d& p = mesh_->vertices_m[v];
-      box.extend(p);
-      if (check_mesh) finite = finite && p.allFinite() && (!check_normals || mesh_->vertex_normals[v].allFinite());
+    // Over local pointers and accumulators, without a branch: written through the box,
+    // or read through the mesh's arrays, every vertex reloaded them (they might alias).
+    const Eigen::Vector3d* const vertices = mesh_->vertices_m.data();
+    const Eigen::Vector3f* const normals = check_normals ? mesh_->vertex_normals.data() : nullptr;
+    const auto not_finite = [](auto x) {
+      return static_cast<int>(!(std::abs(x) <= std::numeric_limits<decltype(x)>::max()));
+    };
+    Eigen::Array3d lo = Eigen::Array3d::Constant(std::numeric_limits<double>::infinity());
+    Eigen::Array3d hi = -lo;
+    int bad = 0;
+    const std::size_t v_end = last * vertex_count / triangle_count;
+    for (std::size_t v = first * vertex_count / triangle_count; v < v_end; ++v) {
+      const Eigen::Array3d p = vertices[v].array();
+      lo = lo.min(p);
+      hi = hi.max(p);
+      if (check_mesh) bad |= not_finite(p.x()) | not_finite(p.y()) | not_finite(p.z());
+      if (normals != nullptr) bad |= not_finite(normals[v].x()) | not_finite(normals[v].y()) | not_finite(normals[v].z());
     }
-    return finite;
+    if ((lo <= hi).all()) half_bounds[first == 0 ? std::size_t{0} : std::size_t{1}] = Eigen::AlignedBox3d(lo.matrix(), hi.matrix());
+    return bad == 0;
   });
   if (!mesh_holds) return false;
   bounds_ = half_bounds[0].extend(half_bounds[1]);
