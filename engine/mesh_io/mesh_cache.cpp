@@ -299,7 +299,9 @@ std::optional<MeshCacheKey> mesh_cache_key(const std::filesystem::path& file, co
   ::posix_fadvise(fd.fd, 0, 0, POSIX_FADV_SEQUENTIAL);
   ContentHash state;
   if (!state.ok()) return std::nullopt;
-  constexpr std::size_t kChunk = std::size_t{4} << 20;
+  // A chunk that stays in the core's cache between its copy and its hash (4 MiB: 14-26 %
+  // slower on a 1.9 GB file).
+  constexpr std::size_t kChunk = std::size_t{256} << 10;
   const auto buffer = std::make_unique_for_overwrite<std::byte[]>(kChunk);
   for (;;) {
     const ssize_t n = ::read(fd.fd, buffer.get(), kChunk);
