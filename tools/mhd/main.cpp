@@ -6,6 +6,7 @@
 #include "calibrate_command.h"
 #include "command_exit.h"
 #include "devices_command.h"
+#include "huge_page_malloc.h"
 #include "plan_sim_command.h"
 #include "share_sim_command.h"
 #include "plugins_command.h"
@@ -40,6 +41,8 @@ void set_up_logging() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // First, before anything is allocated that a large mesh's load would grow.
+  mhd::cli::restart_with_huge_page_malloc("/proc/self/exe", argv);
   set_up_logging();
 
   CLI::App app{"MHD: haptic rendering engine", "mhd"};
