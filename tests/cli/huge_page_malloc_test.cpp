@@ -77,5 +77,17 @@ TEST_F(HugePageMallocTest, AProgramThatCannotRunLeavesTheEnvironmentAsItWas) {
   EXPECT_EQ(run_child("glibc.malloc.arena_max=2", "/nonexistent/mhd"), "returned: glibc.malloc.arena_max=2");
 }
 
+// Only the subcommands that load scenes without a real-time loop restart.
+TEST(HugePageMallocSubcommands, OfflineLoadsRestartAndRunsKeepGlibcsDefault) {
+  for (const char* offline : {"validate", "strokes", "proxy-replay", "plan-sim", "share-sim", "cache"}) {
+    EXPECT_TRUE(wants_huge_page_malloc(offline)) << offline;
+  }
+  for (const char* live : {"run", "try", "viewer", "tracker-server", "replay", "calibrate", "plugins", "devices",
+                           "validat", "", "--help"}) {
+    EXPECT_FALSE(wants_huge_page_malloc(live)) << live;
+  }
+  EXPECT_FALSE(wants_huge_page_malloc(nullptr));
+}
+
 }  // namespace
 }  // namespace mhd::cli

@@ -9,6 +9,15 @@
 
 namespace mhd::cli {
 
+bool wants_huge_page_malloc(const char* subcommand) {
+  if (subcommand == nullptr) return false;
+  const std::string_view name = subcommand;
+  for (const std::string_view offline : {"validate", "strokes", "proxy-replay", "plan-sim", "share-sim", "cache"}) {
+    if (name == offline) return true;
+  }
+  return false;
+}
+
 void restart_with_huge_page_malloc(const char* program, char** argv) {
 #if defined(__GLIBC__)
   constexpr std::string_view kTunable = "glibc.malloc.hugetlb";

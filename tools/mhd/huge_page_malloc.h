@@ -7,6 +7,12 @@
 
 namespace mhd::cli {
 
+/// Whether `subcommand` loads scenes without a real-time loop: validate, strokes,
+/// proxy-replay, plan-sim, share-sim and cache. Huge pages can stall a thread that grows
+/// its heap while the kernel compacts memory for one, so `run`, `try`, `viewer` and the
+/// servers keep glibc's default.
+[[nodiscard]] bool wants_huge_page_malloc(const char* subcommand);
+
 /// Runs `program` (this one: /proc/self/exe) with `argv` once more, with
 /// glibc.malloc.hugetlb=1 added to GLIBC_TUNABLES. Returns, changing nothing, where that
 /// tunable is set already (by a user, to either value, or by a run before this one), in

@@ -41,8 +41,13 @@ void set_up_logging() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // First, before anything is allocated that a large mesh's load would grow.
-  mhd::cli::restart_with_huge_page_malloc("/proc/self/exe", argv);
+  // First, before anything is allocated that a large mesh's load would grow. The
+  // subcommand comes first on mhd's command line (-v and --version aside).
+  for (int i = 1; i < argc; ++i) {
+    if (argv[i][0] == '-') continue;
+    if (mhd::cli::wants_huge_page_malloc(argv[i])) mhd::cli::restart_with_huge_page_malloc("/proc/self/exe", argv);
+    break;
+  }
   set_up_logging();
 
   CLI::App app{"MHD: haptic rendering engine", "mhd"};
