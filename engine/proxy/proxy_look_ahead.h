@@ -4,9 +4,10 @@
 // candidate list's triangles and their corners (docs/benchmarks.md, "first" against
 // "again"). The haptic thread is idle for most of its period, so after it has sent a tick's
 // force it steps a copy of the proxy to where the HIP will be at the next tick, predicted
-// at constant velocity, and throws the result away: what the next tick reads is then in
-// the cache. It changes nothing the proxy renders, and the next tick costs what it costs
-// warm where the prediction was close. It costs about one tick's work, off the path from
+// at constant velocity, and throws the result away but for the copy's candidate list: what
+// the next tick reads is then in the cache, and the triangles it sweeps listed. It changes
+// nothing the proxy renders, and the next tick costs what it costs warm where the
+// prediction was close. It costs about one tick's work, off the path from
 // the device's reading to its force.
 
 #include "proxy/god_object.h"
@@ -25,10 +26,14 @@ class ProxyLookAhead {
  public:
   /// Call after each tick's step_proxy with the state it left and the tick's interval and
   /// twists. Steps a copy of `state` towards the HIP extrapolated from the last two it saw
-  /// (the tick's own HIP after the first call, or after a state not yet started). Never
-  /// changes `state` or the world; allocates nothing; its work is bounded by the tick's budget.
+  /// (the tick's own HIP after the first call, or after a state not yet started). Of
+  /// `state` it changes only the list of triangles near the proxy (ProxyState::near), which
+  /// takes what the copy gathered: the next tick then finds them listed, not only cached.
+  /// That list changes what a sweep costs, never its answer, so nothing the proxy renders
+  /// changes. Never changes the world; allocates nothing; its work is bounded by the tick's
+  /// budget.
   LookAheadReport run(const CollisionWorld& world, std::span<const HapticMaterial> materials,
-                      const ProxySettings& settings, const ProxyState& state, double dt_s,
+                      const ProxySettings& settings, ProxyState& state, double dt_s,
                       std::span<const ObjectTwist> twists = {});
 
  private:
