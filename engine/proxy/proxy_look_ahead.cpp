@@ -18,10 +18,12 @@ LookAheadReport ProxyLookAhead::run(const CollisionWorld& world, std::span<const
   has_last_ = true;
   scratch_ = state;
   const ProxyOutput out = step_proxy(world, materials, settings, scratch_, report.p_W_hip, dt_s, twists);
-  // A gather walks the tree into the list; handing the list over (and its count of walks
-  // towards the next gather) spares the next tick that walk. On a fine mesh the proxy
-  // leaves a list's box every few ticks. The copy is of the part in use, up to 4 KB.
-  state.near = scratch_.near;
+  // A gather walks the tree into the list; handing a new list over spares the next tick
+  // that walk. On a fine mesh the proxy leaves a list's box every few ticks. Only a list
+  // the copy gathered: its walks that gathered nothing stay its own, or the next tick
+  // would count them towards a gather, and a free-space tick beside a fine mesh would
+  // gather a list it never uses. The copy is of the part in use, up to 4 KB.
+  if (scratch_.near.gathers() != state.near.gathers()) state.near = scratch_.near;
   report.ran = true;
   report.proxy_W = out.proxy_W;
   report.sweeps = out.sweeps;

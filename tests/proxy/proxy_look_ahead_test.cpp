@@ -4,12 +4,14 @@
 // faces: with the HIP moving at a constant, exactly representable velocity the prediction
 // is exact, so the look-ahead must end where the next tick ends, with as many sweeps; and a
 // rig that looks ahead must render, tick for tick, bit for bit, what a rig that does not renders.
-// On a fine floor, the candidate list the look-ahead gathered is the next tick's.
+// On a fine slope, a candidate list the look-ahead gathered is the next tick's.
 #include "proxy/proxy_look_ahead.h"
 
 #include "proxy_test_rig.h"
 
 #include <gtest/gtest.h>
+
+#include <array>
 
 namespace mhd {
 namespace {
@@ -94,12 +96,17 @@ TEST(ProxyLookAhead, DoesTheNextTicksWorkAndChangesNothingTheProxyRenders) {
   EXPECT_GT(ticks_with_three_planes, 10);
 }
 
-// A flat n x n grid of 2 n^2 triangles over [0, size_m]^2 at y = 0, facing +y: fine
-// enough that the proxy sliding over it leaves the box of its list every few ticks.
-TriangleMesh fine_floor(int n, double size_m) {
+// An n x n grid of 2 n^2 triangles over x, z in [0, size_m], on the plane y = x (facing
+// up and towards -x): fine enough that the proxy sliding over it leaves the box of its
+// list every few ticks, and sloped so that a sweep hovering just above it has triangles in
+// its box.
+TriangleMesh fine_slope(int n, double size_m) {
   TriangleMesh mesh;
   for (int j = 0; j <= n; ++j) {
-    for (int i = 0; i <= n; ++i) mesh.vertices_m.emplace_back(size_m * i / n, 0.0, size_m * j / n);
+    for (int i = 0; i <= n; ++i) {
+      const double x = size_m * i / n;
+      mesh.vertices_m.emplace_back(x, x, size_m * j / n);
+    }
   }
   auto id = [n](int i, int j) { return static_cast<std::uint32_t>(j * (n + 1) + i); };
   for (int j = 0; j < n; ++j) {
@@ -114,39 +121,48 @@ TriangleMesh fine_floor(int n, double size_m) {
 TEST(ProxyLookAhead, TheNextTickFindsTheTrianglesItGatheredListed) {
   ProxyRig looking;
   ProxyRig plain;
-  looking.add(fine_floor(200, 0.1));
-  plain.add(fine_floor(200, 0.1));
+  looking.add(fine_slope(200, 0.1));
+  plain.add(fine_slope(200, 0.1));
   ProxyLookAhead look_ahead;
-  // From 1 mm above the floor to 1 mm into it, then sliding along it 0.5 mm a tick.
-  const auto hip = [](int i) {
-    const double depth_m = i < 20 ? 0.0001 * i : 0.002;
+  // From 1 mm above the slope to 1 mm into it, sliding up it 0.5 mm a tick, then lifted to
+  // hover 0.2 mm above it and moving on: one free-space sweep a tick, beside it.
+  constexpr int kSlideEnd = 140;
+  const Eigen::Vector3d up_slope = Eigen::Vector3d(1.0, 1.0, 0.0).normalized();
+  const Eigen::Vector3d normal = Eigen::Vector3d(-1.0, 1.0, 0.0).normalized();
+  const auto hip = [&](int i) {
+    const double height_m = i < 20 ? 0.001 - 0.0001 * i : (i < kSlideEnd ? -0.001 : 0.0002);
     const double along_m = i < 20 ? 0.0 : 0.0005 * (i - 20);
-    return Eigen::Vector3d(0.02 + along_m, 0.001 - depth_m, 0.05);
+    return Eigen::Vector3d(Eigen::Vector3d(0.02, 0.02, 0.05) + along_m * up_slope + height_m * normal);
   };
-  int plain_gathers_in_ticks = 0;
-  int looking_gathers_in_ticks = 0;
+  // Gathers made within the ticks (not between them), sliding and hovering.
+  std::array<int, 2> plain_gathers{};
+  std::array<int, 2> looking_gathers{};
   int ticks_in_contact = 0;
-  for (int i = 0; i < 140; ++i) {
+  for (int i = 0; i < kSlideEnd + 60; ++i) {
     const int plain_before = plain.state.near.gathers();
     const int looking_before = looking.state.near.gathers();
     const ProxyOutput a = looking.step(hip(i));
     const ProxyOutput b = plain.step(hip(i));
-    plain_gathers_in_ticks += plain.state.near.gathers() - plain_before;
-    looking_gathers_in_ticks += looking.state.near.gathers() - looking_before;
+    const std::size_t phase = i < kSlideEnd ? 0 : 1;
+    plain_gathers[phase] += plain.state.near.gathers() - plain_before;
+    looking_gathers[phase] += looking.state.near.gathers() - looking_before;
     // The list changes what a sweep costs, never its answer.
     ASSERT_EQ(a.proxy_W, b.proxy_W) << "tick " << i;
     ASSERT_EQ(a.force_W, b.force_W) << "tick " << i;
     ASSERT_EQ(a.sweeps, b.sweeps) << "tick " << i;
     ASSERT_EQ(a.triangle_tests, b.triangle_tests) << "tick " << i;
     if (a.in_contact) ++ticks_in_contact;
+    ASSERT_TRUE(i < kSlideEnd || !a.in_contact) << "tick " << i;
     (void)look_ahead.run(looking.world, looking.materials, looking.settings, looking.state, test::kProxyTestDt_s);
   }
   EXPECT_GT(ticks_in_contact, 100);
   // Sliding 60 mm, the proxy leaves many lists' boxes; the plain rig gathers each in a tick.
-  EXPECT_GT(plain_gathers_in_ticks, 20);
+  EXPECT_GT(plain_gathers[0], 20);
   // With the look-ahead the next tick finds its triangles listed: the gathers happened
   // between ticks.
-  EXPECT_LE(looking_gathers_in_ticks * 10, plain_gathers_in_ticks);
+  EXPECT_LE(looking_gathers[0] * 10, plain_gathers[0]);
+  // Hovering, a tick's one sweep gathers no more often for the look-ahead's walks.
+  EXPECT_LE(looking_gathers[1], plain_gathers[1]);
 }
 
 }  // namespace
