@@ -2,8 +2,8 @@
 // glibc's malloc backs its large blocks with transparent huge pages only when told so at
 // start (GLIBC_TUNABLES=glibc.malloc.hugetlb=1). A cold load of a 100 M-triangle mesh
 // grows gigabytes through malloc (the mesh reader's arrays, Bullet's tree builds); on a
-// 2-core virtual machine a fault per 4 KiB page made it 129-137 s, against 72-84 s with
-// huge pages (docs/benchmarks.md, "Meshes at size").
+// 2-core virtual machine a fault per 4 KiB page made it 148 s, against 78-103 s with huge
+// pages (docs/benchmarks.md, "Meshes at size").
 
 namespace mhd::cli {
 
