@@ -295,7 +295,11 @@ bool CollisionWorld::projects_onto_triangle(const TriangleRef& ref, const Eigen:
   for (int i = 0; i < 3; ++i) {
     const Eigen::Vector3d& a = v[static_cast<std::size_t>(i)];
     const Eigen::Vector3d outward = (v[static_cast<std::size_t>((i + 1) % 3)] - a).cross(n);
-    if (outward.dot(p_W - a) > margin_m * outward.norm()) return false;
+    const double outside = outward.dot(p_W - a);
+    // Within the edge needs no length (margin * length is not negative): most calls ask
+    // about a point over the triangle, and the square roots were most of their cost.
+    if (margin_m >= 0.0 && !(outside > 0.0)) continue;
+    if (outside > margin_m * outward.norm()) return false;
   }
   return true;
 }
