@@ -279,6 +279,17 @@ std::optional<SweepHit> CollisionWorld::sweep_triangle(const TriangleRef& ref, c
   return h;
 }
 
+bool CollisionWorld::meets_triangle_grown_by(const TriangleRef& ref, const Eigen::Vector3d& a_W,
+                                             const Eigen::Vector3d& b_W, double skin_m, double inflate_m) const {
+  if (ref.triangle == kExactSurface) return false;
+  const Object& o = objects_.at(static_cast<std::size_t>(ref.object));
+  const TriangleMesh& mesh = o.shape->mesh();
+  const TriangleIndices& t = mesh.triangles.at(ref.triangle);
+  return sweep_point_triangle(o.X_OW * a_W, o.X_OW * b_W, mesh.vertices_m[t[0]], mesh.vertices_m[t[1]],
+                              mesh.vertices_m[t[2]], o.shape->face_normal_O(ref.triangle), skin_m, inflate_m)
+      .has_value();
+}
+
 std::array<Eigen::Vector3d, 3> CollisionWorld::triangle_W(const TriangleRef& ref) const {
   const Object& o = objects_.at(static_cast<std::size_t>(ref.object));
   const TriangleMesh& mesh = o.shape->mesh();

@@ -123,6 +123,13 @@ class CollisionWorld {
   [[nodiscard]] std::optional<SweepHit> sweep_triangle(const TriangleRef& t, const Eigen::Vector3d& a_W,
                                                        const Eigen::Vector3d& b_W, double skin_m) const;
 
+  /// Whether the segment a_W -> b_W meets triangle `t` grown by only `inflate_m` on every
+  /// edge: sweep_triangle()'s test, in the same frame with the same face normal, with
+  /// another growth (its own is a hundredth of the skin), whichever side is touchable.
+  /// False for an exact shape's ref, which has no growth to tell apart.
+  [[nodiscard]] bool meets_triangle_grown_by(const TriangleRef& t, const Eigen::Vector3d& a_W,
+                                             const Eigen::Vector3d& b_W, double skin_m, double inflate_m) const;
+
   /// True if p_W's projection onto the triangle's plane lies inside the triangle grown
   /// by margin_m on every edge (the proxy is "over" this triangle). For an exact shape's
   /// ref: true when p_W is outside the shape (a tangent plane lies below it, support_plane()).

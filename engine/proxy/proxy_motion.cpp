@@ -1,6 +1,5 @@
 #include "proxy/proxy_motion.h"
 
-#include "collision/segment_triangle.h"
 
 #include <cmath>
 #include <optional>
@@ -58,8 +57,7 @@ constexpr double kGrazeMarginPerSkin = 1e-6;
 bool only_grazes(const CollisionWorld& world, const TriangleRef& t, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                  double skin_m) {
   if (t.triangle == kExactSurface) return false;  // an exact shape has no inflated band
-  const auto v = world.triangle_W(t);
-  return !sweep_point_triangle(a, b, v[0], v[1], v[2], skin_m, kGrazeMarginPerSkin * skin_m).has_value();
+  return !world.meets_triangle_grown_by(t, a, b, skin_m, kGrazeMarginPerSkin * skin_m);
 }
 
 // budgeted_sweep that sweeps again past triangles the leg only grazes (a proxy resting
