@@ -290,6 +290,46 @@ bool CollisionWorld::meets_triangle_grown_by(const TriangleRef& ref, const Eigen
       .has_value();
 }
 
+std::optional<SweepHit> CollisionWorld::first_met(std::span<const TriangleRef> ts, const Eigen::Vector3d& a_W,
+                                                  const Eigen::Vector3d& b_W, double skin_m, double graze_inflate_m,
+                                                  int& tests) const {
+  std::optional<SweepHit> first;
+  int in_frame = -1;  // the object whose frame a_O and b_O are in
+  Eigen::Vector3d a_O = Eigen::Vector3d::Zero();
+  Eigen::Vector3d b_O = Eigen::Vector3d::Zero();
+  for (const TriangleRef& ref : ts) {
+    ++tests;
+    if (ref.triangle == kExactSurface) {  // no growth to tell apart: a hit is met for real
+      auto hit = sweep_triangle(ref, a_W, b_W, skin_m);
+      if (hit && (!first || hit->t_stop < first->t_stop)) first = hit;
+      continue;
+    }
+    const Object& o = objects_.at(static_cast<std::size_t>(ref.object));
+    if (ref.object != in_frame) {
+      a_O = o.X_OW * a_W;
+      b_O = o.X_OW * b_W;
+      in_frame = ref.object;
+    }
+    const TriangleMesh& mesh = o.shape->mesh();
+    const TriangleIndices& t = mesh.triangles.at(ref.triangle);
+    const Eigen::Vector3d& v0 = mesh.vertices_m[t[0]];
+    const Eigen::Vector3d& v1 = mesh.vertices_m[t[1]];
+    const Eigen::Vector3d& v2 = mesh.vertices_m[t[2]];
+    const Eigen::Vector3d& n_O = o.shape->face_normal_O(ref.triangle);
+    const auto hit = sweep_point_triangle(a_O, b_O, v0, v1, v2, n_O, skin_m, kInflatePerSkin * skin_m);
+    if (!hit || !touchable_from(o.touchable, hit->normal.dot(n_O) > 0.0)) continue;
+    if (first && !(hit->t_stop < first->t_stop)) continue;
+    if (!sweep_point_triangle(a_O, b_O, v0, v1, v2, n_O, skin_m, graze_inflate_m)) continue;  // a graze
+    SweepHit h;  // as sweep_triangle() gives it
+    h.where = ref;
+    h.t_stop = hit->t_stop;
+    h.normal_W = o.X_WO.linear() * hit->normal;
+    h.plane_offset_m = h.normal_W.dot(o.X_WO * v0);
+    first = h;
+  }
+  return first;
+}
+
 std::array<Eigen::Vector3d, 3> CollisionWorld::triangle_W(const TriangleRef& ref) const {
   const Object& o = objects_.at(static_cast<std::size_t>(ref.object));
   const TriangleMesh& mesh = o.shape->mesh();

@@ -130,6 +130,15 @@ class CollisionWorld {
   [[nodiscard]] bool meets_triangle_grown_by(const TriangleRef& t, const Eigen::Vector3d& a_W,
                                              const Eigen::Vector3d& b_W, double skin_m, double inflate_m) const;
 
+  /// Of the triangles `ts`, the one the segment a_W -> b_W meets first for real: the
+  /// earliest sweep_triangle() hit (the first listed on a tie) that also meets its triangle
+  /// grown by only `graze_inflate_m` (meets_triangle_grown_by()), or nothing. The same
+  /// answer as those calls one by one, with the segment taken into each object's frame
+  /// once. Adds the triangles tested to `tests`.
+  [[nodiscard]] std::optional<SweepHit> first_met(std::span<const TriangleRef> ts, const Eigen::Vector3d& a_W,
+                                                  const Eigen::Vector3d& b_W, double skin_m, double graze_inflate_m,
+                                                  int& tests) const;
+
   /// True if p_W's projection onto the triangle's plane lies inside the triangle grown
   /// by margin_m on every edge (the proxy is "over" this triangle). For an exact shape's
   /// ref: true when p_W is outside the shape (a tangent plane lies below it, support_plane()).

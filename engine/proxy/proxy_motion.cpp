@@ -261,15 +261,8 @@ void advance(Motion& m, const Eigen::Vector3d& to, const std::optional<SweepHit>
 // first the segment to the goal meets, if it meets one for real (not a graze).
 std::optional<SweepHit> face_beyond_edge(const CollisionWorld& world, SweepWork& last, double skin_m,
                                          const Eigen::Vector3d& p, const Eigen::Vector3d& goal) {
-  std::optional<SweepHit> first;
-  for (int i = 0; i < last.tested_count; ++i) {
-    const TriangleRef& t = last.tested[at(i)];
-    ++last.triangle_tests;
-    auto hit = world.sweep_triangle(t, p, goal, skin_m);
-    if (!hit || (first && !(hit->t_stop < first->t_stop)) || only_grazes(world, t, p, goal, skin_m)) continue;
-    first = hit;
-  }
-  return first;
+  return world.first_met(std::span<const TriangleRef>(last.tested.data(), at(last.tested_count)), p, goal, skin_m,
+                         kGrazeMarginPerSkin * skin_m, last.triangle_tests);
 }
 
 // `t`'s hit on the leg from p to `to` when it stops the leg at once (within the least step)

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <numbers>
+#include <random>
+#include <vector>
 
 namespace mhd {
 namespace {
@@ -159,6 +161,106 @@ TEST(CollisionWorld, ShadingNormalsOfAnObjectOverrideItsVertexNormalsInItsPose) 
   // One entry per triangle, or the per-tick lookups would read past the end.
   auto too_few = std::make_shared<ShadingNormals>();
   EXPECT_THROW(world.set_shading_normals(id, too_few), std::invalid_argument);
+}
+
+// A bumpy sheet of n x n squares (two triangles each) on [0, 1]^2, heights from `rng`.
+std::shared_ptr<const MeshBvh> bumpy_sheet(int n, std::mt19937& rng) {
+  std::uniform_real_distribution<double> bump(-0.02, 0.02);
+  auto mesh = std::make_shared<TriangleMesh>();
+  for (int j = 0; j <= n; ++j) {
+    for (int i = 0; i <= n; ++i) mesh->vertices_m.emplace_back(double(i) / n, double(j) / n, bump(rng));
+  }
+  const auto at = [n](int i, int j) { return static_cast<std::uint32_t>(j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      mesh->triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      mesh->triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  }
+  compute_vertex_normals(*mesh);
+  return std::make_shared<MeshBvh>(mesh);
+}
+
+TEST(CollisionWorld, FirstMetAnswersAsItsTrianglesSweptOneByOne) {
+  // Two sheets in different poses (one touchable from the front only) and an exact sphere;
+  // lists that mix them, so the segment is taken into one frame after another; segments
+  // that cross faces, stop short of them, and end just past an edge within the sweep's
+  // growth but not the graze's (a graze: met by sweep_triangle, not for real).
+  std::mt19937 rng(20261201);
+  CollisionWorld world;
+  const int flat = world.add_object(bumpy_sheet(6, rng), Pose::Identity());
+  const int turned = world.add_object(
+      bumpy_sheet(6, rng), pose_from_xyz_rpy(Eigen::Vector3d(0.3, -0.2, 0.1), Eigen::Vector3d(0.4, -0.3, 0.9)));
+  world.set_touchable(turned, TouchableFaces::Front);
+  const int ball = world.add_object(unit_square(), pose_from_xyz_rpy(Eigen::Vector3d(0.5, 0.5, 0.3), Eigen::Vector3d::Zero()));
+  world.set_exact_shape(ball, ExactShape{ExactKind::Sphere, 0.1, 0.0, Eigen::Vector3d::Zero()});
+  const double skin_m = 1e-3;
+  const double graze_m = 1e-6 * skin_m;
+  const double inflate_m = 1e-2 * skin_m;  // the sweep's own growth (collision_world.cpp)
+  const int objects[2] = {flat, turned};
+  std::uniform_int_distribution<int> pick_object(0, 1);
+  std::uniform_int_distribution<std::uint32_t> pick_triangle(0, 71);
+  std::uniform_int_distribution<int> pick_count(1, 8);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int hits = 0;
+  int grazes = 0;
+  int exact_hits = 0;
+  for (int k = 0; k < 4000; ++k) {
+    std::vector<TriangleRef> ts;
+    const int count = pick_count(rng);
+    for (int i = 0; i < count; ++i) ts.push_back(TriangleRef{objects[pick_object(rng)], pick_triangle(rng)});
+    if (k % 5 == 0) ts.insert(ts.begin() + (k % count), TriangleRef{ball, kExactSurface});
+    // A segment down through a point of the first triangle, or just past one of its edges.
+    const TriangleRef& aim = ts.front().triangle == kExactSurface ? ts.back() : ts.front();
+    const auto v = world.triangle_W(aim);
+    const Eigen::Vector3d n = (v[1] - v[0]).cross(v[2] - v[0]).normalized();
+    Eigen::Vector3d target;
+    if (k % 3 == 0) {
+      const int e = k % 2;
+      const Eigen::Vector3d mid = 0.5 * (v[static_cast<std::size_t>(e)] + v[static_cast<std::size_t>(e + 1)]);
+      const Eigen::Vector3d edge = v[static_cast<std::size_t>(e + 1)] - v[static_cast<std::size_t>(e)];
+      Eigen::Vector3d outward = edge.cross(n).normalized();
+      if (outward.dot(mid - v[static_cast<std::size_t>(2 - e)]) < 0.0) outward = -outward;
+      target = mid + 0.5 * inflate_m * outward;
+    } else {
+      const double r = unit(rng), s = unit(rng) * (1.0 - r);
+      target = v[0] + r * (v[1] - v[0]) + s * (v[2] - v[0]);
+    }
+    const double side = k % 7 == 0 ? -1.0 : 1.0;  // from behind now and then
+    Eigen::Vector3d a_W = target + side * (0.01 + 0.02 * unit(rng)) * n;
+    Eigen::Vector3d b_W = target - side * (k % 4 == 0 ? -0.5 * skin_m : 0.005) * n;
+    if (k % 10 == 0) {  // down onto the ball instead
+      const Eigen::Vector3d off(0.05 * unit(rng), 0.05 * unit(rng), 0.0);
+      a_W = Eigen::Vector3d(0.5, 0.5, 0.6) + off;
+      b_W = Eigen::Vector3d(0.5, 0.5, 0.3) + off;
+    }
+
+    std::optional<SweepHit> expected;
+    for (const TriangleRef& t : ts) {
+      auto hit = world.sweep_triangle(t, a_W, b_W, skin_m);
+      if (!hit || (expected && !(hit->t_stop < expected->t_stop))) continue;
+      if (t.triangle != kExactSurface && !world.meets_triangle_grown_by(t, a_W, b_W, skin_m, graze_m)) {
+        ++grazes;
+        continue;
+      }
+      expected = hit;
+    }
+    int tests = 3;
+    const auto got = world.first_met(ts, a_W, b_W, skin_m, graze_m, tests);
+    ASSERT_EQ(tests, 3 + count + (k % 5 == 0 ? 1 : 0)) << "case " << k;
+    ASSERT_EQ(got.has_value(), expected.has_value()) << "case " << k;
+    if (!got) continue;
+    ++hits;
+    if (got->where.triangle == kExactSurface) ++exact_hits;
+    EXPECT_EQ(got->where, expected->where) << "case " << k;
+    EXPECT_EQ(got->t_stop, expected->t_stop) << "case " << k;
+    EXPECT_EQ(got->normal_W, expected->normal_W) << "case " << k;
+    EXPECT_EQ(got->plane_offset_m, expected->plane_offset_m) << "case " << k;
+  }
+  // The cases reached every branch: hits of each kind and grazes passed over.
+  EXPECT_GT(hits, 500);
+  EXPECT_GT(exact_hits, 0);
+  EXPECT_GT(grazes, 50);
 }
 
 }  // namespace
