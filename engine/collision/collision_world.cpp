@@ -37,6 +37,18 @@ bool is_ignored(std::span<const TriangleRef> ignore, int object, std::uint32_t t
                      [&](const TriangleRef& t) { return t.object == object && t.triangle == triangle; });
 }
 
+// A triangle's hit as every sweep reports it: its normal in the world frame, and the plane
+// through the triangle's first corner.
+SweepHit hit_in_world(const Pose& X_WO, const TriangleRef& where, const TriangleSweep& hit,
+                      const Eigen::Vector3d& v0_O) {
+  SweepHit h;
+  h.where = where;
+  h.t_stop = hit.t_stop;
+  h.normal_W = X_WO.linear() * hit.normal;
+  h.plane_offset_m = h.normal_W.dot(X_WO * v0_O);
+  return h;
+}
+
 // A name for a world's shapes, unique to the process.
 std::uint64_t next_geometry_id() {
   static std::atomic<std::uint64_t> last_id{0};
@@ -205,12 +217,7 @@ std::optional<SweepHit> CollisionWorld::sweep_among(int only_object, const Eigen
       if (!better) return;
       best_t_stop = hit->t_stop;
       best_t_plane = hit->t_plane;
-      SweepHit h;
-      h.where = TriangleRef{object, ti};
-      h.t_stop = hit->t_stop;
-      h.normal_W = o.X_WO.linear() * hit->normal;
-      h.plane_offset_m = h.normal_W.dot(o.X_WO * mesh.vertices_m[t[0]]);
-      best = h;
+      best = hit_in_world(o.X_WO, TriangleRef{object, ti}, *hit, mesh.vertices_m[t[0]]);
     };
     // The same triangles either way: from the list where its box holds the piece's, else
     // from the tree.
@@ -271,12 +278,7 @@ std::optional<SweepHit> CollisionWorld::sweep_triangle(const TriangleRef& ref, c
   if (!hit || !touchable_from(o.touchable, hit->normal.dot(o.shape->face_normal_O(ref.triangle)) > 0.0)) {
     return std::nullopt;
   }
-  SweepHit h;
-  h.where = ref;
-  h.t_stop = hit->t_stop;
-  h.normal_W = o.X_WO.linear() * hit->normal;
-  h.plane_offset_m = h.normal_W.dot(o.X_WO * mesh.vertices_m[t[0]]);
-  return h;
+  return hit_in_world(o.X_WO, ref, *hit, mesh.vertices_m[t[0]]);
 }
 
 bool CollisionWorld::meets_triangle_grown_by(const TriangleRef& ref, const Eigen::Vector3d& a_W,
@@ -320,12 +322,7 @@ std::optional<SweepHit> CollisionWorld::first_met(std::span<const TriangleRef> t
     if (!hit || !touchable_from(o.touchable, hit->normal.dot(n_O) > 0.0)) continue;
     if (first && !(hit->t_stop < first->t_stop)) continue;
     if (!sweep_point_triangle(a_O, b_O, v0, v1, v2, n_O, skin_m, graze_inflate_m)) continue;  // a graze
-    SweepHit h;  // as sweep_triangle() gives it
-    h.where = ref;
-    h.t_stop = hit->t_stop;
-    h.normal_W = o.X_WO.linear() * hit->normal;
-    h.plane_offset_m = h.normal_W.dot(o.X_WO * v0);
-    first = h;
+    first = hit_in_world(o.X_WO, ref, *hit, v0);  // as sweep_triangle() gives it
   }
   return first;
 }

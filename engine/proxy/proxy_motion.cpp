@@ -1,6 +1,5 @@
 #include "proxy/proxy_motion.h"
 
-
 #include <cmath>
 #include <optional>
 #include <span>
