@@ -45,6 +45,8 @@ HapticServer::~HapticServer() {
 
 const ServerSettings& HapticServer::settings() const noexcept { return impl_->settings; }
 
+double HapticServer::host_now_s() const noexcept { return impl_->host.now_s(); }
+
 namespace {
 
 /// The scene's plugins by role, in the order they are opened (and started, but for the

@@ -168,6 +168,9 @@ class HapticServer {
   LastGasp last_gasp() noexcept;
 
   [[nodiscard]] const ServerSettings& settings() const noexcept;
+  /// The host clock the server's plugins, report and recording read: seconds since the
+  /// server opened.
+  [[nodiscard]] double host_now_s() const noexcept;
 
  private:
   struct Impl;

@@ -108,6 +108,22 @@ CsvTable read_csv_table(const std::string& path) {
   return t;
 }
 
+std::optional<std::int64_t> recording_clock_zero_unix_ns(const std::string& csv) {
+  std::ifstream meta(csv + ".meta");
+  const std::string key = "host_clock_zero_unix_ns=";
+  for (std::string line; std::getline(meta, line);) {
+    if (line.rfind(key, 0) != 0) continue;
+    try {
+      std::size_t used = 0;
+      const long long ns = std::stoll(line.substr(key.size()), &used);
+      if (used == line.size() - key.size()) return ns;
+    } catch (const std::exception&) {
+    }
+    return std::nullopt;
+  }
+  return std::nullopt;
+}
+
 OutputFile::OutputFile(const std::string& folder, const char* name)
     : path_((std::filesystem::path(folder) / ("mhd_dds_test_" + std::to_string(::getpid()) + "_" + name + ".log"))
                 .string()) {}

@@ -76,6 +76,12 @@ struct CsvTable {
 };
 CsvTable read_csv_table(const std::string& path);
 
+/// Where t_s = 0 of a recording `mhd run --record` wrote falls in Unix time, in ns
+/// (host_clock_zero_unix_ns in the .meta beside it); nullopt when the .meta has none.
+/// Each process's host clock starts where its server opened: two recordings' times
+/// compare only once shifted by the difference of theirs.
+std::optional<std::int64_t> recording_clock_zero_unix_ns(const std::string& csv);
+
 /// A child's output file, "<folder>/mhd_dds_test_<pid>_<name>.log", removed when the test
 /// ends.
 class OutputFile {

@@ -10,8 +10,9 @@
 //     carried by the link, is what held it;
 //   - rig 2 alone (no authority, so no state ever comes) feels its replica's force fade
 //     to nothing, though its hand is in the box;
-//   - tick by tick, the two rigs' boxes (each recording's shared_* columns, on the one
-//     host clock) agree within 5 mm while both run;
+//   - tick by tick, the two rigs' boxes (each recording's shared_* columns, put on one
+//     clock by each recording's host_clock_zero_unix_ns) agree within 5 mm while both
+//     run, rig 2 started 0.3 s after rig 1;
 //   - secured as docs/networking.md says (make_rig_security.sh), the pair runs the same,
 //     and rig 2's identity may not run as rig 1.
 #include "dds_test_support.h"
@@ -33,6 +34,7 @@
 #include <regex>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace mhd::dds::shared_box_process_test {
@@ -100,9 +102,16 @@ struct RigEnd {
   double states_obeyed = 0.0, pushes_sent = 0.0, pushes_kept = 0.0;
   double max_force_N = 0.0;    ///< over the whole run, from the recording
   std::size_t contact_ticks = 0;
+  double clock_zero_unix_s = 0.0;  ///< where the recording's t_s = 0 falls in Unix time
 };
 
-RigEnd read_end(const fs::path& log_file, const fs::path& csv) {
+double unix_now_s() {
+  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+}
+
+// What a rig reported; `launched_unix_s` and `ended_unix_s` bound its process's life,
+// which its recording's rows, put on Unix time by its .meta, must lie within.
+RigEnd read_end(const fs::path& log_file, const fs::path& csv, double launched_unix_s, double ended_unix_s) {
   RigEnd end;
   end.log = test::read_file(log_file.string());
   std::smatch m;
@@ -126,6 +135,13 @@ RigEnd read_end(const fs::path& log_file, const fs::path& csv) {
     end.contact_ticks += at("contact") > 0.5 ? 1 : 0;
     end.box.push_back({at("t_s"), Eigen::Vector3d(at("shared_x_m"), at("shared_y_m"), at("shared_z_m"))});
   }
+  const std::optional<std::int64_t> zero_ns = test::recording_clock_zero_unix_ns(csv.string());
+  EXPECT_TRUE(zero_ns.has_value()) << "no host_clock_zero_unix_ns in " << csv << ".meta";
+  if (zero_ns && !end.box.empty()) {
+    end.clock_zero_unix_s = static_cast<double>(*zero_ns) * 1e-9;
+    EXPECT_GE(end.clock_zero_unix_s + end.box.front().t_s, launched_unix_s);
+    EXPECT_LE(end.clock_zero_unix_s + end.box.back().t_s, ended_unix_s);
+  }
   return end;
 }
 
@@ -134,19 +150,22 @@ struct Agreement {
   double max_m = 0.0, p99_m = 0.0;
 };
 
-// Rig 2's box against rig 1's at the same host time (one machine, one monotonic clock),
-// over the ticks both ran, from 0.5 s after both started (the replica's first states).
+// Rig 2's box against rig 1's at the same instant, on rig 1's clock (each recording's
+// t_s counts from its own server's opening), over the ticks both ran, from 0.5 s after
+// both started (the replica's first states).
 Agreement agreement(const RigEnd& one, const RigEnd& two) {
   Agreement a;
   if (one.box.empty() || two.box.empty()) return a;
-  const double from_s = std::max(one.box.front().t_s, two.box.front().t_s) + 0.5;
+  const double two_on_one_s = two.clock_zero_unix_s - one.clock_zero_unix_s;
+  const double from_s = std::max(one.box.front().t_s, two.box.front().t_s + two_on_one_s) + 0.5;
   std::vector<double> gaps;
   std::size_t j = 0;
   for (const BoxAt& b : two.box) {
-    if (b.t_s < from_s) continue;
-    while (j + 1 < one.box.size() && one.box[j + 1].t_s <= b.t_s) ++j;
+    const double t_s = b.t_s + two_on_one_s;
+    if (t_s < from_s) continue;
+    while (j + 1 < one.box.size() && one.box[j + 1].t_s <= t_s) ++j;
     if (j + 1 >= one.box.size()) break;  // rig 1 has ended
-    const double w = (b.t_s - one.box[j].t_s) / (one.box[j + 1].t_s - one.box[j].t_s);
+    const double w = (t_s - one.box[j].t_s) / (one.box[j + 1].t_s - one.box[j].t_s);
     const Eigen::Vector3d p1 = one.box[j].p_W + w * (one.box[j + 1].p_W - one.box[j].p_W);
     gaps.push_back((b.p_W - p1).norm());
   }
@@ -201,16 +220,20 @@ class SharedBoxProcess : public ::testing::Test {
         (dir_ / (name + ".log")).string());
   }
 
-  /// Runs the rigs placed so (an empty optional: that rig does not run) at once, each
-  /// for kRunFor_s; what each reported, in rig order (absent rigs: nullopt).
-  std::vector<std::optional<RigEnd>> run(const std::vector<std::optional<Placement>>& rigs) {
+  /// Runs the rigs placed so (an empty optional: that rig does not run), each for
+  /// kRunFor_s, each started `apart_s` after the one before; what each reported, in rig
+  /// order (absent rigs: nullopt).
+  std::vector<std::optional<RigEnd>> run(const std::vector<std::optional<Placement>>& rigs, double apart_s = 0.0) {
     std::vector<std::unique_ptr<ChildProcess>> processes;
+    std::vector<double> launched_unix_s(rigs.size(), 0.0);
     for (std::size_t i = 0; i < rigs.size(); ++i) {
       if (!rigs[i]) {
         processes.push_back(nullptr);
         continue;
       }
+      if (i > 0) std::this_thread::sleep_for(std::chrono::duration<double>(apart_s));
       const int rig = static_cast<int>(i) + 1;
+      launched_unix_s[i] = unix_now_s();
       processes.push_back(start(rig, *rigs[i], rig));
     }
     std::vector<std::optional<RigEnd>> ends;
@@ -221,10 +244,11 @@ class SharedBoxProcess : public ::testing::Test {
       }
       const std::string name = "rig" + std::to_string(i + 1);
       const std::optional<int> rc = processes[i]->wait_for(std::chrono::seconds(60));
+      const double ended_unix_s = unix_now_s();
       const std::string log = test::read_file((dir_ / (name + ".log")).string());
       EXPECT_TRUE(rc.has_value() && *rc == 0) << name << ":\n" << log;
       EXPECT_NE(log.find("safe state: zero force sent"), std::string::npos) << log;
-      ends.push_back(read_end(dir_ / (name + ".log"), dir_ / (name + ".csv")));
+      ends.push_back(read_end(dir_ / (name + ".log"), dir_ / (name + ".csv"), launched_unix_s[i], ended_unix_s));
     }
     return ends;
   }
@@ -265,7 +289,10 @@ TEST_F(SharedBoxProcess, SecuredRig2sIdentityMayNotRunAsRig1) {
 }
 
 TEST_F(SharedBoxProcess, PressedFromOneSideTheBoxMovesAndBothRigsAgree) {
-  const auto ends = run({Placement{-0.06, true}, Placement{0.06, true}});
+  // Rig 2 starts 0.3 s after rig 1, as two users would: each recording's times are its
+  // own process's, so the rigs' boxes are compared on one clock, or they would seem to
+  // be 0.3 s apart wherever the box moves.
+  const auto ends = run({Placement{-0.06, true}, Placement{0.06, true}}, 0.3);
   ASSERT_TRUE(ends[0] && ends[1]);
   const RigEnd& r1 = *ends[0];
   const RigEnd& r2 = *ends[1];

@@ -4,7 +4,7 @@
 // tracking. Judged from the two recordings: both users touch the dolphin, both bases move,
 // each haptic process gets the other rig's samples, and no base ever comes within the
 // keep-out of the other base or of either user (robot 0.225 m + human 0.25 m; two bases
-// 0.45 m).
+// 0.45 m), compared at the same instant (each recording put on one clock by its .meta).
 #include "dds_test_support.h"
 
 #include <gtest/gtest.h>
@@ -15,7 +15,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <map>
+#include <optional>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -110,14 +112,21 @@ TEST(TwoRigSession, SecuredTwoRigsTouchTheDolphinAndNoBaseEntersAKeepOut) {
   }
   for (auto& t : trackers) t->terminate();
 
+  // Each recording's t_s counts from its own server's opening: rig 2's rows go onto rig
+  // 1's clock by the difference of their zeros.
+  const std::optional<std::int64_t> zero_1 = test::recording_clock_zero_unix_ns((dir / "rig1.csv").string());
+  const std::optional<std::int64_t> zero_2 = test::recording_clock_zero_unix_ns((dir / "rig2.csv").string());
+  ASSERT_TRUE(zero_1 && zero_2) << "no host_clock_zero_unix_ns in the recordings' .meta";
+  const double two_on_one_s = static_cast<double>(*zero_2 - *zero_1) * 1e-9;
   constexpr double kUserKeepOut_m = 0.225 + 0.25, kBaseKeepOut_m = 0.45;
   double base_base_m = 1e9, base_user_m = 1e9, moved_m[2] = {0.0, 0.0};
-  std::size_t contacts[2] = {0, 0};
+  std::size_t contacts[2] = {0, 0}, compared = 0;
   std::size_t j = 0;
   for (const Row& a : rows[0]) {
-    while (j + 1 < rows[1].size() && rows[1][j + 1].t_s <= a.t_s) ++j;
+    while (j + 1 < rows[1].size() && rows[1][j + 1].t_s + two_on_one_s <= a.t_s) ++j;
     const Row& b = rows[1][j];
-    if (std::abs(b.t_s - a.t_s) > 0.01) continue;  // the two clocks start within milliseconds
+    if (std::abs(b.t_s + two_on_one_s - a.t_s) > 0.01) continue;  // no row of rig 2's near that instant
+    ++compared;
     base_base_m = std::min(base_base_m, std::hypot(a.base_x_m - b.base_x_m, a.base_z_m - b.base_z_m));
     base_user_m = std::min(base_user_m, std::hypot(a.base_x_m - b.user_x_m, a.base_z_m - b.user_z_m));
     base_user_m = std::min(base_user_m, std::hypot(b.base_x_m - a.user_x_m, b.base_z_m - a.user_z_m));
@@ -130,6 +139,10 @@ TEST(TwoRigSession, SecuredTwoRigsTouchTheDolphinAndNoBaseEntersAKeepOut) {
       contacts[i] += r.contact ? 1 : 0;
     }
   }
+  std::cout << "over " << compared << " instants on one clock (rig 2's zero " << two_on_one_s * 1e3
+            << " ms after rig 1's): bases at least " << base_base_m << " m apart, a base at least " << base_user_m
+            << " m from a user\n";
+  EXPECT_GT(compared, 5000u);
   EXPECT_GT(base_base_m, kBaseKeepOut_m);
   EXPECT_GT(base_user_m, kUserKeepOut_m);
   EXPECT_GT(moved_m[0], 0.3);

@@ -27,6 +27,7 @@
 #include <cmath>
 #include <chrono>
 #include <csignal>
+#include <cstdint>
 #include <exception>
 #include <cstdio>
 #include <filesystem>
@@ -141,9 +142,17 @@ int run(const RunOptions& opt) {
   }
 
   if (!opt.record.empty()) {
-    // For `mhd replay`: which scene this recording ran.
+    // For `mhd replay`: which scene this recording ran. And where its t_s = 0 falls in
+    // Unix time: each process's host clock starts where its server opened, so recordings
+    // of several processes (or of hosts on one synchronised clock) line up only on this.
+    const auto unix_now = std::chrono::system_clock::now();
+    const double host_s = build->server->host_now_s();
+    const std::int64_t zero_unix_ns =
+        std::chrono::duration_cast<std::chrono::nanoseconds>(unix_now.time_since_epoch()).count() -
+        std::llround(host_s * 1e9);
     std::ofstream meta(opt.record + ".meta");
-    meta << "scene=" << std::filesystem::absolute(opt.scene).lexically_normal().string() << "\n";
+    meta << "scene=" << std::filesystem::absolute(opt.scene).lexically_normal().string() << "\n"
+         << "host_clock_zero_unix_ns=" << zero_unix_ns << "\n";
   }
   mhd::cli::guard_server(build->server.get());
   const mhd::ServerReport r = [&] {
