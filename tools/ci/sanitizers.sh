@@ -47,17 +47,20 @@ asan_exclude=(
   'Install\.DebPackages'
   # TwoRigSession runs four real-time processes (two tracker servers, two haptic servers
   # at 1 kHz) on the 2-core machine. Instrumented, on 2026-11-29, a base came within
-  # 0.239 m of a user (0.56 m and more in every release run); whether the lagging base
-  # drove in or a user walked into it is not yet told apart. It runs in the release suite.
+  # 0.239 m of a user (0.56 m and more in every release run), the two recordings then
+  # compared on their own clocks. On one clock, on 2026-12-01, it failed 2 of 3
+  # instrumented runs: a base 0.472 m from a user (0.475 m asked), and rig 2's user never
+  # in contact; whether the lagging base drove in or a user walked into it is not yet
+  # told apart. It runs in the release suite.
   'TwoRigSession\.'
-  # The shared-box tests that hold two real-time `mhd run` processes to agree on a box
-  # within 5 mm while it is pressed (from opposite sides, secured or not, or from one).
-  # Instrumented, on 2026-11-30, rig 1's loop overran 10 times and the box slid 62 mm
-  # (1-2 mm in the release runs), so the agreement measured how far the sanitizer let one
-  # loop fall behind. They run in the release suite; the other SharedBoxProcess tests (one
-  # rig alone, a replica with no authority) stay here.
+  # The shared-box tests that hold a box pressed from opposite sides (secured or not) to
+  # staying put. Instrumented, on 2026-11-30, rig 1's loop overran 10 times and the box
+  # slid 62 mm (1-2 mm in the release runs); on 2026-12-01, one of three runs ended with
+  # rig 1's box 38 mm off and rig 2's at 2 mm, its last state 5 ms old: the box slid after
+  # rig 2 had ended, rig 1 pressing alone. They run in the release suite; the other
+  # SharedBoxProcess tests (pressed from one side, one rig alone, a replica with no
+  # authority) stay here.
   'SharedBoxProcess\.(Secured)?PressedFromOppositeSides'
-  'SharedBoxProcess\.PressedFromOneSide'
   # SharedFloorRun.LosingTheOtherRigsDataHoldsTheBaseUntilItIsBack times the base's stop
   # against a 2 s dropout in a real-time `mhd run`. Instrumented, on 2026-11-30, it failed
   # once in a clean CI run (bases 0.435 m apart, 0.45 m asked) and 5 times in 5 with the
