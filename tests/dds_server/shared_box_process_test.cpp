@@ -146,38 +146,6 @@ RigEnd read_end(const fs::path& log_file, const fs::path& csv, double launched_u
   return end;
 }
 
-struct Agreement {
-  std::size_t ticks = 0;
-  double max_m = 0.0, p99_m = 0.0;
-};
-
-// Rig 2's box against rig 1's at the same instant, on rig 1's clock (each recording's
-// t_s counts from its own server's opening), over the ticks both ran, from 0.5 s after
-// both started (the replica's first states).
-Agreement agreement(const RigEnd& one, const RigEnd& two) {
-  Agreement a;
-  if (one.box.empty() || two.box.empty()) return a;
-  const double two_on_one_s = two.clock_zero_unix_s - one.clock_zero_unix_s;
-  const double from_s = std::max(one.box.front().t_s, two.box.front().t_s + two_on_one_s) + 0.5;
-  std::vector<double> gaps;
-  std::size_t j = 0;
-  for (const BoxAt& b : two.box) {
-    const double t_s = b.t_s + two_on_one_s;
-    if (t_s < from_s) continue;
-    while (j + 1 < one.box.size() && one.box[j + 1].t_s <= t_s) ++j;
-    if (j + 1 >= one.box.size()) break;  // rig 1 has ended
-    const double w = (t_s - one.box[j].t_s) / (one.box[j + 1].t_s - one.box[j].t_s);
-    const Eigen::Vector3d p1 = one.box[j].p_W + w * (one.box[j + 1].p_W - one.box[j].p_W);
-    gaps.push_back((b.p_W - p1).norm());
-  }
-  if (gaps.empty()) return a;
-  std::sort(gaps.begin(), gaps.end());
-  a.ticks = gaps.size();
-  a.max_m = gaps.back();
-  a.p99_m = gaps[static_cast<std::size_t>(0.99 * static_cast<double>(gaps.size() - 1))];
-  return a;
-}
-
 // Rig `r`'s box at `t_s` of its own clock (its first or last where t_s is outside them).
 Eigen::Vector3d box_at(const RigEnd& r, double t_s) {
   const auto after = std::upper_bound(r.box.begin(), r.box.end(), t_s,
@@ -189,9 +157,51 @@ Eigen::Vector3d box_at(const RigEnd& r, double t_s) {
   return before.p_W + w * (after->p_W - before.p_W);
 }
 
-// While both rigs ran (on rig 1's clock): how far rig 1's box got from where it was when
-// the later one started, and rig 2's last box against rig 1's box at that instant.
+// When both rigs ran, on rig 1's clock: each recording's t_s counts from its own
+// server's opening, so rig 2's times go onto rig 1's clock by adding `two_on_one_s`.
 // Before the later rig starts and after the earlier one ends, one rig presses alone.
+struct BothRan {
+  double two_on_one_s = 0.0;
+  double from_s = 0.0, to_s = 0.0;
+};
+
+// Requires both recordings to have rows.
+BothRan both_ran(const RigEnd& one, const RigEnd& two) {
+  BothRan b;
+  b.two_on_one_s = two.clock_zero_unix_s - one.clock_zero_unix_s;
+  b.from_s = std::max(one.box.front().t_s, two.box.front().t_s + b.two_on_one_s);
+  b.to_s = std::min(one.box.back().t_s, two.box.back().t_s + b.two_on_one_s);
+  return b;
+}
+
+struct Agreement {
+  std::size_t ticks = 0;
+  double max_m = 0.0, p99_m = 0.0;
+};
+
+// Rig 2's box against rig 1's at the same instant, over the ticks both ran, from 0.5 s
+// after both started (the replica's first states).
+Agreement agreement(const RigEnd& one, const RigEnd& two) {
+  Agreement a;
+  if (one.box.empty() || two.box.empty()) return a;
+  const BothRan both = both_ran(one, two);
+  std::vector<double> gaps;
+  for (const BoxAt& b : two.box) {
+    const double t_s = b.t_s + both.two_on_one_s;
+    if (t_s < both.from_s + 0.5) continue;
+    if (t_s >= both.to_s) break;
+    gaps.push_back((b.p_W - box_at(one, t_s)).norm());
+  }
+  if (gaps.empty()) return a;
+  std::sort(gaps.begin(), gaps.end());
+  a.ticks = gaps.size();
+  a.max_m = gaps.back();
+  a.p99_m = gaps[static_cast<std::size_t>(0.99 * static_cast<double>(gaps.size() - 1))];
+  return a;
+}
+
+// While both rigs ran: how far rig 1's box got from where it was when the later one
+// started, and rig 2's last box against rig 1's box at that instant.
 struct WhileBothRan {
   double moved_m = 0.0;
   double apart_at_end_m = 0.0;
@@ -200,14 +210,12 @@ struct WhileBothRan {
 WhileBothRan while_both_ran(const RigEnd& one, const RigEnd& two) {
   WhileBothRan w;
   if (one.box.empty() || two.box.empty()) return w;
-  const double two_on_one_s = two.clock_zero_unix_s - one.clock_zero_unix_s;
-  const double from_s = std::max(one.box.front().t_s, two.box.front().t_s + two_on_one_s);
-  const double to_s = std::min(one.box.back().t_s, two.box.back().t_s + two_on_one_s);
-  const Eigen::Vector3d start = box_at(one, from_s);
+  const BothRan both = both_ran(one, two);
+  const Eigen::Vector3d start = box_at(one, both.from_s);
   for (const BoxAt& b : one.box) {
-    if (b.t_s >= from_s && b.t_s <= to_s) w.moved_m = std::max(w.moved_m, (b.p_W - start).norm());
+    if (b.t_s >= both.from_s && b.t_s <= both.to_s) w.moved_m = std::max(w.moved_m, (b.p_W - start).norm());
   }
-  w.apart_at_end_m = (box_at(two, to_s - two_on_one_s) - box_at(one, to_s)).norm();
+  w.apart_at_end_m = (box_at(two, both.to_s - both.two_on_one_s) - box_at(one, both.to_s)).norm();
   return w;
 }
 
