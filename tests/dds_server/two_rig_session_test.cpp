@@ -119,7 +119,16 @@ TEST(TwoRigSession, SecuredTwoRigsTouchTheDolphinAndNoBaseEntersAKeepOut) {
   ASSERT_TRUE(zero_1 && zero_2) << "no host_clock_zero_unix_ns in the recordings' .meta";
   const double two_on_one_s = static_cast<double>(*zero_2 - *zero_1) * 1e-9;
   constexpr double kUserKeepOut_m = 0.225 + 0.25, kBaseKeepOut_m = 0.45;
-  double base_base_m = 1e9, base_user_m = 1e9, moved_m[2] = {0.0, 0.0};
+  // The closest each kind of pair came, which pair it was and when (on rig 1's clock).
+  struct Closest {
+    double m = 1e9, t_s = 0.0;
+    std::string pair;
+    void take(double d_m, double at_s, const std::string& what) {
+      if (d_m < m) *this = Closest{d_m, at_s, what};
+    }
+  };
+  Closest base_base, base_user;
+  double moved_m[2] = {0.0, 0.0};
   std::size_t contacts[2] = {0, 0}, compared = 0;
   std::size_t j = 0;
   for (const Row& a : rows[0]) {
@@ -127,21 +136,25 @@ TEST(TwoRigSession, SecuredTwoRigsTouchTheDolphinAndNoBaseEntersAKeepOut) {
     const Row& b = rows[1][j];
     if (std::abs(b.t_s + two_on_one_s - a.t_s) > 0.01) continue;  // no row of rig 2's near that instant
     ++compared;
-    base_base_m = std::min(base_base_m, std::hypot(a.base_x_m - b.base_x_m, a.base_z_m - b.base_z_m));
-    base_user_m = std::min(base_user_m, std::hypot(a.base_x_m - b.user_x_m, a.base_z_m - b.user_z_m));
-    base_user_m = std::min(base_user_m, std::hypot(b.base_x_m - a.user_x_m, b.base_z_m - a.user_z_m));
+    base_base.take(std::hypot(a.base_x_m - b.base_x_m, a.base_z_m - b.base_z_m), a.t_s, "base 1 - base 2");
+    base_user.take(std::hypot(a.base_x_m - b.user_x_m, a.base_z_m - b.user_z_m), a.t_s, "base 1 - user 2");
+    base_user.take(std::hypot(b.base_x_m - a.user_x_m, b.base_z_m - a.user_z_m), a.t_s, "base 2 - user 1");
   }
   for (std::size_t i = 0; i < 2; ++i) {
+    const std::string rig = std::to_string(i + 1);
     for (const Row& r : rows[i]) {
-      base_user_m = std::min(base_user_m, std::hypot(r.base_x_m - r.user_x_m, r.base_z_m - r.user_z_m));
+      base_user.take(std::hypot(r.base_x_m - r.user_x_m, r.base_z_m - r.user_z_m),
+                     r.t_s + (i == 1 ? two_on_one_s : 0.0), "base " + rig + " - user " + rig);
       moved_m[i] = std::max(moved_m[i], std::hypot(r.base_x_m - rows[i].front().base_x_m,
                                                     r.base_z_m - rows[i].front().base_z_m));
       contacts[i] += r.contact ? 1 : 0;
     }
   }
   std::cout << "over " << compared << " instants on one clock (rig 2's zero " << two_on_one_s * 1e3
-            << " ms after rig 1's): bases at least " << base_base_m << " m apart, a base at least " << base_user_m
-            << " m from a user\n";
+            << " ms after rig 1's): bases at least " << base_base.m << " m apart (" << base_base.pair << ", t "
+            << base_base.t_s << " s), a base at least " << base_user.m << " m from a user (" << base_user.pair
+            << ", t " << base_user.t_s << " s); contact ticks " << contacts[0] << " and " << contacts[1] << "\n";
+  const double base_base_m = base_base.m, base_user_m = base_user.m;
   EXPECT_GT(compared, 5000u);
   EXPECT_GT(base_base_m, kBaseKeepOut_m);
   EXPECT_GT(base_user_m, kUserKeepOut_m);
@@ -149,6 +162,11 @@ TEST(TwoRigSession, SecuredTwoRigsTouchTheDolphinAndNoBaseEntersAKeepOut) {
   EXPECT_GT(moved_m[1], 0.3);
   EXPECT_GT(contacts[0], 100u);
   EXPECT_GT(contacts[1], 100u);
+  // A failed run's logs and recordings are kept for a look.
+  if (::testing::Test::HasFailure()) {
+    std::cout << "logs and recordings kept in " << dir << "\n";
+    return;
+  }
   std::error_code ec;
   fs::remove_all(dir, ec);
   fs::remove(dir.string() + ".log", ec);
