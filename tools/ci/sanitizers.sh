@@ -50,8 +50,13 @@ asan_exclude=(
   # 0.239 m of a user (0.56 m and more in every release run), the two recordings then
   # compared on their own clocks. On one clock, on 2026-12-01, it failed 2 of 3
   # instrumented runs: a base 0.472 m from a user (0.475 m asked), and rig 2's user never
-  # in contact; whether the lagging base drove in or a user walked into it is not yet
-  # told apart. It runs in the release suite.
+  # in contact. On 2026-12-01 again, 7 instrumented runs: 6 passed (a base 0.489-0.571 m
+  # from a user, 0.496-0.570 m in 7 release runs), and in 1 the secured samples reached
+  # both haptic processes over 0.1 s old all run (3579 of 3596 refused as stale: force
+  # faded, bases stopped). The closest pair is a rig's own base and user as the user walks
+  # in: in two release recordings the base is then backing away (12 mm in 50 ms) and the user
+  # walking into it, so the test's "never within 0.475 m" also asks the simulated user to
+  # stop. It runs in the release suite.
   'TwoRigSession\.'
   # The shared-box tests that hold a box pressed from opposite sides (secured or not) to
   # staying put. Instrumented, on 2026-11-30, rig 1's loop overran 10 times and the box
