@@ -6,6 +6,7 @@
 #include "mesh_io/content_hash.h"
 #include "mesh_io/mesh_cache_entry.h"
 #include "mesh_io/mesh_cache_eviction.h"
+#include "mesh_io/mesh_key_memo.h"
 #include "mesh_io/regular_file.h"
 
 #include <fcntl.h>
@@ -359,7 +360,11 @@ Result<CachedMesh, MeshLoadError> MeshCache::load(const std::filesystem::path& f
   CachedMesh result;
   const std::string name = short_name(file);
   std::optional<MeshCacheKey> key;
-  if (dir_) key = mesh_cache_key(file, scale_to_m);  // unreadable: the loader says why
+  if (dir_) {  // unreadable: the loader says why
+    bool remembered = false;
+    key = mesh_key_remembered_or_hashed(*dir_, file, scale_to_m, writable_, remembered);
+    if (remembered) ++stats_.keys_remembered;
+  }
 
   // 1. Try the cache file.
   if (key) {

@@ -1,5 +1,7 @@
 #include "mesh_io/mesh_cache_eviction.h"
 
+#include "mesh_io/mesh_key_memo.h"
+
 #include <algorithm>
 #include <charconv>
 #include <cstdlib>
@@ -17,6 +19,12 @@ bool is_entry(const std::filesystem::path& p) { return p.extension() == kEntryEx
 // "<key>.mhdbvh.tmp.<pid>.<n>": what MeshCache::store leaves if killed mid-write.
 bool is_temp(const std::filesystem::path& p) {
   return p.filename().string().find(std::string(kEntryExtension) + ".tmp.") != std::string::npos;
+}
+
+// A file's remembered key (mesh_key_memo.h), or what its writer left if killed mid-write.
+bool is_key_memo(const std::filesystem::path& p) {
+  return p.extension() == kMeshKeyMemoExtension ||
+         p.filename().string().find(std::string(kMeshKeyMemoExtension) + ".tmp.") != std::string::npos;
 }
 
 std::optional<std::uint64_t> parse_limit_mb(std::string& problem) {
@@ -86,9 +94,15 @@ MeshCacheRemoval evict_mesh_cache(const std::filesystem::path& dir, std::uint64_
 MeshCacheRemoval clear_mesh_cache(const std::filesystem::path& dir) {
   MeshCacheRemoval r = evict_mesh_cache(dir, 0);
   std::error_code ec;
-  std::vector<std::filesystem::path> temps;
-  for (const auto& item : std::filesystem::directory_iterator(dir, ec))
+  std::vector<std::filesystem::path> temps, keys;
+  for (const auto& item : std::filesystem::directory_iterator(dir, ec)) {
     if (is_temp(item.path())) temps.push_back(item.path());
+    if (is_key_memo(item.path())) keys.push_back(item.path());
+  }
+  for (const auto& k : keys) {
+    std::error_code remove_ec;
+    if (std::filesystem::remove(k, remove_ec)) ++r.keys_removed;
+  }
   for (const auto& t : temps) {
     std::error_code remove_ec;
     const auto size = std::filesystem::file_size(t, remove_ec);

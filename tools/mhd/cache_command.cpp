@@ -51,7 +51,8 @@ int clear() {
   const auto dir = cache_dir_or_say_why("clear");
   if (!dir) return 1;
   const mhd::MeshCacheRemoval r = mhd::clear_mesh_cache(*dir);
-  fmt::print("BVH cache {}: removed {} files, {}\n", dir->string(), r.removed, mib(r.freed_bytes));
+  fmt::print("BVH cache {}: removed {} files, {}{}\n", dir->string(), r.removed, mib(r.freed_bytes),
+             r.keys_removed > 0 ? fmt::format(", and {} remembered keys", r.keys_removed) : "");
   if (!mhd::list_mesh_cache(*dir).empty()) {
     fmt::print(stderr, "mhd cache clear: error: some entries in {} could not be removed\n", dir->string());
     return 1;
@@ -71,6 +72,7 @@ void add_cache_command(CLI::App& app) {
       "entries beyond it. Entries are rebuilt when missing, so clearing is always safe.");
   CLI::App* list_cmd = cmd->add_subcommand("list", "Each entry with its size, last use and mesh file, the total and the limit");
   list_cmd->callback([] { mhd::cli::exit_with(list()); });
-  CLI::App* clear_cmd = cmd->add_subcommand("clear", "Remove every entry (they are rebuilt on the next load)");
+  CLI::App* clear_cmd =
+      cmd->add_subcommand("clear", "Remove every entry and remembered key (they are rebuilt on the next load)");
   clear_cmd->callback([] { mhd::cli::exit_with(clear()); });
 }
