@@ -1,7 +1,7 @@
 #pragma once
 // A mesh file's cache key, remembered beside the cache's entries, so that a cached load of
-// an unchanged file reads none of it (hashing the 1.9 GB file of a 100 M-triangle mesh
-// took 0.10-0.17 s of a 2.6 s cached load, and longer where it had left the page cache).
+// an unchanged file reads its header only (hashing the 1.9 GB file of a 100 M-triangle
+// mesh took 0.10-0.17 s of a 2.6 s cached load, and longer out of the page cache).
 //
 // One memo per file (device and inode) and scale, "<32 hex digits>.mhdkey": the key, with
 // the file's size and its modification and change times when it was hashed. The change
