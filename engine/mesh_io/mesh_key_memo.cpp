@@ -10,7 +10,7 @@
 
 #include <array>
 #include <atomic>
-#include <cerrno>
+#include <cstddef>
 #include <cstdint>
 #include <ctime>
 #include <system_error>
@@ -55,8 +55,10 @@ static_assert(sizeof(MemoFile) == 104, "MemoFile has padding");
 
 constexpr std::array<char, 8> kMagic{'M', 'H', 'D', 'K', 'E', 'Y', '1', '\0'};
 
-std::uint64_t check_of(const MemoFile& m) {
+/// nullopt when no hash state could be had: no memo is then read or written.
+std::optional<std::uint64_t> check_of(const MemoFile& m) {
   ContentHash state;
+  if (!state.ok()) return std::nullopt;
   state.update(&m, offsetof(MemoFile, check));
   return state.digest().low64;
 }
@@ -91,7 +93,7 @@ std::optional<MeshCacheKey> read_memo(const std::filesystem::path& path, const M
   const bool whole = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size == sizeof m &&
                      ::pread(fd, &m, sizeof m, 0) == static_cast<ssize_t>(sizeof m);
   ::close(fd);
-  if (!whole || m.check != check_of(m) || m.magic != expected.magic || !(m.stamp == expected.stamp) ||
+  if (!whole || m.check != check_of(m).value_or(~m.check) || m.magic != expected.magic || !(m.stamp == expected.stamp) ||
       m.scale_to_m != expected.scale_to_m || m.format_version != expected.format_version ||
       m.bullet_version != expected.bullet_version) {
     return std::nullopt;
@@ -103,7 +105,9 @@ std::optional<MeshCacheKey> read_memo(const std::filesystem::path& path, const M
 void write_memo(const std::filesystem::path& path, MemoFile m, const MeshCacheKey& key) {
   m.key_low = key.low;
   m.key_high = key.high;
-  m.check = check_of(m);
+  const std::optional<std::uint64_t> check = check_of(m);
+  if (!check) return;
+  m.check = *check;
   static std::atomic<unsigned> counter{0};
   std::filesystem::path temp = path;
   temp += fmt::format(".tmp.{}.{}", ::getpid(), counter.fetch_add(1));
