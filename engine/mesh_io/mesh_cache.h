@@ -5,10 +5,10 @@
 // Key: XXH3-128 of the mesh file's bytes, the scale, the cache format version and the
 // Bullet version, remembered per file while it is unchanged (mesh_key_memo.h). One file
 // per key, "<32 hex digits>.mhdbvh" in the cache folder, laid out as mesh_cache_entry.h
-// says. Files are written to a temp file and renamed into place; a file that fails any check (size, counts, checksums,
-// key, index ranges, BVH leaves) is ignored and rebuilt, never trusted. The folder is kept
-// under a size limit (mesh_cache_eviction.h): a hit touches its file, and each write
-// removes the least recently used entries beyond the limit.
+// says. Files are written to a temp file and renamed into place; a file that fails any
+// check (size, counts, checksums, key, index ranges, BVH leaves) is ignored and rebuilt,
+// never trusted. The folder is kept under a size limit (mesh_cache_eviction.h): a hit
+// touches its file, and each write removes the least recently used entries beyond it.
 
 #include "collision/mesh_bvh.h"
 #include "geometry/triangle_mesh.h"
@@ -81,7 +81,7 @@ struct CachedMesh {
 
 struct MeshCacheStats {
   std::size_t hits = 0, misses = 0, rejected = 0, writes = 0, write_failures = 0;
-  /// Loads whose key came from the file's memo (mesh_key_memo.h), the file left unread.
+  /// Loads whose key came from the file's memo (mesh_key_memo.h), the file not hashed.
   std::size_t keys_remembered = 0;
 };
 

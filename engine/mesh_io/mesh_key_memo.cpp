@@ -81,8 +81,8 @@ std::filesystem::path memo_path(const std::filesystem::path& dir, const MemoFile
   state.update(&m.stamp.dev, sizeof m.stamp.dev);
   state.update(&m.stamp.ino, sizeof m.stamp.ino);
   state.update(m.scale_to_m.data(), sizeof m.scale_to_m);
-  const MeshCacheKey name{state.digest().low64, state.digest().high64};
-  return dir / (name.hex() + std::string(kMeshKeyMemoExtension));
+  const ContentHash::Digest name = state.digest();
+  return dir / (MeshCacheKey{name.low64, name.high64}.hex() + std::string(kMeshKeyMemoExtension));
 }
 
 std::optional<MeshCacheKey> read_memo(const std::filesystem::path& path, const MemoFile& expected) {
