@@ -5,6 +5,7 @@
 #include "collision/segment_triangle.h"
 #include "geometry/primitive_mesh.h"
 #include "support/large_mesh.h"
+#include "sphere_cache_fixture.h"
 #include "test_mesh_files.h"
 
 #include <gtest/gtest.h>
@@ -19,7 +20,6 @@
 #include <functional>
 #include <cstdlib>
 #include <fstream>
-#include <iterator>
 #include <limits>
 #include <optional>
 #include <random>
@@ -29,17 +29,8 @@
 namespace mhd {
 namespace {
 
-using test::TempDir;
-
-std::vector<char> read_bytes(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-void write_bytes(const std::filesystem::path& file, const std::vector<char>& bytes) {
-  std::ofstream out(file, std::ios::binary | std::ios::trunc);
-  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-}
+using test::read_bytes;
+using test::write_bytes;
 
 std::vector<std::uint32_t> query(const MeshBvh& bvh, const Eigen::AlignedBox3d& box) {
   std::vector<std::uint32_t> hits;
@@ -75,17 +66,7 @@ std::vector<std::uint32_t> brute_force(const TriangleMesh& m, const Eigen::Align
   return out;
 }
 
-class MeshCacheTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    mesh_file_ = dir_ / "sphere.ply";
-    test::write_binary_ply(mesh_file_, make_sphere_mesh(0.04, 4));
-    cache_dir_ = dir_ / "cache";
-  }
-  TempDir dir_;
-  std::filesystem::path mesh_file_;
-  std::filesystem::path cache_dir_;
-};
+using MeshCacheTest = test::SphereCacheFixture;
 
 TEST_F(MeshCacheTest, SecondLoadHitsAndMatchesAFreshBuild) {
   MeshCache cache(cache_dir_);

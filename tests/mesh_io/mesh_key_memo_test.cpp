@@ -6,15 +6,12 @@
 #include "mesh_io/mesh_cache.h"
 #include "mesh_io/mesh_cache_eviction.h"
 
-#include "geometry/primitive_mesh.h"
-#include "test_mesh_files.h"
+#include "sphere_cache_fixture.h"
 
 #include <gtest/gtest.h>
 
 #include <chrono>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <string>
 #include <thread>
 #include <vector>
@@ -22,20 +19,11 @@
 namespace mhd::mesh_key_memo_test {
 
 namespace fs = std::filesystem;
-using test::TempDir;
+using test::read_bytes;
+using test::write_bytes;
 
 // A memo is written only for a file unchanged for kMeshKeySettle_s.
 void let_settle() { std::this_thread::sleep_for(std::chrono::duration<double>(kMeshKeySettle_s + 0.1)); }
-
-std::vector<char> read_bytes(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-void write_bytes(const fs::path& file, const std::vector<char>& bytes) {
-  std::ofstream out(file, std::ios::binary | std::ios::trunc);
-  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-}
 
 std::vector<fs::path> memos_in(const fs::path& dir) {
   std::vector<fs::path> memos;
@@ -45,13 +33,8 @@ std::vector<fs::path> memos_in(const fs::path& dir) {
   return memos;
 }
 
-class MeshKeyMemoTest : public ::testing::Test {
+class MeshKeyMemoTest : public test::SphereCacheFixture {
  protected:
-  void SetUp() override {
-    mesh_file_ = dir_ / "sphere.ply";
-    test::write_binary_ply(mesh_file_, make_sphere_mesh(0.04, 4));
-    cache_dir_ = dir_ / "cache";
-  }
   // Each load through a new MeshCache, as a new process makes one.
   CachedMesh load(std::size_t expect_remembered, const Eigen::Vector3d& scale = Eigen::Vector3d::Ones()) {
     MeshCache cache(cache_dir_);
@@ -66,9 +49,6 @@ class MeshKeyMemoTest : public ::testing::Test {
     }
     return std::move(*r);
   }
-  TempDir dir_;
-  fs::path mesh_file_;
-  fs::path cache_dir_;
 };
 
 TEST_F(MeshKeyMemoTest, ASettledMeshIsKeyedFromItsMemoPerScale) {
