@@ -75,12 +75,15 @@ MemoFile memo_for(const FileStamp& stamp, const Eigen::Vector3d& scale_to_m) {
   return m;
 }
 
-/// One memo per file and scale: named by what stays when the file is rewritten in place.
+/// One memo per file, scale and build: named by what stays when the file is rewritten in
+/// place, and by the versions that keep builds' entries apart.
 std::filesystem::path memo_path(const std::filesystem::path& dir, const MemoFile& m) {
   ContentHash state;
   state.update(&m.stamp.dev, sizeof m.stamp.dev);
   state.update(&m.stamp.ino, sizeof m.stamp.ino);
   state.update(m.scale_to_m.data(), sizeof m.scale_to_m);
+  state.update(&m.format_version, sizeof m.format_version);
+  state.update(&m.bullet_version, sizeof m.bullet_version);
   const ContentHash::Digest name = state.digest();
   return dir / (MeshCacheKey{name.low64, name.high64}.hex() + std::string(kMeshKeyMemoExtension));
 }
@@ -121,6 +124,17 @@ void write_memo(const std::filesystem::path& path, MemoFile m, const MeshCacheKe
 }
 
 }  // namespace
+
+std::optional<std::filesystem::path> mesh_key_memo_file(const std::filesystem::path& dir,
+                                                        const std::filesystem::path& file,
+                                                        const Eigen::Vector3d& scale_to_m,
+                                                        std::uint32_t format_version) {
+  const std::optional<FileStamp> stamp = stamp_of(file);
+  if (!stamp) return std::nullopt;
+  MemoFile memo = memo_for(*stamp, scale_to_m);
+  memo.format_version = format_version;
+  return memo_path(dir, memo);
+}
 
 std::optional<MeshCacheKey> mesh_key_remembered_or_hashed(const std::filesystem::path& dir,
                                                           const std::filesystem::path& file,

@@ -122,4 +122,25 @@ TEST_F(MeshKeyMemoTest, AMemoThatFailsItsCheckIsIgnoredAndWrittenAgain) {
   EXPECT_EQ(load(1).outcome, CacheOutcome::Hit);
 }
 
+TEST_F(MeshKeyMemoTest, BuildsOfAnotherCacheFormatKeepTheirOwnMemos) {
+  // Two builds sharing a cache folder (an installed mhd and a new one) keep their entries
+  // apart by format; they keep their memos apart too, or each would overwrite the other's
+  // and the mesh file be hashed on every other load.
+  let_settle();
+  EXPECT_EQ(load(0).outcome, CacheOutcome::Miss);
+  const std::optional<fs::path> ours = mesh_key_memo_file(cache_dir_, mesh_file_, Eigen::Vector3d::Ones());
+  const std::optional<fs::path> theirs =
+      mesh_key_memo_file(cache_dir_, mesh_file_, Eigen::Vector3d::Ones(), kMeshCacheFormatVersion + 1);
+  ASSERT_TRUE(ours && theirs);
+  ASSERT_EQ(memos_in(cache_dir_), std::vector<fs::path>{*ours});
+  EXPECT_NE(*ours, *theirs);
+  const std::vector<char> their_memo(104, 'x');  // this build cannot make theirs
+  write_bytes(*theirs, their_memo);
+  EXPECT_EQ(load(1).outcome, CacheOutcome::Hit);
+  EXPECT_EQ(read_bytes(*theirs), their_memo);
+  EXPECT_EQ(memos_in(cache_dir_).size(), 2u);
+  // A memo's name holds for the file where it is: none for a file that is not there.
+  EXPECT_FALSE(mesh_key_memo_file(cache_dir_, dir_ / "absent.ply", Eigen::Vector3d::Ones()).has_value());
+}
+
 }  // namespace mhd::mesh_key_memo_test
