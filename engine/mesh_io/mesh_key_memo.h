@@ -7,11 +7,11 @@
 // "<32 hex digits>.mhdkey": the key, with the file's size and its modification and change
 // times when it was hashed. The change time (ctime) is set by the kernel on every write
 // and cannot be set back by a user, so a file rewritten with its old size and modification
-// time is hashed again. A memo is only
-// written for a file that had not changed for kMeshKeySettle_s before its hashing began
-// and did not change during it: a write in the same clock tick as the one the memo saw,
-// which would keep ctime, cannot then happen. A memo that fails its check (magic, file,
-// scale, versions, checksum) is ignored, the file hashed, and the memo written again.
+// time is hashed again. A memo is only written for a file that had not changed for
+// kMeshKeySettle_s before its hashing began and did not change during it: a write in the
+// same clock tick as the one the memo saw, which would keep ctime, cannot then happen. A
+// memo that fails its check (magic, file, scale, versions, checksum) is ignored, the file
+// hashed, and the memo written again.
 
 #include "mesh_io/mesh_cache.h"
 
