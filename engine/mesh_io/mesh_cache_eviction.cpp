@@ -27,6 +27,28 @@ bool is_key_memo(const std::filesystem::path& p) {
          p.filename().string().find(std::string(kMeshKeyMemoExtension) + ".tmp.") != std::string::npos;
 }
 
+// Removes the remembered keys whose entry is not in `dir`: such a memo only spares hashing
+// a file that must then be read and built anyway. A memo this build cannot read (another
+// build's format, a writer's temp file) is left. Returns how many went.
+std::size_t remove_memos_without_entry(const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::vector<std::filesystem::path> orphans;
+  for (const auto& item : std::filesystem::directory_iterator(dir, ec)) {
+    if (item.path().extension() != kMeshKeyMemoExtension) continue;
+    const std::optional<MeshCacheKey> key = mesh_key_memo_key(item.path());
+    std::error_code exists_ec;
+    if (key && !std::filesystem::exists(dir / (key->hex() + std::string(kEntryExtension)), exists_ec) && !exists_ec) {
+      orphans.push_back(item.path());
+    }
+  }
+  std::size_t removed = 0;
+  for (const auto& memo : orphans) {
+    std::error_code remove_ec;
+    if (std::filesystem::remove(memo, remove_ec)) ++removed;
+  }
+  return removed;
+}
+
 std::optional<std::uint64_t> parse_limit_mb(std::string& problem) {
   const char* text = std::getenv("MHD_CACHE_MAX_MB");
   if (text == nullptr || *text == '\0') return std::nullopt;
@@ -88,6 +110,7 @@ MeshCacheRemoval evict_mesh_cache(const std::filesystem::path& dir, std::uint64_
       r.kept_bytes -= it->size_bytes;
     }
   }
+  r.keys_removed = remove_memos_without_entry(dir);
   return r;
 }
 

@@ -2,9 +2,9 @@
 // Keeps the on-disk mesh cache (mesh_cache.h) bounded: its entries are listed, the least
 // recently used (oldest modification time; a cache hit touches its file) are removed until
 // the folder fits a size limit, and the whole cache can be cleared. Only "*.mhdbvh" files,
-// the remembered keys ("*.mhdkey", mesh_key_memo.h; cleared, not evicted: one small file
-// per mesh file and scale) and their leftover temp files are ever removed, never anything
-// else in the folder.
+// the remembered keys ("*.mhdkey", mesh_key_memo.h: one small file per mesh file, scale and
+// build, evicted once its entry is gone) and their leftover temp files are ever removed,
+// never anything else in the folder.
 
 #include <cstdint>
 #include <filesystem>
@@ -36,10 +36,11 @@ struct MeshCacheRemoval {
   std::size_t removed = 0;
   std::uint64_t freed_bytes = 0;
   std::uint64_t kept_bytes = 0;  ///< what the entries left take
-  std::size_t keys_removed = 0;  ///< remembered keys (clear_mesh_cache() only), not in `removed`
+  std::size_t keys_removed = 0;  ///< remembered keys, not in `removed`
 };
 
-/// Removes least recently used entries until the entries take at most `limit_bytes`.
+/// Removes least recently used entries until the entries take at most `limit_bytes`, then
+/// the remembered keys that name an entry no longer there (those this build can read).
 /// `keep` (e.g. the entry just written) is never removed, even if it alone is over.
 MeshCacheRemoval evict_mesh_cache(const std::filesystem::path& dir, std::uint64_t limit_bytes,
                                   const std::optional<std::filesystem::path>& keep = std::nullopt);

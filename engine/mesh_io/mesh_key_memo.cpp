@@ -88,7 +88,8 @@ std::filesystem::path memo_path(const std::filesystem::path& dir, const MemoFile
   return dir / (MeshCacheKey{name.low64, name.high64}.hex() + std::string(kMeshKeyMemoExtension));
 }
 
-std::optional<MeshCacheKey> read_memo(const std::filesystem::path& path, const MemoFile& expected) {
+/// The memo at `path` if it is whole, of this memo format, and passes its checksum.
+std::optional<MemoFile> read_whole_memo(const std::filesystem::path& path) {
   const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
   if (fd < 0) return std::nullopt;
   MemoFile m;
@@ -96,12 +97,17 @@ std::optional<MeshCacheKey> read_memo(const std::filesystem::path& path, const M
   const bool whole = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size == sizeof m &&
                      ::pread(fd, &m, sizeof m, 0) == static_cast<ssize_t>(sizeof m);
   ::close(fd);
-  if (!whole || m.check != check_of(m).value_or(~m.check) || m.magic != expected.magic || !(m.stamp == expected.stamp) ||
-      m.scale_to_m != expected.scale_to_m || m.format_version != expected.format_version ||
-      m.bullet_version != expected.bullet_version) {
+  if (!whole || m.check != check_of(m).value_or(~m.check) || m.magic != kMagic) return std::nullopt;
+  return m;
+}
+
+std::optional<MeshCacheKey> read_memo(const std::filesystem::path& path, const MemoFile& expected) {
+  const std::optional<MemoFile> m = read_whole_memo(path);
+  if (!m || !(m->stamp == expected.stamp) || m->scale_to_m != expected.scale_to_m ||
+      m->format_version != expected.format_version || m->bullet_version != expected.bullet_version) {
     return std::nullopt;
   }
-  return MeshCacheKey{m.key_low, m.key_high};
+  return MeshCacheKey{m->key_low, m->key_high};
 }
 
 /// Best effort: a folder that cannot take it only means the file is hashed next time.
@@ -134,6 +140,12 @@ std::optional<std::filesystem::path> mesh_key_memo_file(const std::filesystem::p
   MemoFile memo = memo_for(*stamp, scale_to_m);
   memo.format_version = format_version;
   return memo_path(dir, memo);
+}
+
+std::optional<MeshCacheKey> mesh_key_memo_key(const std::filesystem::path& memo) {
+  const std::optional<MemoFile> m = read_whole_memo(memo);
+  if (!m) return std::nullopt;
+  return MeshCacheKey{m->key_low, m->key_high};
 }
 
 std::optional<MeshCacheKey> mesh_key_remembered_or_hashed(const std::filesystem::path& dir,

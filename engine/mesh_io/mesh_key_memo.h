@@ -44,4 +44,9 @@ inline constexpr std::string_view kMeshKeyMemoExtension = ".mhdkey";
     const std::filesystem::path& dir, const std::filesystem::path& file, const Eigen::Vector3d& scale_to_m,
     std::uint32_t format_version = kMeshCacheFormatVersion);
 
+/// The key the memo file `memo` holds, if it is a whole memo of this memo format that
+/// passes its checksum, for whatever file, scale and build it was written; else nullopt
+/// (cache eviction removes the memos whose entry it removed, and only those it can read).
+[[nodiscard]] std::optional<MeshCacheKey> mesh_key_memo_key(const std::filesystem::path& memo);
+
 }  // namespace mhd

@@ -143,4 +143,40 @@ TEST_F(MeshKeyMemoTest, BuildsOfAnotherCacheFormatKeepTheirOwnMemos) {
   EXPECT_FALSE(mesh_key_memo_file(cache_dir_, dir_ / "absent.ply", Eigen::Vector3d::Ones()).has_value());
 }
 
+TEST_F(MeshKeyMemoTest, AMemoGoesWithItsEvictedEntryAndStaysWithAKeptOne) {
+  // A memo whose entry is gone only spares hashing a file that must then be read and built
+  // anyway, so eviction takes the memos of the entries it removes, and keeps the others
+  // and any it cannot read (another build's).
+  let_settle();
+  const Eigen::Vector3d twice = Eigen::Vector3d::Constant(2.0);
+  const CachedMesh evicted = load(0);
+  const CachedMesh kept = load(0, twice);
+  ASSERT_EQ(evicted.outcome, CacheOutcome::Miss);
+  ASSERT_EQ(kept.outcome, CacheOutcome::Miss);
+  const std::optional<fs::path> evicted_memo = mesh_key_memo_file(cache_dir_, mesh_file_, Eigen::Vector3d::Ones());
+  const std::optional<fs::path> kept_memo = mesh_key_memo_file(cache_dir_, mesh_file_, twice);
+  ASSERT_TRUE(evicted_memo && kept_memo);
+  ASSERT_EQ(memos_in(cache_dir_).size(), 2u);
+  const fs::path foreign = cache_dir_ / ("0123456789abcdef0123456789abcdef" + std::string(kMeshKeyMemoExtension));
+  write_bytes(foreign, std::vector<char>(104, 'x'));
+  fs::last_write_time(evicted.cache_file, fs::file_time_type::clock::now() - std::chrono::seconds(100));
+
+  const MeshCacheRemoval r = evict_mesh_cache(cache_dir_, fs::file_size(kept.cache_file));
+  EXPECT_EQ(r.removed, 1u);
+  EXPECT_EQ(r.keys_removed, 1u);
+  EXPECT_FALSE(fs::exists(evicted.cache_file));
+  EXPECT_FALSE(fs::exists(*evicted_memo));
+  EXPECT_TRUE(fs::exists(kept.cache_file));
+  EXPECT_TRUE(fs::exists(*kept_memo));
+  EXPECT_TRUE(fs::exists(foreign));
+  // Nothing over the limit: every memo stays.
+  EXPECT_EQ(evict_mesh_cache(cache_dir_, fs::file_size(kept.cache_file)).keys_removed, 0u);
+  EXPECT_TRUE(fs::exists(*kept_memo));
+
+  EXPECT_EQ(load(1, twice).outcome, CacheOutcome::Hit);  // keyed from the memo kept
+  EXPECT_EQ(load(0).outcome, CacheOutcome::Miss);        // hashed, built and remembered again
+  EXPECT_TRUE(fs::exists(*evicted_memo));
+  EXPECT_EQ(load(1).outcome, CacheOutcome::Hit);
+}
+
 }  // namespace mhd::mesh_key_memo_test
