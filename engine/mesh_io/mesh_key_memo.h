@@ -46,7 +46,7 @@ inline constexpr std::string_view kMeshKeyMemoExtension = ".mhdkey";
 
 /// The key the memo file `memo` holds, if it is a whole memo of this memo format that
 /// passes its checksum, for whatever file, scale and build it was written; else nullopt
-/// (cache eviction removes the memos whose entry it removed, and only those it can read).
+/// (cache eviction removes the memos whose entry is no longer there, of those it can read).
 [[nodiscard]] std::optional<MeshCacheKey> mesh_key_memo_key(const std::filesystem::path& memo);
 
 }  // namespace mhd
