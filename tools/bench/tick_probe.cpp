@@ -6,9 +6,12 @@
 // at once, triangle tests, candidate-list gathers, planes). A tick slow the first time and
 // fast again waited on memory; one slow both times did work. --evict-every N streams
 // 64 MiB through the cache before every Nth tick that follows a contact tick (column
-// `evicted`), for ticks that start with nothing cached. Diagnostic only: not run by ctest, no targets.
+// `evicted`), for ticks that start with nothing cached. --look-ahead steps the look-ahead
+// after each tick, as the haptic server does (proxy/proxy_look_ahead.h), so that first_us
+// is what a tick costs there. Diagnostic only: not run by ctest, no targets.
 
 #include "proxy/god_object.h"
+#include "proxy/proxy_look_ahead.h"
 #include "recording/hip_path_csv.h"
 #include "scene_compiler/scene_compiler.h"
 #include "scene_xml/scene_reader.h"
@@ -34,6 +37,7 @@ int main(int argc, char** argv) {
   std::string out_csv;
   int repeats = 3;
   int evict_every = 0;
+  bool look_ahead = false;
   CLI::App app{"Per-tick cost of the proxy on a HIP path: first run against repeated run, with the tick's work",
                "mhd-proxy-tick-probe"};
   app.add_option("scene", scene_file, "Scene XML file")->required();
@@ -42,6 +46,7 @@ int main(int argc, char** argv) {
   app.add_option("--out", out_csv, "Per-tick CSV to write")->required();
   app.add_option("--repeats", repeats, "Runs of each tick from a copy of its state, for again_us (0: none)");
   app.add_option("--evict-every", evict_every, "Evict the caches before every Nth tick after a contact tick (0: never)");
+  app.add_flag("--look-ahead", look_ahead, "Look ahead after each tick, as the haptic server does");
   CLI11_PARSE(app, argc, argv);
 
   const auto read = mhd::read_scene_file(scene_file);
@@ -76,6 +81,7 @@ int main(int argc, char** argv) {
                   "after_contact,hip_step_mm,proxy_to_hip_mm,proxy_step_mm,evicted\n");
   mhd::ProxyState state;
   mhd::reset_proxy(state, hips_W.front());
+  mhd::ProxyLookAhead ahead;
   using Clock = std::chrono::steady_clock;
   bool after_contact = false;
   long contact_followers = 0;
@@ -105,6 +111,7 @@ int main(int argc, char** argv) {
                (hips_W[i] - p_W_hip_previous).norm() * 1e3, (o.proxy_W - hips_W[i]).norm() * 1e3,
                (o.proxy_W - before.proxy_W).norm() * 1e3, evicted ? 1 : 0);
     after_contact = o.in_contact;
+    if (look_ahead) (void)ahead.run(scene.world, scene.materials, scene.proxy, state, dt_s);
   }
   std::fclose(out);
   // The evicting reads must not be optimised away.
