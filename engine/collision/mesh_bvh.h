@@ -183,6 +183,11 @@ class MeshBvh {
     }
   }
 
+  /// The tree's nodes in Bullet's stackless order: what a walk reads.
+  [[nodiscard]] std::span<const btQuantizedBvhNode> tree_nodes() const {
+    return {nodes_, static_cast<std::size_t>(node_count_)};
+  }
+
   /// Calls f(triangle_index) for every triangle whose (conservative) BVH box
   /// overlaps box_O. Never misses a triangle that overlaps the box; may report extra.
   template <class F>
