@@ -7,7 +7,10 @@
 // --hip-path drives every scene along one recorded path (--write-path's) and times the
 // ticks only: no oracle is built, so meshes too large for it (100 M triangles) can be set
 // beside a smaller mesh of the same shape in one run; nothing is judged there.
+// --lock-meshes locks each scene's meshes in RAM first, as `mhd run --lock-meshes` does;
+// either way the page faults taken while stepping are counted (stderr).
 
+#include "mesh_io/mesh_memory_lock.h"
 #include "recording/hip_path_csv.h"
 #include "scene_compiler/scene_compiler.h"
 #include "scene_xml/scene_reader.h"
@@ -198,6 +201,10 @@ int main(int argc, char** argv) {
                      "Drive every scene along this HIP path (a --write-path file) and time the ticks only: no "
                      "exact oracle is built, and pop-throughs, ticks inside and follow failures are not judged");
   hip_path_option->excludes("--write-path")->excludes("--reset-each-stroke");
+  bool lock_meshes = false;
+  app.add_flag("--lock-meshes", lock_meshes,
+               "Lock each scene's meshes in RAM before stepping (mhd run --lock-meshes): no tick then waits on a "
+               "page fault of theirs");
   CLI11_PARSE(app, argc, argv);
   std::optional<mhd::verify::StrokeSet> given_path;
   if (!hip_path.empty()) {
@@ -230,9 +237,20 @@ int main(int argc, char** argv) {
     }
     const auto& scene = *compiled.value();
     const std::string name = shade_all ? file + " (shaded)" : file;
+    mhd::PageLock locked;
+    if (lock_meshes) {
+      locked = mhd::lock_pages(mhd::mesh_memory_blocks(scene.world));
+      if (locked.error) {
+        fmt::print(stderr, "{}: {}\n", name, *locked.error);
+        status = 1;
+        continue;
+      }
+    }
     if (given_path) {
       const auto r = mhd::verify::time_strokes(scene, *given_path, rate, !no_look_ahead);
       print_row(name, scene.triangle_count, r, no_look_ahead, false);
+      fmt::print(stderr, "{}: page faults while stepping: {} minor, {} major; meshes locked in RAM: {:.1f} MiB\n", name,
+                 r.minor_page_faults, r.major_page_faults, static_cast<double>(locked.pages.bytes()) / (1U << 20));
       continue;
     }
     const mhd::verify::SurfaceCrossingOracle oracle(scene.world);

@@ -13,9 +13,11 @@
 #include "command_scene.h"
 
 #include "command_exit.h"
+#include "load_progress.h"
 #include "output_path_check.h"
 #include "run_signals.h"
 #include "haptic_server/haptic_server.h"
+#include "mesh_io/mesh_memory_lock.h"
 #include "scene_compiler/scene_compiler.h"
 #include "scene_xml/scene_reader.h"
 
@@ -47,6 +49,7 @@ struct RunOptions {
   std::vector<std::string> plugin_path;
   bool no_cache = false;
   bool quiet = false;
+  bool lock_meshes = false;
 };
 
 /// " (plugin: stale 3, non_finite 1)" when the tracker plugin dropped samples itself.
@@ -112,6 +115,19 @@ int run(const RunOptions& opt) {
   const std::unique_ptr<mhd::CompiledScene> compiled = mhd::cli::compile_command_scene(*read, !opt.no_cache);
   if (!compiled) return 1;
   const mhd::CompiledScene& scene = *compiled;
+  // Before any plugin opens: a lock that fails ends the run with nothing started. Held
+  // until the run is over (it goes before the scene it locks).
+  mhd::LockedPages locked;
+  if (opt.lock_meshes) {
+    const mhd::MeshProgress progress = mhd::cli::stderr_load_progress();
+    mhd::PageLock lock = mhd::lock_pages(mhd::mesh_memory_blocks(scene.world),
+                                         [&](double f) { progress("locking the meshes in RAM", f); });
+    if (lock.error) {
+      fmt::print(stderr, "mhd run: error: --lock-meshes: {}\n", *lock.error);
+      return 1;
+    }
+    locked = std::move(lock.pages);
+  }
 
   mhd::ServerOptions options;
   options.duration_s = opt.duration_s;
@@ -136,6 +152,9 @@ int run(const RunOptions& opt) {
                opt.scene, scene.world.object_count(), scene.triangle_count, load_s,
                build->server->settings().haptic_rate_hz,
                opt.duration_s > 0.0 ? fmt::format(" for {} s", opt.duration_s) : std::string(" until Ctrl-C"));
+    if (opt.lock_meshes) {
+      fmt::print("meshes locked in RAM: {:.1f} MiB\n", static_cast<double>(locked.bytes()) / (1U << 20));
+    }
     std::fflush(stdout);
   } catch (const std::exception&) {
     // stdout closed (`mhd run ... | head -1`): the run goes on.
@@ -269,5 +288,8 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--plugin-path", opt->plugin_path, "Look for plugins in this folder first (repeatable)");
   cmd->add_flag("--no-cache", opt->no_cache, "Build every BVH instead of using the on-disk cache");
   cmd->add_flag("-q,--quiet", opt->quiet, "No status line");
+  cmd->add_flag("--lock-meshes", opt->lock_meshes,
+                "Lock the meshes' arrays and trees in RAM before the run starts, so that no haptic tick waits on a "
+                "page fault (needs RLIMIT_MEMLOCK raised or CAP_IPC_LOCK)");
   cmd->callback([opt] { mhd::cli::exit_with(run(*opt)); });
 }
