@@ -388,6 +388,8 @@ void HapticServer::Impl::fill_report(ServerReport& report, double elapsed_s) {
   report.link_dropped = link_dropped.load();
   report.zero_force_sent = zero_force_sent;
   report.haptic_scheduling = scheduling;
+  report.haptic_minor_page_faults = haptic_page_faults.minor;
+  report.haptic_major_page_faults = haptic_page_faults.major;
   report.base_stop_sent = base_stop_sent.load();
   {
     const std::lock_guard lock(error_mutex);

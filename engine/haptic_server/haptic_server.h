@@ -119,6 +119,10 @@ struct ServerReport {
   bool zero_force_sent = false;  ///< the last device command was zero torque
   bool base_stop_sent = false;   ///< the last base command was zero (or there is no base)
   std::string haptic_scheduling;  ///< e.g. "SCHED_FIFO 80", or why real-time scheduling was refused
+  /// Page faults the haptic thread took in its loop, plugin calls included: minor (the
+  /// page was in memory) and major (read from the disk). Each is a wait inside a tick.
+  long haptic_minor_page_faults = 0;
+  long haptic_major_page_faults = 0;
   std::optional<std::string> error;  ///< why the run ended early
 };
 

@@ -7,6 +7,7 @@
 #include "haptic_server/safe_stop.h"
 #include "realtime/periodic_timer.h"
 #include "realtime/thread_name.h"
+#include "realtime/thread_page_faults.h"
 #include "realtime/thread_priority.h"
 
 #include <algorithm>
@@ -32,6 +33,7 @@ void HapticServer::Impl::haptic_thread() {
   realtime::PeriodicTimer timer(1.0 / settings.haptic_rate_hz);
   Eigen::Vector3d p_D_tool_m = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
   double last_t_s = host.now_s();
+  const realtime::PageFaults faults_before_loop = realtime::current_thread_page_faults();
 
   while (!stop.load(std::memory_order_relaxed)) {
     if (tick_on_tracker_sample) {
@@ -61,6 +63,7 @@ void HapticServer::Impl::haptic_thread() {
     if (host.now_s() - t_s < kLookAheadWithinPeriod / settings.haptic_rate_hz) (void)tick.look_ahead();
   }
 
+  haptic_page_faults = realtime::current_thread_page_faults() - faults_before_loop;
   // Safe state: zero torque, whatever ended the loop.
   zero_force_sent = send_zero_torque(device->instance, host);
   safety_counters = tick.safety().counters();

@@ -17,6 +17,7 @@
 #include "realtime/periodic_timer.h"
 #include "realtime/seqlock.h"
 #include "realtime/spsc_ring.h"
+#include "realtime/thread_page_faults.h"
 #include "realtime/triple_buffer.h"
 #include "realtime/wake_event.h"
 #include "recording/csv_recording.h"
@@ -138,6 +139,7 @@ struct HapticServer::Impl {
   bool zero_force_sent = false;
   std::atomic<bool> base_stop_sent{false};  ///< by the io thread, or run()'s when the io thread is stuck
   std::string scheduling;  ///< the haptic thread's, as obtained
+  realtime::PageFaults haptic_page_faults;  ///< taken by the haptic thread's loop
   std::uint64_t recording_rows_written = 0;
 
   Impl(const CompiledScene& s, ServerSettings st, ServerOptions o, Rig r)

@@ -227,7 +227,8 @@ void print_summary(const RunOptions& opt, const mhd::CompiledScene& scene, const
              s.haptic_rate_hz, s.overruns, r.missed_deadlines);
   fmt::print("  overrun: a tick that ended after the next one was due, which then started late; deadline missed: "
              "a whole period skipped after an overrun, the loop keeping its time grid\n");
-  fmt::print("haptic thread: {}\n", r.haptic_scheduling);
+  fmt::print("haptic thread: {}; page faults while ticking: {} minor, {} major\n", r.haptic_scheduling,
+             r.haptic_minor_page_faults, r.haptic_major_page_faults);
   fmt::print("tick (device read to device write): median {:.1f} us, p99 {:.1f} us, p99.9 {:.1f} us, max {:.1f} us\n",
              r.tick_median_us, r.tick_p99_us, r.tick_p999_us, r.tick_max_us);
   const bool desktop = s.rig_kind == mhd::RigKind::Desktop;
