@@ -164,10 +164,10 @@ PageLock lock_pages(std::span<const MemoryBlock> blocks, const std::function<voi
                                size_text(wanted), size_text(to_read), size_text(available));
     return result;
   }
-  std::uint64_t locked = 0;
   for (const LockedPages::Span& s : merged) {
     if (calls.lock(reinterpret_cast<const void*>(s.begin), s.bytes) != 0) {  // NOLINT: an address as a pointer
       const int error = errno;
+      const std::uint64_t locked = result.pages.bytes();  // before the unlock counts it back to zero
       result.pages.unlock_all();
       result.error = fmt::format("cannot lock {} of mesh memory in RAM: mlock failed after {}: {}; {}",
                                  size_text(wanted), size_text(locked), std::strerror(error), how_to_raise());
@@ -175,7 +175,6 @@ PageLock lock_pages(std::span<const MemoryBlock> blocks, const std::function<voi
     }
     result.pages.spans_.push_back(s);
     result.pages.bytes_ += s.bytes;
-    locked += s.bytes;
   }
   // Every page of every block read once, inside the block (the rest of a rounded page
   // may be another object's), a chunk at a time for the progress.

@@ -149,6 +149,9 @@ TEST(MeshMemoryLockTest, AFailedLockUnlocksWhatItLockedAndSaysHowToRaiseTheLimit
   EXPECT_EQ(locked_bytes_now(), before);
   const std::string wanted = "cannot lock " + std::to_string(2 * page / 1024) + " KiB";
   EXPECT_NE(locked.error->find(wanted), std::string::npos) << *locked.error;
+  // How much was locked when it failed: the first page, though it is unlocked since.
+  const std::string after = "failed after " + std::to_string(page / 1024) + " KiB";
+  EXPECT_NE(locked.error->find(after), std::string::npos) << *locked.error;
   EXPECT_NE(locked.error->find("RLIMIT_MEMLOCK"), std::string::npos) << *locked.error;
   EXPECT_NE(locked.error->find("CAP_IPC_LOCK"), std::string::npos) << *locked.error;
   EXPECT_NE(locked.error->find(std::strerror(ENOMEM)), std::string::npos) << *locked.error;
