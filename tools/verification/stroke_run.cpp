@@ -1,13 +1,12 @@
 #include "verification/stroke_run.h"
 
 #include "proxy/proxy_look_ahead.h"
+#include "realtime/thread_page_faults.h"
 
 #include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
-
-#include <sys/resource.h>
 
 namespace mhd::verify {
 namespace {
@@ -56,8 +55,8 @@ StrokeRunReport drive_strokes(const CompiledScene& scene, const SurfaceCrossingO
   report.force_sum_by_object_N.assign(objects, 0.0);
   const FollowTolerance follow = follow_tolerance(scene.materials);
   TickRecord record;
-  rusage usage_before{};
-  ::getrusage(RUSAGE_SELF, &usage_before);
+  // This thread's alone: the ticks run here, and the process may have others (a loader's).
+  const realtime::PageFaults faults_before = realtime::current_thread_page_faults();
   for (const Stroke& stroke : strokes.strokes) {
     if (stroke.p_W_hip.empty()) continue;
     ++report.strokes;
@@ -109,10 +108,9 @@ StrokeRunReport drive_strokes(const CompiledScene& scene, const SurfaceCrossingO
     report.max_free_gap_m = std::max(report.max_free_gap_m, follow_check.max_free_gap_m);
   }
   if (oracle == nullptr) {
-    rusage usage_after{};
-    ::getrusage(RUSAGE_SELF, &usage_after);
-    report.minor_page_faults = usage_after.ru_minflt - usage_before.ru_minflt;
-    report.major_page_faults = usage_after.ru_majflt - usage_before.ru_majflt;
+    const realtime::PageFaults faults = realtime::current_thread_page_faults() - faults_before;
+    report.minor_page_faults = faults.minor;
+    report.major_page_faults = faults.major;
   }
   report.mean_contact_force_N =
       report.contact_ticks > 0 ? contact_force_sum / static_cast<double>(report.contact_ticks) : 0.0;

@@ -49,9 +49,9 @@ struct StrokeRunReport {
   /// tolerance kFollowTolerance_m at the scene's stiffest material).
   std::size_t follow_failures = 0;
   double max_free_gap_m = 0.0;  ///< largest |proxy - HIP| with the segment between them free
-  /// Page faults of the process while the strokes were stepped (time_strokes only: with an
-  /// oracle, its checks between strokes would count too). Minor: the page was in memory
-  /// (the page cache, a page let go); major: it came from the disk.
+  /// Page faults of the thread that stepped the strokes, while it stepped them (time_strokes
+  /// only: with an oracle, its checks between strokes would count too). Minor: the page was
+  /// in memory (the page cache, a page let go); major: it came from the disk.
   long minor_page_faults = 0;
   long major_page_faults = 0;
 };
