@@ -7,8 +7,9 @@
 // --hip-path drives every scene along one recorded path (--write-path's) and times the
 // ticks only: no oracle is built, so meshes too large for it (100 M triangles) can be set
 // beside a smaller mesh of the same shape in one run; nothing is judged there.
-// --lock-meshes locks each scene's meshes in RAM first, as `mhd run --lock-meshes` does;
-// either way the page faults taken while stepping are counted (stderr).
+// --lock-meshes locks each scene's meshes in RAM first, as `mhd run --lock-meshes` does.
+// With --hip-path, locked or not, the page faults the stepping thread took are printed
+// on stderr.
 
 #include "mesh_io/mesh_memory_lock.h"
 #include "recording/hip_path_csv.h"
