@@ -133,11 +133,16 @@ bool MeshBvh::make_interface(MeshArray<Eigen::Vector3d> given_face_normals_O, bo
   return true;
 }
 
-MeshBvh::MeshBvh(std::shared_ptr<const TriangleMesh> mesh, MeshOrder order) : mesh_(std::move(mesh)) {
+MeshBvh::MeshBvh(std::shared_ptr<const TriangleMesh> mesh, MeshOrder order,
+                 const std::function<void(double)>& progress)
+    : mesh_(std::move(mesh)) {
   (void)make_interface();  // computes the normals: always true
   if (mesh_->triangles.size() >= kSplitBuildMinTriangles) {
+    // The last tenth is left for what follows the pieces (the leaf order, the adoption).
+    BuildProgress pieces;
+    if (progress) pieces = [&progress](double placed) { progress(0.9 * placed); };
     built_tree_ = build_tree_in_pieces(*mesh_, bvh_scale_, to_bt(bounds_.min() * bvh_scale_),
-                                       to_bt(bounds_.max() * bvh_scale_));
+                                       to_bt(bounds_.max() * bvh_scale_), pieces);
   }
   if (built_tree_) {
     shape_ = std::make_unique<btBvhTriangleMeshShape>(interface_.get(), /*quantized=*/true, /*buildBvh=*/false);

@@ -44,7 +44,11 @@ class MeshBvh {
   enum class MeshOrder { AsGiven, Leaves };
 
   /// Builds the BVH. Precondition: mesh has at least one triangle, all indices valid.
-  explicit MeshBvh(std::shared_ptr<const TriangleMesh> mesh, MeshOrder order = MeshOrder::AsGiven);
+  /// `progress`, when set, is told on the calling thread how far a tree built in pieces
+  /// (kSplitBuildMinTriangles or more) is, rising, below 1: placing the pieces is most of
+  /// the build, and up to nine tenths of what it tells.
+  explicit MeshBvh(std::shared_ptr<const TriangleMesh> mesh, MeshOrder order = MeshOrder::AsGiven,
+                   const std::function<void(double)>& progress = {});
 
   /// Adopts a BVH produced by serialize_bvh() for the same mesh (the BVH cache).
   /// Returns nullptr if the buffer is not a valid serialized BVH for this mesh, or the

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <future>
 #include <stdexcept>
@@ -101,15 +102,18 @@ struct Worker {
 
 class PieceBuilder {
  public:
-  PieceBuilder(const TriangleMesh& mesh, double scale, const btVector3& aabb_min, const btVector3& aabb_max)
+  PieceBuilder(const TriangleMesh& mesh, double scale, const btVector3& aabb_min, const btVector3& aabb_max,
+               const BuildProgress& progress)
       : mesh_(mesh), scale_(scale), aabb_min_(aabb_min), aabb_max_(aabb_max),
         tree_(std::make_unique<AssembledTree>(aabb_min, aabb_max, subtree_nodes(mesh.triangles.size()))),
-        nodes_(tree_->nodes()) {}
+        nodes_(tree_->nodes()), progress_(progress) {}
 
   std::unique_ptr<btOptimizedBvh> build() {
     const CentreBounds bounds = make_items();
     std::array<Worker, 2> workers;
+    caller_ = &workers[0];
     build_range(0, mesh_.triangles.size(), 0, bounds, workers[0], &workers[1]);
+    if (progress_) progress_(1.0);
     items_.reset();
     for (const Worker& w : workers) tree_->add_headers(w.headers);
     return std::move(tree_);
@@ -246,6 +250,18 @@ class PieceBuilder {
                              " nodes over " + std::to_string(items.size()) + " triangles");
     }
     piece.place(nodes_, at, items, worker.headers);
+    const std::size_t placed = placed_.fetch_add(items.size(), std::memory_order_relaxed) + items.size();
+    if (progress_ && &worker == caller_) tell(placed);
+  }
+
+  /// Tells the share placed when it has risen by a hundredth (short of the whole, which
+  /// build() tells once the other thread is done too).
+  void tell(std::size_t placed) {
+    const std::size_t n = mesh_.triangles.size();
+    const std::size_t hundredths = placed * 100 / n;
+    if (hundredths <= told_hundredths_ || placed >= n) return;
+    told_hundredths_ = hundredths;
+    progress_(static_cast<double>(placed) / static_cast<double>(n));
   }
 
   const TriangleMesh& mesh_;
@@ -255,6 +271,10 @@ class PieceBuilder {
   btQuantizedBvhNode* nodes_;
   std::array<double, 3> step_{};  // the length of one quantization step along each axis
   std::unique_ptr<Item[]> items_;  // one per triangle, reordered by the splits
+  const BuildProgress& progress_;
+  const Worker* caller_ = nullptr;  // the calling thread's, the only one that tells progress
+  std::atomic<std::size_t> placed_{0};  // triangles placed, by either thread
+  std::size_t told_hundredths_ = 0;
 };
 
 }  // namespace
@@ -276,11 +296,12 @@ void add_mesh_parts(btTriangleIndexVertexArray& parts, std::span<const TriangleI
 }
 
 std::unique_ptr<btOptimizedBvh> build_tree_in_pieces(const TriangleMesh& mesh, double scale,
-                                                     const btVector3& aabb_min, const btVector3& aabb_max) {
+                                                     const btVector3& aabb_min, const btVector3& aabb_max,
+                                                     const BuildProgress& progress) {
   if (!MeshBvh::holds(mesh.triangles.size())) {
     throw std::length_error("build_tree_in_pieces: " + std::to_string(mesh.triangles.size()) + " triangles");
   }
-  return PieceBuilder(mesh, scale, aabb_min, aabb_max).build();
+  return PieceBuilder(mesh, scale, aabb_min, aabb_max, progress).build();
 }
 
 }  // namespace mhd

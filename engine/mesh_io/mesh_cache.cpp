@@ -19,6 +19,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <functional>
 #include <array>
 #include <atomic>
 #include <bit>
@@ -62,6 +63,9 @@ bool read_all(int fd, std::byte* out, std::size_t size) {
   }
   return true;
 }
+
+// What a cache entry is written in, between reports of its progress.
+constexpr std::size_t kWriteChunkBytes = std::size_t{64} << 20;
 
 bool write_all(int fd, const std::byte* data, std::size_t size) {
   while (size > 0) {
@@ -420,17 +424,20 @@ Result<CachedMesh, MeshLoadError> MeshCache::load(const std::filesystem::path& f
   // order would scatter a tick's triangles, and the cached tree's check, over gigabytes.
   const auto order = mesh->triangle_count() >= kSplitBuildMinTriangles ? MeshBvh::MeshOrder::Leaves
                                                                        : MeshBvh::MeshOrder::AsGiven;
-  auto bvh = std::make_shared<const MeshBvh>(std::move(mesh), order);
+  std::function<void(double)> build_progress;
+  if (big && progress) build_progress = [&](double fraction) { progress(what, fraction); };
+  auto bvh = std::make_shared<const MeshBvh>(std::move(mesh), order, build_progress);
   if (big && progress) progress(what, 1.0);
   result.bvh = bvh;
 
   // 3. Store it.
-  if (key && writable_) store(file, result.cache_file, *key, *bvh, result);
+  if (key && writable_) store(file, result.cache_file, *key, *bvh, big ? progress : MeshProgress{}, result);
   return result;
 }
 
 void MeshCache::store(const std::filesystem::path& mesh_file, const std::filesystem::path& target,
-                      const MeshCacheKey& key, const MeshBvh& bvh, CachedMesh& result) {
+                      const MeshCacheKey& key, const MeshBvh& bvh, const MeshProgress& progress,
+                      CachedMesh& result) {
   const TriangleMesh& mesh = bvh.mesh();
   MeshBvh::SerializedTree serialized;
   try {
@@ -473,6 +480,9 @@ void MeshCache::store(const std::filesystem::path& mesh_file, const std::filesys
     ++stats_.write_failures;
     return;
   }
+  // The step starts with the checksum, which reads every byte once before the write.
+  const std::string what = fmt::format("writing cached BVH of {}", short_name(mesh_file));
+  if (progress) progress(what, 0.0);
   for (const auto& p : parts) state.update(p);
   const ContentHash::Digest payload = state.digest();
 
@@ -508,7 +518,18 @@ void MeshCache::store(const std::filesystem::path& mesh_file, const std::filesys
       why = std::strerror(errno);
     } else {
       ok = write_all(fd.fd, reinterpret_cast<const std::byte*>(&h), sizeof h);
-      for (const auto& p : parts) ok = ok && write_all(fd.fd, p.data(), p.size());
+      // In chunks, so that the step's progress moves while gigabytes are written.
+      std::size_t written = sizeof h;
+      for (const auto& p : parts) {
+        for (std::size_t from = 0; ok && from < p.size(); from += kWriteChunkBytes) {
+          const std::size_t n = std::min(kWriteChunkBytes, p.size() - from);
+          ok = write_all(fd.fd, p.data() + from, n);
+          written += n;
+          if (progress && written < layout->end) {  // the end is reported once, below
+            progress(what, static_cast<double>(written) / static_cast<double>(layout->end));
+          }
+        }
+      }
       if (!ok) why = std::strerror(errno);
       if (::close(fd.fd) != 0 && ok) {
         ok = false;
@@ -517,6 +538,7 @@ void MeshCache::store(const std::filesystem::path& mesh_file, const std::filesys
       fd.fd = -1;
     }
   }
+  if (progress) progress(what, 1.0);  // the step ends, written or not (a failure warns)
   std::error_code ec;
   if (ok) {
     std::filesystem::rename(temp, target, ec);

@@ -96,7 +96,8 @@ class MeshCache {
   /// Loads `file` at `scale_to_m` (see load_mesh_file()) with its BVH, from the cache
   /// if a valid entry exists, else from the file, then stores it.
   /// `progress` is called for meshes of kProgressMinTriangles or more (for the read
-  /// step, estimated from the file size). `budget` as for load_mesh_file(), and applied
+  /// step, estimated from the file size): reading the file, building the tree and writing
+  /// the entry, or reading the entry. `budget` as for load_mesh_file(), and applied
   /// to a cache hit too. The error is the loader's, or the budget's refusal of a hit.
   [[nodiscard]] Result<CachedMesh, MeshLoadError> load(const std::filesystem::path& file, const Eigen::Vector3d& scale_to_m,
                                 const MeshProgress& progress = {},
@@ -111,8 +112,9 @@ class MeshCache {
   [[nodiscard]] std::filesystem::path file_for(const MeshCacheKey& key) const;
 
  private:
+  // Writes the entry; `progress`, when set, follows the bytes written.
   void store(const std::filesystem::path& mesh_file, const std::filesystem::path& target, const MeshCacheKey& key,
-             const MeshBvh& bvh, CachedMesh& result);
+             const MeshBvh& bvh, const MeshProgress& progress, CachedMesh& result);
 
   std::optional<std::filesystem::path> dir_;
   bool writable_ = false;

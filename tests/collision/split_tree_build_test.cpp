@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <random>
+#include <thread>
 #include <vector>
 
 namespace mhd {
@@ -131,6 +132,32 @@ TEST(SplitTreeBuild, ASmallMeshBuiltInPiecesPassesTheTreeCheck) {
   const auto adopted = built_in_pieces_and_adopted(mesh);
   ASSERT_NE(adopted, nullptr) << "the tree built in pieces fails the cached tree's check";
   expect_every_overlap_reported(*adopted, random_boxes(5, adopted->bounds(), 0.02));
+}
+
+TEST(SplitTreeBuild, ProgressRisesOnTheCallingThreadToTheWhole) {
+  // A long build says how far it is: the share of triangles placed in pieces, the other
+  // thread's counted too, told on the calling thread only (a progress printer need not be
+  // thread-safe), rising, at most once a hundredth, and ending at the whole.
+  const auto mesh = shuffled_grid(40, 5);
+  const MeshBvh whole(mesh);
+  const double scale = whole.bvh_scale();
+  const Eigen::Vector3d lo = whole.bounds().min() * scale, hi = whole.bounds().max() * scale;
+  std::vector<double> told;
+  bool other_thread = false;
+  const std::thread::id caller = std::this_thread::get_id();
+  const auto tree = build_tree_in_pieces(*mesh, scale, btVector3(lo.x(), lo.y(), lo.z()),
+                                         btVector3(hi.x(), hi.y(), hi.z()), [&](double fraction) {
+                                           other_thread = other_thread || std::this_thread::get_id() != caller;
+                                           told.push_back(fraction);
+                                         });
+  ASSERT_NE(tree, nullptr);
+  EXPECT_FALSE(other_thread);
+  ASSERT_GE(told.size(), 2u);
+  EXPECT_LE(told.size(), 101u);
+  EXPECT_GT(told.front(), 0.0);
+  EXPECT_EQ(told.back(), 1.0);
+  EXPECT_TRUE(std::is_sorted(told.begin(), told.end()));
+  EXPECT_EQ(std::adjacent_find(told.begin(), told.end()), told.end()) << "a fraction told twice";
 }
 
 TEST(SplitTreeBuild, EveryTriangleCountAroundAPiecesSizeMakesAWholeTree) {

@@ -383,9 +383,24 @@ TEST_F(MeshCacheTest, LargeMeshesReportProgress) {
   EXPECT_TRUE(saw("building BVH of big.ply", 0.0));
   EXPECT_TRUE(saw("building BVH of big.ply", 1.0));
   EXPECT_TRUE(saw("reading big.ply", 1.0));
+  // Writing the entry is a step of its own (seconds at 100 M triangles), after the build's
+  // end, its fractions rising to the end.
+  ASSERT_TRUE(cold->written);
+  EXPECT_TRUE(saw("writing cached BVH of big.ply", 0.0));
+  EXPECT_TRUE(saw("writing cached BVH of big.ply", 1.0));
+  const auto built = std::find_if(calls.begin(), calls.end(), [](const auto& c) {
+    return c.first.starts_with("building BVH of big.ply") && c.second == 1.0;
+  });
+  const auto writing = std::find_if(calls.begin(), calls.end(),
+                                    [](const auto& c) { return c.first.starts_with("writing cached BVH of big.ply"); });
+  EXPECT_LT(built, writing);
+  double last = 0.0;
   for (const auto& c : calls) {
     EXPECT_GE(c.second, 0.0);
     EXPECT_LE(c.second, 1.0);
+    if (!c.first.starts_with("writing cached BVH")) continue;
+    EXPECT_GE(c.second, last);
+    last = c.second;
   }
 
   calls.clear();
@@ -393,6 +408,7 @@ TEST_F(MeshCacheTest, LargeMeshesReportProgress) {
   EXPECT_EQ(warm->outcome, CacheOutcome::Hit);
   EXPECT_TRUE(saw("reading cached BVH of big.ply", 0.0));
   EXPECT_TRUE(saw("reading cached BVH of big.ply", 1.0));
+  EXPECT_FALSE(saw("writing cached BVH of big.ply", 0.0));  // a hit writes nothing
 
   // A small mesh stays quiet.
   calls.clear();
@@ -409,11 +425,22 @@ TEST_F(MeshCacheTest, AMeshPastOneBulletPartRoundTripsInLeafOrderAndIsTouchedWhe
   test::write_binary_ply(file, *test::mesh_past_one_bullet_part());
   MeshCache cache(cache_dir_);
   cache.set_limit_bytes(std::uint64_t{1} << 30);
-  const Result<CachedMesh, MeshLoadError> cold = cache.load(file, Eigen::Vector3d::Ones());
+  // Its tree is built in pieces, whose progress the build step tells as it goes.
+  std::vector<double> building;
+  const auto record = [&](std::string_view what, double f) {
+    if (what.starts_with("building BVH of past_one_part.ply")) building.push_back(f);
+  };
+  const Result<CachedMesh, MeshLoadError> cold = cache.load(file, Eigen::Vector3d::Ones(), record);
   ASSERT_TRUE(cold.ok()) << cold.error_text();
   ASSERT_GT(cold->mesh().triangle_count(), std::size_t{1} << 21);
   EXPECT_EQ(cold->outcome, CacheOutcome::Miss);
   ASSERT_TRUE(cold->written);
+  ASSERT_GE(building.size(), 3u);
+  EXPECT_EQ(building.front(), 0.0);
+  EXPECT_EQ(building.back(), 1.0);
+  EXPECT_TRUE(std::is_sorted(building.begin(), building.end()));
+  EXPECT_EQ(std::count(building.begin(), building.end(), 1.0), 1) << "the end told once";
+  EXPECT_TRUE(std::any_of(building.begin(), building.end(), [](double f) { return f > 0.5 && f < 1.0; }));
   const Result<CachedMesh, MeshLoadError> warm = cache.load(file, Eigen::Vector3d::Ones());
   ASSERT_TRUE(warm.ok()) << warm.error_text();
   ASSERT_EQ(warm->outcome, CacheOutcome::Hit) << warm->rejected_reason;
