@@ -134,7 +134,7 @@ bool MeshBvh::make_interface(MeshArray<Eigen::Vector3d> given_face_normals_O, bo
 }
 
 MeshBvh::MeshBvh(std::shared_ptr<const TriangleMesh> mesh, MeshOrder order,
-                 const std::function<void(double)>& progress)
+                 const BuildProgress& progress)
     : mesh_(std::move(mesh)) {
   (void)make_interface();  // computes the normals: always true
   if (mesh_->triangles.size() >= kSplitBuildMinTriangles) {

@@ -21,6 +21,9 @@
 
 namespace mhd {
 
+/// How far a tree's build is, as a share in (0, 1], told as it rises.
+using BuildProgress = std::function<void(double)>;
+
 class MeshBvh {
  public:
   /// Most triangles one tree holds. Bullet keeps its node array (2 per triangle) in an
@@ -48,7 +51,7 @@ class MeshBvh {
   /// (kSplitBuildMinTriangles or more) is, rising, below 1: placing the pieces is most of
   /// the build, and up to nine tenths of what it tells.
   explicit MeshBvh(std::shared_ptr<const TriangleMesh> mesh, MeshOrder order = MeshOrder::AsGiven,
-                   const std::function<void(double)>& progress = {});
+                   const BuildProgress& progress = {});
 
   /// Adopts a BVH produced by serialize_bvh() for the same mesh (the BVH cache).
   /// Returns nullptr if the buffer is not a valid serialized BVH for this mesh, or the

@@ -11,12 +11,12 @@
 // serializes, adopts and passes the cached tree's check alike. Never used on the haptic
 // thread.
 
+#include "collision/mesh_bvh.h"
 #include "geometry/triangle_mesh.h"
 
 #include <btBulletCollisionCommon.h>
 
 #include <cstddef>
-#include <functional>
 #include <memory>
 #include <span>
 
@@ -35,14 +35,11 @@ inline constexpr std::size_t kPieceTriangles = 256;
 void add_mesh_parts(btTriangleIndexVertexArray& parts, std::span<const TriangleIndices> triangles,
                     std::span<const Eigen::Vector3d> vertices, std::size_t part_triangles);
 
-/// How far a build is: the share of the triangles placed in pieces, (0, 1].
-using BuildProgress = std::function<void(double)>;
-
 /// The whole mesh's tree, built in pieces; `scale` and the box [aabb_min, aabb_max] are
 /// the interface's scaling and premade box (what Bullet's own build of the whole mesh
 /// would quantize by). The mesh has 1 to MeshBvh::kMaxTriangles triangles. `progress`,
-/// when set, is called on the calling thread only, each time the share placed (by both
-/// threads) has risen by a hundredth or more, and last with 1.
+/// when set, is told the share of the triangles placed in pieces (by both threads) on the
+/// calling thread only, each time it has risen by a hundredth or more, and last 1.
 [[nodiscard]] std::unique_ptr<btOptimizedBvh> build_tree_in_pieces(const TriangleMesh& mesh, double scale,
                                                                    const btVector3& aabb_min,
                                                                    const btVector3& aabb_max,

@@ -19,7 +19,6 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
-#include <functional>
 #include <array>
 #include <atomic>
 #include <bit>
@@ -424,7 +423,7 @@ Result<CachedMesh, MeshLoadError> MeshCache::load(const std::filesystem::path& f
   // order would scatter a tick's triangles, and the cached tree's check, over gigabytes.
   const auto order = mesh->triangle_count() >= kSplitBuildMinTriangles ? MeshBvh::MeshOrder::Leaves
                                                                        : MeshBvh::MeshOrder::AsGiven;
-  std::function<void(double)> build_progress;
+  BuildProgress build_progress;
   if (big && progress) build_progress = [&](double fraction) { progress(what, fraction); };
   auto bvh = std::make_shared<const MeshBvh>(std::move(mesh), order, build_progress);
   if (big && progress) progress(what, 1.0);
