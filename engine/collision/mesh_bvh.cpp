@@ -3,6 +3,7 @@
 #include "collision/huge_pages.h"
 #include "collision/segment_triangle.h"
 #include "collision/split_tree_build.h"
+#include "collision/tree_grid.h"
 #include "collision/two_halves.h"
 
 #include <algorithm>
@@ -125,10 +126,13 @@ bool MeshBvh::make_interface(MeshArray<Eigen::Vector3d> given_face_normals_O, bo
   });
   if (!mesh_holds) return false;
   bounds_ = half_bounds[0].extend(half_bounds[1]);
-  const double extent = bounds_.sizes().maxCoeff();
+  grid_ = tree_grid_box(*mesh_, bounds_);
+  off_grid_ = grid_.min() != bounds_.min() || grid_.max() != bounds_.max();
+  const double extent = grid_.sizes().maxCoeff();
   bvh_scale_ = extent > 0.0 ? kBvhExtentUnits / extent : 1.0;
   interface_->setScaling(btVector3(bvh_scale_, bvh_scale_, bvh_scale_));
-  // The bounds are known; without them Bullet walks every triangle to find them.
+  // The bounds are known; without them Bullet walks every triangle to find them. The
+  // shape's box (a body's, in the dynamics) is the whole mesh's, whatever the grid.
   interface_->setPremadeAabb(to_bt(bounds_.min() * bvh_scale_), to_bt(bounds_.max() * bvh_scale_));
   return true;
 }
@@ -137,12 +141,14 @@ MeshBvh::MeshBvh(std::shared_ptr<const TriangleMesh> mesh, MeshOrder order,
                  const BuildProgress& progress)
     : mesh_(std::move(mesh)) {
   (void)make_interface();  // computes the normals: always true
-  if (mesh_->triangles.size() >= kSplitBuildMinTriangles) {
+  // Bullet's own build quantizes over the shape's box without clamping: a grid smaller
+  // than the bounds needs the build in pieces, which clamps.
+  if (mesh_->triangles.size() >= kSplitBuildMinTriangles || off_grid_) {
     // The last tenth is left for what follows the pieces (the leaf order, the adoption).
     BuildProgress pieces;
     if (progress) pieces = [&progress](double placed) { progress(0.9 * placed); };
-    built_tree_ = build_tree_in_pieces(*mesh_, bvh_scale_, to_bt(bounds_.min() * bvh_scale_),
-                                       to_bt(bounds_.max() * bvh_scale_), pieces);
+    built_tree_ = build_tree_in_pieces(*mesh_, bvh_scale_, to_bt(grid_.min() * bvh_scale_),
+                                       to_bt(grid_.max() * bvh_scale_), pieces, off_grid_);
   }
   if (built_tree_) {
     shape_ = std::make_unique<btBvhTriangleMeshShape>(interface_.get(), /*quantized=*/true, /*buildBvh=*/false);
@@ -269,7 +275,7 @@ std::unique_ptr<MeshBvh> MeshBvh::adopt_serialized(std::shared_ptr<const Triangl
   // stackless walk needs only the nodes, checked below. The quantization is this mesh's,
   // set as the build sets it, not the file's.
   tree->setTraversalMode(btQuantizedBvh::TRAVERSAL_STACKLESS);
-  tree->setQuantizationValues(to_bt(out->bounds_.min() * out->bvh_scale_), to_bt(out->bounds_.max() * out->bvh_scale_));
+  tree->setQuantizationValues(to_bt(out->grid_.min() * out->bvh_scale_), to_bt(out->grid_.max() * out->bvh_scale_));
   out->tree_ = tree;  // quantize() for the check; the nodes are adopted only once checked
   if (!out->tree_checks_out({&nodes[0], static_cast<std::size_t>(nodes.size())}, pages)) return refused();
   if (ready && !ready()) return nullptr;
@@ -293,6 +299,7 @@ bool MeshBvh::subtree_checks_out(std::span<const btQuantizedBvhNode> nodes, std:
   // Read once and counted here: the other thread's subtree shares `state`, and a write to
   // it per leaf, or a read of the line such a write moves, costs most of the check.
   const bool release_pages = state.release_pages;
+  const Eigen::AlignedBox3d corner_box = state.corner_box;
   const std::size_t triangle_count = mesh_->triangles.size();
   const std::size_t vertex_count = mesh_->vertices_m.size();
   std::size_t leaves = 0;
@@ -327,8 +334,12 @@ bool MeshBvh::subtree_checks_out(std::span<const btQuantizedBvhNode> nodes, std:
       if (!face_normal_holds(face_normals_O_[triangle], a, b, c)) return false;
       // quantize() of the triangle's box, inline: returned through a call, its box cost
       // the check more than the rounding itself.
-      const Eigen::Vector3d lo = a.cwiseMin(b).cwiseMin(c) * bvh_scale_;
-      const Eigen::Vector3d hi = a.cwiseMax(b).cwiseMax(c) * bvh_scale_;
+      Eigen::Vector3d lo = a.cwiseMin(b).cwiseMin(c) * bvh_scale_;
+      Eigen::Vector3d hi = a.cwiseMax(b).cwiseMax(c) * bvh_scale_;
+      if (off_grid_) {  // clamped as the build clamped its corners
+        lo = lo.cwiseMax(corner_box.min()).cwiseMin(corner_box.max());
+        hi = hi.cwiseMax(corner_box.min()).cwiseMin(corner_box.max());
+      }
       std::array<std::uint16_t, 3> q_min{}, q_max{};
       tree_->quantizeWithClamp(q_min.data(), to_bt(lo), 0);
       tree_->quantizeWithClamp(q_max.data(), to_bt(hi), 1);
@@ -356,7 +367,7 @@ bool MeshBvh::subtree_checks_out(std::span<const btQuantizedBvhNode> nodes, std:
 
 bool MeshBvh::tree_checks_out(std::span<const btQuantizedBvhNode> nodes, TreePages pages) const {
   const std::size_t triangles = mesh_->triangles.size();
-  TreeCheckState state{{0}, pages == TreePages::Release};
+  TreeCheckState state{{0}, pages == TreePages::Release, off_grid_corner_box(*tree_)};
   // One bit per triangle for each thread's leaves: a triangle named twice has its bit set
   // twice in one, or once in both.
   std::array<std::vector<std::uint64_t>, 2> named;
@@ -424,6 +435,14 @@ MeshBvh::SerializedTree MeshBvh::serialize_tree() const {
 std::vector<std::byte> MeshBvh::serialize_bvh() const {
   const SerializedTree tree = serialize_tree();
   return {tree.bytes.get(), tree.bytes.get() + tree.size};
+}
+
+Eigen::AlignedBox3d MeshBvh::off_grid_corner_box(const btQuantizedBvh& tree) {
+  const std::array<unsigned short, 3> bottom{0, 0, 0};
+  const std::array<unsigned short, 3> below_top{65532, 65532, 65532};
+  const btVector3 lo = tree.unQuantize(bottom.data());
+  const btVector3 hi = tree.unQuantize(below_top.data());
+  return {Eigen::Vector3d(lo.x(), lo.y(), lo.z()), Eigen::Vector3d(hi.x(), hi.y(), hi.z())};
 }
 
 MeshBvh::QuantizedBox MeshBvh::quantize(const Eigen::AlignedBox3d& box_O) const {

@@ -143,11 +143,20 @@ class MeshBvh {
                             (triangle % kPartTriangles));
   }
 
-  /// A box on the tree's grid: Bullet's 16-bit quantization of the mesh's bounds.
+  /// A box on the tree's grid: Bullet's 16-bit quantization of the mesh's bounds, or of
+  /// its bulk where a few triangles lie far from the rest (tree_grid.h).
   struct QuantizedBox {
     std::array<std::uint16_t, 3> min{};
     std::array<std::uint16_t, 3> max{};
   };
+
+  /// Where a triangle off the grid (tree_grid.h) has its corners clamped, in Bullet's
+  /// units, in the build and in the check of a cached tree alike: Bullet's own clamping
+  /// box less one cell at the top. Bullet rounds a box's top up by a cell, and its build
+  /// merges boxes without clamping, so a corner on its clamping box's top would round past
+  /// 16 bits there. A clamped box still overlaps every query that Bullet's clamping puts
+  /// at or beyond the grid's edge.
+  [[nodiscard]] static Eigen::AlignedBox3d off_grid_corner_box(const btQuantizedBvh& tree);
 
   /// box_O on the tree's grid, rounded outwards exactly as Bullet rounds its own queries.
   [[nodiscard]] QuantizedBox quantize(const Eigen::AlignedBox3d& box_O) const;
@@ -216,6 +225,7 @@ class MeshBvh {
   struct TreeCheckState {
     std::atomic<std::size_t> leaves;
     bool release_pages;
+    Eigen::AlignedBox3d corner_box;  // off_grid_corner_box() of the tree checked
   };
   /// A tree a file hands us, checked node by node before it is walked: Bullet's stackless
   /// layout (each inner node followed by its two subtrees, its escape index spanning
@@ -234,6 +244,9 @@ class MeshBvh {
   std::shared_ptr<const TriangleMesh> mesh_;
   MeshArray<Eigen::Vector3d> face_normals_O_;
   Eigen::AlignedBox3d bounds_;
+  // The box the tree's grid spans (tree_grid.h): bounds_, or the bulk of a mesh with strays.
+  Eigen::AlignedBox3d grid_;
+  bool off_grid_ = false;  // some triangles lie off the grid: their corners are clamped
   // Bullet sees the mesh scaled by this (see make_interface); queries are scaled alike.
   double bvh_scale_ = 1.0;
   std::unique_ptr<btTriangleIndexVertexArray> interface_;

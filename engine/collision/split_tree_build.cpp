@@ -96,6 +96,7 @@ class PieceTree : public btOptimizedBvh {
 /// What each building thread keeps to itself.
 struct Worker {
   std::vector<TriangleIndices> piece;
+  std::vector<Eigen::Vector3d> corners;  // a clamped piece's own corners, in Bullet's units
   std::vector<std::uint32_t> histogram;
   std::vector<btBvhSubtreeInfo> headers;
 };
@@ -103,10 +104,10 @@ struct Worker {
 class PieceBuilder {
  public:
   PieceBuilder(const TriangleMesh& mesh, double scale, const btVector3& aabb_min, const btVector3& aabb_max,
-               const BuildProgress& progress)
+               const BuildProgress& progress, bool clamp)
       : mesh_(mesh), scale_(scale), aabb_min_(aabb_min), aabb_max_(aabb_max),
         tree_(std::make_unique<AssembledTree>(aabb_min, aabb_max, subtree_nodes(mesh.triangles.size()))),
-        nodes_(tree_->nodes()), progress_(progress) {}
+        nodes_(tree_->nodes()), progress_(progress), clamp_(clamp) {}
 
   std::unique_ptr<btOptimizedBvh> build() {
     const CentreBounds bounds = make_items();
@@ -238,10 +239,25 @@ class PieceBuilder {
   void build_piece(std::size_t begin, std::size_t end, std::size_t at, Worker& worker) {
     const std::span<const Item> items(items_.get() + begin, end - begin);
     worker.piece.clear();
-    for (const Item& item : items) worker.piece.push_back(mesh_.triangles[item.triangle]);
     btTriangleIndexVertexArray parts;
-    add_mesh_parts(parts, worker.piece, mesh_.vertices_m, MeshBvh::kPartTriangles);
-    parts.setScaling(btVector3(scale_, scale_, scale_));
+    if (clamp_) {
+      // Bullet's build quantizes without clamping: it gets each corner scaled (the product
+      // its scaling would make) and clamped onto the grid, three a triangle.
+      worker.corners.clear();
+      const Eigen::AlignedBox3d box = MeshBvh::off_grid_corner_box(*tree_);
+      for (const Item& item : items) {
+        const auto first = static_cast<std::uint32_t>(worker.corners.size());
+        for (const std::uint32_t v : mesh_.triangles[item.triangle]) {
+          worker.corners.push_back((mesh_.vertices_m[v] * scale_).cwiseMax(box.min()).cwiseMin(box.max()));
+        }
+        worker.piece.push_back({first, first + 1, first + 2});
+      }
+      add_mesh_parts(parts, worker.piece, worker.corners, MeshBvh::kPartTriangles);
+    } else {
+      for (const Item& item : items) worker.piece.push_back(mesh_.triangles[item.triangle]);
+      add_mesh_parts(parts, worker.piece, mesh_.vertices_m, MeshBvh::kPartTriangles);
+      parts.setScaling(btVector3(scale_, scale_, scale_));
+    }
     parts.setPremadeAabb(aabb_min_, aabb_max_);
     PieceTree piece;
     piece.build(&parts, /*useQuantizedAabbCompression=*/true, aabb_min_, aabb_max_);
@@ -272,6 +288,7 @@ class PieceBuilder {
   std::array<double, 3> step_{};  // the length of one quantization step along each axis
   std::unique_ptr<Item[]> items_;  // one per triangle, reordered by the splits
   const BuildProgress& progress_;
+  bool clamp_;  // triangles may lie off the grid (build_tree_in_pieces)
   const Worker* caller_ = nullptr;  // the calling thread's, the only one that tells progress
   std::atomic<std::size_t> placed_{0};  // triangles placed, by either thread
   std::size_t told_hundredths_ = 0;
@@ -297,11 +314,11 @@ void add_mesh_parts(btTriangleIndexVertexArray& parts, std::span<const TriangleI
 
 std::unique_ptr<btOptimizedBvh> build_tree_in_pieces(const TriangleMesh& mesh, double scale,
                                                      const btVector3& aabb_min, const btVector3& aabb_max,
-                                                     const BuildProgress& progress) {
+                                                     const BuildProgress& progress, bool clamp_to_box) {
   if (!MeshBvh::holds(mesh.triangles.size())) {
     throw std::length_error("build_tree_in_pieces: " + std::to_string(mesh.triangles.size()) + " triangles");
   }
-  return PieceBuilder(mesh, scale, aabb_min, aabb_max, progress).build();
+  return PieceBuilder(mesh, scale, aabb_min, aabb_max, progress, clamp_to_box).build();
 }
 
 }  // namespace mhd

@@ -39,10 +39,14 @@ void add_mesh_parts(btTriangleIndexVertexArray& parts, std::span<const TriangleI
 /// the interface's scaling and premade box (what Bullet's own build of the whole mesh
 /// would quantize by). The mesh has 1 to MeshBvh::kMaxTriangles triangles. `progress`,
 /// when set, is told the share of the triangles placed in pieces (by both threads) on the
-/// calling thread only, each time it has risen by a hundredth or more, and last 1.
+/// calling thread only, each time it has risen by a hundredth or more, and last 1. With
+/// `clamp_to_box`, triangles may lie outside the box (a grid over a mesh's bulk,
+/// tree_grid.h): each leaf's box is then its triangle's clamped onto the grid, as
+/// Bullet's quantizeWithClamp() clamps queries and the cached tree's check.
 [[nodiscard]] std::unique_ptr<btOptimizedBvh> build_tree_in_pieces(const TriangleMesh& mesh, double scale,
                                                                    const btVector3& aabb_min,
                                                                    const btVector3& aabb_max,
-                                                                   const BuildProgress& progress = {});
+                                                                   const BuildProgress& progress = {},
+                                                                   bool clamp_to_box = false);
 
 }  // namespace mhd

@@ -263,5 +263,44 @@ TEST(CollisionWorld, FirstMetAnswersAsItsTrianglesSweptOneByOne) {
   EXPECT_GT(grazes, 50);
 }
 
+TEST(CollisionWorld, ATriangleFarFromTheRestOfItsMeshIsSweptLikeTheRest) {
+  // A 0.2 m sheet of 2 mm quads (20,000 triangles) and one 1 cm triangle 1000 km away in
+  // the same mesh. Sweeps through the sheet test a few triangles, not the sheet (the
+  // tree's grid spans the sheet, not the 1000 km), and the far triangle still stops a
+  // sweep through it: from the tree, and from the candidate list.
+  auto mesh = std::make_shared<TriangleMesh>();
+  const int n = 100;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) mesh->vertices_m.emplace_back(0.2 * i / n, 0.2 * j / n, 0.0);
+  const auto id = [](int i, int j) { return static_cast<std::uint32_t>(j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      mesh->triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      mesh->triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  const double far_m = 1e6;
+  const auto first = static_cast<std::uint32_t>(mesh->vertices_m.size());
+  mesh->vertices_m.emplace_back(far_m, 0.0, 0.0);
+  mesh->vertices_m.emplace_back(far_m + 0.01, 0.0, 0.0);
+  mesh->vertices_m.emplace_back(far_m, 0.01, 0.0);
+  mesh->triangles.push_back({first, first + 1, first + 2});
+  const auto far_triangle = static_cast<std::uint32_t>(mesh->triangles.size() - 1);
+  CollisionWorld world;
+  world.add_object(std::make_shared<MeshBvh>(mesh), Pose::Identity());
+  SweepCandidates near;
+  for (SweepCandidates* list : {static_cast<SweepCandidates*>(nullptr), &near, &near}) {
+    SweepWork work;
+    const auto on_sheet = world.sweep(Eigen::Vector3d(0.1011, 0.1013, 0.0005), Eigen::Vector3d(0.1011, 0.1013, -0.0005),
+                                      1e-6, {}, &work, list);
+    ASSERT_TRUE(on_sheet);
+    EXPECT_NE(on_sheet->where.triangle, far_triangle);
+    EXPECT_LE(work.triangle_tests, 64);
+    const auto at_far = world.sweep(Eigen::Vector3d(far_m + 0.002, 0.002, 0.0005),
+                                    Eigen::Vector3d(far_m + 0.002, 0.002, -0.0005), 1e-6, {}, &work, list);
+    ASSERT_TRUE(at_far);
+    EXPECT_EQ(at_far->where.triangle, far_triangle);
+  }
+}
+
 }  // namespace
 }  // namespace mhd

@@ -170,5 +170,30 @@ TEST(LeafOrder, AMeshPastOneBulletPartIsRenumberedAndItsPatchStillStopsTheHand) 
   }
 }
 
+TEST(LeafOrder, AMeshWithAStrayTriangleIsAdoptedInLeafOrderOnTheGridItWasBuiltOn) {
+  // A stray triangle 1000 km away makes the tree's grid span the mesh's bulk, found from a
+  // sample of its vertices (over 65,536 of them here, so a sample it is). The cache stores
+  // the mesh renumbered in leaf order: the same sample must come from it, or its tree
+  // would fail the check on every load and be built again.
+  const auto given = shuffled_wavy_grid(300);
+  const auto first = static_cast<std::uint32_t>(given->vertices_m.size());
+  for (const Eigen::Vector3d& p : {Eigen::Vector3d(1e6, 0, 0), Eigen::Vector3d(1e6 + 1, 0, 0), Eigen::Vector3d(1e6, 1, 0)}) {
+    given->vertices_m.push_back(p);
+    given->vertex_normals.emplace_back(0.0f, 0.0f, 1.0f);
+  }
+  given->triangles.push_back({first, first + 1, first + 2});
+  ASSERT_GT(given->vertices_m.size(), std::size_t{1} << 16);
+  const MeshBvh ordered(given, MeshBvh::MeshOrder::Leaves);
+  const auto adopted = MeshBvh::from_serialized(ordered.mesh_ptr(), ordered.serialize_bvh());
+  ASSERT_NE(adopted, nullptr);
+  const Eigen::AlignedBox3d near(Eigen::Vector3d(0.5, 0.5, -0.06), Eigen::Vector3d(0.501, 0.501, 0.06));
+  for (const MeshBvh* bvh : std::array<const MeshBvh*, 2>{&ordered, adopted.get()}) {
+    std::size_t found = 0;
+    bvh->for_each_triangle_overlapping(near, [&](std::uint32_t) { ++found; });
+    EXPECT_GT(found, 0u);
+    EXPECT_LE(found, 64u) << "a grid over the 1000 km holds the whole grid in one cell";
+  }
+}
+
 }  // namespace
 }  // namespace mhd

@@ -157,5 +157,81 @@ TEST(MeshBvh, RejectsATreeOfAnotherMesh) {
   EXPECT_EQ(MeshBvh::from_serialized(grid_mesh(5), std::span<const std::byte>()), nullptr);
 }
 
+
+namespace far_triangle {
+
+// grid_mesh(n) scaled to `side_m`, with one more triangle `far_m` away along x: a scan with
+// a stray point, a model with a part left at another origin.
+std::shared_ptr<TriangleMesh> sheet_with_far_triangle(int n, double side_m, double far_m) {
+  auto mesh = grid_mesh(n);
+  for (auto& v : mesh->vertices_m) v *= side_m;
+  const auto first = static_cast<std::uint32_t>(mesh->vertices_m.size());
+  mesh->vertices_m.emplace_back(far_m, 0.0, 0.0);
+  mesh->vertices_m.emplace_back(far_m + side_m / n, 0.0, 0.0);
+  mesh->vertices_m.emplace_back(far_m, side_m / n, 0.0);
+  mesh->triangles.push_back({first, first + 1, first + 2});
+  return mesh;
+}
+
+// All triangles whose box overlaps `box`, found the slow way.
+std::vector<std::uint32_t> brute_force(const TriangleMesh& mesh, const Eigen::AlignedBox3d& box) {
+  std::vector<std::uint32_t> out;
+  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
+    Eigen::AlignedBox3d b;
+    for (auto i : mesh.triangles[t]) b.extend(mesh.vertices_m[i]);
+    if (b.intersects(box)) out.push_back(t);
+  }
+  return out;
+}
+
+TEST(MeshBvhGrid, OneTriangleFarAwayLeavesTheTreeAsFineAsTheRestOfTheMesh) {
+  // 0.2 m sheet of 1 mm quads (80,000 triangles) and one triangle at each distance. The
+  // tree's 16-bit grid over all of it would be 15 m wide at 1000 km: every query then
+  // overlaps every leaf of the sheet. A 1 mm query box holds a few triangles at any
+  // distance, and still every triangle it touches (the far one too).
+  for (const double far_m : {1.0, 1e3, 1e6, 1e9}) {
+    SCOPED_TRACE(far_m);
+    const auto mesh = sheet_with_far_triangle(200, 0.2, far_m);
+    const MeshBvh bvh(mesh);
+    const auto adopted = MeshBvh::from_serialized(mesh, bvh.serialize_bvh());
+    ASSERT_TRUE(adopted) << "the cached tree of such a mesh is adopted, not rebuilt";
+    for (const MeshBvh* tree : std::array<const MeshBvh*, 2>{&bvh, adopted.get()}) {
+      const Eigen::AlignedBox3d near(Eigen::Vector3d(0.1003, 0.1003, -0.0005), Eigen::Vector3d(0.1013, 0.1013, 0.0005));
+      const auto found = query(*tree, near);
+      const auto truth = brute_force(*mesh, near);
+      EXPECT_TRUE(std::includes(found.begin(), found.end(), truth.begin(), truth.end()));
+      EXPECT_LE(found.size(), 64u) << "of " << mesh->triangles.size();
+      const Eigen::AlignedBox3d far_box(Eigen::Vector3d(far_m, 0.0, -1e-4), Eigen::Vector3d(far_m + 1e-4, 1e-4, 1e-4));
+      const auto at_far = query(*tree, far_box);
+      EXPECT_TRUE(std::binary_search(at_far.begin(), at_far.end(), mesh->triangles.size() - 1))
+          << "the far triangle stays in the tree";
+    }
+  }
+}
+
+TEST(MeshBvhGrid, AFloorTheMeshSharesAFileWithIsNoStray) {
+  // The dual: the sheet beside a floor 100 m wide of 1 m quads (20,000 triangles). The
+  // grid over all of it is 1.5 mm, fine enough for the sheet's 1 mm triangles, so it
+  // stays: a query on the floor far from the sheet finds only the floor's triangles there
+  // (a grid over the sheet alone would pile the floor's far triangles on its edge).
+  auto mesh = sheet_with_far_triangle(200, 0.2, 0.5);
+  auto floor = grid_mesh(100);
+  const auto first = static_cast<std::uint32_t>(mesh->vertices_m.size());
+  for (const auto& v : floor->vertices_m) {
+    mesh->vertices_m.emplace_back(100.0 * v.x() - 50.0, 100.0 * v.y() - 50.0, -0.5);
+  }
+  for (const auto& t : floor->triangles) mesh->triangles.push_back({first + t[0], first + t[1], first + t[2]});
+  const MeshBvh bvh(mesh);
+  const Eigen::AlignedBox3d on_floor(Eigen::Vector3d(40.2, 40.2, -0.501), Eigen::Vector3d(40.201, 40.201, -0.499));
+  const auto found = query(bvh, on_floor);
+  const auto truth = brute_force(*mesh, on_floor);
+  EXPECT_TRUE(std::includes(found.begin(), found.end(), truth.begin(), truth.end()));
+  EXPECT_LE(found.size(), 8u);
+  const Eigen::AlignedBox3d near(Eigen::Vector3d(0.1003, 0.1003, -0.0005), Eigen::Vector3d(0.1013, 0.1013, 0.0005));
+  EXPECT_LE(query(bvh, near).size(), 256u);
+}
+
+}  // namespace far_triangle
+
 }  // namespace
 }  // namespace mhd
