@@ -10,6 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <exception>
@@ -23,8 +24,24 @@ namespace {
 
 constexpr double kMillimetresPerMetre = 1000.0;
 
-int write_and_report(const mhd::TriangleMesh& mesh, const std::string& out,
-                     std::chrono::steady_clock::time_point start) {
+// One more triangle facing +z, `stray_m` past the mesh along +x: a mesh as users may have
+// one, with a range scan's stray point or a part left at another origin. Its sides are 1 mm,
+// or a millionth of the distance where a file's single-precision millimetres would not
+// keep 1 mm apart.
+void add_stray_triangle(mhd::TriangleMesh& mesh, double stray_m) {
+  const Eigen::AlignedBox3d box = mhd::mesh_bounds(mesh);
+  const Eigen::Vector3d at(box.max().x() + stray_m, box.center().y(), box.center().z());
+  const auto first = static_cast<std::uint32_t>(mesh.vertices_m.size());
+  const double side_m = std::max(0.001, 1e-6 * at.cwiseAbs().maxCoeff());
+  mesh.vertices_m.push_back(at);
+  mesh.vertices_m.push_back(at + Eigen::Vector3d(side_m, 0.0, 0.0));
+  mesh.vertices_m.push_back(at + Eigen::Vector3d(0.0, side_m, 0.0));
+  mesh.triangles.push_back({first, first + 1, first + 2});
+}
+
+int write_and_report(mhd::TriangleMesh mesh, const std::string& out, std::chrono::steady_clock::time_point start,
+                     double stray_m) {
+  if (stray_m > 0.0) add_stray_triangle(mesh, stray_m);
   const auto built = std::chrono::steady_clock::now();
   const std::filesystem::path file(out);
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
@@ -51,7 +68,7 @@ void parse_grid(const std::string& text, mhd::mesh_gen::RangeScanParams& params)
 
 int scan_and_report(const std::string& source, const mhd::mesh_gen::ScanSourceOptions& options,
                     mhd::mesh_gen::RangeScanParams params, const std::string& grid, const std::string& out,
-                    std::chrono::steady_clock::time_point start) {
+                    std::chrono::steady_clock::time_point start, double stray_m) {
   parse_grid(grid, params);
   const mhd::TriangleMesh source_mesh = mhd::mesh_gen::load_scan_source(source, options);
   const mhd::mesh_gen::RangeScan scan = mhd::mesh_gen::make_range_scan(source_mesh, params);
@@ -61,7 +78,7 @@ int scan_and_report(const std::string& source, const mhd::mesh_gen::ScanSourceOp
               "triangles at depth jumps, %zu degenerate\n",
               source.c_str(), source_mesh.triangle_count(), grid.c_str(), st.spacing_m * kMillimetresPerMetre,
               st.samples_hit, st.patches, st.dropped_depth_jump, st.dropped_degenerate);
-  return write_and_report(scan.mesh, out, start);
+  return write_and_report(scan.mesh, out, start, stray_m);
 }
 
 }  // namespace
@@ -74,6 +91,11 @@ constexpr std::size_t kMaxTriangles = 300'000'000;
 int main(int argc, char** argv) {
   CLI::App app{"Writes MHD's procedural test meshes in millimetres (.ply binary, .obj or .stl)."};
   app.require_subcommand(1);
+  double stray_mm = 0.0;
+  app.add_option("--stray-triangle-mm", stray_mm,
+                 "add one small triangle this far past the mesh along +x (a scan's stray point); give it before "
+                 "the subcommand")
+      ->check(CLI::NonNegativeNumber);
 
   std::size_t dolphin_triangles = 3000;
   std::string dolphin_out;
@@ -129,28 +151,29 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
 
   try {
+    const double stray_m = stray_mm / kMillimetresPerMetre;
     if (scan->parsed()) {
       (void)mhd::mesh_gen::mesh_file_format(scan_out);
       if (unit->count() > 0) scan_options.file_unit_m = scan_unit_m;
       scan_params.noise_m = scan_noise_mm / kMillimetresPerMetre;
       return scan_and_report(scan_source, scan_options, scan_params, scan_grid, scan_out,
-                             std::chrono::steady_clock::now());
+                             std::chrono::steady_clock::now(), stray_m);
     }
     (void)mhd::mesh_gen::mesh_file_format(dolphin->parsed() ? dolphin_out : sphere->parsed() ? sphere_out : bowl_out);
     const auto start = std::chrono::steady_clock::now();
     if (dolphin->parsed()) {
       return write_and_report(mhd::mesh_gen::make_dolphin(mhd::mesh_gen::dolphin_layout(dolphin_triangles)),
-                              dolphin_out, start);
+                              dolphin_out, start, stray_m);
     }
     if (sphere->parsed()) {
       return write_and_report(mhd::mesh_gen::make_uv_sphere(sphere_radius_mm / kMillimetresPerMetre,
                                                              mhd::mesh_gen::uv_sphere_layout(sphere_triangles)),
-                              sphere_out, start);
+                              sphere_out, start, stray_m);
     }
     const double cap_rad = bowl_cap_deg * std::numbers::pi / 180.0;
     return write_and_report(mhd::mesh_gen::make_bowl(bowl_radius_mm / kMillimetresPerMetre, cap_rad,
                                                      mhd::mesh_gen::bowl_layout(bowl_triangles, cap_rad)),
-                            bowl_out, start);
+                            bowl_out, start, stray_m);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "mhd-mesh-gen: %s\n", e.what());
     return 1;
