@@ -185,13 +185,13 @@ std::vector<std::uint32_t> brute_force(const TriangleMesh& mesh, const Eigen::Al
 }
 
 TEST(MeshBvhGrid, OneTriangleFarAwayLeavesTheTreeAsFineAsTheRestOfTheMesh) {
-  // 0.2 m sheet of 1 mm quads (80,000 triangles) and one triangle at each distance. The
+  // 0.2 m sheet of 2 mm quads (20,000 triangles) and one triangle at each distance. The
   // tree's 16-bit grid over all of it would be 15 m wide at 1000 km: every query then
   // overlaps every leaf of the sheet. A 1 mm query box holds a few triangles at any
   // distance, and still every triangle it touches (the far one too).
   for (const double far_m : {1.0, 1e3, 1e6, 1e9}) {
     SCOPED_TRACE(far_m);
-    const auto mesh = sheet_with_far_triangle(200, 0.2, far_m);
+    const auto mesh = sheet_with_far_triangle(100, 0.2, far_m);
     const MeshBvh bvh(mesh);
     const auto adopted = MeshBvh::from_serialized(mesh, bvh.serialize_bvh());
     ASSERT_TRUE(adopted) << "the cached tree of such a mesh is adopted, not rebuilt";
@@ -211,10 +211,10 @@ TEST(MeshBvhGrid, OneTriangleFarAwayLeavesTheTreeAsFineAsTheRestOfTheMesh) {
 
 TEST(MeshBvhGrid, AFloorTheMeshSharesAFileWithIsNoStray) {
   // The dual: the sheet beside a floor 100 m wide of 1 m quads (20,000 triangles). The
-  // grid over all of it is 1.5 mm, fine enough for the sheet's 1 mm triangles, so it
+  // grid over all of it is 1.5 mm, fine enough for the sheet's 2 mm triangles, so it
   // stays: a query on the floor far from the sheet finds only the floor's triangles there
   // (a grid over the sheet alone would pile the floor's far triangles on its edge).
-  auto mesh = sheet_with_far_triangle(200, 0.2, 0.5);
+  auto mesh = sheet_with_far_triangle(100, 0.2, 0.5);
   auto floor = grid_mesh(100);
   const auto first = static_cast<std::uint32_t>(mesh->vertices_m.size());
   for (const auto& v : floor->vertices_m) {
