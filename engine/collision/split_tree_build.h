@@ -35,9 +35,9 @@ inline constexpr std::size_t kPieceTriangles = 256;
 void add_mesh_parts(btTriangleIndexVertexArray& parts, std::span<const TriangleIndices> triangles,
                     std::span<const Eigen::Vector3d> vertices, std::size_t part_triangles);
 
-/// The whole mesh's tree, built in pieces; `scale` and the box [aabb_min, aabb_max] are
-/// the interface's scaling and premade box (what Bullet's own build of the whole mesh
-/// would quantize by). The mesh has 1 to MeshBvh::kMaxTriangles triangles. `progress`,
+/// The whole mesh's tree, built in pieces; `scale` is the interface's scaling and the box
+/// [aabb_min, aabb_max] the tree's grid (the mesh's bounds, what Bullet's own build of the
+/// whole mesh would quantize by, or its bulk: tree_grid.h). The mesh has 1 to MeshBvh::kMaxTriangles triangles. `progress`,
 /// when set, is told the share of the triangles placed in pieces (by both threads) on the
 /// calling thread only, each time it has risen by a hundredth or more, and last 1. With
 /// `clamp_to_box`, triangles may lie outside the box (a grid over a mesh's bulk,
