@@ -37,9 +37,10 @@ void add_mesh_parts(btTriangleIndexVertexArray& parts, std::span<const TriangleI
 
 /// The whole mesh's tree, built in pieces; `scale` is the interface's scaling and the box
 /// [aabb_min, aabb_max] the tree's grid (the mesh's bounds, what Bullet's own build of the
-/// whole mesh would quantize by, or its bulk: tree_grid.h). The mesh has 1 to MeshBvh::kMaxTriangles triangles. `progress`,
-/// when set, is told the share of the triangles placed in pieces (by both threads) on the
-/// calling thread only, each time it has risen by a hundredth or more, and last 1. With
+/// whole mesh would quantize by, or its bulk: tree_grid.h). The mesh has 1 to
+/// MeshBvh::kMaxTriangles triangles. `progress`, when set, is told the share of the
+/// triangles placed in pieces (by both threads) on the calling thread only, each time it
+/// has risen by a hundredth or more, and last 1. With
 /// `clamp_to_box`, triangles may lie outside the box (a grid over a mesh's bulk,
 /// tree_grid.h): each leaf's box is then its triangle's clamped onto the grid, as
 /// Bullet's quantizeWithClamp() clamps queries and the cached tree's check.
