@@ -411,6 +411,7 @@ Result<CachedMesh, MeshLoadError> MeshCache::load(const std::filesystem::path& f
   Result<LoadedMesh, MeshLoadError> loaded = load_mesh_file(file, scale_to_m, read_progress, budget);
   if (!loaded.ok()) return loaded.error();
   result.dropped_triangles = loaded->dropped_triangles;
+  result.flipped_triangles = loaded->flipped_triangles;
   if (!MeshBvh::holds(loaded->mesh.triangle_count())) {
     return MeshLoadError{file, fmt::format("{} triangles, more than the {} one collision tree holds",
                                            loaded->mesh.triangle_count(), MeshBvh::kMaxTriangles)};

@@ -34,7 +34,8 @@ namespace mhd {
 /// 5: an entry holds its face normals, adopted where they lie.
 /// 6: vertex normals are single precision.
 /// 7: a mesh built in pieces is stored in its tree's leaf order (MeshBvh::MeshOrder).
-inline constexpr std::uint32_t kMeshCacheFormatVersion = 7;
+/// 8: the loader winds each surface one way (orient_coherently).
+inline constexpr std::uint32_t kMeshCacheFormatVersion = 8;
 
 /// Meshes with at least this many triangles report progress.
 inline constexpr std::size_t kProgressMinTriangles = 100'000;
@@ -68,6 +69,7 @@ struct CachedMesh {
   std::string rejected_reason;  ///< why the existing cache file was rejected
   std::filesystem::path cache_file;
   std::size_t dropped_triangles = 0;  ///< by the loader (0 on a hit)
+  std::size_t flipped_triangles = 0;  ///< turned by the loader to their surface's winding (0 on a hit)
   /// Set when the entry written is larger than the cache's size limit: what it takes, the
   /// limit and the variable that sets it (also logged as a warning). Such an entry is
   /// kept until another mesh is cached, which evicts it.

@@ -1,5 +1,7 @@
 #include "mesh_io/mesh_loader.h"
 
+#include "geometry/coherent_winding.h"
+
 #include "mesh_io/mesh_header.h"
 #include "mesh_io/regular_file.h"
 #include "mesh_io/regular_file_io_system.h"
@@ -128,23 +130,25 @@ void drop_unused_vertices(TriangleMesh& mesh) {
 
 }  // namespace
 
-std::size_t finish_loaded_mesh(TriangleMesh& mesh, const Eigen::Vector3d& scale_to_m) {
+MeshCleanUp finish_loaded_mesh(TriangleMesh& mesh, const Eigen::Vector3d& scale_to_m) {
   for (auto& v : mesh.vertices_m) v = v.cwiseProduct(scale_to_m);
   // A mirroring scale turns counter-clockwise into clockwise; swap two corners back.
   if (scale_to_m.x() * scale_to_m.y() * scale_to_m.z() < 0.0) {
     for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
   }
-  std::size_t dropped = remove_invalid_triangles(mesh);
+  MeshCleanUp done;
+  done.dropped_triangles = remove_invalid_triangles(mesh);
   // Zero-area triangles (collinear corners) have no surface and no normal.
   const auto before = mesh.triangles.size();
   std::erase_if(mesh.triangles, [&](const TriangleIndices& t) {
     const Eigen::Vector3d& a = mesh.vertices_m[t[0]];
     return (mesh.vertices_m[t[1]] - a).cross(mesh.vertices_m[t[2]] - a).isZero(0.0);
   });
-  dropped += before - mesh.triangles.size();
+  done.dropped_triangles += before - mesh.triangles.size();
   drop_unused_vertices(mesh);
+  done.flipped_triangles = orient_coherently(mesh);
   compute_vertex_normals(mesh);
-  return dropped;
+  return done;
 }
 
 Result<LoadedMesh, MeshLoadError> load_mesh_file(const std::filesystem::path& file, const Eigen::Vector3d& scale_to_m,
@@ -252,13 +256,14 @@ Result<LoadedMesh, MeshLoadError> load_mesh_file(const std::filesystem::path& fi
   // meshes: join identical positions so neighbours share their edges.
   if (triangle_meshes > 1 || vertex_total > face_total) weld_identical_positions(mesh);
 
-  dropped += finish_loaded_mesh(mesh, scale_to_m);
+  const MeshCleanUp done = finish_loaded_mesh(mesh, scale_to_m);
+  dropped += done.dropped_triangles;
   if (mesh.triangles.empty()) return fail(file, "mesh has no triangles (all are degenerate)");
   for (const auto& v : mesh.vertices_m) {
     if (!v.allFinite()) return fail(file, "non-finite vertex coordinates");
   }
 
-  return LoadedMesh{std::move(mesh), dropped};
+  return LoadedMesh{std::move(mesh), dropped, done.flipped_triangles};
 }
 
 }  // namespace mhd

@@ -32,14 +32,16 @@ struct LoadedMesh {
   TriangleMesh mesh;
   /// Triangles dropped: bad or repeated indices, zero area, non-triangle faces.
   std::size_t dropped_triangles = 0;
+  /// Triangles turned to the winding of the surface they belong to.
+  std::size_t flipped_triangles = 0;
 };
 
 /// Loads every triangle of every mesh in `file` (scene-graph transforms applied, points
 /// and lines dropped) into one mesh, multiplies coordinates by `scale_to_m` per axis
 /// (a mirroring scale, i.e. an odd number of negative factors, flips the winding so the
 /// mesh keeps facing outwards), welds vertices at identical positions across the
-/// file's meshes, drops degenerate triangles and unused vertices, and computes vertex
-/// normals. Positions pass through assimp's single precision.
+/// file's meshes, drops degenerate triangles and unused vertices, turns triangles wound
+/// against the rest of their surface (orient_coherently), and computes vertex normals. Positions pass through assimp's single precision.
 /// `progress`, if set, receives assimp's read/post-processing progress.
 /// Bounded: the file and every side file assimp opens (an OBJ's mtllib) must be regular
 /// files, and so must textures that exist; a PLY's or binary STL's header counts must fit
@@ -50,9 +52,15 @@ struct LoadedMesh {
                                                               const MeshProgress& progress = {},
                                                               std::optional<TriangleBudget> budget = std::nullopt);
 
+/// What the loader's clean-up changed.
+struct MeshCleanUp {
+  std::size_t dropped_triangles = 0;
+  std::size_t flipped_triangles = 0;
+};
+
 /// Applies the loader's clean-up to a mesh in memory: scale (and winding flip for a
-/// mirroring scale), invalid/degenerate triangle and unused vertex removal, vertex
-/// normals. Returns the number of dropped triangles. Exposed for tests and tools.
-std::size_t finish_loaded_mesh(TriangleMesh& mesh, const Eigen::Vector3d& scale_to_m);
+/// mirroring scale), invalid/degenerate triangle and unused vertex removal, one winding
+/// per surface (orient_coherently), vertex normals. Exposed for tests and tools.
+MeshCleanUp finish_loaded_mesh(TriangleMesh& mesh, const Eigen::Vector3d& scale_to_m);
 
 }  // namespace mhd

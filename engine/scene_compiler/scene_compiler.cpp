@@ -302,6 +302,10 @@ class Compiler {
         spdlog::info("{}: mesh file '{}': dropped {} degenerate triangles", object.name, source.file.string(),
                      loaded->dropped_triangles);
       }
+      if (loaded->flipped_triangles > 0) {
+        spdlog::info("{}: mesh file '{}': turned {} triangles wound against the rest of their surface", object.name,
+                     source.file.string(), loaded->flipped_triangles);
+      }
     } else {
       shape.error = loaded.error().message();
     }

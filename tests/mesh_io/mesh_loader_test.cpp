@@ -162,6 +162,95 @@ TEST(MeshLoader, BinaryPlyRoundTripsTheMesh) {
   }
 }
 
+/// `mesh` with its positions rounded through single precision, as a float file holds them.
+TriangleMesh through_floats(const TriangleMesh& mesh) {
+  TriangleMesh rounded = mesh;
+  std::vector<float> as_float;  // in memory: see BinaryPlyRoundTripsTheMesh
+  for (const auto& v : mesh.vertices_m) {
+    for (int k = 0; k < 3; ++k) as_float.push_back(static_cast<float>(v[k]));
+  }
+  for (std::size_t i = 0; i < rounded.vertices_m.size(); ++i) {
+    rounded.vertices_m[i] = Eigen::Vector3f(&as_float[3 * i]).cast<double>();
+  }
+  return rounded;
+}
+
+/// `mesh` with the triangles `flip` picks wound the other way.
+template <class Pick>
+TriangleMesh with_flipped(const TriangleMesh& mesh, Pick&& flip) {
+  TriangleMesh out = mesh;
+  for (std::size_t t = 0; t < out.triangles.size(); ++t) {
+    if (flip(t)) std::swap(out.triangles[t][1], out.triangles[t][2]);
+  }
+  return out;
+}
+
+TEST(MeshLoader, TrianglesWoundAgainstTheirNeighboursAreTurnedToThem) {
+  // A closed sphere (1,280 triangles) and an open sheet (a scan's shape), each written with
+  // some of its triangles wound the wrong way: one, or a scattered few percent up to a
+  // third. The loaded mesh is the mesh as made, every triangle facing out, and so are its
+  // vertex normals.
+  TempDir dir;
+  const TriangleMesh sphere = make_sphere_mesh(0.5, 3);
+  const TriangleMesh sheet = test::sheet_mesh(20);
+  std::mt19937 rng(20261202);
+  for (const TriangleMesh* made : {&sphere, &sheet}) {
+    for (const double fraction : {0.0, 0.03, 0.1, 0.33}) {
+      SCOPED_TRACE(::testing::Message() << made->triangle_count() << " triangles, " << fraction << " flipped");
+      std::bernoulli_distribution pick(fraction);
+      std::size_t flipped = 0;
+      const TriangleMesh written = with_flipped(*made, [&](std::size_t t) {
+        const bool f = fraction == 0.0 ? t == made->triangles.size() / 2 : pick(rng);
+        flipped += f ? 1 : 0;
+        return f;
+      });
+      test::write_binary_ply(dir / "flipped.ply", written);
+      const Result<LoadedMesh, MeshLoadError> r = load_mesh_file(dir / "flipped.ply", Eigen::Vector3d::Ones());
+      ASSERT_TRUE(r.ok()) << r.error_text();
+      EXPECT_TRUE(triangle_keys(r->mesh) == triangle_keys(through_floats(*made)));  // printed, it fills pages
+      EXPECT_EQ(r->flipped_triangles, flipped);
+      expect_unit_normals(r->mesh);
+    }
+  }
+  // The normals face out again on the sphere (a flipped triangle's corners pulled them in).
+  test::write_binary_ply(dir / "one.ply", with_flipped(sphere, [](std::size_t t) { return t % 5 == 0; }));
+  const Result<LoadedMesh, MeshLoadError> r = load_mesh_file(dir / "one.ply", Eigen::Vector3d::Ones());
+  ASSERT_TRUE(r.ok()) << r.error_text();
+  for (std::size_t i = 0; i < r->mesh.vertices_m.size(); ++i) {
+    EXPECT_GT(r->mesh.vertex_normals[i].cast<double>().dot(r->mesh.vertices_m[i].normalized()), 0.99);
+  }
+}
+
+TEST(MeshLoader, MostOfEachSurfaceDecidesItsWinding) {
+  // The dual: a surface wound one way throughout keeps it, whichever way that is (a room
+  // seen from inside is an inside-out box), and so does each of two surfaces that share
+  // no edge, wound the opposite ways. Two thirds of a sheet flipped turns the last third.
+  TempDir dir;
+  const TriangleMesh sphere = make_sphere_mesh(0.5, 3);
+  const TriangleMesh inside_out = with_flipped(sphere, [](std::size_t) { return true; });
+  TriangleMesh pair = sphere;  // the sphere, and the inside-out one 2 m along x
+  const auto offset = static_cast<std::uint32_t>(pair.vertices_m.size());
+  for (const auto& v : inside_out.vertices_m) pair.vertices_m.push_back(v + Eigen::Vector3d(2, 0, 0));
+  for (const auto& t : inside_out.triangles) pair.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  const TriangleMesh sheet = test::sheet_mesh(6);  // 72 triangles
+  const TriangleMesh mostly_flipped = with_flipped(sheet, [](std::size_t t) { return t % 3 != 0; });
+  const TriangleMesh all_flipped = with_flipped(sheet, [](std::size_t) { return true; });
+  struct Case {
+    const TriangleMesh* written;
+    const TriangleMesh* expected;
+    std::size_t flipped;
+  };
+  for (const Case& c : {Case{&sphere, &sphere, 0}, Case{&inside_out, &inside_out, 0}, Case{&pair, &pair, 0},
+                        Case{&mostly_flipped, &all_flipped, sheet.triangle_count() / 3}}) {
+    SCOPED_TRACE(::testing::Message() << c.written->triangle_count() << " triangles");
+    test::write_binary_ply(dir / "kept.ply", *c.written);
+    const Result<LoadedMesh, MeshLoadError> r = load_mesh_file(dir / "kept.ply", Eigen::Vector3d::Ones());
+    ASSERT_TRUE(r.ok()) << r.error_text();
+    EXPECT_TRUE(triangle_keys(r->mesh) == triangle_keys(through_floats(*c.expected)));
+    EXPECT_EQ(r->flipped_triangles, c.flipped);
+  }
+}
+
 TEST(MeshLoader, DegenerateTrianglesAndUnusedVerticesAreDropped) {
   TempDir dir;
   // Two good triangles, one with a repeated corner, one with collinear corners and an

@@ -70,6 +70,22 @@ inline TriangleMesh unit_square_mesh() {
   return mesh;
 }
 
+/// An open sheet of n x n quads of 1 mm in z = 0 from the origin, facing +z: a scan's shape.
+inline TriangleMesh sheet_mesh(int n) {
+  TriangleMesh m;
+  for (int j = 0; j <= n; ++j) {
+    for (int i = 0; i <= n; ++i) m.vertices_m.push_back(Eigen::Vector3d(1e-3 * i, 1e-3 * j, 0.0));
+  }
+  const auto at = [n](int i, int j) { return static_cast<std::uint32_t>(j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  }
+  return m;
+}
+
 /// Binary little-endian PLY (float32 positions, int32 indices).
 inline void write_binary_ply(const std::filesystem::path& file, const TriangleMesh& mesh) {
   std::ofstream out(file, std::ios::binary);

@@ -1,5 +1,7 @@
 #include "verification/proxy_drive.h"
 #include "verification/stroke_set.h"
+#include "mesh_io/mesh_loader.h"
+#include "mesh_io/test_mesh_files.h"
 #include "test_meshes.h"
 
 using namespace mhd::test;  // hand-made meshes
@@ -106,6 +108,44 @@ TEST(DriveProxy, AFrontOnlySheetHoldsTheHandInFrontAndLetsItOutFromBehind) {
       EXPECT_LT(risen.back().force_W.z(), 0.0);
     }
   }
+}
+
+TEST(DriveProxy, AFrontOnlyScanFileWithTrianglesWoundTheWrongWayHoldsTheHandOnEveryOne) {
+  // A scan's sheet (40 x 40 quads of 1 mm, facing +z) written with every fifth triangle
+  // wound the wrong way, as files from some tools come, and touched from the front only.
+  // The hand comes down through the sheet at points over many triangles, the flipped ones
+  // among them. Judged by the sheet as made (every triangle facing +z): the proxy never
+  // crosses the front and is held on top every time.
+  test::TempDir dir;
+  const TriangleMesh made = test::sheet_mesh(40);
+  TriangleMesh written = made;
+  for (std::size_t t = 0; t < written.triangles.size(); t += 5) std::swap(written.triangles[t][1], written.triangles[t][2]);
+  test::write_binary_ply(dir / "scan.ply", written);
+  const auto loaded = load_mesh_file(dir / "scan.ply", Vector3d::Ones());
+  ASSERT_TRUE(loaded.ok()) << loaded.error_text();
+  CollisionWorld world;
+  const int id = world.add_object(std::make_shared<const MeshBvh>(std::make_shared<const TriangleMesh>(loaded->mesh)),
+                                  Pose::Identity());
+  world.set_touchable(id, TouchableFaces::Front);
+  const PlacedMesh truth{&made, Pose::Identity(), TouchableFaces::Front};
+  const SurfaceCrossingOracle oracle(std::span<const PlacedMesh>(&truth, 1));
+  const std::vector<HapticMaterial> materials(1);
+  const ProxySettings settings;
+  std::size_t crossings = 0, held = 0, strokes = 0;
+  for (int j = 0; j < 12; ++j) {
+    for (int i = 0; i < 12; ++i) {
+      // 12 x 12 points about 0.8 mm apart, off the grid's lines.
+      const Vector3d above(0.015 + 0.00083 * i, 0.015 + 0.00079 * j, 0.004);
+      std::vector<Vector3d> down;
+      for (int k = 0; k <= 160; ++k) down.push_back(above - Vector3d(0, 0, 0.00005 * k));  // to 4 mm below
+      const TickRecord records = drive_proxy(world, materials, settings, down, 1000.0);
+      crossings += count_crossings(oracle, records);
+      held += records.back().proxy_W.z() >= 0.0 && records.back().force_W.z() > 0.0 ? 1 : 0;
+      ++strokes;
+    }
+  }
+  EXPECT_EQ(crossings, 0U);
+  EXPECT_EQ(held, strokes);
 }
 
 TEST(DriveProxy, FastStrokesDoNotPopThrough) {
