@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -19,6 +20,7 @@
 #include <regex>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace {
 
@@ -39,9 +41,37 @@ void add_stray_triangle(mhd::TriangleMesh& mesh, double stray_m) {
   mesh.triangles.push_back({first, first + 1, first + 2});
 }
 
+// Winds about `percent` % of the triangles the other way, picked by a hash of their number
+// (the same ones on every run): a file as some tools write them, with mixed windings.
+// Returns how many.
+std::size_t wind_some_the_other_way(mhd::TriangleMesh& mesh, double percent) {
+  std::size_t wound = 0;
+  const double fraction = percent / 100.0;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    // splitmix64's finaliser: consecutive numbers spread over the whole range.
+    std::uint64_t h = static_cast<std::uint64_t>(t) + 0x9E3779B97F4A7C15ULL;
+    h = (h ^ (h >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    h = (h ^ (h >> 27)) * 0x94D049BB133111EBULL;
+    h ^= h >> 31;
+    if (static_cast<double>(h >> 11) * 0x1p-53 < fraction) {
+      std::swap(mesh.triangles[t][1], mesh.triangles[t][2]);
+      ++wound;
+    }
+  }
+  return wound;
+}
+
+// What is done to a made mesh before it is written: faults of meshes as users have them.
+struct FileFaults {
+  double stray_m = 0.0;
+  double wrong_winding_percent = 0.0;
+};
+
 int write_and_report(mhd::TriangleMesh mesh, const std::string& out, std::chrono::steady_clock::time_point start,
-                     double stray_m) {
-  if (stray_m > 0.0) add_stray_triangle(mesh, stray_m);
+                     const FileFaults& faults) {
+  if (faults.stray_m > 0.0) add_stray_triangle(mesh, faults.stray_m);
+  const std::size_t wound =
+      faults.wrong_winding_percent > 0.0 ? wind_some_the_other_way(mesh, faults.wrong_winding_percent) : 0;
   const auto built = std::chrono::steady_clock::now();
   const std::filesystem::path file(out);
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
@@ -53,6 +83,7 @@ int write_and_report(mhd::TriangleMesh mesh, const std::string& out, std::chrono
   std::printf("%s: %zu triangles, %zu vertices, %.1f x %.1f x %.1f mm; built in %.0f ms, written in %.0f ms\n",
               out.c_str(), mesh.triangle_count(), mesh.vertices_m.size(), size_mm.x(), size_mm.y(), size_mm.z(),
               ms(built - start).count(), ms(written - built).count());
+  if (wound > 0) std::printf("%s: %zu triangles wound the other way\n", out.c_str(), wound);
   return 0;
 }
 
@@ -68,7 +99,7 @@ void parse_grid(const std::string& text, mhd::mesh_gen::RangeScanParams& params)
 
 int scan_and_report(const std::string& source, const mhd::mesh_gen::ScanSourceOptions& options,
                     mhd::mesh_gen::RangeScanParams params, const std::string& grid, const std::string& out,
-                    std::chrono::steady_clock::time_point start, double stray_m) {
+                    std::chrono::steady_clock::time_point start, const FileFaults& faults) {
   parse_grid(grid, params);
   const mhd::TriangleMesh source_mesh = mhd::mesh_gen::load_scan_source(source, options);
   const mhd::mesh_gen::RangeScan scan = mhd::mesh_gen::make_range_scan(source_mesh, params);
@@ -78,7 +109,7 @@ int scan_and_report(const std::string& source, const mhd::mesh_gen::ScanSourceOp
               "triangles at depth jumps, %zu degenerate\n",
               source.c_str(), source_mesh.triangle_count(), grid.c_str(), st.spacing_m * kMillimetresPerMetre,
               st.samples_hit, st.patches, st.dropped_depth_jump, st.dropped_degenerate);
-  return write_and_report(scan.mesh, out, start, stray_m);
+  return write_and_report(scan.mesh, out, start, faults);
 }
 
 }  // namespace
@@ -96,6 +127,11 @@ int main(int argc, char** argv) {
                  "add one small triangle this far past the mesh along +x (a scan's stray point); give it before "
                  "the subcommand")
       ->check(CLI::NonNegativeNumber);
+  double wrong_winding_percent = 0.0;
+  app.add_option("--wrong-winding-percent", wrong_winding_percent,
+                 "wind about this share of the triangles the other way, scattered (a file with mixed windings); "
+                 "give it before the subcommand")
+      ->check(CLI::Range(0.0, 100.0));
 
   std::size_t dolphin_triangles = 3000;
   std::string dolphin_out;
@@ -151,29 +187,29 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
 
   try {
-    const double stray_m = stray_mm / kMillimetresPerMetre;
+    const FileFaults faults{stray_mm / kMillimetresPerMetre, wrong_winding_percent};
     if (scan->parsed()) {
       (void)mhd::mesh_gen::mesh_file_format(scan_out);
       if (unit->count() > 0) scan_options.file_unit_m = scan_unit_m;
       scan_params.noise_m = scan_noise_mm / kMillimetresPerMetre;
       return scan_and_report(scan_source, scan_options, scan_params, scan_grid, scan_out,
-                             std::chrono::steady_clock::now(), stray_m);
+                             std::chrono::steady_clock::now(), faults);
     }
     (void)mhd::mesh_gen::mesh_file_format(dolphin->parsed() ? dolphin_out : sphere->parsed() ? sphere_out : bowl_out);
     const auto start = std::chrono::steady_clock::now();
     if (dolphin->parsed()) {
       return write_and_report(mhd::mesh_gen::make_dolphin(mhd::mesh_gen::dolphin_layout(dolphin_triangles)),
-                              dolphin_out, start, stray_m);
+                              dolphin_out, start, faults);
     }
     if (sphere->parsed()) {
       return write_and_report(mhd::mesh_gen::make_uv_sphere(sphere_radius_mm / kMillimetresPerMetre,
                                                              mhd::mesh_gen::uv_sphere_layout(sphere_triangles)),
-                              sphere_out, start, stray_m);
+                              sphere_out, start, faults);
     }
     const double cap_rad = bowl_cap_deg * std::numbers::pi / 180.0;
     return write_and_report(mhd::mesh_gen::make_bowl(bowl_radius_mm / kMillimetresPerMetre, cap_rad,
                                                      mhd::mesh_gen::bowl_layout(bowl_triangles, cap_rad)),
-                            bowl_out, start, stray_m);
+                            bowl_out, start, faults);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "mhd-mesh-gen: %s\n", e.what());
     return 1;
