@@ -1,6 +1,8 @@
 #include "geometry/coherent_winding.h"
 
+#include <algorithm>
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <numeric>
@@ -11,6 +13,8 @@ namespace mhd {
 namespace {
 
 constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+// Rows of edges leaving a vertex up to this long are checked pair by pair; longer ones sorted.
+constexpr std::uint64_t kMaxRowComparedPairwise = 32;
 
 // The triangles at each vertex, in compressed rows: those of vertex v are
 // triangles[first[v] .. first[v + 1]).
@@ -60,6 +64,44 @@ std::uint32_t across_edge(const TriangleMesh& mesh, const VertexTriangles& at, s
   return found;
 }
 
+// Whether some edge is walked the same way by two triangles: two neighbours wound
+// against each other, or three or more triangles on one edge. Without one, every surface
+// is wound one way already. Cheaper than the walk (each vertex's own row, read in order,
+// no triangle looked up), so a mesh wound one way, as most are, pays only this.
+bool some_edge_walked_twice(const TriangleMesh& mesh) {
+  // The vertex each edge leaving a vertex goes to, in compressed rows as in VertexTriangles.
+  std::vector<std::uint64_t> first(mesh.vertices_m.size() + 1, 0);
+  for (const TriangleIndices& t : mesh.triangles) {
+    for (const std::uint32_t v : t) ++first[v + 1];
+  }
+  std::partial_sum(first.begin(), first.end(), first.begin());
+  std::vector<std::uint32_t> to(3 * mesh.triangles.size(), 0);
+  for (const TriangleIndices& t : mesh.triangles) {
+    for (std::size_t i = 0; i < 3; ++i) to[first[t[i]]++] = t[(i + 1) % 3];
+  }
+  // `first` now holds each row's end; a row starts where the one before it ends.
+  std::uint64_t begin = 0;
+  for (std::size_t v = 0; v + 1 < first.size(); ++v) {
+    const std::uint64_t end = first[v];
+    if (end - begin > kMaxRowComparedPairwise) {
+      // A fan's centre or a pole: sorted, so that a million triangles round one vertex
+      // cost a sort, not a million squared comparisons.
+      const auto row = to.begin() + static_cast<std::ptrdiff_t>(begin);
+      const auto row_end = to.begin() + static_cast<std::ptrdiff_t>(end);
+      std::sort(row, row_end);
+      if (std::adjacent_find(row, row_end) != row_end) return true;
+    } else {
+      for (std::uint64_t i = begin; i < end; ++i) {
+        for (std::uint64_t j = i + 1; j < end; ++j) {
+          if (to[i] == to[j]) return true;
+        }
+      }
+    }
+    begin = end;
+  }
+  return false;
+}
+
 double area_of(const TriangleMesh& mesh, const TriangleIndices& t) {
   const Eigen::Vector3d& a = mesh.vertices_m[t[0]];
   return (mesh.vertices_m[t[1]] - a).cross(mesh.vertices_m[t[2]] - a).norm();
@@ -69,7 +111,7 @@ double area_of(const TriangleMesh& mesh, const TriangleIndices& t) {
 
 std::size_t orient_coherently(TriangleMesh& mesh) {
   const std::size_t count = mesh.triangles.size();
-  if (count < 2) return 0;
+  if (count < 2 || !some_edge_walked_twice(mesh)) return 0;
   const VertexTriangles at = triangles_at_vertices(mesh);
   // 0: not reached yet; 1: wound as its surface's first triangle; 2: the other way.
   std::vector<std::uint8_t> side(count, 0);

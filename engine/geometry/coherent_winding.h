@@ -18,7 +18,9 @@ namespace mhd {
 /// way throughout, inside-out or not, stays as it is; the rest is turned to it. A surface
 /// with no consistent winding (a Moebius strip) keeps the one met first. Vertex normals
 /// are not recomputed. Returns how many triangles were turned.
-/// Memory: about 17 bytes a triangle and 8 a vertex while it runs.
+/// A mesh with no edge walked the same way twice is wound one way already and costs one
+/// pass over its edges (12 bytes a triangle and 8 a vertex); otherwise the surfaces are
+/// walked (17 and 8 more). A vertex of any number of triangles costs no more than a sort.
 std::size_t orient_coherently(TriangleMesh& mesh);
 
 }  // namespace mhd

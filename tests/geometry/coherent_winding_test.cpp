@@ -83,6 +83,24 @@ TEST(CoherentWinding, SheetsMeetingAtAnEdgeOfThreeAreEachTheirOwnSurface) {
   EXPECT_EQ(m.triangles.back(), (TriangleIndices{2, b, 3}));
 }
 
+TEST(CoherentWinding, AFanOfAQuarterMillionTrianglesRoundOneVertexIsWorkedInBoundedTime) {
+  // A disc of 2^18 triangles round its centre, wound one way, then with one turned: the
+  // centre has 2^18 edges leaving it, which compared pair by pair would take 2^35 steps.
+  constexpr std::uint32_t kRim = 1U << 18;
+  TriangleMesh made;
+  made.vertices_m.push_back(V::Zero());
+  for (std::uint32_t k = 0; k < kRim; ++k) {
+    const double a = 2.0 * std::numbers::pi * k / kRim;
+    made.vertices_m.push_back(V(std::cos(a), std::sin(a), 0.0));
+  }
+  for (std::uint32_t k = 0; k < kRim; ++k) made.triangles.push_back({0, 1 + k, 1 + (k + 1) % kRim});
+  TriangleMesh m = made;
+  EXPECT_EQ(orient_coherently(m), 0U);
+  flip(m, kRim / 3);
+  EXPECT_EQ(orient_coherently(m), 1U);
+  EXPECT_TRUE(m.triangles == made.triangles);
+}
+
 TEST(CoherentWinding, ASurfaceWithNoWindingEndsWithOneSeam) {
   // A Moebius strip has no consistent winding: whatever is done, some edge is walked
   // twice. Every other edge agrees, and the work ends.
