@@ -11,6 +11,8 @@
 #include <limits>
 #include <map>
 #include <random>
+#include <string>
+#include <string_view>
 #include <tuple>
 #include <vector>
 
@@ -189,27 +191,37 @@ TEST(MeshLoader, TrianglesWoundAgainstTheirNeighboursAreTurnedToThem) {
   // A closed sphere (1,280 triangles) and an open sheet (a scan's shape), each written with
   // some of its triangles wound the wrong way: one, or a scattered few percent up to a
   // third. The loaded mesh is the mesh as made, every triangle facing out, and so are its
-  // vertex normals.
+  // vertex normals. In PLY, with shared corners, and in STL, whose triangles share none
+  // until the loader welds them.
   TempDir dir;
   const TriangleMesh sphere = make_sphere_mesh(0.5, 3);
   const TriangleMesh sheet = test::sheet_mesh(20);
   std::mt19937 rng(20261202);
   for (const TriangleMesh* made : {&sphere, &sheet}) {
     for (const double fraction : {0.0, 0.03, 0.1, 0.33}) {
-      SCOPED_TRACE(::testing::Message() << made->triangle_count() << " triangles, " << fraction << " flipped");
-      std::bernoulli_distribution pick(fraction);
-      std::size_t flipped = 0;
-      const TriangleMesh written = with_flipped(*made, [&](std::size_t t) {
-        const bool f = fraction == 0.0 ? t == made->triangles.size() / 2 : pick(rng);
-        flipped += f ? 1 : 0;
-        return f;
-      });
-      test::write_binary_ply(dir / "flipped.ply", written);
-      const Result<LoadedMesh, MeshLoadError> r = load_mesh_file(dir / "flipped.ply", Eigen::Vector3d::Ones());
-      ASSERT_TRUE(r.ok()) << r.error_text();
-      EXPECT_TRUE(triangle_keys(r->mesh) == triangle_keys(through_floats(*made)));  // printed, it fills pages
-      EXPECT_EQ(r->flipped_triangles, flipped);
-      expect_unit_normals(r->mesh);
+      for (const std::string_view format : {"ply", "stl"}) {
+        SCOPED_TRACE(::testing::Message() << made->triangle_count() << " triangles, " << fraction << " flipped, "
+                                          << format);
+        std::bernoulli_distribution pick(fraction);
+        std::size_t flipped = 0;
+        const TriangleMesh written = with_flipped(*made, [&](std::size_t t) {
+          const bool f = fraction == 0.0 ? t == made->triangles.size() / 2 : pick(rng);
+          flipped += f ? 1 : 0;
+          return f;
+        });
+        const std::filesystem::path file = dir / ("flipped." + std::string(format));
+        if (format == "ply") {
+          test::write_binary_ply(file, written);
+        } else {
+          test::write_binary_stl(file, written);
+        }
+        const Result<LoadedMesh, MeshLoadError> r = load_mesh_file(file, Eigen::Vector3d::Ones());
+        ASSERT_TRUE(r.ok()) << r.error_text();
+        EXPECT_TRUE(triangle_keys(r->mesh) == triangle_keys(through_floats(*made)));  // printed, it fills pages
+        EXPECT_EQ(r->flipped_triangles, flipped);
+        EXPECT_EQ(r->mesh.vertices_m.size(), made->vertices_m.size());  // welded
+        expect_unit_normals(r->mesh);
+      }
     }
   }
   // The normals face out again on the sphere (a flipped triangle's corners pulled them in).

@@ -1,5 +1,5 @@
 #pragma once
-// Test helpers: a private temp folder per test and writers for small OBJ / PLY files.
+// Test helpers: a private temp folder per test and writers for small OBJ / PLY / STL files.
 
 #include "geometry/triangle_mesh.h"
 
@@ -108,6 +108,28 @@ inline void write_binary_ply(const std::filesystem::path& file, const TriangleMe
     put(std::uint8_t{3});
     for (auto i : t) put(static_cast<std::int32_t>(i));
   }
+  out.write(body.data(), static_cast<std::streamsize>(body.size()));
+  ASSERT_TRUE(out.good()) << file;
+}
+
+/// Binary STL: every triangle with corners of its own, as STL files have them (the
+/// loader welds them), and a zero facet normal, which readers recompute.
+inline void write_binary_stl(const std::filesystem::path& file, const TriangleMesh& mesh) {
+  std::string body(80, ' ');
+  auto put = [&body](const auto& value) {
+    char bytes[sizeof value];
+    std::memcpy(bytes, &value, sizeof value);
+    body.append(bytes, sizeof value);
+  };
+  put(static_cast<std::uint32_t>(mesh.triangles.size()));
+  for (const auto& t : mesh.triangles) {
+    for (int k = 0; k < 3; ++k) put(0.0F);
+    for (auto i : t) {
+      for (int k = 0; k < 3; ++k) put(static_cast<float>(mesh.vertices_m[i][k]));
+    }
+    put(std::uint16_t{0});
+  }
+  std::ofstream out(file, std::ios::binary);
   out.write(body.data(), static_cast<std::streamsize>(body.size()));
   ASSERT_TRUE(out.good()) << file;
 }
