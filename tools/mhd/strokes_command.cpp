@@ -115,6 +115,10 @@ int run(const StrokesOptions& opt) {
   fmt::print("held behind a surface: {} ticks (proxy over {:.0f} mm from the hand, a face's front towards the hand "
              "between them)\n",
              r.held_ticks, 1e3 * mhd::verify::kHeldGap_m);
+  // A tick out of work stops its proxy short (docs/proxy.md, "The work budget"): what a
+  // follow failure with no force is most likely to be.
+  fmt::print("out of work: {} ticks (the tick's budget of sweeps and triangle tests ran out)\n",
+             r.budget_exhausted_ticks);
   // Both halves of the proxy's contract (docs/proxy.md) decide the status.
   return r.pop_throughs == 0 && r.ticks_inside == 0 && r.follow_failures == 0 ? 0 : 1;
 }
