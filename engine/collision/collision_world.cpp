@@ -25,6 +25,12 @@ constexpr double kInflatePerSkin = 1e-2;
 // the surface (hundreds of triangles on a 200k scan, 527 tests at the bench's p99.9 tick,
 // 71 at 1 mm).
 constexpr double kFirstPiece_m = 0.001;
+// On a mesh much finer than that, the first piece is this many times its vertex spacing,
+// so that its box holds about as many triangles as a millimetre of a fine scan: a
+// millimetre of the 100 M sphere's pole holds over 100,000 leaves, more than a tick may
+// test, and a sweep from there could never clear a first piece. Not under kMinFirstPiece_m.
+constexpr double kFirstPiecePerSpacing = 4.0;
+constexpr double kMinFirstPiece_m = 1e-5;
 // A sweep piece no larger than this (a first piece and its margin, or a short move) gathers
 // the candidate list when it is not there: the box round the piece's start reaching this
 // far each way, so that later first pieces from about the same place fit in it. Larger
@@ -57,7 +63,11 @@ std::uint64_t next_geometry_id() {
 
 }  // namespace
 
+CollisionWorld::CollisionWorld() : first_piece_m_(kFirstPiece_m) {}
+
 int CollisionWorld::add_object(std::shared_ptr<const MeshBvh> shape, const Pose& X_WO) {
+  const double fine_piece_m = kFirstPiecePerSpacing * shape->vertex_spacing_m();
+  if (fine_piece_m < first_piece_m_) first_piece_m_ = std::max(fine_piece_m, kMinFirstPiece_m);
   objects_.push_back(Object{std::move(shape), std::nullopt, X_WO, X_WO.inverse(Eigen::Isometry), nullptr});
   geometry_id_ = next_geometry_id();
   return static_cast<int>(objects_.size()) - 1;
@@ -155,7 +165,10 @@ std::optional<SweepHit> CollisionWorld::sweep_among(int only_object, const Eigen
                                                     std::span<const TriangleRef> ignore, SweepWork* work,
                                                     SweepCandidates* near) const {
   if (near != nullptr) near->bind(geometry_id_);
-  if (work != nullptr) work->tested_count = 0;
+  if (work != nullptr) {
+    work->tested_count = 0;
+    work->clear_fraction = 0.0;
+  }
   // Exact shapes over the whole segment, triangles piece by piece; the earlier hit wins.
   const std::optional<SweepHit> exact = sweep_exact(only_object, a_W, b_W, skin_m, ignore, work);
   if (work != nullptr && work->exhausted) return std::nullopt;
@@ -180,6 +193,7 @@ std::optional<SweepHit> CollisionWorld::sweep_among(int only_object, const Eigen
     if (only_object >= 0 && static_cast<int>(oi) != only_object) continue;
     const Object& o = objects_[oi];
     if (o.exact) continue;  // swept above
+    if (work != nullptr && work->exhausted) break;
     const Eigen::Vector3d a_O = o.X_OW * piece_a_W;
     const Eigen::Vector3d b_O = o.X_OW * piece_b_W;
     const Eigen::Vector3d margin = Eigen::Vector3d::Constant(margin_m);
@@ -189,12 +203,15 @@ std::optional<SweepHit> CollisionWorld::sweep_among(int only_object, const Eigen
     const MeshBvh& shape = *o.shape;
     const TriangleMesh& mesh = shape.mesh();
     const int object = static_cast<int>(oi);
-    auto test = [&](std::uint32_t ti) {
-      if (((ignored_bits >> (ti & 63U)) & 1U) != 0 && is_ignored(ignore, object, ti)) return;
+    // Tests one triangle; false once the budget is spent, which stops the walk: the answer
+    // is thrown away then, and a dense spot would otherwise cost the whole walk.
+    auto test = [&](std::uint32_t ti) -> bool {
+      if (work != nullptr) ++work->leaves_reached;
+      if (((ignored_bits >> (ti & 63U)) & 1U) != 0 && is_ignored(ignore, object, ti)) return true;
       if (work != nullptr) {
         if (work->triangle_tests >= work->max_triangle_tests) {
           work->exhausted = true;
-          return;
+          return false;
         }
         ++work->triangle_tests;
         if (work->tested_count < SweepWork::kMaxTested) {
@@ -205,7 +222,7 @@ std::optional<SweepHit> CollisionWorld::sweep_among(int only_object, const Eigen
       const auto hit = sweep_point_triangle(a_O, b_O, mesh.vertices_m[t[0]], mesh.vertices_m[t[1]],
                                             mesh.vertices_m[t[2]], shape.face_normal_O(ti), skin_m, inflate_m);
       // The hit's normal faces the start: the same way as the face's, from the front.
-      if (!hit || !touchable_from(o.touchable, hit->normal.dot(shape.face_normal_O(ti)) > 0.0)) return;
+      if (!hit || !touchable_from(o.touchable, hit->normal.dot(shape.face_normal_O(ti)) > 0.0)) return true;
       // Earliest stop wins; ties (shared edges) go to the earlier plane crossing, then
       // to the lower index so results never depend on traversal order.
       const bool better = hit->t_stop < best_t_stop ||
@@ -214,10 +231,11 @@ std::optional<SweepHit> CollisionWorld::sweep_among(int only_object, const Eigen
                             (hit->t_plane == best_t_plane && best &&
                              (object < best->where.object ||
                               (object == best->where.object && ti < best->where.triangle)))));
-      if (!better) return;
+      if (!better) return true;
       best_t_stop = hit->t_stop;
       best_t_plane = hit->t_plane;
       best = hit_in_world(o.X_WO, TriangleRef{object, ti}, *hit, mesh.vertices_m[t[0]]);
+      return true;
     };
     // The same triangles either way: from the list where its box holds the piece's, else
     // from the tree.
@@ -230,28 +248,34 @@ std::optional<SweepHit> CollisionWorld::sweep_among(int only_object, const Eigen
       region = near->gather(shape, object, shape.quantize(gather_O));
     }
     if (region != nullptr) {
-      near->for_each_overlapping(*region, q_O, test);
+      // At most a list's capacity of leaves: past the budget each returns at once.
+      near->for_each_overlapping(*region, q_O, [&](std::uint32_t ti) { (void)test(ti); });
     } else {
       if (near != nullptr) near->count_walk();
-      shape.for_each_leaf_overlapping(q_O, [&](std::uint32_t ti, const btQuantizedBvhNode&) { test(ti); });
+      shape.for_each_leaf_overlapping(q_O, [&](std::uint32_t ti, const btQuantizedBvhNode&) { return test(ti); });
     }
   }
   return best;
   };
   // A long sweep (a deep HIP, the containment ray) would query one box covering much of a
-  // large mesh. Sweep it in pieces that double in length from kFirstPiece_m, nearest
+  // large mesh. Sweep it in pieces that double in length from first_piece_m_, nearest
   // first: each box stays small, and the first piece that hits holds the first hit.
   const Eigen::Vector3d ab = b_W - a_W;
   const double length = ab.norm();
-  if (!(length > kFirstPiece_m)) return earliest(sweep_piece(a_W, b_W));
+  if (!(length > first_piece_m_)) return earliest(sweep_piece(a_W, b_W));
   double s = 0.0;
-  double piece = kFirstPiece_m;
+  double piece = first_piece_m_;
   while (s < length) {
     const double e = std::min(length, s + piece);
     const Eigen::Vector3d p = s == 0.0 ? a_W : Eigen::Vector3d(a_W + (s / length) * ab);
     const Eigen::Vector3d q = e == length ? b_W : Eigen::Vector3d(a_W + (e / length) * ab);
     std::optional<SweepHit> hit = sweep_piece(p, q);
-    if (work != nullptr && work->exhausted) return std::nullopt;
+    if (work != nullptr && work->exhausted) {
+      // The pieces before this one are clear of triangles, and of the exact shapes short
+      // of their first hit.
+      work->clear_fraction = exact ? std::min(s / length, exact->t_stop) : s / length;
+      return std::nullopt;
+    }
     if (hit) {
       hit->t_stop = (s + hit->t_stop * (e - s)) / length;
       return earliest(hit);

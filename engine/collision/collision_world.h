@@ -49,6 +49,14 @@ struct SweepWork {
   int triangle_tests = 0;
   int max_triangle_tests = std::numeric_limits<int>::max();
   bool exhausted = false;
+  /// Leaves the sweeps reached, from the tree or the candidate list: tested, or skipped as
+  /// ignored. A sweep that reaches its limit stops there, so a triangle-dense spot (a fan
+  /// of slivers round one vertex) costs a tick no more than its limit's tests.
+  int leaves_reached = 0;
+  /// Of a sweep that ran out of work: the fraction of its segment swept clear before it
+  /// did, in whole pieces (sweep()); the point may go that far and cross nothing. 0 when
+  /// the first piece ran out.
+  double clear_fraction = 0.0;
   /// The first triangles the latest sweep tested (hit or not), in the order tested: where
   /// a caller may look first for the face beyond an edge the sweep ran along. A hint only:
   /// nothing here is needed for a sweep's answer.
@@ -59,6 +67,7 @@ struct SweepWork {
 
 class CollisionWorld {
  public:
+  CollisionWorld();
   /// Adds an object; returns its index (0, 1, ...).
   int add_object(std::shared_ptr<const MeshBvh> shape, const Pose& X_WO);
 
@@ -185,6 +194,8 @@ class CollisionWorld {
   };
   std::vector<Object> objects_;
   std::uint64_t geometry_id_ = 0;
+  // The first piece of a long sweep: a millimetre, or less where a mesh is finer (add_object).
+  double first_piece_m_;
 };
 
 }  // namespace mhd

@@ -9,8 +9,10 @@
 
 #include <btBulletCollisionCommon.h>
 
+#include <algorithm>
 #include <array>
 #include <atomic>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -114,6 +116,12 @@ class MeshBvh {
   [[nodiscard]] const TriangleMesh& mesh() const { return *mesh_; }
   [[nodiscard]] const std::shared_ptr<const TriangleMesh>& mesh_ptr() const { return mesh_; }
   [[nodiscard]] const Eigen::AlignedBox3d& bounds() const { return bounds_; }
+  /// The spacing of the mesh's vertices as the tree's grid judges it (tree_grid.h): its
+  /// bulk's largest side over the square root of their count. Zero for a mesh of one point.
+  [[nodiscard]] double vertex_spacing_m() const {
+    const auto n = static_cast<double>(std::max<std::size_t>(mesh_->vertices_m.size(), 1));
+    return grid_.isEmpty() ? 0.0 : grid_.sizes().maxCoeff() / std::sqrt(n);
+  }
   [[nodiscard]] const btBvhTriangleMeshShape& shape() const { return *shape_; }
   /// Unit counter-clockwise normal of triangle t in the mesh frame, zero for a triangle of
   /// zero area: unit_face_normal() of its corners, computed when the tree is built or

@@ -302,5 +302,83 @@ TEST(CollisionWorld, ATriangleFarFromTheRestOfItsMeshIsSweptLikeTheRest) {
   }
 }
 
+// A fan of slivers round one vertex, as at a fine uv-sphere's pole: every sliver's box holds
+// the apex, so a sweep there meets all of their leaves.
+std::shared_ptr<const MeshBvh> sliver_fan(int slivers) {
+  auto mesh = std::make_shared<TriangleMesh>();
+  mesh->vertices_m.emplace_back(0.0, 0.0, 0.0);
+  for (int j = 0; j < slivers; ++j) {
+    const double a = 2.0 * std::numbers::pi * j / slivers;
+    mesh->vertices_m.emplace_back(1e-4 * std::cos(a), 1e-4 * std::sin(a), -1e-9);
+  }
+  for (int j = 0; j < slivers; ++j) {
+    mesh->triangles.push_back(
+        {0, static_cast<std::uint32_t>(1 + j), static_cast<std::uint32_t>(1 + (j + 1) % slivers)});
+  }
+  return std::make_shared<MeshBvh>(mesh);
+}
+
+TEST(CollisionWorld, ASweepOutOfItsBudgetStopsWalkingTheTree) {
+  const int slivers = 20000;
+  CollisionWorld world;
+  world.add_object(sliver_fan(slivers), Pose::Identity());
+  const Eigen::Vector3d above(1e-7, 2e-7, 5e-4);
+  const Eigen::Vector3d below(1e-7, 2e-7, -5e-4);
+  // Out of its budget: the sweep says so, and its walk went no further than it could test.
+  SweepWork out;
+  out.max_triangle_tests = 500;
+  EXPECT_FALSE(world.sweep(above, below, 1e-6, {}, &out));
+  EXPECT_TRUE(out.exhausted);
+  EXPECT_EQ(out.triangle_tests, 500);
+  EXPECT_LE(out.leaves_reached, 501);
+  // The dual: within its budget the walk reaches every sliver, and the sweep stops on the fan.
+  SweepWork whole;
+  const auto hit = world.sweep(above, below, 1e-6, {}, &whole);
+  ASSERT_TRUE(hit);
+  EXPECT_FALSE(whole.exhausted);
+  EXPECT_GE(whole.leaves_reached, slivers);
+  EXPECT_EQ(whole.triangle_tests, whole.leaves_reached);
+  EXPECT_NEAR(hit->t_stop * 1e-3, 5e-4 - 1e-6, 1e-8);
+}
+
+TEST(CollisionWorld, ALongSweepFromAFineMeshsPoleClearsItsFirstPieces) {
+  // A uv-sphere's polar cap, flattened: a fan of 1,000 slivers 63 µm long round the pole,
+  // then a band of 2,000 out to 126 µm. From the pole, half a skin above the cap, a sweep 5
+  // mm long over more leaves than its budget allows runs out, but only after the pieces
+  // nearest its start: on a mesh this fine they are a few vertex spacings long, not a
+  // millimetre, whose box would hold the whole cap.
+  const int segments = 1000;
+  auto mesh = std::make_shared<TriangleMesh>();
+  mesh->vertices_m.emplace_back(0.0, 0.0, 0.0);
+  for (const double r_m : {63e-6, 126e-6}) {
+    for (int j = 0; j < segments; ++j) {
+      const double a = 2.0 * std::numbers::pi * j / segments;
+      mesh->vertices_m.emplace_back(r_m * std::cos(a), r_m * std::sin(a), 0.0);
+    }
+  }
+  const auto ring = [&](int r, int j) { return static_cast<std::uint32_t>(1 + r * segments + j % segments); };
+  for (int j = 0; j < segments; ++j) {
+    mesh->triangles.push_back({0, ring(0, j), ring(0, j + 1)});
+    mesh->triangles.push_back({ring(0, j), ring(1, j), ring(1, j + 1)});
+    mesh->triangles.push_back({ring(0, j), ring(1, j + 1), ring(0, j + 1)});
+  }
+  CollisionWorld world;
+  world.add_object(std::make_shared<MeshBvh>(mesh), Pose::Identity());
+  const double skin_m = 1e-6;
+  const Eigen::Vector3d from(1e-7, 2e-7, 0.5 * skin_m);
+  const Eigen::Vector3d to(3e-3, 4e-3, 0.5 * skin_m);
+  SweepWork work;
+  work.max_triangle_tests = 1500;
+  EXPECT_FALSE(world.sweep(from, to, skin_m, {}, &work));
+  ASSERT_TRUE(work.exhausted);
+  const double clear_m = work.clear_fraction * (to - from).norm();
+  EXPECT_GE(clear_m, 1e-5);
+  EXPECT_LT(clear_m, 126e-6);  // not past the cap it did not finish
+  // The dual: within a budget that holds the cap, the sweep clears the whole way.
+  SweepWork whole;
+  EXPECT_FALSE(world.sweep(from, to, skin_m, {}, &whole));
+  EXPECT_FALSE(whole.exhausted);
+}
+
 }  // namespace
 }  // namespace mhd
