@@ -198,9 +198,10 @@ ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMateri
       sticking = false;
     }
   }
-  if (work.exhausted && motion.p == start && state.plane_count == 0) {
-    // Out of work before the proxy moved: it stays, and so does last tick's contact, so
-    // the force goes on as a spring to the HIP instead of dropping to zero.
+  if (work.exhausted && (motion.p == start || work.went_partway) && state.plane_count == 0) {
+    // Out of work before the proxy moved, or with it part of the way along a leg: last
+    // tick's contact goes on, so the force goes on as a spring to the HIP instead of
+    // dropping to zero.
     state.planes = previous_planes;
     state.plane_count = previous_plane_count;
   }

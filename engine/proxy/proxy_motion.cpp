@@ -37,6 +37,11 @@ bool budgeted_sweep(const CollisionWorld& world, TickWork& work, const Eigen::Ve
   hit = world.sweep(a, b, skin_m, ignore, &work.sweep, work.near);
   if (work.sweep.exhausted) {
     work.exhausted = true;
+    work.has_partway = work.sweep.clear_fraction > 0.0;
+    if (work.has_partway) {
+      work.partway_from = a;
+      work.partway = a + work.sweep.clear_fraction * (b - a);
+    }
     return false;
   }
   return true;
@@ -411,9 +416,11 @@ bool go_if_visible(const CollisionWorld& world, double skin_m, const Eigen::Vect
 // (whose triangles are then the only ones it skips), so the proxy never crosses the
 // surface. Planes are never carried over from the last tick: they are found again by
 // the first sweep, so a plane that no longer blocks cannot hold the proxy.
-void solve_motion(const CollisionWorld& world, double skin_m, const Eigen::Vector3d& start,
-                  const Eigen::Vector3d& goal, Motion& m, ProxyState& state, TickWork& work,
-                  const TriangleRef* resting_on) {
+namespace {
+
+void solve_motion_steps(const CollisionWorld& world, double skin_m, const Eigen::Vector3d& start,
+                        const Eigen::Vector3d& goal, Motion& m, ProxyState& state, TickWork& work,
+                        const TriangleRef* resting_on) {
   const double min_step = kMinStepPerSkin * skin_m;
   m.p = start;
   state.path_points = 0;
@@ -519,6 +526,27 @@ void solve_motion(const CollisionWorld& world, double skin_m, const Eigen::Vecto
     const Release r = release_one_plane(world, skin_m, goal, m, state, work);
     if (r != Release::Moved) return;
   }
+}
+
+}  // namespace
+
+void solve_motion(const CollisionWorld& world, double skin_m, const Eigen::Vector3d& start,
+                  const Eigen::Vector3d& goal, Motion& m, ProxyState& state, TickWork& work,
+                  const TriangleRef* resting_on) {
+  work.has_partway = false;
+  solve_motion_steps(world, skin_m, start, goal, m, state, work, resting_on);
+  // Out of work in a sweep that cleared part of its leg (a spot of more triangles than a
+  // tick may test, such as a fine mesh's pole): the proxy goes that far, so that over a few
+  // ticks it leaves the spot instead of staying there while the hand moves on. Every leg
+  // stays within the planes it ignores, or is not one that ignores any, so the part swept
+  // clear crosses nothing.
+  if (work.exhausted && work.has_partway && work.partway_from == m.p) {
+    m.p = work.partway;
+    append_path(state, m.p);
+    drop_violated_planes(m, skin_m);
+    work.went_partway = true;
+  }
+  work.has_partway = false;
 }
 
 }  // namespace mhd::proxy_detail

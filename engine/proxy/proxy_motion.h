@@ -29,6 +29,12 @@ struct TickWork {
   int max_sweeps = kMaxProxySweeps;
   SweepWork sweep;
   bool exhausted = false;  // the budget (or the constraint store) ran out
+  // A sweep that ran out partway (SweepWork::clear_fraction) leaves the point it could still
+  // reach, from where it started; solve_motion() moves the proxy there.
+  bool has_partway = false;
+  Eigen::Vector3d partway_from = Eigen::Vector3d::Zero();
+  Eigen::Vector3d partway = Eigen::Vector3d::Zero();
+  bool went_partway = false;  // a motion ended there
   // The triangles near the proxy (ProxyState::near), or null.
   SweepCandidates* near = nullptr;
 };
@@ -47,7 +53,7 @@ struct Motion {
 // Moves the proxy from `start` towards `goal` and records its path in state.path_W.
 // Every leg is swept; on return m.p is crossing-free-reachable from start and either
 // the goal, a local minimum of the distance to it, or (work.exhausted) where the
-// budget ran out.
+// budget ran out: as far along the last leg as its sweep cleared before it did.
 // `resting_on`: a triangle the proxy rested on at the end of the last tick, or null. If the
 // segment to the goal runs into it at once, that is the motion's first hit, found without
 // a sweep of the whole world (an earlier hit than at once there cannot be).

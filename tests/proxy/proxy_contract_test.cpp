@@ -374,5 +374,52 @@ TEST(ProxyContract, AMotionOutOfWorkStillEndsAtAHipItCanSee) {
   EXPECT_GT(ran_out_and_reached, 0);  // the last look was needed somewhere, and did its work
 }
 
+TEST(ProxyContract, AWayOverMoreTrianglesThanATickMayTestIsTakenOverAFewTicks) {
+  // A patch of 20,000 triangles 10 µm across, and the HIP jumping diagonally over it, half
+  // a skin above its plane: no triangle is in the way, but one piece of the sweep meets more
+  // leaves than a tick may test. The proxy goes as far as the pieces before it swept clear,
+  // and from there on the next tick, until it is at the HIP; never through the patch, and
+  // with no force on the way, as nothing touches it.
+  TriangleMesh patch;
+  const int n = 100;
+  const double side_m = 1e-3;
+  const double from_m = 2e-3;
+  for (int j = 0; j <= n; ++j) {
+    for (int i = 0; i <= n; ++i) patch.vertices_m.emplace_back(from_m + side_m * i / n, from_m + side_m * j / n, 0.0);
+  }
+  const auto id = [&](int i, int j) { return static_cast<std::uint32_t>(j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      patch.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      patch.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  }
+  Rig rig;
+  rig.add(std::move(patch));
+  const verify::SurfaceCrossingOracle oracle(rig.world);
+  const double height_m = 0.5 * rig.settings.skin_m;
+  const V start(0.0, 0.0, height_m);
+  const V hip(0.01, 0.01, height_m);
+  reset_proxy(rig.state, start);
+  ProxyOutput out = rig.step(hip);
+  EXPECT_TRUE(out.budget_exhausted);  // the way is over budget in one tick
+  EXPECT_GT((out.proxy_W - start).norm(), 1e-3);  // and the proxy went part of it
+  int ticks = 1;
+  V at = start;
+  for (;;) {
+    for (int k = 1; k < rig.state.path_points; ++k) {
+      const V next = rig.state.path_W[static_cast<std::size_t>(k)];
+      EXPECT_FALSE(oracle.segment_touches_surface(at, next)) << "tick " << ticks << ", leg " << k;
+      at = next;
+    }
+    EXPECT_EQ(out.force_W, V::Zero()) << "tick " << ticks;
+    if (out.proxy_W == hip || ticks == 20) break;
+    out = rig.step(hip);
+    ++ticks;
+  }
+  EXPECT_EQ(out.proxy_W, hip);
+  EXPECT_LE(ticks, 10);
+}
+
 }  // namespace
 }  // namespace mhd
