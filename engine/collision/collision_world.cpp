@@ -25,10 +25,12 @@ constexpr double kInflatePerSkin = 1e-2;
 // the surface (hundreds of triangles on a 200k scan, 527 tests at the bench's p99.9 tick,
 // 71 at 1 mm).
 constexpr double kFirstPiece_m = 0.001;
-// On a mesh much finer than that, the first piece is this many times its vertex spacing,
-// so that its box holds about as many triangles as a millimetre of a fine scan: a
-// millimetre of the 100 M sphere's pole holds over 100,000 leaves, more than a tick may
-// test, and a sweep from there could never clear a first piece. Not under kMinFirstPiece_m.
+// With SweepWork::fine_pieces, on a mesh much finer than that, the first piece is this
+// many times its vertex spacing, so that its box holds about as many triangles as a
+// millimetre of a fine scan: a millimetre of the 100 M sphere's pole holds over 100,000
+// leaves, more than a tick may test, and a sweep from there could never clear a first
+// piece. Not under kMinFirstPiece_m. Only on request: more pieces are more walks, and on
+// the 10 M sphere they cost its contact ticks a fifth more.
 constexpr double kFirstPiecePerSpacing = 4.0;
 constexpr double kMinFirstPiece_m = 1e-5;
 // A sweep piece no larger than this (a first piece and its margin, or a short move) gathers
@@ -63,11 +65,11 @@ std::uint64_t next_geometry_id() {
 
 }  // namespace
 
-CollisionWorld::CollisionWorld() : first_piece_m_(kFirstPiece_m) {}
+CollisionWorld::CollisionWorld() : fine_first_piece_m_(kFirstPiece_m) {}
 
 int CollisionWorld::add_object(std::shared_ptr<const MeshBvh> shape, const Pose& X_WO) {
   const double fine_piece_m = kFirstPiecePerSpacing * shape->vertex_spacing_m();
-  if (fine_piece_m < first_piece_m_) first_piece_m_ = std::max(fine_piece_m, kMinFirstPiece_m);
+  if (fine_piece_m < fine_first_piece_m_) fine_first_piece_m_ = std::max(fine_piece_m, kMinFirstPiece_m);
   objects_.push_back(Object{std::move(shape), std::nullopt, X_WO, X_WO.inverse(Eigen::Isometry), nullptr});
   geometry_id_ = next_geometry_id();
   return static_cast<int>(objects_.size()) - 1;
@@ -258,13 +260,14 @@ std::optional<SweepHit> CollisionWorld::sweep_among(int only_object, const Eigen
   return best;
   };
   // A long sweep (a deep HIP, the containment ray) would query one box covering much of a
-  // large mesh. Sweep it in pieces that double in length from first_piece_m_, nearest
+  // large mesh. Sweep it in pieces that double in length from the first piece, nearest
   // first: each box stays small, and the first piece that hits holds the first hit.
   const Eigen::Vector3d ab = b_W - a_W;
   const double length = ab.norm();
-  if (!(length > first_piece_m_)) return earliest(sweep_piece(a_W, b_W));
+  const double first_piece_m = work != nullptr && work->fine_pieces ? fine_first_piece_m_ : kFirstPiece_m;
+  if (!(length > first_piece_m)) return earliest(sweep_piece(a_W, b_W));
   double s = 0.0;
-  double piece = first_piece_m_;
+  double piece = first_piece_m;
   while (s < length) {
     const double e = std::min(length, s + piece);
     const Eigen::Vector3d p = s == 0.0 ? a_W : Eigen::Vector3d(a_W + (s / length) * ab);

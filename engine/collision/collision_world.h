@@ -53,6 +53,11 @@ struct SweepWork {
   /// ignored. A sweep that reaches its limit stops there, so a triangle-dense spot (a fan
   /// of slivers round one vertex) costs a tick no more than its limit's tests.
   int leaves_reached = 0;
+  /// Start a sweep longer than its first piece with a piece of the finest mesh's scale (four
+  /// vertex spacings, from 10 µm up to the usual millimetre) instead of a millimetre: for a
+  /// caller that ran out of work in a spot denser than its budget, so that its sweeps from
+  /// there clear their first pieces (clear_fraction).
+  bool fine_pieces = false;
   /// Of a sweep that ran out of work: the fraction of its segment swept clear before it
   /// did, in whole pieces (sweep()); the point may go that far and cross nothing. 0 when
   /// the first piece ran out.
@@ -194,8 +199,9 @@ class CollisionWorld {
   };
   std::vector<Object> objects_;
   std::uint64_t geometry_id_ = 0;
-  // The first piece of a long sweep: a millimetre, or less where a mesh is finer (add_object).
-  double first_piece_m_;
+  // The first piece of a long sweep with SweepWork::fine_pieces: a millimetre, or less where
+  // a mesh is finer (add_object).
+  double fine_first_piece_m_;
 };
 
 }  // namespace mhd

@@ -132,6 +132,7 @@ ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMateri
   work.near = &state.near;
   work.max_sweeps = max_sweeps - std::clamp(max_sweeps / 16, max_sweeps >= 2 ? 1 : 0, 4);
   work.sweep.max_triangle_tests = max_triangle_tests - max_triangle_tests / 8;
+  work.sweep.fine_pieces = state.ran_out;
   Motion motion;
   const TriangleRef resting_on = previous_planes[0].triangle;
   proxy_detail::solve_motion(world, settings.skin_m, start, p_W_hip, motion, state, work,
@@ -193,6 +194,7 @@ ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMateri
     work.max_sweeps = max_sweeps;
     work.sweep.max_triangle_tests = max_triangle_tests;
     work.sweep.exhausted = false;
+    work.sweep.fine_pieces = true;
     if (proxy_detail::go_if_visible(world, settings.skin_m, p_W_hip, motion, state, work)) {
       state.plane_count = 0;
       sticking = false;
@@ -209,6 +211,7 @@ ProxyOutput step_proxy(const CollisionWorld& world, std::span<const HapticMateri
   out.sweeps_at_once = work.sweeps_at_once;
   out.triangle_tests = work.sweep.triangle_tests;
   out.budget_exhausted = work.exhausted;
+  state.ran_out = work.exhausted;
   state.proxy_W = motion.p;
   state.sticking = sticking;
   out.proxy_W = motion.p;

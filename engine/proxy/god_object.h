@@ -57,6 +57,9 @@ struct ProxyState {
   /// the BVH each time (a cache: the sweeps test the same triangles either way). It names
   /// the world it was gathered from and starts again in another one.
   SweepCandidates near;
+  /// The last tick ran out of work: this one sweeps in fine pieces (SweepWork::fine_pieces),
+  /// so that from a spot denser than its budget it still goes part of the way.
+  bool ran_out = false;
 };
 
 struct ProxyOutput {

@@ -344,9 +344,9 @@ TEST(CollisionWorld, ASweepOutOfItsBudgetStopsWalkingTheTree) {
 TEST(CollisionWorld, ALongSweepFromAFineMeshsPoleClearsItsFirstPieces) {
   // A uv-sphere's polar cap, flattened: a fan of 1,000 slivers 63 µm long round the pole,
   // then a band of 2,000 out to 126 µm. From the pole, half a skin above the cap, a sweep 5
-  // mm long over more leaves than its budget allows runs out, but only after the pieces
-  // nearest its start: on a mesh this fine they are a few vertex spacings long, not a
-  // millimetre, whose box would hold the whole cap.
+  // mm long over more leaves than its budget allows runs out, but with fine pieces only
+  // after the pieces nearest its start: on a mesh this fine they are a few vertex spacings
+  // long, not a millimetre, whose box would hold the whole cap.
   const int segments = 1000;
   auto mesh = std::make_shared<TriangleMesh>();
   mesh->vertices_m.emplace_back(0.0, 0.0, 0.0);
@@ -369,12 +369,19 @@ TEST(CollisionWorld, ALongSweepFromAFineMeshsPoleClearsItsFirstPieces) {
   const Eigen::Vector3d to(3e-3, 4e-3, 0.5 * skin_m);
   SweepWork work;
   work.max_triangle_tests = 1500;
+  work.fine_pieces = true;
   EXPECT_FALSE(world.sweep(from, to, skin_m, {}, &work));
   ASSERT_TRUE(work.exhausted);
   const double clear_m = work.clear_fraction * (to - from).norm();
   EXPECT_GE(clear_m, 1e-5);
   EXPECT_LT(clear_m, 126e-6);  // not past the cap it did not finish
-  // The dual: within a budget that holds the cap, the sweep clears the whole way.
+  // Without fine pieces, the first piece is a millimetre, which holds the whole cap.
+  SweepWork coarse;
+  coarse.max_triangle_tests = 1500;
+  EXPECT_FALSE(world.sweep(from, to, skin_m, {}, &coarse));
+  EXPECT_TRUE(coarse.exhausted);
+  EXPECT_EQ(coarse.clear_fraction, 0.0);
+  // Within a budget that holds the cap, the sweep clears the whole way.
   SweepWork whole;
   EXPECT_FALSE(world.sweep(from, to, skin_m, {}, &whole));
   EXPECT_FALSE(whole.exhausted);

@@ -375,13 +375,13 @@ TEST(ProxyContract, AMotionOutOfWorkStillEndsAtAHipItCanSee) {
 }
 
 TEST(ProxyContract, AWayOverMoreTrianglesThanATickMayTestIsTakenOverAFewTicks) {
-  // A patch of 20,000 triangles 10 µm across, and the HIP jumping diagonally over it, half
+  // A patch of 45,000 triangles 7 µm across, and the HIP jumping diagonally over it, half
   // a skin above its plane: no triangle is in the way, but one piece of the sweep meets more
   // leaves than a tick may test. The proxy goes as far as the pieces before it swept clear,
   // and from there on the next tick, until it is at the HIP; never through the patch, and
   // with no force on the way, as nothing touches it.
   TriangleMesh patch;
-  const int n = 100;
+  const int n = 150;
   const double side_m = 1e-3;
   const double from_m = 2e-3;
   for (int j = 0; j <= n; ++j) {
