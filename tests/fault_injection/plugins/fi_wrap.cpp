@@ -19,11 +19,13 @@
 #include <pthread.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <chrono>
 #include <csignal>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <limits>
@@ -110,6 +112,16 @@ void strike(const std::string& fault) {
   if (fault == "stall_2") std::this_thread::sleep_for(2s);
 }
 
+/// Tells the matrix, on stderr, when the fault struck on the host's clock (the clock of the
+/// command logs), so that it judges only what came after. write(2): nothing is buffered
+/// when the strike ends the process.
+void say_strike(const Instance& s, std::string_view call, double now_s) {
+  std::array<char, 160> line{};
+  const int n = std::snprintf(line.data(), line.size(), "fi_wrap: %s strikes in %.*s at host time %.9f s\n",
+                              s.fault.c_str(), static_cast<int>(call.size()), call.data(), now_s);
+  if (n > 0) (void)!::write(2, line.data(), std::min(static_cast<std::size_t>(n), line.size() - 1));
+}
+
 bool is_value_fault(const std::string& fault) { return fault == "nan" || fault == "huge" || fault == "frozen_timestamp"; }
 bool is_exit_fault(const std::string& fault) { return fault == "exit0" || fault == "exit3" || fault == "quick_exit"; }
 
@@ -122,6 +134,7 @@ bool before(Instance& s, std::string_view call) {
     if (now_s - s.start_s < s.after_s || (call.substr(0, 6) == "device" && !s.pushing)) return false;
     s.struck = true;
     s.frozen_t_s = now_s;
+    say_strike(s, call, now_s);
     if (!is_value_fault(s.fault)) strike(s.fault);
   } else if (is_exit_fault(s.fault)) {
     strike(s.fault);
