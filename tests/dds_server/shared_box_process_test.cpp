@@ -36,6 +36,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace mhd::dds::shared_box_process_test {
@@ -44,6 +45,9 @@ namespace fs = std::filesystem;
 using test::ChildProcess;
 
 constexpr double kRunFor_s = 6.0;
+/// A gap between recorded ticks this long is a stop of the loop, not a late tick: the
+/// pair's physics rides through late ticks, not through a stop of a tenth of a second.
+constexpr double kStop_s = 0.05;
 
 struct Placement {
   double x_m = 0.0;
@@ -104,6 +108,9 @@ struct RigEnd {
   double max_force_N = 0.0;    ///< over the whole run, from the recording
   std::size_t contact_ticks = 0;
   double clock_zero_unix_s = 0.0;  ///< where the recording's t_s = 0 falls in Unix time
+  /// Where the recording skips over kStop_s or more (the haptic loop did not run), as
+  /// [from, to] on this rig's clock.
+  std::vector<std::pair<double, double>> stops_s;
 };
 
 double unix_now_s() {
@@ -135,6 +142,9 @@ RigEnd read_end(const fs::path& log_file, const fs::path& csv, double launched_u
     end.max_force_N = std::max(end.max_force_N, Eigen::Vector3d(at("force_x_N"), at("force_y_N"), at("force_z_N")).norm());
     end.contact_ticks += at("contact") > 0.5 ? 1 : 0;
     end.box.push_back({at("t_s"), Eigen::Vector3d(at("shared_x_m"), at("shared_y_m"), at("shared_z_m"))});
+    if (end.box.size() > 1 && end.box.back().t_s - end.box[end.box.size() - 2].t_s >= kStop_s) {
+      end.stops_s.emplace_back(end.box[end.box.size() - 2].t_s, end.box.back().t_s);
+    }
   }
   const std::optional<std::int64_t> zero_ns = test::recording_clock_zero_unix_ns(csv.string());
   EXPECT_TRUE(zero_ns.has_value()) << "no host_clock_zero_unix_ns in " << csv << ".meta";
@@ -172,6 +182,22 @@ BothRan both_ran(const RigEnd& one, const RigEnd& two) {
   b.from_s = std::max(one.box.front().t_s, two.box.front().t_s + b.two_on_one_s);
   b.to_s = std::min(one.box.back().t_s, two.box.back().t_s + b.two_on_one_s);
   return b;
+}
+
+// Where both rigs' loops stopped at once (over kStop_s; a pause of the whole machine,
+// as a virtual machine's host makes now and then, which no SCHED_FIFO thread outranks).
+// Through such a pause the authority's box takes its hand's push alone, as a real pair
+// would; so the pair's agreement is judged on runs without one. A stop of one rig alone
+// is the engine's and is judged. Returns the pause as rig 1's stop within it.
+std::optional<std::pair<double, double>> machine_paused(const RigEnd& one, const RigEnd& two) {
+  if (one.box.empty() || two.box.empty()) return std::nullopt;
+  const double two_on_one_s = two.clock_zero_unix_s - one.clock_zero_unix_s;
+  for (const auto& [from1, to1] : one.stops_s) {
+    for (const auto& [from2, to2] : two.stops_s) {
+      if (std::max(from1, from2 + two_on_one_s) < std::min(to1, to2 + two_on_one_s)) return std::pair{from1, to1};
+    }
+  }
+  return std::nullopt;
 }
 
 struct Agreement {
@@ -295,6 +321,24 @@ class SharedBoxProcess : public ::testing::Test {
     return ends;
   }
 
+  /// run() for a pair, again where the machine paused both rigs at once (at most
+  /// kTries runs in all); nullopt where every run was paused, with what was seen in
+  /// `paused`.
+  std::optional<std::vector<std::optional<RigEnd>>> run_unpaused(const std::vector<std::optional<Placement>>& rigs,
+                                                                 double apart_s, std::string& paused) {
+    constexpr int kTries = 3;
+    for (int i = 0; i < kTries; ++i) {
+      auto ends = run(rigs, apart_s);
+      const auto pause = ends[0] && ends[1] ? machine_paused(*ends[0], *ends[1]) : std::nullopt;
+      if (!pause) return ends;
+      const auto [from_s, to_s] = *pause;
+      paused += "run " + std::to_string(i + 1) + ": both loops stopped, rig 1's from " + std::to_string(from_s) +
+                " s for " + std::to_string((to_s - from_s) * 1e3) + " ms\n";
+      std::cout << "the machine paused both rigs: " << paused;
+    }
+    return std::nullopt;
+  }
+
   std::uint32_t domain_ = 0;
   fs::path dir_;
   fs::path identities_;  ///< empty: unsecured
@@ -304,7 +348,10 @@ constexpr Placement kPlusZ{0.0, true}, kMinusZ{0.0, false};
 
 TEST_F(SharedBoxProcess, SecuredPressedFromOppositeSidesTheBoxStaysAndBothRigsAgree) {
   secure();
-  const auto ends = run({kPlusZ, kMinusZ});
+  std::string paused;
+  const auto tried = run_unpaused({kPlusZ, kMinusZ}, 0.0, paused);
+  if (!tried) GTEST_SKIP() << "the machine paused both rigs in every run:\n" << paused;
+  const auto& ends = *tried;
   ASSERT_TRUE(ends[0] && ends[1]);
   const RigEnd& r1 = *ends[0];
   const RigEnd& r2 = *ends[1];
@@ -339,7 +386,10 @@ TEST_F(SharedBoxProcess, PressedFromOneSideTheBoxMovesAndBothRigsAgree) {
   // Rig 2 starts 0.3 s after rig 1, as two users would: each recording's times are its
   // own process's, so the rigs' boxes are compared on one clock, or they would seem to
   // be 0.3 s apart wherever the box moves.
-  const auto ends = run({Placement{-0.06, true}, Placement{0.06, true}}, 0.3);
+  std::string paused;
+  const auto tried = run_unpaused({Placement{-0.06, true}, Placement{0.06, true}}, 0.3, paused);
+  if (!tried) GTEST_SKIP() << "the machine paused both rigs in every run:\n" << paused;
+  const auto& ends = *tried;
   ASSERT_TRUE(ends[0] && ends[1]);
   const RigEnd& r1 = *ends[0];
   const RigEnd& r2 = *ends[1];
