@@ -46,7 +46,7 @@ using test::ChildProcess;
 
 constexpr double kRunFor_s = 6.0;
 /// A gap between recorded ticks this long is a stop of the loop, not a late tick: the
-/// pair's physics rides through late ticks, not through a stop of a tenth of a second.
+/// pair's physics rides through late ticks, not through a stop of the authority's loop.
 constexpr double kStop_s = 0.05;
 
 struct Placement {
