@@ -6,6 +6,7 @@
 // matrix") are stated as such: the hardware's own command timeout covers them.
 #include "command_log_file.h"
 #include "support/mhd_run_process.h"
+#include "support/scratch_dir.h"
 
 #include <gtest/gtest.h>
 
@@ -67,12 +68,7 @@ Expect expect(std::string_view fault, std::string_view call) {
   return Expect::SafeFault;
 }
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("mhd_fault_matrix_" + std::to_string(::getpid())) / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path fresh_dir(const std::string& name) { return mhd::test::scratch_dir("fault_matrix", name); }
 
 /// tests/data/fault_injection/safe_end.xml with its three backends wrapped, the one that
 /// owns `call` failing.

@@ -4,6 +4,7 @@
 // from 100 ms after the head data went stale (the tracker timeout after the dropout start)
 // to the dropout's end, and the base moves again after it.
 #include "command_log_file.h"
+#include "support/scratch_dir.h"
 
 #include <gtest/gtest.h>
 
@@ -32,9 +33,7 @@ std::string read_text(const fs::path& file) {
 }
 
 TEST(HeadDropout, TheBaseStopsWithin100msOfStaleHeadDataAndMovesAgainAfter) {
-  const fs::path dir = fs::temp_directory_path() / ("mhd_head_dropout_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = mhd::test::scratch_dir("head_dropout", "run");
   const std::string command = "cd '" + dir.string() + "' && '" + MHD_CLI + "' run '" + MHD_SOURCE_DIR +
                               "/tests/data/fault_injection/head_dropout.xml' --duration 6.5 --plugin-path '" +
                               MHD_SIM_PLUGIN_DIR + "' > output.txt 2>&1";

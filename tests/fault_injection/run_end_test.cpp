@@ -5,6 +5,7 @@
 // simulated hardware's command watchdog fires.
 #include "command_log_file.h"
 #include "support/mhd_run_process.h"
+#include "support/scratch_dir.h"
 
 #include <gtest/gtest.h>
 
@@ -30,12 +31,7 @@ namespace fs = std::filesystem;
 using mhd::test::CommandLogRow;
 using mhd::test::read_command_log;
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("mhd_run_end_" + std::to_string(::getpid())) / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path fresh_dir(const std::string& name) { return mhd::test::scratch_dir("run_end", name); }
 
 /// tests/data/fault_injection/<source> (safe_end.xml, the mobile rig, or desk_safe_end.xml, a
 /// desktop one) in `dir`, with `extra_plugin` in its <plugins>.

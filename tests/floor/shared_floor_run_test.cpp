@@ -28,7 +28,7 @@ namespace fs = std::filesystem;
 using mhd::test::MhdRunProcess;
 using mhd::test::hardware::exit_status;
 using mhd::test::hardware::expect_last_command_zero;
-using mhd::test::hardware::fresh_dir;
+using mhd::test::scratch_dir;
 using mhd::test::hardware::rows_of;
 using mhd::test::hardware::write_scene_logging_the_base;
 
@@ -73,7 +73,7 @@ std::pair<int, int> commands_between(const fs::path& log, double from_s, double 
 }
 
 TEST(SharedFloorRun, TheBaseNeverComesWithinContactOfTheOtherRigsBase) {
-  const fs::path dir = fresh_dir("shared_floor", "seen");
+  const fs::path dir = scratch_dir("shared_floor", "seen");
   MhdRunProcess mhd = run(dir, {}, 8.0);
   ASSERT_EQ(exit_status(mhd, std::chrono::seconds(60)), 0) << mhd.output();
   const double least = least_distance_to_other_base_m(dir / "run.csv");
@@ -85,7 +85,7 @@ TEST(SharedFloorRun, TheBaseNeverComesWithinContactOfTheOtherRigsBase) {
 }
 
 TEST(SharedFloorRun, BlindToTheOtherRigTheBaseDrivesIntoIt) {
-  const fs::path dir = fresh_dir("shared_floor", "blind");
+  const fs::path dir = scratch_dir("shared_floor", "blind");
   MhdRunProcess mhd = run(dir, {{kSeen, ""}}, 8.0);
   ASSERT_EQ(exit_status(mhd, std::chrono::seconds(60)), 0) << mhd.output();
   const double least = least_distance_to_other_base_m(dir / "run.csv");
@@ -94,7 +94,7 @@ TEST(SharedFloorRun, BlindToTheOtherRigTheBaseDrivesIntoIt) {
 }
 
 TEST(SharedFloorRun, LosingTheOtherRigsDataHoldsTheBaseUntilItIsBack) {
-  const fs::path dir = fresh_dir("shared_floor", "dropout");
+  const fs::path dir = scratch_dir("shared_floor", "dropout");
   MhdRunProcess mhd = run(dir,
                           {{R"(<param name="seed" value="7"/>)",
                             R"(<param name="seed" value="7"/><param name="dropout_sensor" value="bystander_base"/>)"
@@ -114,7 +114,7 @@ TEST(SharedFloorRun, LosingTheOtherRigsDataHoldsTheBaseUntilItIsBack) {
 }
 
 TEST(SharedFloorRun, ARigTheTrackerNeverReportsHoldsTheBaseAllRun) {
-  const fs::path dir = fresh_dir("shared_floor", "never_seen");
+  const fs::path dir = scratch_dir("shared_floor", "never_seen");
   MhdRunProcess mhd = run(dir, {{kSeen, R"(<param name="other_rig_sensors" value="7:8"/>)"}}, 3.0);
   ASSERT_EQ(exit_status(mhd, std::chrono::seconds(60)), 0) << mhd.output();
   const auto [all, moving] = commands_between(dir / "base.csv", 0.0, 10.0);

@@ -8,6 +8,7 @@
 #include "dds_common/ros2_topics.h"
 #include "dds_test_support.h"
 #include "support/mhd_run_process.h"
+#include "support/scratch_dir.h"
 
 #include <gtest/gtest.h>
 
@@ -80,9 +81,7 @@ class JointStateDisplay {
 /// `mhd run` for 2 s of the desk scene with the fake libHD; the display reads meanwhile.
 std::vector<Received> run_and_watch(const std::string& name, const std::string& device_params,
                                     std::uint32_t domain, std::string& output) {
-  const fs::path dir = fs::temp_directory_path() / ("mhd_arm_joints_" + std::to_string(::getpid())) / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = mhd::test::scratch_dir("arm_joints", name);
   std::ofstream(dir / "scene.xml") << mhd::test::fill_scene_template(
       fs::path(MHD_SOURCE_DIR) / "tests/data/hardware/vendor_desk.xml", {{"<!--DEVICE-->", device_params}});
   JointStateDisplay display(domain);

@@ -12,13 +12,6 @@ namespace mhd::test::hardware {
 
 namespace fs = std::filesystem;
 
-fs::path fresh_dir(const std::string& suite, const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("mhd_" + suite + "_" + std::to_string(::getpid())) / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
 fs::path write_scene_logging_the_base(const fs::path& dir, const std::string& name,
                                       std::vector<std::pair<std::string, std::string>> fills) {
   const std::string scenes = std::string(MHD_SOURCE_DIR) + "/scenes/";

@@ -1,10 +1,11 @@
 #pragma once
-// What the tests of the backends for real hardware share: a fresh folder per case, a
+// What the tests of the backends for real hardware share: a scratch folder per case, a
 // run's exit status, the rows of a log (a fake vendor library's, or a simulated base's or
 // arm's command log), a run's summary figures, and the hardware's view of a safe end.
 
 #include "command_log_file.h"
 #include "support/mhd_run_process.h"
+#include "support/scratch_dir.h"
 
 #include <chrono>
 #include <filesystem>
@@ -16,9 +17,6 @@ namespace mhd::test::hardware {
 
 inline constexpr int kExitFault = 3;     ///< a plugin's fault ended the run
 inline constexpr int kExitLastGasp = 4;  ///< a crash: the last gasp sent zero
-
-/// <tmp>/mhd_<suite>_<pid>/<name>, emptied.
-std::filesystem::path fresh_dir(const std::string& suite, const std::string& name);
 
 /// The exit status once the process ended; 1000 + the signal when a signal ended it; -1
 /// when it has not ended within `timeout`.

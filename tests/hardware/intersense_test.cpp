@@ -27,7 +27,7 @@ using mhd::test::CommandLogRow;
 using mhd::test::MhdRunProcess;
 using namespace mhd::test::hardware;
 
-fs::path fresh_dir(const std::string& name) { return mhd::test::hardware::fresh_dir("intersense", name); }
+fs::path fresh_dir(const std::string& name) { return mhd::test::scratch_dir("intersense", name); }
 
 /// tests/data/hardware/intersense_mobile.xml in `dir`, with tracker parameters and extra
 /// plugins put in.

@@ -10,6 +10,7 @@
 #include "dds_common/ros2_topics.h"
 #include "dds_test_support.h"
 #include "support/mhd_run_process.h"
+#include "support/scratch_dir.h"
 #include "../sim_backends/plugin_file.h"
 
 #include <gtest/gtest.h>
@@ -113,9 +114,7 @@ struct EndCase {
 /// twists the driver received.
 Ran run_with_driver(const EndCase& c) {
   const std::uint32_t domain = mhd::dds::test::use_loopback_and_unique_domain(7);
-  const fs::path dir = fs::temp_directory_path() / ("mhd_ros2_base_" + std::to_string(::getpid())) / c.name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = mhd::test::scratch_dir("ros2_base", c.name);
   std::vector<std::pair<std::string, std::string>> fills{
       {"value=\"DOMAIN\"", "value=\"" + std::to_string(domain) + "\""}};
   if (c.from != nullptr) fills.emplace_back(c.from, c.to);

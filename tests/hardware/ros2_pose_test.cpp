@@ -81,9 +81,7 @@ class FakeMocap {
 
 TEST(Ros2Pose, TheMocapsBasePoseIsMhdsBaseEstimate) {
   const std::uint32_t domain = mhd::dds::test::use_loopback_and_unique_domain(11);
-  const fs::path dir = fs::temp_directory_path() / ("mhd_ros2_pose_" + std::to_string(::getpid())) / "run";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = mhd::test::scratch_dir("ros2_pose", "run");
   std::ofstream(dir / "scene.xml") << mhd::test::fill_scene_template(
       fs::path(MHD_SOURCE_DIR) / "tests/data/hardware/ros2_pose.xml",
       {{"value=\"DOMAIN\"", "value=\"" + std::to_string(domain) + "\""}});
@@ -116,7 +114,7 @@ TEST_P(Ros2PoseEnd, TheArmIsLeftWithZeroForceAndTheBaseStopped) {
   namespace hw = mhd::test::hardware;
   const MocapEndCase c = GetParam();
   const std::uint32_t domain = mhd::dds::test::use_loopback_and_unique_domain(14);
-  const fs::path dir = hw::fresh_dir("ros2_pose_end", c.name);
+  const fs::path dir = mhd::test::scratch_dir("ros2_pose_end", c.name);
   std::vector<std::pair<std::string, std::string>> fills{
       {"value=\"DOMAIN\"", "value=\"" + std::to_string(domain) + "\""}};
   if (c.from != nullptr) fills.emplace_back(c.from, c.to);

@@ -95,11 +95,7 @@ const Backend kForceDimension{
 std::string name_of(const Backend& b) { return b.plugin; }
 
 fs::path fresh_dir(const Backend& b, const std::string& name) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("mhd_vendor_device_" + std::to_string(::getpid())) / (name_of(b) + "_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
+  return mhd::test::scratch_dir("vendor_device", name_of(b) + "_" + name);
 }
 
 /// tests/data/hardware/<source> in `dir` as scene.xml for backend `b`, each (placeholder,

@@ -29,7 +29,7 @@ namespace fs = std::filesystem;
 using mhd::test::MhdRunProcess;
 using mhd::test::hardware::exit_status;
 using mhd::test::hardware::expect_last_command_zero;
-using mhd::test::hardware::fresh_dir;
+using mhd::test::scratch_dir;
 using mhd::test::hardware::has;
 
 using Fills = std::vector<std::pair<std::string, std::string>>;
@@ -90,7 +90,7 @@ Reach reach_of(const fs::path &recording) {
 }
 
 TEST(TallColumn, TheLiftKeepsACrouchingAndReachingHandInsideTheArmsWorkspace) {
-  const fs::path dir = fresh_dir("tall_column", "lift");
+  const fs::path dir = scratch_dir("tall_column", "lift");
   write_scene(dir, {});
   MhdRunProcess mhd = run(dir, kRunDuration_s);
   ASSERT_EQ(exit_status(mhd, std::chrono::seconds(60)), 0) << mhd.output();
@@ -108,7 +108,7 @@ TEST(TallColumn, TheLiftKeepsACrouchingAndReachingHandInsideTheArmsWorkspace) {
 }
 
 TEST(TallColumn, WithoutTheLiftTheArmLosesTheHand) {
-  const fs::path dir = fresh_dir("tall_column", "no_lift");
+  const fs::path dir = scratch_dir("tall_column", "no_lift");
   write_scene(dir, {{kRigLift, ""}, {kLiftParams, ""}});
   MhdRunProcess mhd = run(dir, kRunDuration_s);
   ASSERT_EQ(exit_status(mhd, std::chrono::seconds(60)), 0) << mhd.output();
@@ -124,7 +124,7 @@ TEST(TallColumn, WithoutTheLiftTheArmLosesTheHand) {
 /// The scene with `taken_out` removed ends at the first base reading, saying `why`, with
 /// the base and its lift told to stand still last.
 void expect_refused(const std::string &name, const std::string &taken_out, const std::string &why) {
-  const fs::path dir = fresh_dir("tall_column", name);
+  const fs::path dir = scratch_dir("tall_column", name);
   write_scene(dir, {{taken_out, ""}});
   MhdRunProcess mhd = run(dir, 5.0);
   EXPECT_EQ(exit_status(mhd), mhd::test::hardware::kExitFault) << mhd.output();
@@ -138,7 +138,7 @@ TEST(TallColumn, ARigWithALiftOnABaseWithoutOneIsRefused) {
 
 TEST(TallColumn, ALiftStandingOutsideTheRigsRangeEndsTheRun) {
   // The base's own lift reaches 2 m and stands at 1.5 m; the rig says 0.9 m at most.
-  const fs::path dir = fresh_dir("tall_column", "lift_out_of_range");
+  const fs::path dir = scratch_dir("tall_column", "lift_out_of_range");
   write_scene(dir, {{R"(<param name="lift_max_m" value="0.9"/>)",
                      R"(<param name="lift_max_m" value="2"/><param name="lift_start_m" value="1.5"/>)"}});
   MhdRunProcess mhd = run(dir, 5.0);

@@ -29,7 +29,7 @@ using namespace mhd::test::hardware;
 /// slack of lining up the two logs (their clocks meet at the run's end, a few ms apart).
 constexpr double kStaleHeadStopsBaseWithin_s = 0.25;
 
-fs::path fresh_dir(const std::string& name) { return mhd::test::hardware::fresh_dir("openxr", name); }
+fs::path fresh_dir(const std::string& name) { return mhd::test::scratch_dir("openxr", name); }
 
 void write_scene(const fs::path& dir, const std::string& tracker_params = "", const std::string& extra = "") {
   std::ofstream(dir / "scene.xml") << mhd::test::fill_scene_template(
