@@ -5,6 +5,7 @@
 // The dual: once the holder has ended, the rig can be claimed again.
 #include "dds_common/dds_topics.h"
 #include "dds_test_support.h"
+#include "support/scratch_dir.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -62,9 +63,7 @@ class RigStateWriters {
 
 TEST(RigClaimProcess, ASecondProcessWithTheRigIdIsRefusedAndTheHolderRunsOn) {
   const std::uint32_t domain = test::use_loopback_and_unique_domain(97);
-  const fs::path dir = fs::path(::testing::TempDir()) / ("rig_claim_" + std::to_string(getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = mhd::test::scratch_dir("rig_claim", "run");
   const fs::path scene = write_scene(dir, domain);
   const Participant viewer(static_cast<dds_domainid_t>(domain));
   RigStateWriters writers(viewer);
