@@ -42,8 +42,8 @@ int list() {
                !source ? std::string("(not an entry of this version: rebuilt when its mesh is loaded)")
                        : source->empty() ? std::string("(mesh file not recorded)") : *source);
   }
-  fmt::print("{} entries, {} of {} (limit: MHD_CACHE_MAX_MB; least recently used go first)\n", entries.size(),
-             mib(total), mib(mhd::mesh_cache_limit_bytes()));
+  fmt::print("{} {}, {} of {} (limit: MHD_CACHE_MAX_MB; least recently used go first)\n", entries.size(),
+             entries.size() == 1 ? "entry" : "entries", mib(total), mib(mhd::mesh_cache_limit_bytes()));
   return 0;
 }
 
