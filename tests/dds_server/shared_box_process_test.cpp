@@ -17,6 +17,7 @@
 //   - secured as docs/networking.md says (make_rig_security.sh), the pair runs the same,
 //     and rig 2's identity may not run as rig 1.
 #include "dds_test_support.h"
+#include "support/scratch_dir.h"
 
 #include <Eigen/Core>
 #include <gtest/gtest.h>
@@ -257,10 +258,7 @@ class SharedBoxProcess : public ::testing::Test {
  protected:
   void SetUp() override {
     domain_ = test::use_loopback_and_unique_domain(91);
-    dir_ = fs::path(::testing::TempDir()) / ("shared_box_" + std::to_string(getpid()) + "_" +
-                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    dir_ = mhd::test::scratch_dir("shared_box", ::testing::UnitTest::GetInstance()->current_test_info()->name());
   }
 
   /// DDS Security from here on: identities for rigs 1 and 2, the secure configuration.
