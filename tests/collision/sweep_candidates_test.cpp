@@ -9,6 +9,8 @@
 namespace mhd {
 namespace {
 
+double wave_height_m(double x_m, double y_m) { return 0.002 * std::sin(90.0 * x_m) * std::cos(70.0 * y_m); }
+
 // A wavy n x n grid over [0, size_m]^2, 2 mm high waves: fine enough that one gather holds
 // tens of triangles (n = 200 over 0.1 m) or overflows the list (n = 600).
 std::shared_ptr<TriangleMesh> wavy_grid(int n, double size_m) {
@@ -16,7 +18,7 @@ std::shared_ptr<TriangleMesh> wavy_grid(int n, double size_m) {
   for (int j = 0; j <= n; ++j) {
     for (int i = 0; i <= n; ++i) {
       const double x = size_m * i / n, y = size_m * j / n;
-      mesh->vertices_m.emplace_back(x, y, 0.002 * std::sin(90.0 * x) * std::cos(70.0 * y));
+      mesh->vertices_m.emplace_back(x, y, wave_height_m(x, y));
     }
   }
   auto id = [n](int i, int j) { return static_cast<std::uint32_t>(j * (n + 1) + i); };
@@ -138,6 +140,71 @@ TEST(SweepCandidates, AListOutlivesAMoveOfItsObjectAndStillGivesTheTreesAnswers)
     const auto from_tree = world.sweep(a_W, b_W, 1e-6);
     ASSERT_TRUE(from_tree);
     expect_same(with_list, from_tree, 0);
+  }
+}
+
+// Every triangle of every object swept one by one (CollisionWorld::sweep_triangle): the
+// earliest stop, or none.
+std::optional<double> earliest_stop_of_all(const CollisionWorld& world, const Eigen::Vector3d& a,
+                                           const Eigen::Vector3d& b, double skin_m) {
+  std::optional<double> earliest;
+  for (int o = 0; o < world.object_count(); ++o) {
+    const auto n = static_cast<std::uint32_t>(world.shape(o).mesh().triangles.size());
+    for (std::uint32_t t = 0; t < n; ++t) {
+      const auto hit = world.sweep_triangle(TriangleRef{o, t}, a, b, skin_m);
+      if (hit && (!earliest || hit->t_stop < *earliest)) earliest = hit->t_stop;
+    }
+  }
+  return earliest;
+}
+
+TEST(SweepCandidates, ListAndTreeStopWhereEveryTriangleSweptOneByOneWould) {
+  // The dual of the tests above, which hold the list to the tree: both to the whole mesh.
+  // A walk that skipped a triangle the segment reaches would show here as a later stop or
+  // none. On the surface in a turned pose, and with one triangle 1 km away, which leaves
+  // the tree's grid over the surface alone (tree_grid.h) and that triangle's box clamped.
+  for (const double stray_m : {0.0, 1000.0}) {
+    SCOPED_TRACE(stray_m);
+    auto mesh = wavy_grid(60, 0.1);
+    if (stray_m > 0.0) {
+      const auto first = static_cast<std::uint32_t>(mesh->vertices_m.size());
+      mesh->vertices_m.emplace_back(stray_m, 0.0, 0.0);
+      mesh->vertices_m.emplace_back(stray_m + 0.01, 0.0, 0.0);
+      mesh->vertices_m.emplace_back(stray_m, 0.01, 0.0);
+      mesh->triangles.push_back({first, first + 1, first + 2});
+    }
+    const Pose X_WO = pose_from_xyz_rpy(Eigen::Vector3d(0.3, -0.2, 0.9), Eigen::Vector3d(0.4, -0.3, 1.1));
+    CollisionWorld world;
+    world.add_object(std::make_shared<MeshBvh>(mesh), X_WO);
+    std::mt19937_64 rng(314159);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    SweepCandidates near;
+    int hits = 0;
+    for (int k = 0; k < 1000; ++k) {
+      // From within half a millimetre of the waves, most towards them, under a millimetre
+      // long (one piece, so the stop is the triangle's own, bit for bit); now and then
+      // along an axis of the mesh's frame, or of no length.
+      const double x = 0.1 * u(rng), y = 0.1 * u(rng);
+      const double above_m = 0.001 * u(rng) - 0.0005;
+      const Eigen::Vector3d a_O(x, y, wave_height_m(x, y) + above_m);
+      Eigen::Vector3d d_O(u(rng) - 0.5, u(rng) - 0.5, (u(rng) - 0.8) * (above_m > 0.0 ? 1.0 : -1.0));
+      if (k % 10 == 0) d_O[k % 3] = 0.0;
+      if (k % 25 == 0) d_O.setZero();
+      const Eigen::Vector3d b_O = a_O + (d_O.norm() > 0.0 ? Eigen::Vector3d(0.0009 * u(rng) * d_O.normalized()) : d_O);
+      const Eigen::Vector3d a = X_WO * a_O, b = X_WO * b_O;
+      const std::optional<double> all = earliest_stop_of_all(world, a, b, 1e-6);
+      for (SweepCandidates* list : {static_cast<SweepCandidates*>(nullptr), &near}) {
+        SweepWork work;
+        const auto hit = world.sweep(a, b, 1e-6, {}, &work, list);
+        ASSERT_EQ(hit.has_value(), all.has_value()) << "sweep " << k;
+        if (hit) {
+          EXPECT_EQ(hit->t_stop, *all) << "sweep " << k;
+        }
+      }
+      hits += all ? 1 : 0;
+    }
+    EXPECT_GT(hits, 300);
+    EXPECT_GT(near.gathers(), 0);
   }
 }
 
