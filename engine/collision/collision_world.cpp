@@ -19,6 +19,12 @@ namespace {
 // at a right-angled convex edge is one skin outside the other face, and a growth of a
 // whole skin caught it there as if it touched that face from behind.
 constexpr double kInflatePerSkin = 1e-2;
+// How near the end of a sweep, in skins, a tested leaf's box must come for the sweep's
+// list of tested triangles to keep it first (SweepWork::tested). The face beyond an edge
+// lies under the end, a skin and the bend of the faces swept over below it (about a
+// micrometre after half a millimetre on a sphere of 0.1 m): room to spare, and still a few
+// of a fine mesh's faces.
+constexpr double kTestedNearEndPerSkin = 16.0;
 // Sweeps longer than this go in pieces (see sweep()). A millimetre: about one triangle of
 // a fine scan. The proxy's check straight to a deep HIP starts at the surface it rests on,
 // so its first piece finds the hit; at 10 mm that piece's box held a square centimetre of
@@ -61,6 +67,30 @@ SweepHit hit_in_world(const Pose& X_WO, const TriangleRef& where, const Triangle
 std::uint64_t next_geometry_id() {
   static std::atomic<std::uint64_t> last_id{0};
   return ++last_id;
+}
+
+// Records a tested triangle in work.tested (see SweepWork::tested): the first ones, then
+// those round the sweep's end in place of the others.
+void keep_tested(SweepWork& work, const TriangleRef& ref, bool near_end) {
+  if (work.tested_count < SweepWork::kMaxTested) {
+    const auto i = static_cast<std::size_t>(work.tested_count++);
+    work.tested[i] = ref;
+    work.tested_near_end[i] = near_end;
+    return;
+  }
+  if (!near_end) return;
+  // Full: it takes the place of the first one that is not round the end, and the order
+  // tested stays.
+  int out = 0;
+  while (out < SweepWork::kMaxTested && work.tested_near_end[static_cast<std::size_t>(out)]) ++out;
+  if (out == SweepWork::kMaxTested) return;
+  for (int k = out; k + 1 < SweepWork::kMaxTested; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    work.tested[i] = work.tested[i + 1];
+    work.tested_near_end[i] = work.tested_near_end[i + 1];
+  }
+  work.tested.back() = ref;
+  work.tested_near_end.back() = true;
 }
 
 }  // namespace
@@ -207,7 +237,7 @@ std::optional<SweepHit> CollisionWorld::sweep_among(int only_object, const Eigen
     const int object = static_cast<int>(oi);
     // Tests one triangle; false once the budget is spent, which stops the walk: the answer
     // is thrown away then, and a dense spot would otherwise cost the whole walk.
-    auto test = [&](std::uint32_t ti) -> bool {
+    auto test = [&](std::uint32_t ti, bool near_end) -> bool {
       if (work != nullptr) ++work->leaves_reached;
       if (((ignored_bits >> (ti & 63U)) & 1U) != 0 && is_ignored(ignore, object, ti)) return true;
       if (work != nullptr) {
@@ -216,9 +246,7 @@ std::optional<SweepHit> CollisionWorld::sweep_among(int only_object, const Eigen
           return false;
         }
         ++work->triangle_tests;
-        if (work->tested_count < SweepWork::kMaxTested) {
-          work->tested[static_cast<std::size_t>(work->tested_count++)] = TriangleRef{object, ti};
-        }
+        keep_tested(*work, TriangleRef{object, ti}, near_end);
       }
       const TriangleIndices& t = mesh.triangles[ti];
       const auto hit = sweep_point_triangle(a_O, b_O, mesh.vertices_m[t[0]], mesh.vertices_m[t[1]],
@@ -251,10 +279,16 @@ std::optional<SweepHit> CollisionWorld::sweep_among(int only_object, const Eigen
     }
     if (region != nullptr) {
       // At most a list's capacity of leaves: past the budget each returns at once.
-      near->for_each_overlapping(*region, q_O, [&](std::uint32_t ti) { (void)test(ti); });
+      near->for_each_overlapping(*region, q_O, [&](std::uint32_t ti) { (void)test(ti, false); });
     } else {
       if (near != nullptr) near->count_walk();
-      shape.for_each_leaf_overlapping(q_O, [&](std::uint32_t ti, const btQuantizedBvhNode&) { return test(ti); });
+      // Leaves round the sweep's end, for the list of tested triangles.
+      const Eigen::Vector3d end_O = o.X_OW * b_W;
+      const Eigen::Vector3d reach = Eigen::Vector3d::Constant(kTestedNearEndPerSkin * skin_m);
+      const MeshBvh::QuantizedBox q_end = shape.quantize(Eigen::AlignedBox3d(end_O - reach, end_O + reach));
+      shape.for_each_leaf_overlapping(q_O, [&](std::uint32_t ti, const btQuantizedBvhNode& leaf) {
+        return test(ti, MeshBvh::overlaps(q_end, leaf));
+      });
     }
   }
   return best;

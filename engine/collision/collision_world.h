@@ -62,12 +62,16 @@ struct SweepWork {
   /// did, in whole pieces (sweep()); the point may go that far and cross nothing. 0 when
   /// the first piece ran out.
   double clear_fraction = 0.0;
-  /// The first triangles the latest sweep tested (hit or not), in the order tested: where
-  /// a caller may look first for the face beyond an edge the sweep ran along. A hint only:
-  /// nothing here is needed for a sweep's answer.
+  /// Triangles the latest sweep tested (hit or not), in the order tested: where a caller
+  /// may look first for the face beyond an edge the sweep ran along. The first ones, or,
+  /// when the sweep tested more than the list holds (a fine mesh), those round the
+  /// segment's end before the rest: the face beyond lies under where the sweep ends. A
+  /// hint only: nothing here is needed for a sweep's answer.
   static constexpr int kMaxTested = 8;
   std::array<TriangleRef, kMaxTested> tested;
   int tested_count = 0;
+  /// Which of `tested` lie round the segment's end (their leaf's box, on a tree's walk).
+  std::array<bool, kMaxTested> tested_near_end{};
 };
 
 class CollisionWorld {

@@ -178,6 +178,14 @@ class MeshBvh {
     return true;
   }
 
+  /// True when `node`'s box overlaps `box`, as Bullet tests it
+  /// (testQuantizedAabbAgainstQuantizedAabb: closed intervals).
+  [[nodiscard]] static bool overlaps(const QuantizedBox& box, const btQuantizedBvhNode& node) {
+    return box.min[0] <= node.m_quantizedAabbMax[0] && box.max[0] >= node.m_quantizedAabbMin[0] &&
+           box.min[1] <= node.m_quantizedAabbMax[1] && box.max[1] >= node.m_quantizedAabbMin[1] &&
+           box.min[2] <= node.m_quantizedAabbMax[2] && box.max[2] >= node.m_quantizedAabbMin[2];
+  }
+
   /// Walks the tree and calls f(triangle_index, leaf) for every leaf whose quantized box
   /// overlaps `box`: exactly the triangles Bullet's own query (reportAabbOverlappingNodex)
   /// reports for it, without its virtual call per triangle. If f returns false the walk
@@ -187,10 +195,7 @@ class MeshBvh {
     const btQuantizedBvhNode* node = nodes_;
     const btQuantizedBvhNode* const end = nodes_ + node_count_;
     while (node < end) {
-      // Bullet's overlap test (testQuantizedAabbAgainstQuantizedAabb): closed intervals.
-      const bool overlap = box.min[0] <= node->m_quantizedAabbMax[0] && box.max[0] >= node->m_quantizedAabbMin[0] &&
-                           box.min[1] <= node->m_quantizedAabbMax[1] && box.max[1] >= node->m_quantizedAabbMin[1] &&
-                           box.min[2] <= node->m_quantizedAabbMax[2] && box.max[2] >= node->m_quantizedAabbMin[2];
+      const bool overlap = overlaps(box, *node);
       if (node->isLeafNode()) {
         if (overlap) {
           const auto triangle = static_cast<std::uint32_t>(leaf_triangle(*node));

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <random>
 
 namespace mhd {
@@ -206,6 +207,55 @@ TEST(SweepCandidates, ListAndTreeStopWhereEveryTriangleSweptOneByOneWould) {
     EXPECT_GT(hits, 300);
     EXPECT_GT(near.gathers(), 0);
   }
+}
+
+// A slide along a fine mesh, one skin over it, tests more triangles than the sweep's list
+// of tested ones holds. The list must then keep the face under the slide's end, where the
+// proxy looks for the face beyond an edge (first_met from the end towards the hand); a
+// slide that tests few keeps every one.
+TEST(SweepCandidates, ASlideOverAFineMeshKeepsTheFaceUnderItsEndAmongTheTested) {
+  const double skin_m = 1e-6;
+  CollisionWorld world;
+  // Flat (no waves): 50 um squares over 10 mm.
+  auto flat = std::make_shared<TriangleMesh>();
+  const int n = 200;
+  const double size_m = 0.01;
+  for (int j = 0; j <= n; ++j) {
+    for (int i = 0; i <= n; ++i) flat->vertices_m.emplace_back(size_m * i / n, size_m * j / n, 0.0);
+  }
+  auto id = [n](int i, int j) { return static_cast<std::uint32_t>(j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      flat->triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      flat->triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  }
+  world.add_object(std::make_shared<MeshBvh>(flat), Pose::Identity());
+  std::mt19937_64 rng(31);
+  std::uniform_real_distribution<double> u(0.002, 0.008);
+  std::uniform_real_distribution<double> turn(0.0, 2.0 * std::numbers::pi);
+  int overflowing = 0;
+  for (int k = 0; k < 200; ++k) {
+    const Eigen::Vector3d a(u(rng), u(rng), skin_m);
+    const double length_m = k % 2 == 0 ? 0.0005 : 0.00002;  // long slides and short ones
+    const double angle = turn(rng);
+    const Eigen::Vector3d b = a + length_m * Eigen::Vector3d(std::cos(angle), std::sin(angle), 0.0);
+    SweepWork work;
+    EXPECT_FALSE(world.sweep(a, b, skin_m, {}, &work)) << "slide " << k;  // along the surface
+    if (work.triangle_tests <= SweepWork::kMaxTested) {
+      EXPECT_EQ(work.tested_count, work.triangle_tests) << "slide " << k;
+      continue;
+    }
+    ++overflowing;
+    ASSERT_EQ(work.tested_count, SweepWork::kMaxTested) << "slide " << k;
+    int tests = 0;
+    const auto beyond =
+        world.first_met(std::span<const TriangleRef>(work.tested.data(), static_cast<std::size_t>(work.tested_count)),
+                        b, b - Eigen::Vector3d(0.0, 0.0, 0.001), skin_m, 1e-6 * skin_m, tests);
+    ASSERT_TRUE(beyond) << "slide " << k << ": the face under its end is not among the triangles kept";
+    EXPECT_TRUE(world.projects_onto_triangle(beyond->where, b, 1e-9)) << "slide " << k;
+  }
+  EXPECT_GT(overflowing, 50);
 }
 
 }  // namespace
