@@ -12,14 +12,14 @@ namespace {
 
 double wave_height_m(double x_m, double y_m) { return 0.002 * std::sin(90.0 * x_m) * std::cos(70.0 * y_m); }
 
-// A wavy n x n grid over [0, size_m]^2, 2 mm high waves: fine enough that one gather holds
-// tens of triangles (n = 200 over 0.1 m) or overflows the list (n = 600).
-std::shared_ptr<TriangleMesh> wavy_grid(int n, double size_m) {
+// An n x n grid over [0, size_m]^2, two triangles a square, at height height_m(x, y).
+template <class Height>
+std::shared_ptr<TriangleMesh> grid(int n, double size_m, Height height_m) {
   auto mesh = std::make_shared<TriangleMesh>();
   for (int j = 0; j <= n; ++j) {
     for (int i = 0; i <= n; ++i) {
       const double x = size_m * i / n, y = size_m * j / n;
-      mesh->vertices_m.emplace_back(x, y, wave_height_m(x, y));
+      mesh->vertices_m.emplace_back(x, y, height_m(x, y));
     }
   }
   auto id = [n](int i, int j) { return static_cast<std::uint32_t>(j * (n + 1) + i); };
@@ -31,6 +31,10 @@ std::shared_ptr<TriangleMesh> wavy_grid(int n, double size_m) {
   }
   return mesh;
 }
+
+// A wavy grid, 2 mm high waves: fine enough that one gather holds tens of triangles
+// (n = 200 over 0.1 m) or overflows the list (n = 600).
+std::shared_ptr<TriangleMesh> wavy_grid(int n, double size_m) { return grid(n, size_m, wave_height_m); }
 
 void expect_same(const std::optional<SweepHit>& with_list, const std::optional<SweepHit>& with_tree, int k) {
   ASSERT_EQ(with_list.has_value(), with_tree.has_value()) << "sweep " << k;
@@ -216,21 +220,9 @@ TEST(SweepCandidates, ListAndTreeStopWhereEveryTriangleSweptOneByOneWould) {
 TEST(SweepCandidates, ASlideOverAFineMeshKeepsTheFaceUnderItsEndAmongTheTested) {
   const double skin_m = 1e-6;
   CollisionWorld world;
-  // Flat (no waves): 50 um squares over 10 mm.
-  auto flat = std::make_shared<TriangleMesh>();
-  const int n = 200;
-  const double size_m = 0.01;
-  for (int j = 0; j <= n; ++j) {
-    for (int i = 0; i <= n; ++i) flat->vertices_m.emplace_back(size_m * i / n, size_m * j / n, 0.0);
-  }
-  auto id = [n](int i, int j) { return static_cast<std::uint32_t>(j * (n + 1) + i); };
-  for (int j = 0; j < n; ++j) {
-    for (int i = 0; i < n; ++i) {
-      flat->triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-      flat->triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-    }
-  }
-  world.add_object(std::make_shared<MeshBvh>(flat), Pose::Identity());
+  // Flat: 50 um squares over 10 mm.
+  world.add_object(std::make_shared<MeshBvh>(grid(200, 0.01, [](double, double) { return 0.0; })),
+                   Pose::Identity());
   std::mt19937_64 rng(31);
   std::uniform_real_distribution<double> u(0.002, 0.008);
   std::uniform_real_distribution<double> turn(0.0, 2.0 * std::numbers::pi);
