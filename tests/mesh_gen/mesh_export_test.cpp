@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 namespace mhd::mesh_gen {
@@ -42,6 +44,26 @@ TEST_P(MeshGenExport, RoundTripsInMillimetres) {
 
 INSTANTIATE_TEST_SUITE_P(Formats, MeshGenExport, ::testing::Values(".ply", ".obj", ".stl"),
                          [](const auto& param_info) { return param_info.param.substr(1); });
+
+// Another build regenerates the assets while tests read them: a reader keeps the mesh it
+// opened, and the path then holds the new one, with no part file left beside it.
+TEST_P(MeshGenExport, ReplacesAFileWholeUnderAReaderThatHasItOpen) {
+  const std::filesystem::path file = dir_ / ("mesh" + GetParam());
+  write_mesh_file(make_uv_sphere(0.1, uv_sphere_layout(2'000)), file, 1000.0);
+  const auto old_size = std::filesystem::file_size(file);
+  std::ifstream reader(file, std::ios::binary);
+  ASSERT_TRUE(reader.good());
+
+  const TriangleMesh larger = make_uv_sphere(0.1, uv_sphere_layout(8'000));
+  write_mesh_file(larger, file, 1000.0);
+
+  const std::string read_on((std::istreambuf_iterator<char>(reader)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(read_on.size(), old_size);
+  EXPECT_EQ(test::read_mesh_file(file, 0.001).triangle_count(), larger.triangle_count());
+  int entries = 0;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir_)) ++entries;
+  EXPECT_EQ(entries, 1);
+}
 
 TEST(MeshGenExportErrors, UnknownExtensionThrows) {
   const TriangleMesh mesh = make_uv_sphere(0.1, uv_sphere_layout(100));

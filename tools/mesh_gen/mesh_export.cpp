@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 namespace mhd::mesh_gen {
 std::string mesh_file_format(const std::filesystem::path& file) {
   std::string ext = file.extension().string();
@@ -72,10 +74,9 @@ void write_binary_ply(const TriangleMesh& mesh, const std::filesystem::path& fil
   if (!out) throw std::runtime_error("cannot write '" + file.string() + "': " + std::strerror(errno));
 }
 
-}  // namespace
-
-void write_mesh_file(const TriangleMesh& mesh, const std::filesystem::path& file, double file_units_per_m) {
-  const std::string format = mesh_file_format(file);
+// Writes `file` in assimp's `format` (or the streamed binary PLY).
+void write_mesh_file_as(const TriangleMesh& mesh, const std::filesystem::path& file, const std::string& format,
+                        double file_units_per_m) {
   if (format == "plyb") {
     write_binary_ply(mesh, file, file_units_per_m);
     return;
@@ -115,6 +116,25 @@ void write_mesh_file(const TriangleMesh& mesh, const std::filesystem::path& file
   Assimp::Exporter exporter;
   if (exporter.Export(scene.get(), format, file.string()) != aiReturn_SUCCESS) {
     throw std::runtime_error("cannot write '" + file.string() + "': " + exporter.GetErrorString());
+  }
+}
+
+}  // namespace
+
+void write_mesh_file(const TriangleMesh& mesh, const std::filesystem::path& file, double file_units_per_m) {
+  const std::string format = mesh_file_format(file);
+  // Written beside the file, then renamed over it: a reader of the file (a test of another
+  // build, while this one regenerates the assets) sees the old mesh or the new one, never a
+  // part, and a failed write leaves the old one.
+  std::filesystem::path part = file;
+  part += ".part" + std::to_string(::getpid());
+  try {
+    write_mesh_file_as(mesh, part, format, file_units_per_m);
+    std::filesystem::rename(part, file);
+  } catch (...) {
+    std::error_code ignored;
+    std::filesystem::remove(part, ignored);
+    throw;
   }
 }
 

@@ -15,7 +15,9 @@ namespace mhd::mesh_gen {
 [[nodiscard]] std::string mesh_file_format(const std::filesystem::path& file);
 
 /// Writes `mesh` with every coordinate multiplied by file_units_per_m (1000 writes
-/// millimetres). Throws std::runtime_error for an unknown extension or a failed write.
+/// millimetres). An existing file is replaced whole: one who has it open, or opens it
+/// meanwhile, reads the old mesh or the new one, never a part. Throws std::runtime_error
+/// for an unknown extension or a failed write, which leaves the old file as it was.
 void write_mesh_file(const TriangleMesh& mesh, const std::filesystem::path& file, double file_units_per_m);
 
 }  // namespace mhd::mesh_gen
