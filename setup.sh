@@ -61,12 +61,31 @@ if [ "$mode" = demo ]; then
   summary
   exec build/release/tools/mhd/mhd run scenes/dolphin.xml --duration 20 --record build/release/dolphin_run.csv
 else
+  # MHD_SANITIZERS=0 / MHD_FUZZ_SECONDS=0 skip these (for a quick local run).
+  sanitizers=$([ "${MHD_SANITIZERS:-1}" != 0 ] && echo 1 || echo 0)
+  fuzz_seconds="${MHD_FUZZ_SECONDS:-20}"
+  # The ASan, TSan and fuzzing builds start now, at idle priority (tools/ci/idle_builds.sh):
+  # they take the cores the release build and tests leave idle, and each is waited for
+  # just before its tests. Their output is printed then, with the time each took.
+  idle_dir=build/ci-idle
+  idle_steps=()
+  [ "$sanitizers" = 1 ] && idle_steps+=(asan tsan)
+  [ "$fuzz_seconds" != 0 ] && idle_steps+=(fuzz)
+  if [ ${#idle_steps[@]} -gt 0 ]; then
+    tools/ci/idle_builds.sh start "$idle_dir" "${idle_steps[@]}"
+    trap 'tools/ci/idle_builds.sh stop "$idle_dir"; summary' EXIT
+  fi
   phase "release build" cmake --build --preset release
   phase "release test" ctest --preset release
-  # MHD_SANITIZERS=0 / MHD_FUZZ_SECONDS=0 skip these (for a quick local run). The
-  # sanitizer script prints its own phases (configure, build, test for ASan and TSan).
-  if [ "${MHD_SANITIZERS:-1}" != 0 ]; then phase "sanitizers (ASan+UBSan, TSan)" tools/ci/sanitizers.sh all; fi
-  if [ "${MHD_FUZZ_SECONDS:-20}" != 0 ]; then
-    phase "fuzz (build, then each target ${MHD_FUZZ_SECONDS:-20} s)" tools/fuzz/run_fuzzers.sh --seconds "${MHD_FUZZ_SECONDS:-20}"
+  # The sanitizer script prints its own phases and a summary of each.
+  if [ "$sanitizers" = 1 ]; then
+    phase "asan build (idle priority, waited)" tools/ci/idle_builds.sh wait "$idle_dir" asan
+    phase "asan test (ASan+UBSan)" tools/ci/sanitizers.sh test asan
+    phase "tsan build (idle priority, waited)" tools/ci/idle_builds.sh wait "$idle_dir" tsan
+    phase "tsan test" tools/ci/sanitizers.sh test tsan
+  fi
+  if [ "$fuzz_seconds" != 0 ]; then
+    phase "fuzz build (idle priority, waited)" tools/ci/idle_builds.sh wait "$idle_dir" fuzz
+    phase "fuzz (each target $fuzz_seconds s)" tools/fuzz/run_fuzzers.sh --no-build --seconds "$fuzz_seconds"
   fi
 fi

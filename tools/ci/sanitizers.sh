@@ -3,7 +3,11 @@
 #   tools/ci/sanitizers.sh asan   every test, built with AddressSanitizer + UBSan (preset asan)
 #   tools/ci/sanitizers.sh tsan   the tests that start threads, built with ThreadSanitizer
 #                                 (preset tsan; only their targets are built)
-#   tools/ci/sanitizers.sh [all]  both (what CI runs, after the release tests)
+#   tools/ci/sanitizers.sh [all]  both
+#   tools/ci/sanitizers.sh build|test [asan|tsan|all]
+#                                 only the configure and build, or only the tests of a
+#                                 build made before: CI (setup.sh test) builds both at idle
+#                                 priority while the release tests run, then tests them
 # Any sanitizer report fails its test (the run aborts on the first report) and fails this
 # script. A test that fails with no sanitizer report in the output (an assertion on timing,
 # which instrumentation slows several times) runs once more, alone with its binary's
@@ -17,11 +21,17 @@ set -uo pipefail
 cd "$(dirname "$0")/../.."
 root="$PWD"
 
+usage() { echo "usage: $0 [build|test] [asan|tsan|all]" >&2; exit 2; }
+step=both
+case "${1:-}" in
+  build|test) step="$1"; shift ;;
+esac
 mode="${1:-all}"
 case "$mode" in
   asan|tsan|all) ;;
-  *) echo "usage: $0 [asan|tsan|all]" >&2; exit 2 ;;
+  *) usage ;;
 esac
+[ $# -le 1 ] || usage
 jobs="${MHD_CI_JOBS:-2}"
 asan_dir="${MHD_ASAN_BUILD_DIR:-build/asan}"
 tsan_dir="${MHD_TSAN_BUILD_DIR:-build/tsan}"
@@ -184,15 +194,26 @@ ctest_rerun_unreported() {
   return $rc
 }
 
+built() {  # built <build dir>: whether a build was configured there, saying so if not
+  [ -f "$1/CTestTestfile.cmake" ] && return 0
+  echo "sanitizers: no build in $1 (run: $0 build $mode)" >&2
+  failed=1
+  return 1
+}
+
 supp() {  # supp <file>: the suppressions option for a file in tools/ci, if it exists
   [ -f "$root/tools/ci/$1" ] && echo ":suppressions=$root/tools/ci/$1"
 }
 
 # ---- AddressSanitizer + UndefinedBehaviorSanitizer ------------------------------------
 
-run_asan() {
+build_asan() {
   phase "asan configure" cmake --preset asan -B "$asan_dir" >/dev/null || return
-  phase "asan build" cmake --build "$asan_dir" -j "$jobs" || return
+  phase "asan build" cmake --build "$asan_dir" -j "$jobs"
+}
+
+test_asan() {
+  built "$asan_dir" || return
   local exclude=()
   [ ${#asan_exclude[@]} -eq 0 ] || exclude=(-E "$(join_regex "${asan_exclude[@]}")")
   export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:check_initialization_order=1:strict_init_order=1$(supp asan.supp)"
@@ -205,9 +226,13 @@ run_asan() {
 
 # ---- ThreadSanitizer ------------------------------------------------------------------
 
-run_tsan() {
+build_tsan() {
   phase "tsan configure" cmake --preset tsan -B "$tsan_dir" >/dev/null || return
-  phase "tsan build" cmake --build "$tsan_dir" -j "$jobs" --target "${tsan_targets[@]}" || return
+  phase "tsan build" cmake --build "$tsan_dir" -j "$jobs" --target "${tsan_targets[@]}"
+}
+
+test_tsan() {
+  built "$tsan_dir" || return
   # Exactly the tests of the binaries built here, by number (their folders also hold
   # tests of binaries that are not, e.g. the `mhd` command's).
   local numbers
@@ -230,14 +255,21 @@ print(",".join(str(i + 1) for i, t in enumerate(tests)
 }
 
 t_start=$(now)
+run() {  # run asan|tsan: the step asked for
+  case "$step" in
+    build) "build_$1" ;;
+    test) "test_$1" ;;
+    both) "build_$1" && "test_$1" ;;
+  esac
+}
 case "$mode" in
-  asan) run_asan ;;
-  tsan) run_tsan ;;
-  all) run_asan; run_tsan ;;
+  asan) run asan ;;
+  tsan) run tsan ;;
+  all) run asan; run tsan ;;
 esac
 total=$(awk -v a="$t_start" -v b="$(now)" 'BEGIN { printf "%.0f", b - a }')
 
-echo "==== sanitizers: summary ($mode, $jobs jobs)"
+echo "==== sanitizers: summary ($step $mode, $jobs jobs)"
 printf '  %s\n' "${summary[@]}"
 printf '  %-28s %5s s\n' "total" "$total"
 if [ ${#flaky_tests[@]} -gt 0 ]; then
@@ -252,4 +284,4 @@ if [ $failed -ne 0 ]; then
   echo "==== sanitizers: FAILED" >&2
   exit 1
 fi
-echo "==== sanitizers: all clean"
+if [ "$step" = build ]; then echo "==== sanitizers: built"; else echo "==== sanitizers: all clean"; fi

@@ -3,7 +3,7 @@
 # a while: docs/reliability/fuzzing.md.
 #
 #   tools/fuzz/run_fuzzers.sh [--seconds N] [--build-dir DIR] [--only NAME] [--jobs J]
-#                             [--fresh] [--no-build]
+#                             [--fresh] [--no-build | --build-only]
 #
 #   --seconds N     run each target for N seconds (default 20)
 #   --build-dir DIR build folder (default build/fuzz); the corpora, crash files and logs
@@ -13,6 +13,7 @@
 #   --jobs J        build jobs, and targets fuzzed at once (default 2)
 #   --fresh         start from the seeds only (drop what earlier runs added to the corpus)
 #   --no-build      run what is already built
+#   --build-only    build, and run nothing (CI builds at idle priority beside other work)
 #
 # Exits 0 when every target ran its time without a crash, leak, timeout or out-of-memory;
 # otherwise 1, after printing the crash file (re-run one with `DIR/tools/fuzz/mhd-fuzz-NAME
@@ -26,8 +27,9 @@ only=""
 jobs=2
 fresh=0
 build=1
+run=1
 
-usage() { sed -n '2,18p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,19p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --seconds) seconds="${2:?--seconds needs a number}"; shift 2 ;;
@@ -36,6 +38,7 @@ while [[ $# -gt 0 ]]; do
     --jobs|-j) jobs="${2:?--jobs needs a number}"; shift 2 ;;
     --fresh) fresh=1; shift ;;
     --no-build) build=0; shift ;;
+    --build-only) run=0; shift ;;
     -h|--help) usage; exit 0 ;;
     *) echo "run_fuzzers.sh: error: unknown argument '$1'" >&2; usage >&2; exit 2 ;;
   esac
@@ -109,6 +112,10 @@ if [[ $build -eq 1 ]]; then
   build_t0=$(date +%s)
   cmake --build "$build_dir" -j "$jobs" --target "${build_targets[@]}"
   echo "== built in $(($(date +%s) - build_t0)) s"
+fi
+if [[ $run -eq 0 ]]; then
+  [[ $build -eq 1 ]] || { echo "run_fuzzers.sh: error: --no-build and --build-only leave nothing to do" >&2; exit 2; }
+  exit 0
 fi
 
 # The scene fuzzer writes every input to a file in a folder under $TMPDIR: on tmpfs that
