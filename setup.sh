@@ -65,8 +65,9 @@ else
   sanitizers=$([ "${MHD_SANITIZERS:-1}" != 0 ] && echo 1 || echo 0)
   fuzz_seconds="${MHD_FUZZ_SECONDS:-20}"
   # The ASan, TSan and fuzzing builds start now, at idle priority (tools/ci/idle_builds.sh):
-  # they take the cores the release build and tests leave idle, and each is waited for
-  # just before its tests. Their output is printed then, with the time each took.
+  # they take what the release build and the ASan tests leave of the cores, and each is
+  # waited for just before its tests; their output is printed then. They are paused while
+  # the release tests run, which have no second try.
   idle_dir=build/ci-idle
   idle_steps=()
   [ "$sanitizers" = 1 ] && idle_steps+=(asan tsan)
@@ -76,7 +77,9 @@ else
     trap 'tools/ci/idle_builds.sh stop "$idle_dir"; summary' EXIT
   fi
   phase "release build" cmake --build --preset release
+  if [ ${#idle_steps[@]} -gt 0 ]; then tools/ci/idle_builds.sh pause "$idle_dir"; fi
   phase "release test" ctest --preset release
+  if [ ${#idle_steps[@]} -gt 0 ]; then tools/ci/idle_builds.sh resume "$idle_dir"; fi
   # The sanitizer script prints its own phases and a summary of each.
   if [ "$sanitizers" = 1 ]; then
     phase "asan build (idle priority, waited)" tools/ci/idle_builds.sh wait "$idle_dir" asan

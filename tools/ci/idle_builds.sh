@@ -3,17 +3,20 @@
 #   tools/ci/idle_builds.sh start <dir> <step>...   starts them in the background, in order
 #   tools/ci/idle_builds.sh wait <dir> <step>       waits for one, prints its output, exits
 #                                                   with its exit status
+#   tools/ci/idle_builds.sh pause|resume <dir>      stops them where they are, or goes on
 #   tools/ci/idle_builds.sh stop <dir>              ends those still running
 # Steps: asan and tsan (tools/ci/sanitizers.sh build), fuzz (tools/fuzz/run_fuzzers.sh
-# --build-only). The release tests leave most of the two cores idle (they wait on clocks,
-# sockets and other processes: 258 s of CPU in a 406 s run), and a build under SCHED_IDLE
-# takes only that: the kernel runs any other task first, so the tests' threads are not
-# held up. Each step writes <dir>/<step>.log, then <dir>/<step>.rc ("<exit status>
-# <seconds>") once it has ended.
+# --build-only). A build under SCHED_IDLE takes only the CPU that other tasks leave: the
+# release build leaves some at its links, the ASan tests much more (they wait on clocks,
+# sockets and other processes). CI pauses them while the release tests run: those have no
+# second try, and beside a build one real-time run once stalled 32 ms (its haptic thread at
+# SCHED_FIFO; the cause, not found, may be the file system the build writes to). Each step
+# writes <dir>/<step>.log, then <dir>/<step>.rc ("<exit status> <seconds>") once it has
+# ended.
 set -uo pipefail
 cd "$(dirname "$0")/../.."
 
-usage() { sed -n '2,12p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
+usage() { sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
 [ $# -ge 2 ] || usage
 action="$1" dir="$2"
 shift 2
@@ -37,18 +40,41 @@ run_steps() {  # run_steps <step>...: each in turn, its log and exit status in $
   done
 }
 
+tree_of() {  # tree_of <pid>: the process and its descendants, parents first
+  ps -e -o pid=,ppid= | awk -v root="$1" '
+    { parent[$1] = $2; order[NR] = $1 }
+    END {
+      keep[root] = 1; print root
+      do {
+        grown = 0
+        for (i = 1; i <= NR; i++) {
+          p = order[i]
+          if (!(p in keep) && (parent[p] in keep)) { keep[p] = 1; print p; grown = 1 }
+        }
+      } while (grown)
+    }'
+}
+
+signal_tree() {  # signal_tree <signal>: to the builds' processes; twice, for any just started
+  local pid p
+  pid=$(cat "$dir/pid" 2>/dev/null) || return 0
+  kill -0 "$pid" 2>/dev/null || return 0
+  for _ in 1 2; do
+    for p in $(tree_of "$pid"); do kill -"$1" "$p" 2>/dev/null; done
+  done
+}
+
 case "$action" in
   start)
     [ $# -ge 1 ] || usage
     for step in "$@"; do command_of "$step" >/dev/null || exit 2; done
     rm -rf "$dir" && mkdir -p "$dir" || exit 1
     # SCHED_IDLE is inherited by every compiler and linker the builds start (nice 19
-    # where the policy is refused). Its own process group (job control), so that `stop`
-    # ends all of it; not its own session, which would put it in an autogroup of its own
-    # that the kernel gives as much of the CPU as the tests' (seen: half each).
+    # where the policy is refused). In this session: a session of its own would have an
+    # autogroup of its own, which the kernel gives as much of the CPU as the tests' (seen:
+    # half each).
     idle=(chrt --idle 0)
     "${idle[@]}" true 2>/dev/null || idle=(nice -n 19)
-    set -m
     "${idle[@]}" "$0" run "$dir" "$@" </dev/null >/dev/null 2>&1 &
     echo $! >"$dir/pid"
     ;;
@@ -73,10 +99,16 @@ case "$action" in
     echo "==== idle builds: $step: $seconds s from its start, exit $rc"
     exit "$rc"
     ;;
+  pause)
+    signal_tree STOP
+    ;;
+  resume)
+    signal_tree CONT
+    ;;
   stop)
-    pid=$(cat "$dir/pid" 2>/dev/null) || exit 0
-    kill -- -"$pid" 2>/dev/null
-    exit 0
+    # Ninja starts each compiler in a process group of its own: the whole tree is signalled.
+    signal_tree TERM
+    signal_tree CONT
     ;;
   *) usage ;;
 esac
