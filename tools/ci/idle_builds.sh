@@ -7,12 +7,12 @@
 #   tools/ci/idle_builds.sh stop <dir>              ends those still running
 # Steps: asan and tsan (tools/ci/sanitizers.sh build), fuzz (tools/fuzz/run_fuzzers.sh
 # --build-only). A build under SCHED_IDLE takes only the CPU that other tasks leave: the
-# release build leaves some at its links, the ASan tests much more (they wait on clocks,
-# sockets and other processes). CI pauses them while the release tests run: those have no
-# second try, and beside a build one real-time run once stalled 32 ms (its haptic thread at
-# SCHED_FIFO; the cause, not found, may be the file system the build writes to). Each step
-# writes <dir>/<step>.log, then <dir>/<step>.rc ("<exit status> <seconds>") once it has
-# ended.
+# release build leaves little, the ASan tests much more (they wait on clocks, sockets and
+# other processes). CI pauses them while the release tests run: those have no second try,
+# and beside a build one real-time run once stalled 32 ms (its haptic thread at
+# SCHED_FIFO; the cause was not found). Each step writes <dir>/<step>.log, then
+# <dir>/<step>.rc ("<exit status> <seconds>") once it has ended. `run` is the background
+# part of `start`.
 set -uo pipefail
 cd "$(dirname "$0")/../.."
 
@@ -70,9 +70,9 @@ case "$action" in
     for step in "$@"; do command_of "$step" >/dev/null || exit 2; done
     rm -rf "$dir" && mkdir -p "$dir" || exit 1
     # SCHED_IDLE is inherited by every compiler and linker the builds start (nice 19
-    # where the policy is refused). In this session: a session of its own would have an
-    # autogroup of its own, which the kernel gives as much of the CPU as the tests' (seen:
-    # half each).
+    # where the policy is refused). Not under setsid: that would give the builds a
+    # scheduler autogroup of their own, which the kernel gives as much of the CPU as the
+    # tests' (seen: half each).
     idle=(chrt --idle 0)
     "${idle[@]}" true 2>/dev/null || idle=(nice -n 19)
     "${idle[@]}" "$0" run "$dir" "$@" </dev/null >/dev/null 2>&1 &
