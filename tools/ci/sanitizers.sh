@@ -7,7 +7,8 @@
 #   tools/ci/sanitizers.sh build|test [asan|tsan|all]
 #                                 only the configure and build, or only the tests of a
 #                                 build made before: CI (setup.sh test) builds both at idle
-#                                 priority while the release tests run, then tests them
+#                                 priority beside its other phases (tools/ci/idle_builds.sh),
+#                                 then tests them
 # Any sanitizer report fails its test (the run aborts on the first report) and fails this
 # script. A test that fails with no sanitizer report in the output (an assertion on timing,
 # which instrumentation slows several times) runs once more, alone with its binary's
