@@ -11,9 +11,9 @@
 #                                 then tests them
 # Any sanitizer report fails its test (the run aborts on the first report) and fails this
 # script. A test that fails with no sanitizer report in the output (an assertion on timing,
-# which instrumentation slows several times) runs once more, alone with its binary's
-# other failures; if it then passes it is named as flaky in the summary, and otherwise it
-# fails this script. Each phase prints its wall time.
+# which instrumentation slows several times) runs once more, alone with the other
+# failures (tools/ci/ctest_once_more.bash); if it then passes it is named as flaky in the
+# summary, and otherwise it fails this script. Each phase prints its wall time.
 #
 # Environment: MHD_CI_JOBS (default 2) build and test jobs; MHD_ASAN_BUILD_DIR and
 # MHD_TSAN_BUILD_DIR (default build/asan, build/tsan) to build elsewhere;
@@ -153,47 +153,11 @@ phase() {  # phase <label> <command...>: runs it, prints and records its wall ti
 
 join_regex() { local IFS='|'; echo "$*"; }
 
-# The names of the tests ctest saw fail in <build dir>, one per line: CI shows only the end
-# of the log, and a test phase can end thousands of lines above it.
-failed_in() {
-  local log="$1/Testing/Temporary/LastTestsFailed.log"
-  [ -f "$log" ] && sed 's/^[0-9]*://' "$log"
-}
-
-# What a sanitizer prints when it finds something (LeakSanitizer's report says ERROR too).
+# What a sanitizer prints when it finds something (LeakSanitizer's report says ERROR too):
+# a test whose output holds one gets no second try (ctest_once_more.bash).
 sanitizer_report='ERROR: AddressSanitizer|ERROR: LeakSanitizer|WARNING: ThreadSanitizer|runtime error:'
-
-# ctest_rerun_unreported <label> <build dir> <ctest args...>: runs the tests; when some
-# fail and their output holds no sanitizer report, runs those once more.
-ctest_rerun_unreported() {
-  local label="$1" dir="$2" rc name
-  shift 2
-  local log="$dir/Testing/Temporary/sanitizer_ctest.log"
-  # A list left by an earlier run in this folder must not pass for this run's.
-  rm -f "$dir/Testing/Temporary/LastTestsFailed.log"
-  ctest --test-dir "$dir" --output-log "$log" "$@" && return 0
-  rc=$?
-  local first=()
-  mapfile -t first < <(failed_in "$dir")
-  if grep -qE "$sanitizer_report" "$log" || [ ${#first[@]} -eq 0 ]; then
-    for name in "${first[@]}"; do failed_tests+=("$label $name"); done
-    return $rc
-  fi
-  echo "==== sanitizers: $label: ${#first[@]} test(s) failed with no sanitizer report; once more:"
-  printf '  %s\n' "${first[@]}"
-  ctest --test-dir "$dir" --rerun-failed --output-on-failure --timeout 300 --output-log "$log.rerun" && {
-    for name in "${first[@]}"; do flaky_tests+=("$label $name"); done
-    return 0
-  }
-  rc=$?
-  local again=()
-  mapfile -t again < <(failed_in "$dir")
-  for name in "${again[@]}"; do failed_tests+=("$label $name"); done
-  for name in "${first[@]}"; do
-    printf '%s\n' "${again[@]}" | grep -qxF -- "$name" || flaky_tests+=("$label $name")
-  done
-  return $rc
-}
+# shellcheck source=tools/ci/ctest_once_more.bash
+source "$root/tools/ci/ctest_once_more.bash"
 
 built() {  # built <build dir>: whether a build was configured there, saying so if not
   [ -f "$1/CTestTestfile.cmake" ] && return 0
@@ -220,7 +184,7 @@ test_asan() {
   export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:check_initialization_order=1:strict_init_order=1$(supp asan.supp)"
   export LSAN_OPTIONS="print_suppressions=0$(supp lsan.supp)"
   export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1$(supp ubsan.supp)"
-  phase "asan test" ctest_rerun_unreported asan "$asan_dir" \
+  phase "asan test" ctest_once_more asan "$asan_dir" "$sanitizer_report" \
     -j "$jobs" --output-on-failure --timeout 300 "${exclude[@]}" "${extra_ctest[@]}"
   unset ASAN_OPTIONS LSAN_OPTIONS UBSAN_OPTIONS
 }
@@ -250,7 +214,7 @@ print(",".join(str(i + 1) for i, t in enumerate(tests)
     return 1
   fi
   export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1$(supp tsan.supp)"
-  phase "tsan test" ctest_rerun_unreported tsan "$tsan_dir" \
+  phase "tsan test" ctest_once_more tsan "$tsan_dir" "$sanitizer_report" \
     -j "$jobs" --output-on-failure --timeout 300 -I "0,0,0,$numbers" "${extra_ctest[@]}"
   unset TSAN_OPTIONS
 }
