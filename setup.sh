@@ -28,11 +28,23 @@ phase() {  # phase <label> <command...>
   echo "==== setup: $label: $(($(date +%s) - t0)) s, exit $rc"
   return $rc
 }
+failed_tests=()
+flaky_tests=()
+# shellcheck source=tools/ci/ctest_once_more.bash
+source tools/ci/ctest_once_more.bash
 summary() {
   [ ${#phases[@]} -gt 0 ] || return 0
   echo "==== setup: phases ($mode)"
   printf '  %s\n' "${phases[@]}"
   printf '  %-34s %6d s\n' total $(($(date +%s) - t_start))
+  if [ ${#flaky_tests[@]} -gt 0 ]; then
+    echo "==== setup: flaky (failed, passed when run again)"
+    printf '  %s\n' "${flaky_tests[@]}"
+  fi
+  if [ ${#failed_tests[@]} -gt 0 ]; then
+    echo "==== setup: failed tests"
+    printf '  %s\n' "${failed_tests[@]}"
+  fi
 }
 trap summary EXIT
 quietly() { "$@" >/dev/null; }
@@ -65,9 +77,8 @@ else
   sanitizers=$([ "${MHD_SANITIZERS:-1}" != 0 ] && echo 1 || echo 0)
   fuzz_seconds="${MHD_FUZZ_SECONDS:-20}"
   # The ASan, TSan and fuzzing builds start now, at idle priority (tools/ci/idle_builds.sh):
-  # they take what the release build and the ASan tests leave of the cores, and each is
-  # waited for just before its tests; their output is printed then. They are paused while
-  # the release tests run, which have no second try.
+  # they take what the release build and the tests leave of the cores, and each is waited
+  # for just before its tests; their output is printed then.
   idle_dir=build/ci-idle
   idle_steps=()
   [ "$sanitizers" = 1 ] && idle_steps+=(asan tsan)
@@ -77,9 +88,8 @@ else
     trap 'tools/ci/idle_builds.sh stop "$idle_dir"; summary' EXIT
   fi
   phase "release build" cmake --build --preset release
-  if [ ${#idle_steps[@]} -gt 0 ]; then tools/ci/idle_builds.sh pause "$idle_dir"; fi
-  phase "release test" ctest --preset release
-  if [ ${#idle_steps[@]} -gt 0 ]; then tools/ci/idle_builds.sh resume "$idle_dir"; fi
+  # A failed test runs once more, alone (tools/ci/ctest_once_more.bash).
+  phase "release test" ctest_once_more release build/release "" -j 2 --output-on-failure
   # The sanitizer script prints its own phases and a summary of each.
   if [ "$sanitizers" = 1 ]; then
     phase "asan build (idle priority, waited)" tools/ci/idle_builds.sh wait "$idle_dir" asan

@@ -3,20 +3,16 @@
 #   tools/ci/idle_builds.sh start <dir> <step>...   starts them in the background, in order
 #   tools/ci/idle_builds.sh wait <dir> <step>       waits for one, prints its output, exits
 #                                                   with its exit status
-#   tools/ci/idle_builds.sh pause|resume <dir>      stops them where they are, or goes on
 #   tools/ci/idle_builds.sh stop <dir>              ends those still running
 # Steps: asan and tsan (tools/ci/sanitizers.sh build), fuzz (tools/fuzz/run_fuzzers.sh
 # --build-only). A build under SCHED_IDLE takes only the CPU that other tasks leave: the
-# release build leaves little, the ASan tests much more (they wait on clocks, sockets and
-# other processes). CI pauses them while the release tests run: those have no second try,
-# and beside a build one real-time run once stalled 32 ms (its haptic thread at
-# SCHED_FIFO; the cause was not found). Each step writes <dir>/<step>.log, then
-# <dir>/<step>.rc ("<exit status> <seconds>") once it has ended. `run` is the background
-# part of `start`.
+# release build leaves little, the release and ASan tests much more (they wait on clocks,
+# sockets and other processes). Each step writes <dir>/<step>.log, then <dir>/<step>.rc
+# ("<exit status> <seconds>") once it has ended. `run` is the background part of `start`.
 set -uo pipefail
 cd "$(dirname "$0")/../.."
 
-usage() { sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
+usage() { sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
 [ $# -ge 2 ] || usage
 action="$1" dir="$2"
 shift 2
@@ -98,12 +94,6 @@ case "$action" in
     read -r rc seconds <"$dir/$step.rc"
     echo "==== idle builds: $step: $seconds s from its start, exit $rc"
     exit "$rc"
-    ;;
-  pause)
-    signal_tree STOP
-    ;;
-  resume)
-    signal_tree CONT
     ;;
   stop)
     # Ninja starts each compiler in a process group of its own: the whole tree is signalled.
