@@ -37,14 +37,7 @@ summary() {
   echo "==== setup: phases ($mode)"
   printf '  %s\n' "${phases[@]}"
   printf '  %-34s %6d s\n' total $(($(date +%s) - t_start))
-  if [ ${#flaky_tests[@]} -gt 0 ]; then
-    echo "==== setup: flaky (failed, passed when run again)"
-    printf '  %s\n' "${flaky_tests[@]}"
-  fi
-  if [ ${#failed_tests[@]} -gt 0 ]; then
-    echo "==== setup: failed tests"
-    printf '  %s\n' "${failed_tests[@]}"
-  fi
+  ctest_name_tests setup
 }
 trap summary EXIT
 quietly() { "$@" >/dev/null; }

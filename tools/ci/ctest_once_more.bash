@@ -11,6 +11,8 @@
 #   Runs ctest in <build dir>. Where the tests' output matches the regex (a sanitizer's
 #   report; empty: never), nothing runs again. Appends "<label> <test>" to the caller's
 #   arrays failed_tests and flaky_tests; returns ctest's last exit status.
+# ctest_name_tests <prefix>
+#   Prints those arrays, each under a heading, where not empty.
 
 # The names of the tests ctest saw fail in <build dir>, one per line: CI shows only the end
 # of the log, and a test phase can end thousands of lines above it.
@@ -58,4 +60,16 @@ ctest_once_more() {
     printf '%s\n' "${again[@]}" | grep -qxF -- "$name" || flaky_tests+=("$label $name")
   done
   return $rc
+}
+
+# ctest_name_tests <prefix>: the caller's flaky and failed tests, under headings, if any.
+ctest_name_tests() {
+  if [ ${#flaky_tests[@]} -gt 0 ]; then
+    echo "==== $1: flaky (failed, passed when run again)"
+    printf '  %s\n' "${flaky_tests[@]}"
+  fi
+  if [ ${#failed_tests[@]} -gt 0 ]; then
+    echo "==== $1: failed tests"
+    printf '  %s\n' "${failed_tests[@]}"
+  fi
 }

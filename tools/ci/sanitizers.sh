@@ -237,14 +237,7 @@ total=$(awk -v a="$t_start" -v b="$(now)" 'BEGIN { printf "%.0f", b - a }')
 echo "==== sanitizers: summary ($step $mode, $jobs jobs)"
 printf '  %s\n' "${summary[@]}"
 printf '  %-28s %5s s\n' "total" "$total"
-if [ ${#flaky_tests[@]} -gt 0 ]; then
-  echo "==== sanitizers: flaky (failed with no sanitizer report, passed when run again)"
-  printf '  %s\n' "${flaky_tests[@]}"
-fi
-if [ ${#failed_tests[@]} -gt 0 ]; then
-  echo "==== sanitizers: failed tests"
-  printf '  %s\n' "${failed_tests[@]}"
-fi
+ctest_name_tests sanitizers
 if [ $failed -ne 0 ]; then
   echo "==== sanitizers: FAILED" >&2
   exit 1
