@@ -1,11 +1,11 @@
 # shellcheck shell=bash
 # Sourced by setup.sh and tools/ci/sanitizers.sh: a test run where a failure with no
-# report that rules a second try out runs once more, alone with its binary's other
-# failures. The second try is for the host, not the code: on this project's CI machines
-# (virtual ones) a real-time thread at SCHED_FIFO, with nothing else running, woke 42 ms
-# late once in five minutes, and a test that holds a device's firmware watchdog of 30 ms
-# then fails. A test that passes on its second try is named as flaky; one that fails
-# again fails the run.
+# report that rules a second try out runs once more, by name, one at a time with the
+# run's other failures. The second try is for the host, not the code: on this project's
+# CI machines (virtual ones) a real-time thread at SCHED_FIFO, with nothing else running,
+# woke 42 ms late once in five minutes, and a test that holds a device's firmware
+# watchdog of 30 ms then fails. A test that passes on its second try is named as flaky;
+# one that fails again fails the run.
 #
 # ctest_once_more <label> <build dir> <no-second-try regex> <ctest args...>
 #   Runs ctest in <build dir>. Where the tests' output matches the regex (a sanitizer's
