@@ -76,14 +76,14 @@ void keep_tested(SweepWork& work, const TriangleRef& ref, bool near_end) {
     const auto i = static_cast<std::size_t>(work.tested_count++);
     work.tested[i] = ref;
     work.tested_near_end[i] = near_end;
+    if (!near_end) ++work.tested_far_count;
     return;
   }
-  if (!near_end) return;
+  if (!near_end || work.tested_far_count == 0) return;
   // Full: it takes the place of the first one that is not round the end, and the order
   // tested stays.
   int out = 0;
-  while (out < SweepWork::kMaxTested && work.tested_near_end[static_cast<std::size_t>(out)]) ++out;
-  if (out == SweepWork::kMaxTested) return;
+  while (work.tested_near_end[static_cast<std::size_t>(out)]) ++out;
   for (int k = out; k + 1 < SweepWork::kMaxTested; ++k) {
     const auto i = static_cast<std::size_t>(k);
     work.tested[i] = work.tested[i + 1];
@@ -91,6 +91,7 @@ void keep_tested(SweepWork& work, const TriangleRef& ref, bool near_end) {
   }
   work.tested.back() = ref;
   work.tested_near_end.back() = true;
+  --work.tested_far_count;
 }
 
 }  // namespace
@@ -199,6 +200,7 @@ std::optional<SweepHit> CollisionWorld::sweep_among(int only_object, const Eigen
   if (near != nullptr) near->bind(geometry_id_);
   if (work != nullptr) {
     work->tested_count = 0;
+    work->tested_far_count = 0;
     work->clear_fraction = 0.0;
   }
   // Exact shapes over the whole segment, triangles piece by piece; the earlier hit wins.

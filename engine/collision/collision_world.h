@@ -72,6 +72,9 @@ struct SweepWork {
   int tested_count = 0;
   /// Which of `tested` lie round the segment's end (their leaf's box, on a tree's walk).
   std::array<bool, kMaxTested> tested_near_end{};
+  /// How many of `tested` are not round the end: none left, a full list has no place for
+  /// one that is, and a fine mesh's later tests need not look.
+  int tested_far_count = 0;
 };
 
 class CollisionWorld {
