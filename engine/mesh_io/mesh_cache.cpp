@@ -363,10 +363,16 @@ Result<CachedMesh, MeshLoadError> MeshCache::load(const std::filesystem::path& f
   CachedMesh result;
   const std::string name = short_name(file);
   std::optional<MeshCacheKey> key;
-  if (dir_) {  // unreadable: the loader says why
+  if (dir_) {
+    // The key reads the whole file: what its header alone refuses is refused first.
+    if (std::optional<MeshLoadError> refused =
+            refusal_from_header(file, budget, TriangleBudget::kCachedBytesPerTriangle)) {
+      return *std::move(refused);
+    }
     bool remembered = false;
     key = mesh_key_remembered_or_hashed(*dir_, file, scale_to_m, writable_, remembered);
     if (remembered) ++stats_.keys_remembered;
+    if (key && !remembered) ++stats_.keys_hashed;
   }
 
   // 1. Try the cache file.

@@ -85,6 +85,8 @@ struct MeshCacheStats {
   std::size_t hits = 0, misses = 0, rejected = 0, writes = 0, write_failures = 0;
   /// Loads whose key came from the file's memo (mesh_key_memo.h), the file not hashed.
   std::size_t keys_remembered = 0;
+  /// Loads whose key was hashed from the file's bytes.
+  std::size_t keys_hashed = 0;
 };
 
 /// Not thread-safe; use one instance per thread (files are safe to share between
@@ -100,7 +102,10 @@ class MeshCache {
   /// `progress` is called for meshes of kProgressMinTriangles or more (for the read
   /// step, estimated from the file size): reading the file, building the tree and writing
   /// the entry, or reading the entry. `budget` as for load_mesh_file(), and applied
-  /// to a cache hit too. The error is the loader's, or the budget's refusal of a hit.
+  /// to a cache hit too: the header is checked before the file is hashed for its key,
+  /// against memory at what a cached mesh takes (kCachedBytesPerTriangle), and a build
+  /// is checked again at what it takes. The error is the loader's, or the budget's
+  /// refusal of a hit.
   [[nodiscard]] Result<CachedMesh, MeshLoadError> load(const std::filesystem::path& file, const Eigen::Vector3d& scale_to_m,
                                 const MeshProgress& progress = {},
                                 std::optional<TriangleBudget> budget = std::nullopt);

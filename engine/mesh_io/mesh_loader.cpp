@@ -151,30 +151,39 @@ MeshCleanUp finish_loaded_mesh(TriangleMesh& mesh, const Eigen::Vector3d& scale_
   return done;
 }
 
+std::optional<MeshLoadError> refusal_from_header(const std::filesystem::path& file,
+                                                 const std::optional<TriangleBudget>& budget,
+                                                 std::uint64_t bytes_per_triangle) {
+  const RegularFile opened(file);
+  if (!opened.ok()) return fail(file, opened.problem());
+  if (opened.size_bytes() == 0) return fail(file, "file is empty");
+  const std::optional<std::string> head =
+      read_head(opened.fd(), std::min<unsigned long long>(opened.size_bytes(), kMeshHeaderBytes));
+  if (!head) return fail(file, fmt::format("cannot read file: {}", std::strerror(errno)));
+  const MeshHeaderCheck header = check_mesh_header(*head, opened.size_bytes(), file.extension().string());
+  if (!header.ok()) return fail(file, header.error());
+  if (budget && header->claimed_faces) {
+    if (std::string refused = budget->refusal("the header claims", *header->claimed_faces, "faces"); !refused.empty()) {
+      return fail(file, std::move(refused));
+    }
+    if (std::string refused =
+            budget->memory_refusal("the header claims", *header->claimed_faces, "faces", bytes_per_triangle);
+        !refused.empty()) {
+      return fail(file, std::move(refused));
+    }
+  }
+  return std::nullopt;
+}
+
 Result<LoadedMesh, MeshLoadError> load_mesh_file(const std::filesystem::path& file, const Eigen::Vector3d& scale_to_m,
                               const MeshProgress& progress, std::optional<TriangleBudget> budget) {
   if (!scale_to_m.allFinite() || (scale_to_m.array() == 0.0).any()) {
     return fail(file, fmt::format("invalid scale ({}, {}, {}): every factor must be finite and non-zero",
                                   scale_to_m.x(), scale_to_m.y(), scale_to_m.z()));
   }
-  {
-    // Header counts are checked against the file size before assimp allocates for them.
-    const RegularFile opened(file);
-    if (!opened.ok()) return fail(file, opened.problem());
-    if (opened.size_bytes() == 0) return fail(file, "file is empty");
-    const std::optional<std::string> head = read_head(opened.fd(), std::min<unsigned long long>(opened.size_bytes(), kMeshHeaderBytes));
-    if (!head) return fail(file, fmt::format("cannot read file: {}", std::strerror(errno)));
-    const MeshHeaderCheck header = check_mesh_header(*head, opened.size_bytes(), file.extension().string());
-    if (!header.ok()) return fail(file, header.error());
-    if (budget && header->claimed_faces) {
-      if (std::string refused = budget->refusal("the header claims", *header->claimed_faces, "faces"); !refused.empty()) {
-        return fail(file, std::move(refused));
-      }
-      if (std::string refused = budget->memory_refusal("the header claims", *header->claimed_faces, "faces");
-          !refused.empty()) {
-        return fail(file, std::move(refused));
-      }
-    }
+  // Header counts are checked against the file size before assimp allocates for them.
+  if (std::optional<MeshLoadError> refused = refusal_from_header(file, budget, TriangleBudget::kLoadBytesPerTriangle)) {
+    return *std::move(refused);
   }
 
   Assimp::Importer importer;

@@ -36,6 +36,15 @@ struct LoadedMesh {
   std::size_t flipped_triangles = 0;
 };
 
+/// What a mesh file's first kMeshHeaderBytes can refuse it for: not a readable regular
+/// file, empty, header counts that do not fit its size, and with a `budget` a header face
+/// count over what is left of max_triangles or, at `bytes_per_triangle`, over the memory
+/// available. nullopt when none refuses it. Reads the head only, so its time does not
+/// grow with the file.
+[[nodiscard]] std::optional<MeshLoadError> refusal_from_header(const std::filesystem::path& file,
+                                                               const std::optional<TriangleBudget>& budget,
+                                                               std::uint64_t bytes_per_triangle);
+
 /// Loads every triangle of every mesh in `file` (scene-graph transforms applied, points
 /// and lines dropped) into one mesh, multiplies coordinates by `scale_to_m` per axis
 /// (a mirroring scale, i.e. an odd number of negative factors, flips the winding so the

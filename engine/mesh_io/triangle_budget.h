@@ -14,6 +14,9 @@ struct TriangleBudget {
   /// a triangle, measured with /usr/bin/time on `mhd validate` (docs/benchmarks.md,
   /// "Meshes at size").
   static constexpr std::uint64_t kLoadBytesPerTriangle = 150;
+  /// Resident bytes a cached mesh takes per triangle once adopted from its entry: 58 at
+  /// 100 M triangles (docs/benchmarks.md, "Meshes at size"), rounded up.
+  static constexpr std::uint64_t kCachedBytesPerTriangle = 60;
 
   std::uint64_t max_triangles = 0;
   std::uint64_t used = 0;  ///< triangles loaded before this mesh
@@ -26,10 +29,11 @@ struct TriangleBudget {
   /// than max_triangles (50000000)" for what = "the header claims", noun = "faces".
   [[nodiscard]] std::string refusal(std::string_view what, std::uint64_t count, std::string_view noun) const;
 
-  /// "" when loading `count` triangles fits memory_bytes (or it is 0), else why not, e.g.
-  /// "the header claims 100000000 faces, about 16.3 GiB to load, more than the 12.0 GiB
-  /// of memory available".
-  [[nodiscard]] std::string memory_refusal(std::string_view what, std::uint64_t count, std::string_view noun) const;
+  /// "" when loading `count` triangles at `bytes_per_triangle` fits memory_bytes (or it is
+  /// 0), else why not, e.g. "the header claims 100000000 faces, about 14.0 GiB to load,
+  /// more than the 12.0 GiB of memory available".
+  [[nodiscard]] std::string memory_refusal(std::string_view what, std::uint64_t count, std::string_view noun,
+                                           std::uint64_t bytes_per_triangle = kLoadBytesPerTriangle) const;
 };
 
 }  // namespace mhd

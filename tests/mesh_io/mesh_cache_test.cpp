@@ -366,6 +366,57 @@ TEST_F(MeshCacheTest, LoadErrorsPassThrough) {
   EXPECT_EQ(cache.stats().writes, 0u);
 }
 
+TEST_F(MeshCacheTest, AHeaderOverMaxTrianglesIsRefusedBeforeTheFileIsHashed) {
+  // The key hashes every byte of the file: a header that refuses the mesh must do so
+  // first, or a huge file costs its whole read before the refusal.
+  MeshCache cache(cache_dir_);
+  const Result<CachedMesh, MeshLoadError> refused =
+      cache.load(mesh_file_, Eigen::Vector3d::Ones(), {}, TriangleBudget{5119});
+  ASSERT_FALSE(refused.ok());
+  EXPECT_EQ(refused.error().reason, "the header claims 5120 faces, more than max_triangles (5119)");
+  EXPECT_EQ(cache.stats().keys_hashed, 0u);
+  // The dual: a header within the limit is hashed and loaded.
+  const Result<CachedMesh, MeshLoadError> loaded =
+      cache.load(mesh_file_, Eigen::Vector3d::Ones(), {}, TriangleBudget{5120});
+  ASSERT_TRUE(loaded.ok()) << loaded.error_text();
+  EXPECT_EQ(cache.stats().keys_hashed, 1u);
+}
+
+TEST_F(MeshCacheTest, MemoryForTheCachedMeshIsCheckedBeforeHashingAndForABuildBeforeBuilding) {
+  constexpr std::uint64_t kFaces = 5120;
+  const std::uint64_t cached = kFaces * TriangleBudget::kCachedBytesPerTriangle;
+  const std::uint64_t built = kFaces * TriangleBudget::kLoadBytesPerTriangle;
+  ASSERT_LT(cached, built);
+  {  // Too little even for the cached mesh: refused from the header, nothing hashed.
+    MeshCache cache(cache_dir_);
+    const Result<CachedMesh, MeshLoadError> r =
+        cache.load(mesh_file_, Eigen::Vector3d::Ones(), {}, TriangleBudget{kFaces, 0, cached - 1});
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.error().reason, "the header claims 5120 faces, about " + std::to_string(cached) +
+                                    " bytes to load, more than the " + std::to_string(cached - 1) +
+                                    " bytes of memory available");
+    EXPECT_EQ(cache.stats().keys_hashed, 0u);
+  }
+  {  // Enough for the cached mesh but not for a build, and no entry: refused before building.
+    MeshCache cache(cache_dir_);
+    const Result<CachedMesh, MeshLoadError> r =
+        cache.load(mesh_file_, Eigen::Vector3d::Ones(), {}, TriangleBudget{kFaces, 0, built - 1});
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.error().reason, "the header claims 5120 faces, about " + std::to_string(built) +
+                                    " bytes to load, more than the " + std::to_string(built - 1) +
+                                    " bytes of memory available");
+    EXPECT_EQ(cache.stats().writes, 0u);
+  }
+  {  // With the entry written, the same memory holds the cached mesh: a hit.
+    MeshCache cache(cache_dir_);
+    ASSERT_TRUE(cache.load(mesh_file_, Eigen::Vector3d::Ones()).ok());
+    const Result<CachedMesh, MeshLoadError> r =
+        cache.load(mesh_file_, Eigen::Vector3d::Ones(), {}, TriangleBudget{kFaces, 0, cached});
+    ASSERT_TRUE(r.ok()) << r.error_text();
+    EXPECT_EQ(r->outcome, CacheOutcome::Hit);
+  }
+}
+
 TEST_F(MeshCacheTest, LargeMeshesReportProgress) {
   // 2 * 320 * 159 = 101760 triangles: over the progress threshold.
   const auto big_file = dir_ / "big.ply";
