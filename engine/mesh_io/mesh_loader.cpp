@@ -66,6 +66,20 @@ std::optional<std::string> read_head(int fd, std::size_t bytes) {
   return head;
 }
 
+/// "" when every face of every mesh has a corner, else which face has none.
+std::string face_without_corners(const aiScene& scene) {
+  for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+    const aiMesh* am = scene.mMeshes[m];
+    if (am == nullptr) continue;
+    for (unsigned f = 0; f < am->mNumFaces; ++f) {
+      if (am->mFaces[f].mNumIndices != 0) continue;
+      if (scene.mNumMeshes == 1) return fmt::format("face {} has no vertex indices", f);
+      return fmt::format("face {} of mesh {} has no vertex indices", f, m);
+    }
+  }
+  return {};
+}
+
 MeshLoadError fail(const std::filesystem::path& file, std::string reason) {
   return MeshLoadError{file, std::move(reason)};
 }
@@ -204,11 +218,17 @@ Result<LoadedMesh, MeshLoadError> load_mesh_file(const std::filesystem::path& fi
   // 0.65 s to find nothing to join. Files that arrive unshared are welded below instead.
   // ValidateDataStructure runs first: without it a face index past the vertices (a
   // hostile PLY, found by mhd-fuzz-mesh-header) crashes assimp's later steps.
-  const unsigned flags = aiProcess_ValidateDataStructure | aiProcess_Triangulate | aiProcess_PreTransformVertices |
-                         aiProcess_SortByPType | aiProcess_RemoveComponent;
-  const aiScene* scene = importer.ReadFile(file.string(), flags);
+  // The steps after the read run apart from it, once the faces are known to be sound:
+  // a face with no corners is typed a polygon by assimp 5.2.5, whose triangulation then
+  // aborts the process (and ValidateDataStructure runs before the faces are typed).
+  const aiScene* scene = importer.ReadFile(file.string(), aiProcess_ValidateDataStructure);
   if (!io->refusals().empty()) return fail(file, fmt::format("side file {}", io->refusals().front()));
   if (const std::string texture = texture_problem(scene, file); !texture.empty()) return fail(file, texture);
+  if (scene != nullptr) {
+    if (const std::string empty = face_without_corners(*scene); !empty.empty()) return fail(file, empty);
+    scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_PreTransformVertices |
+                                         aiProcess_SortByPType | aiProcess_RemoveComponent);
+  }
   if (scene == nullptr) {
     std::string why = importer.GetErrorString();
     if (why.empty()) why = "unknown error";

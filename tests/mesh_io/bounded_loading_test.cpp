@@ -7,9 +7,13 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <array>
 #include <chrono>
+#include <cstdint>
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace mhd {
 namespace {
@@ -144,6 +148,56 @@ TEST(BoundedLoading, FaceIndexPastTheVerticesIsRefusedNotACrash) {
   test::write_binary_ply(dir / "index.ply", mesh);
   EXPECT_EQ(reason_of(load_mesh_file(dir / "index.ply", Eigen::Vector3d::Ones())),
             "assimp could not read it: Validation failed: aiMesh::mFaces[0]::mIndices[2] is out of range");
+}
+
+/// A binary PLY of the four corners of a unit tetrahedron and one face per entry of
+/// `corner_counts`, each listing that many of the corners 0, 1, 2, 3, 0, 1, ...
+void write_ply_with_faces(const fs::path& file, const std::vector<int>& corner_counts) {
+  std::string bytes = "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                      "property float z\nelement face " +
+                      std::to_string(corner_counts.size()) +
+                      "\nproperty list uchar int vertex_indices\nend_header\n";
+  const std::array<float, 12> corners{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+  bytes.append(reinterpret_cast<const char*>(corners.data()), sizeof(corners));
+  for (const int count : corner_counts) {
+    bytes.push_back(static_cast<char>(count));
+    for (int k = 0; k < count; ++k) {
+      const std::int32_t index = k % 4;
+      bytes.append(reinterpret_cast<const char*>(&index), sizeof(index));
+    }
+  }
+  test::write_text(file, bytes);
+}
+
+TEST(BoundedLoading, AFaceWithNoCornersIsRefusedNotACrash) {
+  // Found by mhd-fuzz-mesh-header: assimp 5.2.5 types such a face a polygon, and its
+  // triangulation then aborts the process (an ai_assert) unless a real polygon is beside it.
+  TempDir dir;
+  for (const auto& [faces, first_empty] : std::vector<std::pair<std::vector<int>, int>>{
+           {{0}, 0}, {{3, 0}, 1}, {{0, 3}, 0}, {{1, 0}, 1}, {{2, 0}, 1}, {{3, 0, 0}, 1}, {{4, 0}, 1}, {{0, 5}, 0}}) {
+    SCOPED_TRACE(::testing::PrintToString(faces));
+    write_ply_with_faces(dir / "empty_face.ply", faces);
+    EXPECT_EQ(reason_of(load_mesh_file(dir / "empty_face.ply", Eigen::Vector3d::Ones())),
+              "face " + std::to_string(first_empty) + " has no vertex indices");
+  }
+  test::write_text(dir / "empty_face_ascii.ply",
+                   "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                   "element face 2\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n0\n");
+  EXPECT_EQ(reason_of(load_mesh_file(dir / "empty_face_ascii.ply", Eigen::Vector3d::Ones())),
+            "face 1 has no vertex indices");
+}
+
+TEST(BoundedLoading, FacesOfEveryOtherCornerCountStillLoad) {
+  // The dual: points and lines are dropped, triangles kept, polygons triangulated.
+  TempDir dir;
+  for (const auto& [faces, triangles] : std::vector<std::pair<std::vector<int>, std::size_t>>{
+           {{3}, 1}, {{1, 3}, 1}, {{2, 3}, 1}, {{3, 4}, 3}, {{4}, 2}}) {
+    SCOPED_TRACE(::testing::PrintToString(faces));
+    write_ply_with_faces(dir / "faces.ply", faces);
+    const Result<LoadedMesh, MeshLoadError> r = load_mesh_file(dir / "faces.ply", Eigen::Vector3d::Ones());
+    ASSERT_TRUE(r.ok()) << r.error_text();
+    EXPECT_EQ(r->mesh.triangle_count(), triangles);
+  }
 }
 
 /// Good input is never refused: the repository's assets, and Debian's bunny when present.
