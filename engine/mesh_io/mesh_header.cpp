@@ -10,9 +10,15 @@
 namespace mhd {
 
 MeshHeaderCheck check_mesh_header(std::string_view head, std::uint64_t file_size, std::string_view extension) {
-  if (has_ply_magic(head)) return check_ply_header(head, file_size);
   std::string ext(extension);
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  // assimp picks its SMD reader by these extensions whatever the file holds, and that
+  // reader never returns from a "nodes" section the file ends in: no bound would hold.
+  if (ext == ".smd" || ext == ".vta") {
+    return std::string("SMD files are not read: assimp 5.2.5's SMD reader can loop for ever on a truncated file "
+                       "(convert it to PLY, OBJ or glTF)");
+  }
+  if (has_ply_magic(head)) return check_ply_header(head, file_size);
   if (ext == ".stl") return check_stl_header(head, file_size);
   // The kind before assimp sees the file: a PLY starts with its magic word, and an OBJ is
   // text, so a NUL in its first bytes means a binary file under the wrong name (assimp

@@ -2,7 +2,8 @@
 // What a mesh file's header claims, checked against the file's size before anything is
 // allocated: a PLY's element counts, a binary STL's triangle count. OBJ and ASCII STL
 // carry no counts (their size bounds what they can hold). The file's kind is checked too:
-// a .ply without PLY's magic word and a .obj with a NUL byte are refused here.
+// a .ply without PLY's magic word and a .obj with a NUL byte are refused here, and so is
+// any .smd or .vta, whose assimp reader can loop for ever.
 
 #include "diagnostics/result.h"
 

@@ -200,6 +200,20 @@ TEST(BoundedLoading, FacesOfEveryOtherCornerCountStillLoad) {
   }
 }
 
+TEST(BoundedLoading, SmdFilesAreRefusedUnreadNotLeftToHang) {
+  // Found by probing assimp's readers with mutated files: its SMD reader (chosen by the
+  // extension, .smd or .vta) loops for ever on a "nodes" section the file ends in.
+  TempDir dir;
+  for (const char* name : {"model.smd", "model.vta", "MODEL.SMD", "ply_inside.smd"}) {
+    SCOPED_TRACE(name);
+    test::write_text(dir / name, std::string(name) == "ply_inside.smd" ? "ply\nformat ascii 1.0\nend_header\n"
+                                                                         : "version 1\nnodes\n");
+    EXPECT_EQ(reason_of(load_mesh_file(dir / name, Eigen::Vector3d::Ones())),
+              "SMD files are not read: assimp 5.2.5's SMD reader can loop for ever on a truncated file "
+              "(convert it to PLY, OBJ or glTF)");
+  }
+}
+
 /// Good input is never refused: the repository's assets, and Debian's bunny when present.
 void expect_loads(const fs::path& file) {
   SCOPED_TRACE(file.string());
