@@ -2,16 +2,9 @@
 
 #include "geometry/coherent_winding.h"
 
+#include "mesh_io/isolated_assimp_read.h"
 #include "mesh_io/mesh_header.h"
 #include "mesh_io/regular_file.h"
-#include "mesh_io/regular_file_io_system.h"
-#include "mesh_io/texture_references.h"
-
-#include <assimp/Importer.hpp>
-#include <assimp/ProgressHandler.hpp>
-#include <assimp/config.h>
-#include <assimp/postprocess.h>
-#include <assimp/scene.h>
 
 #include <fmt/format.h>
 
@@ -36,21 +29,6 @@ std::string MeshLoadError::message() const {
 
 namespace {
 
-/// Forwards assimp's progress (owned and deleted by the Importer).
-class ForwardProgress final : public Assimp::ProgressHandler {
- public:
-  ForwardProgress(const MeshProgress& progress, std::string what)
-      : progress_(progress), what_(std::move(what)) {}
-  bool Update(float percentage) override {
-    if (percentage >= 0.0f) progress_(what_, std::clamp(static_cast<double>(percentage), 0.0, 1.0));
-    return true;  // never abort
-  }
-
- private:
-  const MeshProgress& progress_;
-  std::string what_;
-};
-
 /// The first `bytes` bytes of an open file (nullopt on a read error, errno set).
 std::optional<std::string> read_head(int fd, std::size_t bytes) {
   std::string head(bytes, '\0');
@@ -64,20 +42,6 @@ std::optional<std::string> read_head(int fd, std::size_t bytes) {
   }
   head.resize(got);
   return head;
-}
-
-/// "" when every face of every mesh has a corner, else which face has none.
-std::string face_without_corners(const aiScene& scene) {
-  for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
-    const aiMesh* am = scene.mMeshes[m];
-    if (am == nullptr) continue;
-    for (unsigned f = 0; f < am->mNumFaces; ++f) {
-      if (am->mFaces[f].mNumIndices != 0) continue;
-      if (scene.mNumMeshes == 1) return fmt::format("face {} has no vertex indices", f);
-      return fmt::format("face {} of mesh {} has no vertex indices", f, m);
-    }
-  }
-  return {};
 }
 
 MeshLoadError fail(const std::filesystem::path& file, std::string reason) {
@@ -190,7 +154,8 @@ std::optional<MeshLoadError> refusal_from_header(const std::filesystem::path& fi
 }
 
 Result<LoadedMesh, MeshLoadError> load_mesh_file(const std::filesystem::path& file, const Eigen::Vector3d& scale_to_m,
-                              const MeshProgress& progress, std::optional<TriangleBudget> budget) {
+                              const MeshProgress& progress, std::optional<TriangleBudget> budget,
+                              const MeshReadLimits& limits) {
   if (!scale_to_m.allFinite() || (scale_to_m.array() == 0.0).any()) {
     return fail(file, fmt::format("invalid scale ({}, {}, {}): every factor must be finite and non-zero",
                                   scale_to_m.x(), scale_to_m.y(), scale_to_m.z()));
@@ -200,80 +165,16 @@ Result<LoadedMesh, MeshLoadError> load_mesh_file(const std::filesystem::path& fi
     return *std::move(refused);
   }
 
-  Assimp::Importer importer;
-  auto* io = new RegularFileIoSystem();  // owned by the importer
-  importer.SetIOHandler(io);
-  // Keep positions only, so vertices that differ only in normals, UVs or colours
-  // (flat-shaded or STL files) join into one. SortByPType splits point and line
-  // primitives into meshes of their own, which are skipped below (not removed by
-  // assimp, which would fail a file without triangles with a less helpful message).
-  importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS,
-                              aiComponent_NORMALS | aiComponent_TANGENTS_AND_BITANGENTS | aiComponent_COLORS |
-                                  aiComponent_TEXCOORDS | aiComponent_BONEWEIGHTS | aiComponent_ANIMATIONS |
-                                  aiComponent_TEXTURES | aiComponent_LIGHTS | aiComponent_CAMERAS);
+  std::function<void(double)> read_progress;
   if (progress) {
-    importer.SetProgressHandler(new ForwardProgress(progress, fmt::format("reading {}", file.filename().string())));
+    read_progress = [&progress, what = fmt::format("reading {}", file.filename().string())](double fraction) {
+      progress(what, fraction);
+    };
   }
-  // No aiProcess_JoinIdenticalVertices: on an already indexed 1M-triangle PLY it costs
-  // 0.65 s to find nothing to join. Files that arrive unshared are welded below instead.
-  // ValidateDataStructure runs first: without it a face index past the vertices (a
-  // hostile PLY, found by mhd-fuzz-mesh-header) crashes assimp's later steps.
-  // The steps after the read run apart from it, once the faces are known to be sound:
-  // a face with no corners is typed a polygon by assimp 5.2.5, whose triangulation then
-  // aborts the process (and ValidateDataStructure runs before the faces are typed).
-  const aiScene* scene = importer.ReadFile(file.string(), aiProcess_ValidateDataStructure);
-  if (!io->refusals().empty()) return fail(file, fmt::format("side file {}", io->refusals().front()));
-  if (const std::string texture = texture_problem(scene, file); !texture.empty()) return fail(file, texture);
-  if (scene != nullptr) {
-    if (const std::string empty = face_without_corners(*scene); !empty.empty()) return fail(file, empty);
-    scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_PreTransformVertices |
-                                         aiProcess_SortByPType | aiProcess_RemoveComponent);
-  }
-  if (scene == nullptr) {
-    std::string why = importer.GetErrorString();
-    if (why.empty()) why = "unknown error";
-    return fail(file, fmt::format("assimp could not read it: {}", why));
-  }
-
-  // Merge the triangle meshes.
-  TriangleMesh mesh;
-  std::size_t vertex_total = 0, face_total = 0, triangle_meshes = 0;
-  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
-    const aiMesh* am = scene->mMeshes[m];
-    if (am == nullptr || (am->mPrimitiveTypes & aiPrimitiveType_TRIANGLE) == 0) continue;
-    vertex_total += am->mNumVertices;
-    face_total += am->mNumFaces;
-    ++triangle_meshes;
-  }
-  if (vertex_total >= std::numeric_limits<std::uint32_t>::max()) {
-    return fail(file, fmt::format("too many vertices ({})", vertex_total));
-  }
-  mesh.vertices_m.reserve(vertex_total);
-  mesh.triangles.reserve(face_total);
-  std::size_t dropped = 0;
-  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
-    const aiMesh* am = scene->mMeshes[m];
-    if (am == nullptr || (am->mPrimitiveTypes & aiPrimitiveType_TRIANGLE) == 0) continue;
-    const auto base = static_cast<std::uint32_t>(mesh.vertices_m.size());
-    for (unsigned i = 0; i < am->mNumVertices; ++i) {
-      const aiVector3D& p = am->mVertices[i];
-      mesh.vertices_m.emplace_back(static_cast<double>(p.x), static_cast<double>(p.y), static_cast<double>(p.z));
-    }
-    for (unsigned f = 0; f < am->mNumFaces; ++f) {
-      const aiFace& face = am->mFaces[f];
-      if (face.mNumIndices != 3) {
-        ++dropped;
-        continue;
-      }
-      // An index past this mesh's vertices is made invalid so it is dropped below.
-      auto idx = [&](unsigned k) {
-        const unsigned i = face.mIndices[k];
-        return i < am->mNumVertices ? base + i : std::numeric_limits<std::uint32_t>::max();
-      };
-      mesh.triangles.push_back({idx(0), idx(1), idx(2)});
-    }
-  }
-  importer.FreeScene();
+  Result<AssimpRead, std::string> read = read_with_assimp(file, read_progress, limits);
+  if (!read.ok()) return fail(file, read.error());
+  TriangleMesh mesh = std::move(read->mesh);
+  std::size_t dropped = read->dropped;
   if (mesh.triangles.empty()) return fail(file, "mesh has no triangles");
   if (budget) {
     if (std::string refused = budget->refusal("", mesh.triangles.size(), "triangles"); !refused.empty()) {
@@ -283,7 +184,7 @@ Result<LoadedMesh, MeshLoadError> load_mesh_file(const std::filesystem::path& fi
   // An indexed surface has about half as many vertices as triangles; more vertices than
   // triangles means corners are not shared (STL, per-face OBJ) or the file has several
   // meshes: join identical positions so neighbours share their edges.
-  if (triangle_meshes > 1 || vertex_total > face_total) weld_identical_positions(mesh);
+  if (read->unshared) weld_identical_positions(mesh);
 
   const MeshCleanUp done = finish_loaded_mesh(mesh, scale_to_m);
   dropped += done.dropped_triangles;

@@ -3,6 +3,7 @@
 
 #include "diagnostics/result.h"
 #include "geometry/triangle_mesh.h"
+#include "mesh_io/isolated_assimp_read.h"
 #include "mesh_io/triangle_budget.h"
 
 #include <Eigen/Core>
@@ -55,11 +56,14 @@ struct LoadedMesh {
 /// Bounded: the file and every side file assimp opens (an OBJ's mtllib) must be regular
 /// files, and so must textures that exist; a PLY's or binary STL's header counts must fit
 /// the file's size, and with a `budget` neither the header's face count (checked before
-/// assimp allocates) nor the loaded triangles may exceed what is left of it.
+/// assimp allocates) nor the loaded triangles may exceed what is left of it. assimp reads
+/// in a child process (read_with_assimp): a reader that crashes, or runs past `limits`,
+/// ends as an error.
 [[nodiscard]] Result<LoadedMesh, MeshLoadError> load_mesh_file(const std::filesystem::path& file,
                                                               const Eigen::Vector3d& scale_to_m,
                                                               const MeshProgress& progress = {},
-                                                              std::optional<TriangleBudget> budget = std::nullopt);
+                                                              std::optional<TriangleBudget> budget = std::nullopt,
+                                                              const MeshReadLimits& limits = {});
 
 /// What the loader's clean-up changed.
 struct MeshCleanUp {

@@ -214,6 +214,44 @@ TEST(BoundedLoading, SmdFilesAreRefusedUnreadNotLeftToHang) {
   }
 }
 
+TEST(BoundedLoading, AReaderThatCrashesEndsAsAnErrorNotACrash) {
+  // Found by tools/fuzz/probe_importers.py: assimp 5.2.5's COLLADA reader segfaults on a
+  // <float_array> whose count attribute is misspelt. It reads in a child process, so the
+  // crash is the child's, and the load says so.
+  TempDir dir;
+  const auto collada = [](const std::string& count_attribute) {
+    return "<?xml version=\"1.0\"?><COLLADA xmlns=\"http://www.collada.org/2005/11/COLLADASchema\" "
+                   "version=\"1.4.1\"><library_geometries><geometry id=\"g\"><mesh><source id=\"p\">"
+                   "<float_array id=\"pa\" " + count_attribute + "=\"9\">0 0 0 1 0 0 0 1 0</float_array><technique_common>"
+                   "<accessor source=\"#pa\" count=\"3\" stride=\"3\"><param name=\"X\" type=\"float\"/>"
+                   "<param name=\"Y\" type=\"float\"/><param name=\"Z\" type=\"float\"/></accessor>"
+                   "</technique_common></source><vertices id=\"v\"><input semantic=\"POSITION\" source=\"#p\"/>"
+                   "</vertices><triangles count=\"1\"><input semantic=\"VERTEX\" source=\"#v\" offset=\"0\"/>"
+                   "<p>0 1 2</p></triangles></mesh></geometry></library_geometries><library_visual_scenes>"
+                   "<visual_scene id=\"s\"><node><instance_geometry url=\"#g\"/></node></visual_scene>"
+                   "</library_visual_scenes><scene><instance_visual_scene url=\"#s\"/></scene></COLLADA>";
+  };
+  test::write_text(dir / "crash.dae", collada("counnant"));
+  const std::string reason = reason_of(load_mesh_file(dir / "crash.dae", Eigen::Vector3d::Ones()));
+  EXPECT_EQ(reason.rfind("assimp crashed reading it (", 0), 0u) << reason;
+  // The dual: the same file spelt right loads.
+  test::write_text(dir / "good.dae", collada("count"));
+  const Result<LoadedMesh, MeshLoadError> r = load_mesh_file(dir / "good.dae", Eigen::Vector3d::Ones());
+  ASSERT_TRUE(r.ok()) << r.error_text();
+  EXPECT_EQ(r->mesh.triangle_count(), 1u);
+}
+
+TEST(BoundedLoading, AReadPastItsLimitIsStoppedAndSaidSo) {
+  // No read ends before a limit of 0 s: the child is killed, the load says why; with the
+  // default limits the same file loads.
+  TempDir dir;
+  test::write_binary_ply(dir / "sheet.ply", test::sheet_mesh(40));
+  const std::string reason = reason_of(
+      load_mesh_file(dir / "sheet.ply", Eigen::Vector3d::Ones(), {}, std::nullopt, MeshReadLimits{0.0, 0.0}));
+  EXPECT_EQ(reason.rfind("assimp did not finish reading it within 0 s (the limit for a file of ", 0), 0u) << reason;
+  EXPECT_TRUE(load_mesh_file(dir / "sheet.ply", Eigen::Vector3d::Ones()).ok());
+}
+
 /// Good input is never refused: the repository's assets, and Debian's bunny when present.
 void expect_loads(const fs::path& file) {
   SCOPED_TRACE(file.string());

@@ -1,0 +1,45 @@
+#pragma once
+// A mesh file read by assimp in a child process. assimp's readers can crash (a COLLADA
+// file with a misspelt attribute segfaults) or loop for ever on a corrupt file, and
+// neither can be caught or bounded in the process that runs them. The child streams the
+// triangles back through a pipe as assimp holds them; the parent ends a child that
+// crashes or runs past its limit, and says so.
+
+#include "diagnostics/result.h"
+#include "geometry/triangle_mesh.h"
+
+#include <cstddef>
+#include <filesystem>
+#include <functional>
+#include <string>
+
+namespace mhd {
+
+/// How long a read may take: base_s plus seconds_per_mib for each MiB of the file (a
+/// 100 M-triangle PLY of 1.9 GB read in 30 s; text formats and sanitizer builds are
+/// slower). Past it the child is killed.
+struct MeshReadLimits {
+  double base_s = 30.0;
+  double seconds_per_mib = 1.0;
+};
+
+/// What assimp read, before MHD's clean-up.
+struct AssimpRead {
+  /// Every triangle of every triangle mesh in the file (points and lines left out),
+  /// vertices as assimp's floats; a corner past its own mesh's vertices is UINT32_MAX.
+  TriangleMesh mesh;
+  /// Faces that are not triangles (points, lines).
+  std::size_t dropped = 0;
+  /// Corners not shared: several triangle meshes, or more vertices than faces.
+  bool unshared = false;
+};
+
+/// Reads `file` with assimp (positions only; triangulated, scene-graph transforms applied)
+/// in a child process. `progress`, if set, receives assimp's fraction done. The error is
+/// the reason alone, e.g. "assimp could not read it: ...", "assimp crashed reading it
+/// (signal 11, Segmentation fault)" or "assimp did not finish reading it within 30 s ...".
+[[nodiscard]] Result<AssimpRead, std::string> read_with_assimp(const std::filesystem::path& file,
+                                                               const std::function<void(double)>& progress,
+                                                               const MeshReadLimits& limits);
+
+}  // namespace mhd
