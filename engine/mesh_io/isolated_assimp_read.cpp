@@ -2,6 +2,7 @@
 
 #include "mesh_io/regular_file_io_system.h"
 #include "mesh_io/texture_references.h"
+#include "mesh_io/whole_fd_io.h"
 
 #include <assimp/Importer.hpp>
 #include <assimp/ProgressHandler.hpp>
@@ -44,18 +45,6 @@ constexpr std::size_t kPieceBytes = std::size_t{4} << 20;
 constexpr std::uint64_t kMaxTextBytes = 1 << 16;
 
 // ---- the child ----
-
-bool write_all(int fd, const void* data, std::size_t bytes) {
-  const char* p = static_cast<const char*>(data);
-  while (bytes > 0) {
-    const ssize_t n = ::write(fd, p, bytes);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    p += n;
-    bytes -= static_cast<std::size_t>(n);
-  }
-  return true;
-}
 
 bool send(int fd, Record kind, const void* payload, std::uint64_t bytes) {
   std::array<char, 9> head{};

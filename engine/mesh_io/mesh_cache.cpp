@@ -8,6 +8,7 @@
 #include "mesh_io/mesh_cache_eviction.h"
 #include "mesh_io/mesh_key_memo.h"
 #include "mesh_io/regular_file.h"
+#include "mesh_io/whole_fd_io.h"
 
 #include <fcntl.h>
 #include <sys/mman.h>
@@ -51,31 +52,8 @@ struct Fd {
   Fd& operator=(const Fd&) = delete;
 };
 
-/// Reads exactly `size` bytes (retrying short reads); false on error or early EOF.
-bool read_all(int fd, std::byte* out, std::size_t size) {
-  while (size > 0) {
-    const ssize_t n = ::read(fd, out, size);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    out += n;
-    size -= static_cast<std::size_t>(n);
-  }
-  return true;
-}
-
 // What a cache entry is written in, between reports of its progress.
 constexpr std::size_t kWriteChunkBytes = std::size_t{64} << 20;
-
-bool write_all(int fd, const std::byte* data, std::size_t size) {
-  while (size > 0) {
-    const ssize_t n = ::write(fd, data, size);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    data += n;
-    size -= static_cast<std::size_t>(n);
-  }
-  return true;
-}
 
 /// Warns once per folder and process that the cache cannot be written there.
 void warn_unwritable_once(const std::filesystem::path& dir, const std::string& why) {
