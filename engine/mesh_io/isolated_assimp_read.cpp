@@ -25,7 +25,10 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <limits>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace mhd {
@@ -44,31 +47,28 @@ enum class Record : char {
 constexpr std::size_t kPieceBytes = std::size_t{4} << 20;
 constexpr std::uint64_t kMaxTextBytes = 1 << 16;
 
-// ---- the child ----
+// ---- the reader, in the child (or here, where no child can start) ----
 
-bool send(int fd, Record kind, const void* payload, std::uint64_t bytes) {
-  std::array<char, 9> head{};
-  head[0] = static_cast<char>(kind);
-  std::memcpy(head.data() + 1, &bytes, sizeof(bytes));
-  return write_all(fd, head.data(), head.size()) && write_all(fd, payload, bytes);
-}
+// Where the reader's records go: the pipe to the parent, or this process's read. False
+// when they are no longer wanted (the parent stopped listening, the read is over).
+using RecordSink = std::function<bool(Record kind, const void* payload, std::uint64_t bytes)>;
 
-bool send_text(int fd, Record kind, const std::string& text) {
-  return send(fd, kind, text.data(), std::min<std::uint64_t>(text.size(), kMaxTextBytes));
+bool send_text(const RecordSink& sink, Record kind, const std::string& text) {
+  return sink(kind, text.data(), std::min<std::uint64_t>(text.size(), kMaxTextBytes));
 }
 
 /// Forwards assimp's progress to the parent (owned and deleted by the Importer).
 class SendProgress final : public Assimp::ProgressHandler {
  public:
-  explicit SendProgress(int fd) : fd_(fd) {}
+  explicit SendProgress(const RecordSink& sink) : sink_(sink) {}
   bool Update(float percentage) override {
     const double fraction = std::clamp(static_cast<double>(percentage), 0.0, 1.0);
-    if (percentage >= 0.0f) (void)send(fd_, Record::Progress, &fraction, sizeof(fraction));
+    if (percentage >= 0.0f) (void)sink_(Record::Progress, &fraction, sizeof(fraction));
     return true;  // never abort
   }
 
  private:
-  int fd_;
+  const RecordSink& sink_;
 };
 
 /// "" when every face of every mesh has a corner, else which face has none.
@@ -89,8 +89,8 @@ bool is_triangle_mesh(const aiMesh* am) {
   return am != nullptr && (am->mPrimitiveTypes & aiPrimitiveType_TRIANGLE) != 0;
 }
 
-// Reads the file and sends the answer; false if the parent stopped listening.
-bool read_and_send(const std::filesystem::path& file, bool report_progress, int fd) {
+// Reads the file and sends the answer; false if the sink stopped taking it.
+bool read_and_send(const std::filesystem::path& file, bool report_progress, const RecordSink& sink) {
   Assimp::Importer importer;
   auto* io = new RegularFileIoSystem();  // owned by the importer
   importer.SetIOHandler(io);
@@ -102,7 +102,7 @@ bool read_and_send(const std::filesystem::path& file, bool report_progress, int 
                               aiComponent_NORMALS | aiComponent_TANGENTS_AND_BITANGENTS | aiComponent_COLORS |
                                   aiComponent_TEXCOORDS | aiComponent_BONEWEIGHTS | aiComponent_ANIMATIONS |
                                   aiComponent_TEXTURES | aiComponent_LIGHTS | aiComponent_CAMERAS);
-  if (report_progress) importer.SetProgressHandler(new SendProgress(fd));
+  if (report_progress) importer.SetProgressHandler(new SendProgress(sink));
   // No aiProcess_JoinIdenticalVertices: on an already indexed 1M-triangle PLY it costs
   // 0.65 s to find nothing to join. Files that arrive unshared are welded by the loader.
   // ValidateDataStructure runs first: without it a face index past the vertices (a
@@ -111,13 +111,13 @@ bool read_and_send(const std::filesystem::path& file, bool report_progress, int 
   // a face with no corners is typed a polygon by assimp 5.2.5, whose triangulation then
   // aborts (and ValidateDataStructure runs before the faces are typed).
   const aiScene* scene = importer.ReadFile(file.string(), aiProcess_ValidateDataStructure);
-  if (!io->refusals().empty()) return send_text(fd, Record::Error, fmt::format("side file {}", io->refusals().front()));
+  if (!io->refusals().empty()) return send_text(sink, Record::Error, fmt::format("side file {}", io->refusals().front()));
   if (const std::string texture = texture_problem(scene, file); !texture.empty()) {
-    return send_text(fd, Record::Error, texture);
+    return send_text(sink, Record::Error, texture);
   }
   if (scene != nullptr) {
     if (const std::string empty = face_without_corners(*scene); !empty.empty()) {
-      return send_text(fd, Record::Error, empty);
+      return send_text(sink, Record::Error, empty);
     }
     scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_PreTransformVertices |
                                          aiProcess_SortByPType | aiProcess_RemoveComponent);
@@ -125,7 +125,7 @@ bool read_and_send(const std::filesystem::path& file, bool report_progress, int 
   if (scene == nullptr) {
     std::string why = importer.GetErrorString();
     if (why.empty()) why = "unknown error";
-    return send_text(fd, Record::Error, fmt::format("assimp could not read it: {}", why));
+    return send_text(sink, Record::Error, fmt::format("assimp could not read it: {}", why));
   }
 
   std::array<std::uint64_t, 2> counts{};  // vertices, faces
@@ -137,9 +137,9 @@ bool read_and_send(const std::filesystem::path& file, bool report_progress, int 
     ++triangle_meshes;
   }
   if (counts[0] >= std::numeric_limits<std::uint32_t>::max()) {
-    return send_text(fd, Record::Error, fmt::format("too many vertices ({})", counts[0]));
+    return send_text(sink, Record::Error, fmt::format("too many vertices ({})", counts[0]));
   }
-  if (!send(fd, Record::Counts, counts.data(), sizeof(counts))) return false;
+  if (!sink(Record::Counts, counts.data(), sizeof(counts))) return false;
   std::uint64_t dropped = 0;
   std::uint32_t base = 0;
   std::vector<std::uint32_t> corners;
@@ -151,7 +151,7 @@ bool read_and_send(const std::filesystem::path& file, bool report_progress, int 
     const std::size_t per_piece = kPieceBytes / sizeof(aiVector3D);
     for (std::size_t i = 0; i < am->mNumVertices; i += per_piece) {
       const std::size_t n = std::min<std::size_t>(per_piece, am->mNumVertices - i);
-      if (!send(fd, Record::Vertices, am->mVertices + i, n * sizeof(aiVector3D))) return false;
+      if (!sink(Record::Vertices, am->mVertices + i, n * sizeof(aiVector3D))) return false;
     }
     for (unsigned f = 0; f < am->mNumFaces; ++f) {
       const aiFace& face = am->mFaces[f];
@@ -165,26 +165,108 @@ bool read_and_send(const std::filesystem::path& file, bool report_progress, int 
         corners.push_back(i < am->mNumVertices ? base + i : std::numeric_limits<std::uint32_t>::max());
       }
       if (corners.size() + 3 > corners.capacity()) {
-        if (!send(fd, Record::Triangles, corners.data(), corners.size() * sizeof(std::uint32_t))) return false;
+        if (!sink(Record::Triangles, corners.data(), corners.size() * sizeof(std::uint32_t))) return false;
         corners.clear();
       }
     }
     base += am->mNumVertices;
   }
-  if (!corners.empty() && !send(fd, Record::Triangles, corners.data(), corners.size() * sizeof(std::uint32_t))) {
+  if (!corners.empty() && !sink(Record::Triangles, corners.data(), corners.size() * sizeof(std::uint32_t))) {
     return false;
   }
   const std::array<std::uint64_t, 2> done{dropped, triangle_meshes > 1 || counts[0] > counts[1] ? 1U : 0U};
-  return send(fd, Record::Done, done.data(), sizeof(done));
+  return sink(Record::Done, done.data(), sizeof(done));
 }
 
 [[noreturn]] void run_child(const std::filesystem::path& file, bool report_progress, int fd) {
   // A crash must end the child by its signal for the parent to name it, not in a
   // handler the parent installed (a sanitizer's, a fuzzer's).
   for (const int s : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) ::signal(s, SIG_DFL);
-  const bool sent = read_and_send(file, report_progress, fd);
+  const RecordSink to_parent = [fd](Record kind, const void* payload, std::uint64_t bytes) {
+    std::array<char, 9> head{};
+    head[0] = static_cast<char>(kind);
+    std::memcpy(head.data() + 1, &bytes, sizeof(bytes));
+    return write_all(fd, head.data(), head.size()) && write_all(fd, payload, bytes);
+  };
+  const bool sent = read_and_send(file, report_progress, to_parent);
   // _exit: nothing of the parent's (stdio buffers, atexit handlers) runs twice.
   ::_exit(sent ? 0 : 3);
+}
+
+// ---- the records, taken into the read ----
+
+// What one record did to the read.
+struct Taken {
+  enum class Kind { More, Done, Failed };
+  Kind kind = Kind::More;
+  std::string error;  // when Failed
+};
+
+Taken failed(std::string error) { return {Taken::Kind::Failed, std::move(error)}; }
+
+Taken take(Record kind, const char* payload, std::uint64_t bytes, AssimpRead& read,
+           const std::function<void(double)>& progress) {
+  switch (kind) {
+    case Record::Progress: {
+      double fraction = 0.0;
+      if (bytes == sizeof(fraction)) std::memcpy(&fraction, payload, sizeof(fraction));
+      if (progress && std::isfinite(fraction)) progress(std::clamp(fraction, 0.0, 1.0));
+      return {};
+    }
+    case Record::Error:
+      return failed(std::string(payload, bytes));
+    case Record::Counts: {
+      std::array<std::uint64_t, 2> counts{};
+      if (bytes != sizeof(counts)) return failed("assimp's reader sent malformed counts");
+      std::memcpy(counts.data(), payload, sizeof(counts));
+      read.mesh.vertices_m.reserve(counts[0]);
+      read.mesh.triangles.reserve(counts[1]);
+      return {};
+    }
+    case Record::Vertices: {
+      const std::size_t n = bytes / (3 * sizeof(float));
+      for (std::size_t i = 0; i < n; ++i) {
+        std::array<float, 3> xyz{};
+        std::memcpy(xyz.data(), payload + i * sizeof(xyz), sizeof(xyz));
+        read.mesh.vertices_m.emplace_back(static_cast<double>(xyz[0]), static_cast<double>(xyz[1]),
+                                          static_cast<double>(xyz[2]));
+      }
+      return {};
+    }
+    case Record::Triangles: {
+      const std::size_t n = bytes / sizeof(TriangleIndices);
+      const std::size_t at = read.mesh.triangles.size();
+      read.mesh.triangles.resize(at + n);
+      std::memcpy(read.mesh.triangles.data() + at, payload, n * sizeof(TriangleIndices));
+      return {};
+    }
+    case Record::Done: {
+      std::array<std::uint64_t, 2> done{};
+      if (bytes != sizeof(done)) return failed("assimp's reader sent a malformed end");
+      std::memcpy(done.data(), payload, sizeof(done));
+      read.dropped = done[0];
+      read.unshared = done[1] != 0;
+      return {Taken::Kind::Done, {}};
+    }
+  }
+  return failed(fmt::format("assimp's reader sent a record of unknown kind {}", static_cast<int>(kind)));
+}
+
+// The read in this process, where no child could start (`why`): the same records, taken
+// as they are made. Nothing bounds its time, and a crash of the reader is this process's.
+Result<AssimpRead, std::string> read_here(const std::filesystem::path& file,
+                                          const std::function<void(double)>& progress, std::string why) {
+  AssimpRead read;
+  Taken last;
+  const RecordSink to_read = [&](Record kind, const void* payload, std::uint64_t bytes) {
+    last = take(kind, static_cast<const char*>(payload), bytes, read, progress);
+    return last.kind == Taken::Kind::More;
+  };
+  (void)read_and_send(file, static_cast<bool>(progress), to_read);
+  if (last.kind == Taken::Kind::Failed) return std::move(last.error);
+  if (last.kind != Taken::Kind::Done) return std::string("assimp's reader ended without an answer");
+  read.unisolated_read = std::move(why);
+  return read;
 }
 
 // ---- the parent ----
@@ -263,7 +345,9 @@ Result<AssimpRead, std::string> read_with_assimp(const std::filesystem::path& fi
   const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
                                            std::chrono::duration<double>(std::clamp(limit_s, 0.0, 1e7)));
   std::array<int, 2> ends{};
-  if (::pipe2(ends.data(), O_CLOEXEC) != 0) return fmt::format("cannot make a pipe: {}", std::strerror(errno));
+  if (::pipe2(ends.data(), O_CLOEXEC) != 0) {
+    return read_here(file, progress, fmt::format("cannot make a pipe for the reader: {}", std::strerror(errno)));
+  }
   // Fewer wake-ups for the pieces (the system's limit applies; the default is kept if refused).
   (void)::fcntl(ends[1], F_SETPIPE_SZ, 1 << 20);
   const pid_t pid = ::fork();
@@ -271,7 +355,7 @@ Result<AssimpRead, std::string> read_with_assimp(const std::filesystem::path& fi
     const int err = errno;
     ::close(ends[0]);
     ::close(ends[1]);
-    return fmt::format("cannot start the reader: {}", std::strerror(err));
+    return read_here(file, progress, fmt::format("cannot start a process for the reader: {}", std::strerror(err)));
   }
   if (pid == 0) {
     ::close(ends[0]);
@@ -302,53 +386,15 @@ Result<AssimpRead, std::string> read_with_assimp(const std::filesystem::path& fi
                          limit_s, ec ? 0 : file_bytes);
     }
     if (got == Got::End) return how_it_ended(child.wait());
-    switch (kind) {
-      case Record::Progress: {
-        double fraction = 0.0;
-        if (bytes == sizeof(fraction)) std::memcpy(&fraction, payload.data(), sizeof(fraction));
-        if (progress && std::isfinite(fraction)) progress(std::clamp(fraction, 0.0, 1.0));
-        break;
-      }
-      case Record::Error:
-        (void)child.wait();
-        return std::string(payload.begin(), payload.end());
-      case Record::Counts: {
-        std::array<std::uint64_t, 2> counts{};
-        if (bytes != sizeof(counts)) return std::string("assimp's reader sent malformed counts");
-        std::memcpy(counts.data(), payload.data(), sizeof(counts));
-        read.mesh.vertices_m.reserve(counts[0]);
-        read.mesh.triangles.reserve(counts[1]);
-        break;
-      }
-      case Record::Vertices: {
-        const std::size_t n = bytes / (3 * sizeof(float));
-        const auto* xyz = reinterpret_cast<const float*>(payload.data());
-        for (std::size_t i = 0; i < n; ++i) {
-          read.mesh.vertices_m.emplace_back(static_cast<double>(xyz[3 * i]), static_cast<double>(xyz[3 * i + 1]),
-                                            static_cast<double>(xyz[3 * i + 2]));
-        }
-        break;
-      }
-      case Record::Triangles: {
-        const std::size_t n = bytes / sizeof(TriangleIndices);
-        const std::size_t at = read.mesh.triangles.size();
-        read.mesh.triangles.resize(at + n);
-        std::memcpy(read.mesh.triangles.data() + at, payload.data(), n * sizeof(TriangleIndices));
-        break;
-      }
-      case Record::Done: {
-        std::array<std::uint64_t, 2> done{};
-        if (bytes != sizeof(done)) return std::string("assimp's reader sent a malformed end");
-        std::memcpy(done.data(), payload.data(), sizeof(done));
-        read.dropped = done[0];
-        read.unshared = done[1] != 0;
-        const int status = child.wait();
-        if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return how_it_ended(status);
-        return read;
-      }
-      default:
-        return fmt::format("assimp's reader sent a record of unknown kind {}", static_cast<int>(head[0]));
+    Taken taken = take(kind, payload.data(), bytes, read, progress);
+    if (taken.kind == Taken::Kind::More) continue;
+    if (taken.kind == Taken::Kind::Failed) {
+      if (kind == Record::Error) (void)child.wait();  // it said why and ends; others are killed
+      return std::move(taken.error);
     }
+    const int status = child.wait();
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return how_it_ended(status);
+    return read;
   }
 }
 

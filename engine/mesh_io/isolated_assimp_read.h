@@ -3,7 +3,9 @@
 // file with a misspelt attribute segfaults) or loop for ever on a corrupt file, and
 // neither can be caught or bounded in the process that runs them. The child streams the
 // triangles back through a pipe as assimp holds them; the parent ends a child that
-// crashes or runs past its limit, and says so.
+// crashes or runs past its limit, and says so. Where no child can start (fork refused
+// under strict overcommit, or by a process limit), the same records are taken in this
+// process: the load still works, and says it was not contained.
 
 #include "diagnostics/result.h"
 #include "geometry/triangle_mesh.h"
@@ -32,12 +34,17 @@ struct AssimpRead {
   std::size_t dropped = 0;
   /// Corners not shared: several triangle meshes, or more vertices than faces.
   bool unshared = false;
+  /// Empty when the child process read the file; else why none could start, e.g.
+  /// "cannot start a process for the reader: Cannot allocate memory". The file was then
+  /// read in this process, with no time limit.
+  std::string unisolated_read;
 };
 
 /// Reads `file` with assimp (positions only; triangulated, scene-graph transforms applied)
-/// in a child process. `progress`, if set, receives assimp's fraction done. The error is
-/// the reason alone, e.g. "assimp could not read it: ...", "assimp crashed reading it
-/// (signal 11, Segmentation fault)" or "assimp did not finish reading it within 30 s ...".
+/// in a child process, or in this one where no child can start. `progress`, if set,
+/// receives assimp's fraction done. The error is the reason alone, e.g. "assimp could not
+/// read it: ...", "assimp crashed reading it (signal 11, Segmentation fault)" or "assimp
+/// did not finish reading it within 30 s ...".
 [[nodiscard]] Result<AssimpRead, std::string> read_with_assimp(const std::filesystem::path& file,
                                                                const std::function<void(double)>& progress,
                                                                const MeshReadLimits& limits);

@@ -396,6 +396,7 @@ Result<CachedMesh, MeshLoadError> MeshCache::load(const std::filesystem::path& f
   if (!loaded.ok()) return loaded.error();
   result.dropped_triangles = loaded->dropped_triangles;
   result.flipped_triangles = loaded->flipped_triangles;
+  result.unisolated_read = loaded->unisolated_read;
   if (!MeshBvh::holds(loaded->mesh.triangle_count())) {
     return MeshLoadError{file, fmt::format("{} triangles, more than the {} one collision tree holds",
                                            loaded->mesh.triangle_count(), MeshBvh::kMaxTriangles)};

@@ -70,6 +70,7 @@ struct CachedMesh {
   std::filesystem::path cache_file;
   std::size_t dropped_triangles = 0;  ///< by the loader (0 on a hit)
   std::size_t flipped_triangles = 0;  ///< turned by the loader to their surface's winding (0 on a hit)
+  std::string unisolated_read;        ///< LoadedMesh::unisolated_read (empty on a hit)
   /// Set when the entry written is larger than the cache's size limit: what it takes, the
   /// limit and the variable that sets it (also logged as a warning). Such an entry is
   /// kept until another mesh is cached, which evicts it.

@@ -193,7 +193,7 @@ Result<LoadedMesh, MeshLoadError> load_mesh_file(const std::filesystem::path& fi
     if (!v.allFinite()) return fail(file, "non-finite vertex coordinates");
   }
 
-  return LoadedMesh{std::move(mesh), dropped, done.flipped_triangles};
+  return LoadedMesh{std::move(mesh), dropped, done.flipped_triangles, std::move(read->unisolated_read)};
 }
 
 }  // namespace mhd

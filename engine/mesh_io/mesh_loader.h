@@ -35,6 +35,9 @@ struct LoadedMesh {
   std::size_t dropped_triangles = 0;
   /// Triangles turned to the winding of the surface they belong to.
   std::size_t flipped_triangles = 0;
+  /// Empty when assimp read the file in a child process; else why none could start
+  /// (AssimpRead::unisolated_read).
+  std::string unisolated_read;
 };
 
 /// What a mesh file's first kMeshHeaderBytes can refuse it for: not a readable regular

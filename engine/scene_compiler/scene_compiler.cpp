@@ -306,6 +306,11 @@ class Compiler {
         spdlog::info("{}: mesh file '{}': turned {} triangles wound against the rest of their surface", object.name,
                      source.file.string(), loaded->flipped_triangles);
       }
+      if (!loaded->unisolated_read.empty()) {
+        spdlog::warn("{}: mesh file '{}': read by assimp in this process ({}); a crash or endless loop of its "
+                     "reader would not have been contained",
+                     object.name, source.file.string(), loaded->unisolated_read);
+      }
     } else {
       shape.error = loaded.error().message();
     }

@@ -4,13 +4,24 @@
 #include "mesh_io/mesh_loader.h"
 #include "test_mesh_files.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <linux/filter.h>
+#include <linux/seccomp.h>
+#include <sys/prctl.h>
 #include <sys/stat.h>
+#include <sys/syscall.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
 #include <chrono>
+#include <cerrno>
+#include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -250,6 +261,97 @@ TEST(BoundedLoading, AReadPastItsLimitIsStoppedAndSaidSo) {
       load_mesh_file(dir / "sheet.ply", Eigen::Vector3d::Ones(), {}, std::nullopt, MeshReadLimits{0.0, 0.0}));
   EXPECT_EQ(reason.rfind("assimp did not finish reading it within 0 s (the limit for a file of ", 0), 0u) << reason;
   EXPECT_TRUE(load_mesh_file(dir / "sheet.ply", Eigen::Vector3d::Ones()).ok());
+}
+
+/// What a child process wrote and how it ended.
+struct ChildRun {
+  int status = 0;
+  std::string out;
+};
+
+/// Runs `body` in a child process in which no process or thread can start: clone, clone3
+/// and fork fail with ENOMEM, as fork does for a large process under strict overcommit.
+/// The child writes what `body` returns; status 2 and "no filter: ..." if the kernel
+/// refused the filter.
+ChildRun run_where_nothing_can_start(const std::function<std::string()>& body) {
+  std::array<int, 2> ends{};
+  if (::pipe(ends.data()) != 0) return {-1, "no pipe"};
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    ::close(ends[0]);
+    std::array<sock_filter, 6> filter{{
+        BPF_STMT(BPF_LD | BPF_W | BPF_ABS, offsetof(seccomp_data, nr)),
+        BPF_JUMP(BPF_JMP | BPF_JEQ | BPF_K, __NR_clone, 3, 0),
+        BPF_JUMP(BPF_JMP | BPF_JEQ | BPF_K, __NR_clone3, 2, 0),
+#ifdef __NR_fork
+        BPF_JUMP(BPF_JMP | BPF_JEQ | BPF_K, __NR_fork, 1, 0),
+#else
+        BPF_JUMP(BPF_JMP | BPF_JEQ | BPF_K, __NR_clone, 1, 0),
+#endif
+        BPF_STMT(BPF_RET | BPF_K, SECCOMP_RET_ALLOW),
+        BPF_STMT(BPF_RET | BPF_K, SECCOMP_RET_ERRNO | (ENOMEM & SECCOMP_RET_DATA)),
+    }};
+    sock_fprog program{static_cast<unsigned short>(filter.size()), filter.data()};
+    std::string out;
+    int status = 0;
+    if (::prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) != 0 ||
+        ::syscall(SYS_seccomp, SECCOMP_SET_MODE_FILTER, 0, &program) != 0) {
+      out = fmt::format("no filter: {}", std::strerror(errno));
+      status = 2;
+    } else {
+      out = body();
+    }
+    (void)!::write(ends[1], out.data(), out.size());
+    ::_exit(status);  // nothing of the test process's runs twice
+  }
+  ::close(ends[1]);
+  ChildRun run;
+  std::array<char, 4096> buffer{};
+  for (ssize_t n; (n = ::read(ends[0], buffer.data(), buffer.size())) != 0;) {
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) break;
+    run.out.append(buffer.data(), static_cast<std::size_t>(n));
+  }
+  ::close(ends[0]);
+  while (::waitpid(pid, &run.status, 0) < 0 && errno == EINTR) {
+  }
+  return run;
+}
+
+/// A loaded mesh as text, every coordinate exact.
+std::string mesh_text(const Result<LoadedMesh, MeshLoadError>& r) {
+  if (!r.ok()) return "error: " + r.error_text();
+  std::string text = fmt::format("{} triangles:", r->mesh.triangle_count());
+  for (const auto& t : r->mesh.triangles) text += fmt::format(" {} {} {}", t[0], t[1], t[2]);
+  for (const auto& v : r->mesh.vertices_m) text += fmt::format(" ({:a} {:a} {:a})", v.x(), v.y(), v.z());
+  return text;
+}
+
+TEST(BoundedLoading, WhenNoReaderProcessCanStartTheFileIsReadHereAndSaidSo) {
+  TempDir dir;
+  test::write_binary_ply(dir / "sheet.ply", test::sheet_mesh(6));
+  const Result<LoadedMesh, MeshLoadError> apart = load_mesh_file(dir / "sheet.ply", Eigen::Vector3d::Ones());
+  ASSERT_TRUE(apart.ok()) << apart.error_text();
+  EXPECT_EQ(apart->unisolated_read, "");  // read in a child process, as always where one starts
+
+  const ChildRun here = run_where_nothing_can_start([&] {
+    const Result<LoadedMesh, MeshLoadError> r = load_mesh_file(dir / "sheet.ply", Eigen::Vector3d::Ones());
+    return (r.ok() ? r->unisolated_read : std::string()) + "\n" + mesh_text(r);
+  });
+  if (WIFEXITED(here.status) && WEXITSTATUS(here.status) == 2) GTEST_SKIP() << here.out;
+  ASSERT_TRUE(WIFEXITED(here.status) && WEXITSTATUS(here.status) == 0) << here.status << " " << here.out;
+  const std::size_t line = here.out.find('\n');
+  ASSERT_NE(line, std::string::npos) << here.out;
+  EXPECT_EQ(here.out.substr(0, line), "cannot start a process for the reader: Cannot allocate memory");
+  // The same mesh, bit for bit, as the child process read.
+  EXPECT_EQ(here.out.substr(line + 1), mesh_text(apart));
+  // And a file assimp refuses is refused the same way read here.
+  test::write_text(dir / "bad.obj", "v 0 0 0\nf 1 2 3\n");
+  const std::string refused_apart = reason_of(load_mesh_file(dir / "bad.obj", Eigen::Vector3d::Ones()));
+  const ChildRun refused_here =
+      run_where_nothing_can_start([&] { return reason_of(load_mesh_file(dir / "bad.obj", Eigen::Vector3d::Ones())); });
+  EXPECT_NE(refused_apart, "(loaded)");
+  EXPECT_EQ(refused_here.out, refused_apart);
 }
 
 /// Good input is never refused: the repository's assets, and Debian's bunny when present.
