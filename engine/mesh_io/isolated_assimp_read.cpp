@@ -1,5 +1,8 @@
 #include "mesh_io/isolated_assimp_read.h"
 
+#include "mesh_io/available_memory.h"
+#include "mesh_io/byte_count_text.h"
+#include "mesh_io/read_memory_limit.h"
 #include "mesh_io/regular_file_io_system.h"
 #include "mesh_io/texture_references.h"
 #include "mesh_io/whole_fd_io.h"
@@ -27,6 +30,7 @@
 #include <cstring>
 #include <functional>
 #include <limits>
+#include <new>
 #include <string>
 #include <utility>
 #include <vector>
@@ -43,9 +47,12 @@ enum class Record : char {
   Vertices = 'v',   // floats, x y z per vertex
   Triangles = 't',  // uint32 corners, three per triangle, numbered across meshes
   Done = 'd',       // faces dropped, then 1 if the corners are unshared
+  Allowance = 'm',  // a uint64, the memory the reader may now take (ReadMemoryLimit)
 };
 constexpr std::size_t kPieceBytes = std::size_t{4} << 20;
 constexpr std::uint64_t kMaxTextBytes = 1 << 16;
+// The child's exit status when an allocation went past its memory limit.
+constexpr int kOutOfMemoryStatus = 4;
 
 // ---- the reader, in the child (or here, where no child can start) ----
 
@@ -89,10 +96,13 @@ bool is_triangle_mesh(const aiMesh* am) {
   return am != nullptr && (am->mPrimitiveTypes & aiPrimitiveType_TRIANGLE) != 0;
 }
 
-// Reads the file and sends the answer; false if the sink stopped taking it.
-bool read_and_send(const std::filesystem::path& file, bool report_progress, const RecordSink& sink) {
+// Reads the file and sends the answer; false if the sink stopped taking it. `on_open`,
+// if set, sees each file assimp opens.
+bool read_and_send(const std::filesystem::path& file, bool report_progress, const RecordSink& sink,
+                   const RegularFileIoSystem::OpenSeen& on_open) {
   Assimp::Importer importer;
   auto* io = new RegularFileIoSystem();  // owned by the importer
+  if (on_open) io->set_on_open(on_open);
   importer.SetIOHandler(io);
   // Keep positions only, so vertices that differ only in normals, UVs or colours
   // (flat-shaded or STL files) join into one. SortByPType splits point and line
@@ -178,7 +188,8 @@ bool read_and_send(const std::filesystem::path& file, bool report_progress, cons
   return sink(Record::Done, done.data(), sizeof(done));
 }
 
-[[noreturn]] void run_child(const std::filesystem::path& file, bool report_progress, int fd) {
+[[noreturn]] void run_child(const std::filesystem::path& file, bool report_progress, int fd,
+                            const MeshReadLimits& limits, std::uint64_t available_bytes) {
   // A crash must end the child by its signal for the parent to name it, not in a
   // handler the parent installed (a sanitizer's, a fuzzer's).
   for (const int s : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) ::signal(s, SIG_DFL);
@@ -188,7 +199,22 @@ bool read_and_send(const std::filesystem::path& file, bool report_progress, cons
     std::memcpy(head.data() + 1, &bytes, sizeof(bytes));
     return write_all(fd, head.data(), head.size()) && write_all(fd, payload, bytes);
   };
-  const bool sent = read_and_send(file, report_progress, to_parent);
+  // Bounded memory: an allocation past the limit ends the child at once, with a status the
+  // parent names (assimp would catch the bad_alloc, or meet it where it cannot).
+  ReadMemoryLimit memory(limits.memory_base_bytes, limits.memory_per_file_byte, available_bytes);
+  const auto tell_allowance = [&] {
+    const std::uint64_t allowance = memory.allowance_bytes();
+    return to_parent(Record::Allowance, &allowance, sizeof(allowance));
+  };
+  RegularFileIoSystem::OpenSeen on_open;
+  if (memory.start()) {
+    std::set_new_handler([] { ::_exit(kOutOfMemoryStatus); });
+    if (!tell_allowance()) ::_exit(3);
+    on_open = [&](const std::string& path, std::uint64_t bytes) {
+      if (memory.add_file(path, bytes)) (void)tell_allowance();
+    };
+  }
+  const bool sent = read_and_send(file, report_progress, to_parent, on_open);
   // _exit: nothing of the parent's (stdio buffers, atexit handlers) runs twice.
   ::_exit(sent ? 0 : 3);
 }
@@ -204,9 +230,13 @@ struct Taken {
 
 Taken failed(std::string error) { return {Taken::Kind::Failed, std::move(error)}; }
 
-Taken take(Record kind, const char* payload, std::uint64_t bytes, AssimpRead& read,
+Taken take(Record kind, const char* payload, std::uint64_t bytes, AssimpRead& read, std::uint64_t& allowance_bytes,
            const std::function<void(double)>& progress) {
   switch (kind) {
+    case Record::Allowance:
+      if (bytes != sizeof(allowance_bytes)) return failed("assimp's reader sent a malformed memory limit");
+      std::memcpy(&allowance_bytes, payload, sizeof(allowance_bytes));
+      return {};
     case Record::Progress: {
       double fraction = 0.0;
       if (bytes == sizeof(fraction)) std::memcpy(&fraction, payload, sizeof(fraction));
@@ -258,11 +288,12 @@ Result<AssimpRead, std::string> read_here(const std::filesystem::path& file,
                                           const std::function<void(double)>& progress, std::string why) {
   AssimpRead read;
   Taken last;
+  std::uint64_t unlimited = 0;  // no memory limit here: no Allowance record comes
   const RecordSink to_read = [&](Record kind, const void* payload, std::uint64_t bytes) {
-    last = take(kind, static_cast<const char*>(payload), bytes, read, progress);
+    last = take(kind, static_cast<const char*>(payload), bytes, read, unlimited, progress);
     return last.kind == Taken::Kind::More;
   };
-  (void)read_and_send(file, static_cast<bool>(progress), to_read);
+  (void)read_and_send(file, static_cast<bool>(progress), to_read, {});
   if (last.kind == Taken::Kind::Failed) return std::move(last.error);
   if (last.kind != Taken::Kind::Done) return std::string("assimp's reader ended without an answer");
   read.unisolated_read = std::move(why);
@@ -295,7 +326,17 @@ Got read_exactly(int fd, void* out, std::size_t bytes, Clock::time_point deadlin
   return Got::Bytes;
 }
 
-std::string how_it_ended(int status) {
+// `allowance_bytes`: the child's memory limit when it ended (kOutOfMemoryStatus).
+std::string how_it_ended(int status, std::uint64_t allowance_bytes, const MeshReadLimits& limits,
+                         std::uint64_t available_bytes) {
+  if (WIFEXITED(status) && WEXITSTATUS(status) == kOutOfMemoryStatus) {
+    const std::string at_most =
+        available_bytes > 0 ? fmt::format(", at most the {} available", byte_count_text(available_bytes)) : "";
+    return fmt::format("assimp needed more than {} of memory to read it (the limit: {} and {:g} bytes for each byte "
+                       "of the files it opened{}); the file may be corrupt",
+                       byte_count_text(allowance_bytes), byte_count_text(limits.memory_base_bytes),
+                       limits.memory_per_file_byte, at_most);
+  }
   if (WIFSIGNALED(status)) {
     const int s = WTERMSIG(status);
     const char* name = ::strsignal(s);
@@ -344,6 +385,7 @@ Result<AssimpRead, std::string> read_with_assimp(const std::filesystem::path& fi
       limits.base_s + limits.seconds_per_mib * (ec ? 0.0 : static_cast<double>(file_bytes) / (1024.0 * 1024.0));
   const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
                                            std::chrono::duration<double>(std::clamp(limit_s, 0.0, 1e7)));
+  const std::uint64_t available_bytes = available_memory_bytes();
   std::array<int, 2> ends{};
   if (::pipe2(ends.data(), O_CLOEXEC) != 0) {
     return read_here(file, progress, fmt::format("cannot make a pipe for the reader: {}", std::strerror(errno)));
@@ -359,12 +401,14 @@ Result<AssimpRead, std::string> read_with_assimp(const std::filesystem::path& fi
   }
   if (pid == 0) {
     ::close(ends[0]);
-    run_child(file, static_cast<bool>(progress), ends[1]);
+    run_child(file, static_cast<bool>(progress), ends[1], limits, available_bytes);
   }
   ::close(ends[1]);
   Child child(pid, ends[0]);
 
   AssimpRead read;
+  std::uint64_t allowance_bytes = 0;
+  const auto ended = [&](int status) { return how_it_ended(status, allowance_bytes, limits, available_bytes); };
   std::vector<char> payload;
   for (;;) {
     std::array<char, 9> head{};
@@ -385,15 +429,15 @@ Result<AssimpRead, std::string> read_with_assimp(const std::filesystem::path& fi
                          "its reader may be stuck in a loop",
                          limit_s, ec ? 0 : file_bytes);
     }
-    if (got == Got::End) return how_it_ended(child.wait());
-    Taken taken = take(kind, payload.data(), bytes, read, progress);
+    if (got == Got::End) return ended(child.wait());
+    Taken taken = take(kind, payload.data(), bytes, read, allowance_bytes, progress);
     if (taken.kind == Taken::Kind::More) continue;
     if (taken.kind == Taken::Kind::Failed) {
       if (kind == Record::Error) (void)child.wait();  // it said why and ends; others are killed
       return std::move(taken.error);
     }
     const int status = child.wait();
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return how_it_ended(status);
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return ended(status);
     return read;
   }
 }

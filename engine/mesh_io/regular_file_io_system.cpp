@@ -94,6 +94,7 @@ Assimp::IOStream* RegularFileIoSystem::Open(const char* file, const char* mode) 
     if (opened.problem() != "file not found") refuse(file, opened.problem());
     return nullptr;
   }
+  if (on_open_) on_open_(file, opened.size_bytes());
   std::FILE* stream = ::fdopen(opened.fd(), "rb");
   if (stream == nullptr) return nullptr;
   (void)opened.release();

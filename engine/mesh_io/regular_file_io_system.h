@@ -5,7 +5,10 @@
 
 #include <assimp/DefaultIOSystem.h>
 
+#include <cstdint>
+#include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace mhd {
@@ -21,10 +24,15 @@ class RegularFileIoSystem final : public Assimp::DefaultIOSystem {
   /// "'<path>' <problem>" for each refused path, in order, without repeats.
   [[nodiscard]] const std::vector<std::string>& refusals() const { return refusals_; }
 
+  /// Called with each file opened: its path and size in bytes.
+  using OpenSeen = std::function<void(const std::string& path, std::uint64_t bytes)>;
+  void set_on_open(OpenSeen seen) { on_open_ = std::move(seen); }
+
  private:
   void refuse(const char* file, const std::string& problem) const;
 
   mutable std::vector<std::string> refusals_;
+  OpenSeen on_open_;
 };
 
 }  // namespace mhd

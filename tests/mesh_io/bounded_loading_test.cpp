@@ -2,6 +2,7 @@
 // hostile input is refused at once with its exact message, and good meshes still load.
 #include "mesh_io/available_memory.h"
 #include "mesh_io/mesh_loader.h"
+#include "mesh_io/read_memory_limit.h"
 #include "test_mesh_files.h"
 
 #include <fmt/format.h>
@@ -261,6 +262,33 @@ TEST(BoundedLoading, AReadPastItsLimitIsStoppedAndSaidSo) {
       load_mesh_file(dir / "sheet.ply", Eigen::Vector3d::Ones(), {}, std::nullopt, MeshReadLimits{0.0, 0.0}));
   EXPECT_EQ(reason.rfind("assimp did not finish reading it within 0 s (the limit for a file of ", 0), 0u) << reason;
   EXPECT_TRUE(load_mesh_file(dir / "sheet.ply", Eigen::Vector3d::Ones()).ok());
+}
+
+TEST(BoundedLoading, AReadThatOutgrowsItsMemoryIsStoppedAndSaidSo) {
+  // Found by tools/fuzz/probe_importers.py: assimp 5.2.5's NFF reader, given a polygon
+  // patch claiming 99,999,999,993 vertices, grew to 21.8 GB in the 30 s of its time limit
+  // (a COLLADA file with a cut index list to 11 GB). The reader may take 1 GiB and 256
+  // bytes for each byte of the files it opens; an allocation past that ends the read.
+  if (!ReadMemoryLimit::kInThisBuild) GTEST_SKIP() << "no memory limit in a sanitizer build (read_memory_limit.h)";
+  TempDir dir;
+  test::write_text(dir / "patch.nff", "pp 99999999993\n03\n00 90 09993\n\n1 0 0\n0 1 0\n");
+  const std::string reason = reason_of(load_mesh_file(dir / "patch.nff", Eigen::Vector3d::Ones()));
+  EXPECT_EQ(reason.rfind("assimp needed more than 1.0 GiB of memory to read it (", 0), 0u) << reason;
+  // The dual: a mesh read within a small allowance loads, and no allowance stops it.
+  test::write_binary_ply(dir / "sheet.ply", test::sheet_mesh(40));
+  const auto limited = [](std::uint64_t base_bytes, double per_file_byte) {
+    MeshReadLimits limits;
+    limits.memory_base_bytes = base_bytes;
+    limits.memory_per_file_byte = per_file_byte;
+    return limits;
+  };
+  const Result<LoadedMesh, MeshLoadError> within =
+      load_mesh_file(dir / "sheet.ply", Eigen::Vector3d::Ones(), {}, std::nullopt, limited(0, 256.0));
+  ASSERT_TRUE(within.ok()) << within.error_text();
+  EXPECT_EQ(within->mesh.triangle_count(), 2u * 40 * 40);
+  const std::string none =
+      reason_of(load_mesh_file(dir / "sheet.ply", Eigen::Vector3d::Ones(), {}, std::nullopt, limited(0, 0.0)));
+  EXPECT_EQ(none.rfind("assimp needed more than 0 bytes of memory to read it (", 0), 0u) << none;
 }
 
 /// What a child process wrote and how it ended.

@@ -2,11 +2,12 @@
 """Probes assimp's readers through `mhd validate` with mutated small files.
 
 libFuzzer's target (mhd-fuzz-mesh-header) names its input .ply, .obj or .stl only, and
-sees no coverage inside assimp. This probe sweeps more of the formats a scene may name:
-for each run it takes a small valid file of one format, changes a few bytes (flips,
-cuts, repeats, and inserts such as 0, -1, NaN or a huge count), and runs `mhd validate`
-on a scene of that one mesh. A run must end with exit status 0 or 1 within the timeout;
-a signal, another status or a timeout is kept, once per kind, as a file in --out.
+sees no coverage inside assimp. This probe sweeps more of the formats a scene may name
+(fourteen, PLY and STL in text and binary): for each run it takes a small valid file of
+one format, changes a few bytes (flips, cuts, repeats, and inserts such as 0, -1, NaN or
+a huge count), and runs `mhd validate` on a scene of that one mesh. A run must end with
+exit status 0 or 1 within the timeout; a signal, another status or a timeout is kept,
+once per kind, as a file in --out.
 
     tools/fuzz/probe_importers.py [--mhd PATH] [--seconds S] [--seed N] [--out DIR]
 
@@ -16,6 +17,7 @@ import argparse
 import collections
 import os
 import random
+import struct
 import subprocess
 import sys
 import time
@@ -55,6 +57,39 @@ SEEDS = {
     ".raw": b"0 0 0 1 0 0 0 1 0\n",
     ".3ds": bytes.fromhex("4d4d2a0000003d3d240000004040180000006100004141100000004141100000000000"),
 }
+
+
+def _glb():
+    """The .gltf seed's triangle as binary glTF: a JSON chunk and a BIN chunk."""
+    js = (b'{"asset":{"version":"2.0"},"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],'
+          b'"meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1}]}],"buffers":[{"byteLength":44}],'
+          b'"bufferViews":[{"buffer":0,"byteLength":36},{"buffer":0,"byteOffset":36,"byteLength":6}],'
+          b'"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","max":[1,1,0],'
+          b'"min":[0,0,0]},{"bufferView":1,"componentType":5123,"count":3,"type":"SCALAR"}]}')
+    js += b" " * (-len(js) % 4)
+    data = struct.pack("<9f", 0, 0, 0, 1, 0, 0, 0, 1, 0) + struct.pack("<3H", 0, 1, 2) + b"\0\0"
+    body = struct.pack("<I4s", len(js), b"JSON") + js + struct.pack("<I4s", len(data), b"BIN\0") + data
+    return struct.pack("<4sII", b"glTF", 2, 12 + len(body)) + body
+
+
+def _binary_stl():
+    tri = struct.pack("<12fH", 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0)
+    return b"binary".ljust(80, b" ") + struct.pack("<I", 2) + tri + tri
+
+
+# More seeds for some extensions: binary forms, whose headers MHD reads itself.
+MORE_SEEDS = [
+    (".glb", _glb()),
+    (".fbx", b'; FBX 7.4.0 project file\nFBXHeaderExtension: {\nFBXHeaderVersion: 1003\nFBXVersion: 7400\n}\n'
+             b'Objects: {\nGeometry: 1, "Geometry::", "Mesh" {\nVertices: *12 {\na: 0,0,0,1,0,0,0,1,0,0,0,1\n}\n'
+             b'PolygonVertexIndex: *7 {\na: 0,1,-3,0,1,2,-4\n}\nGeometryVersion: 124\n}\n'
+             b'Model: 2, "Model::a", "Mesh" {\nVersion: 232\n}\n}\nConnections: {\nC: "OO",1,2\nC: "OO",2,0\n}\n'),
+    (".ply", b"ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+             b"property float z\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n" +
+             struct.pack("<12f", 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1) + struct.pack("<B3i", 3, 0, 1, 2) +
+             struct.pack("<B4i", 4, 0, 1, 2, 3)),
+    (".stl", _binary_stl()),
+]
 INSERTS = [b"0", b"-1", b" 0 ", b"999999", b"\n", b"3 0 0 0", b"\x00", b"\xff\xff\xff\x7f", b"nan", b"1e309"]
 
 
@@ -92,8 +127,8 @@ def main():
     runs = collections.Counter()
     start = time.monotonic()
     while time.monotonic() - start < args.seconds:
-        ext = rng.choice(sorted(SEEDS))
-        data = mutate(rng, SEEDS[ext]) if rng.random() < 0.9 else SEEDS[ext]
+        ext, seed = rng.choice(sorted(SEEDS.items()) + MORE_SEEDS)
+        data = mutate(rng, seed) if rng.random() < 0.9 else seed
         mesh = os.path.join(args.out, "mesh" + ext)
         with open(mesh, "wb") as f:
             f.write(data)
