@@ -7,9 +7,10 @@ sees no coverage inside assimp. This probe sweeps more of the formats a scene ma
 one format, changes a few bytes (flips, cuts, repeats, and inserts such as 0, -1, NaN or
 a huge count), and runs `mhd validate` on a scene of that one mesh. A run must end with
 exit status 0 or 1 within the timeout; a signal, another status or a timeout is kept,
-once per kind, as a file in --out.
+once per kind, as a file in --out. First, each seed as it is must load (exit status 2
+if one does not).
 
-    tools/fuzz/probe_importers.py [--mhd PATH] [--seconds S] [--seed N] [--out DIR]
+    tools/fuzz/probe_importers.py [--mhd PATH] [--seconds S] [--seed N] [--out DIR] [--formats .3ds,...]
 
 docs/reliability/fuzzing.md gives what it found.
 """
@@ -55,8 +56,20 @@ SEEDS = {
             b"0 0 0 0 0 0 1 0 0\n0 1 0 0 0 0 1 0 0\n0 0 1 0 0 0 1 0 0\nend\n",
     ".nff": b"pp 3\n0 0 0\n1 0 0\n0 1 0\n",
     ".raw": b"0 0 0 1 0 0 0 1 0\n",
-    ".3ds": bytes.fromhex("4d4d2a0000003d3d240000004040180000006100004141100000004141100000000000"),
 }
+
+
+def _chunk_3ds(chunk_id, body):
+    return struct.pack("<HI", chunk_id, 6 + len(body)) + body
+
+
+def _three_ds():
+    """One triangle in 3DS chunks: main, version, editor, object "a", its mesh's vertices and face."""
+    vertices = struct.pack("<H9f", 3, 0, 0, 0, 1, 0, 0, 0, 1, 0)
+    faces = struct.pack("<H4H", 1, 0, 1, 2, 0)
+    mesh = _chunk_3ds(0x4100, _chunk_3ds(0x4110, vertices) + _chunk_3ds(0x4120, faces))
+    editor = _chunk_3ds(0x3D3D, _chunk_3ds(0x4000, b"a\0" + mesh))
+    return _chunk_3ds(0x4D4D, _chunk_3ds(0x0002, struct.pack("<I", 3)) + editor)
 
 
 def _glb():
@@ -77,8 +90,10 @@ def _binary_stl():
     return b"binary".ljust(80, b" ") + struct.pack("<I", 2) + tri + tri
 
 
-# More seeds for some extensions: binary forms, whose headers MHD reads itself.
+# Seeds built in binary: 3DS, binary glTF, and binary PLY and STL, whose headers MHD
+# reads itself; and FBX.
 MORE_SEEDS = [
+    (".3ds", _three_ds()),
     (".glb", _glb()),
     (".fbx", b'; FBX 7.4.0 project file\nFBXHeaderExtension: {\nFBXHeaderVersion: 1003\nFBXVersion: 7400\n}\n'
              b'Objects: {\nGeometry: 1, "Geometry::", "Mesh" {\nVertices: *12 {\na: 0,0,0,1,0,0,0,1,0,0,0,1\n}\n'
@@ -119,31 +134,49 @@ def main():
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--timeout", type=float, default=10.0, help="seconds a run may take")
     ap.add_argument("--out", default="probe_importers_out")
+    ap.add_argument("--formats", default="", help="extensions to sweep, e.g. .3ds,.glb (default: all)")
     args = ap.parse_args()
+    seeds = [(ext, seed) for ext, seed in sorted(SEEDS.items()) + MORE_SEEDS
+             if not args.formats or ext in args.formats.split(",")]
+    if not seeds:
+        print("no seed for --formats %s" % args.formats)
+        return 2
     rng = random.Random(args.seed)
     os.makedirs(args.out, exist_ok=True)
     env = dict(os.environ, MHD_CACHE_DIR=os.path.join(args.out, "cache"))
-    kept = collections.Counter()
-    runs = collections.Counter()
-    start = time.monotonic()
-    while time.monotonic() - start < args.seconds:
-        ext, seed = rng.choice(sorted(SEEDS.items()) + MORE_SEEDS)
-        data = mutate(rng, seed) if rng.random() < 0.9 else seed
-        mesh = os.path.join(args.out, "mesh" + ext)
-        with open(mesh, "wb") as f:
+    def validate(ext, data):
+        """`mhd validate` of a scene of one mesh holding `data`: its exit status, or None
+        past the timeout, and its stderr."""
+        with open(os.path.join(args.out, "mesh" + ext), "wb") as f:
             f.write(data)
         scene = os.path.join(args.out, "scene.xml")
         with open(scene, "w") as f:
             f.write('<scene version="1">\n<material name="m" stiffness_N_per_m="500"/>\n'
                     '<object name="a" material="m"><mesh file="mesh%s"/></object></scene>\n' % ext)
-        runs[ext] += 1
         try:
             r = subprocess.run([args.mhd, "validate", scene], capture_output=True, timeout=args.timeout, env=env)
-            if r.returncode in (0, 1):
-                continue
-            kind = (ext, "exit %d" % r.returncode)
+            return r.returncode, r.stderr.decode(errors="replace")
         except subprocess.TimeoutExpired:
-            kind = (ext, "timeout")
+            return None, ""
+
+    # The dual of the sweep: each seed as it is loads (SMD is refused unread), so that the
+    # mutations start from files the readers take.
+    for ext, seed in seeds:
+        status, err = validate(ext, seed)
+        if status != (1 if ext == ".smd" else 0):
+            print("the %s seed does not load as it should (status %s): %s" % (ext, status, err.strip()))
+            return 2
+    kept = collections.Counter()
+    runs = collections.Counter()
+    start = time.monotonic()
+    while time.monotonic() - start < args.seconds:
+        ext, seed = rng.choice(seeds)
+        data = mutate(rng, seed) if rng.random() < 0.9 else seed
+        runs[ext] += 1
+        status, _ = validate(ext, data)
+        if status in (0, 1):
+            continue
+        kind = (ext, "timeout" if status is None else "exit %d" % status)
         if kept[kind] == 0:
             with open(os.path.join(args.out, "%s_%s%s" % (kind[1].replace(" ", "_"), sum(runs.values()), ext)),
                       "wb") as f:
