@@ -29,8 +29,7 @@ std::uint64_t sum_or_no_limit(std::uint64_t a, std::uint64_t b) { return b > kNo
 }  // namespace
 
 ReadMemoryLimit::ReadMemoryLimit(std::uint64_t base_bytes, double per_file_byte, std::uint64_t cap_bytes)
-    : base_bytes_(base_bytes),
-      per_file_byte_(std::isfinite(per_file_byte) ? std::max(per_file_byte, 0.0) : 0.0),
+    : per_file_byte_(std::isfinite(per_file_byte) ? std::max(per_file_byte, 0.0) : 0.0),
       cap_bytes_(cap_bytes == 0 ? kNoLimit : cap_bytes),
       allowance_(std::min(base_bytes, cap_bytes == 0 ? kNoLimit : cap_bytes)) {}
 

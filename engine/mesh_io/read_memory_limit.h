@@ -46,7 +46,6 @@ class ReadMemoryLimit {
  private:
   bool apply() const;
 
-  std::uint64_t base_bytes_;
   double per_file_byte_;
   std::uint64_t cap_bytes_;
   std::uint64_t started_bytes_ = 0;  // mapped at start()
