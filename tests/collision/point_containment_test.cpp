@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+
 namespace mhd {
 namespace {
 
@@ -15,6 +17,78 @@ CollisionWorld box_world() {
   CollisionWorld world;
   world.add_object(std::make_shared<MeshBvh>(mesh), Pose::Identity());
   return world;
+}
+
+// One mesh: a sheet in z = 0 over [-0.1, 0.1]^2 of n x n squares, each wound both ways
+// (the two windings share their corners), as files of two-sided faces have it.
+CollisionWorld two_sided_sheet_world(int n) {
+  auto mesh = std::make_shared<TriangleMesh>();
+  for (int i = 0; i <= n; ++i) {
+    for (int j = 0; j <= n; ++j) mesh->vertices_m.emplace_back(-0.1 + 0.2 * i / n, -0.1 + 0.2 * j / n, 0.0);
+  }
+  const auto at = [n](int i, int j) { return static_cast<std::uint32_t>(i * (n + 1) + j); };
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      const std::uint32_t a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
+      for (const TriangleIndices& t : {TriangleIndices{a, b, c}, TriangleIndices{a, c, d}}) {
+        mesh->triangles.push_back(t);
+        mesh->triangles.push_back(TriangleIndices{t[0], t[2], t[1]});
+      }
+    }
+  }
+  CollisionWorld world;
+  world.add_object(std::make_shared<MeshBvh>(mesh), Pose::Identity());
+  return world;
+}
+
+// One mesh: two 0.2 m boxes side by side along y, touching at y = 0.1, each closed, so
+// the shared square is there twice, wound opposite ways (a part assembled from solids).
+// The first ray point_inside_surface casts runs mostly along +y, through that square.
+// Which box comes first in the file decides which of the two a tie between them names.
+CollisionWorld touching_boxes_world(bool upper_box_first) {
+  const TriangleMesh box = make_box_mesh(Eigen::Vector3d(0.2, 0.2, 0.2));
+  TriangleMesh both;
+  for (const double y_m : upper_box_first ? std::array{0.2, 0.0} : std::array{0.0, 0.2}) {
+    const auto offset = static_cast<std::uint32_t>(both.vertices_m.size());
+    for (const Eigen::Vector3d& v : box.vertices_m) both.vertices_m.push_back(v + Eigen::Vector3d(0, y_m, 0));
+    for (const TriangleIndices& t : box.triangles) {
+      both.triangles.push_back(TriangleIndices{t[0] + offset, t[1] + offset, t[2] + offset});
+    }
+  }
+  CollisionWorld world;
+  world.add_object(std::make_shared<MeshBvh>(std::make_shared<TriangleMesh>(std::move(both))), Pose::Identity());
+  return world;
+}
+
+TEST(PointContainment, ASheetWoundBothWaysEnclosesNothing) {
+  const CollisionWorld world = two_sided_sheet_world(20);
+  int asked = 0;
+  for (int i = 0; i <= 8; ++i) {
+    for (int j = 0; j <= 8; ++j) {
+      for (const double z_m : {-0.05, -1e-3, -2e-6, 2e-6, 1e-3, 0.05}) {
+        const Eigen::Vector3d p_W(-0.12 + 0.03 * i, -0.12 + 0.03 * j, z_m);
+        EXPECT_FALSE(point_inside_surface(world, p_W)) << p_W.transpose();
+        ++asked;
+      }
+    }
+  }
+  EXPECT_EQ(asked, 486);
+}
+
+TEST(PointContainment, TwoClosedBoxesTouchingAlongAFaceAreInsideAndOutsideAsOneSolid) {
+  for (const bool upper_box_first : {false, true}) {
+    const CollisionWorld world = touching_boxes_world(upper_box_first);
+    for (int i = 0; i <= 10; ++i) {
+      for (const double x_m : {-0.09, -0.03, 0.02, 0.08}) {
+        // Inside either box, near the shared square too; outside beyond each end and above.
+        const Eigen::Vector3d inside(x_m, -0.095 + 0.039 * i, 0.013 * (i % 3));
+        EXPECT_TRUE(point_inside_surface(world, inside)) << inside.transpose() << " " << upper_box_first;
+        EXPECT_FALSE(point_inside_surface(world, Eigen::Vector3d(x_m, -0.11 - 0.01 * i, 0.0)));
+        EXPECT_FALSE(point_inside_surface(world, Eigen::Vector3d(x_m, 0.31 + 0.01 * i, 0.0)));
+        EXPECT_FALSE(point_inside_surface(world, Eigen::Vector3d(x_m, -0.095 + 0.039 * i, 0.1 + 1e-6)));
+      }
+    }
+  }
 }
 
 TEST(PointContainment, InsideAndOutsideABoxDownToAMicrometre) {
