@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <map>
 #include <numbers>
@@ -215,6 +216,7 @@ int run(const Options& opt) {
   bool input_error = false;
   bool any_failure = false;
   std::size_t objects_run = 0;
+  std::size_t objects_failed_to_run = 0;  // of objects_run
   std::vector<std::string> reproducers;
   if (!opt.replay && opt.moving) {
     fmt::print("strokes per object: {}, seed {}, up to {} m/s at {} Hz, chains of {}; moving objects: origin up to {} "
@@ -274,63 +276,74 @@ int run(const Options& opt) {
       const std::string& name = scene.object_names[static_cast<std::size_t>(object)];
       const std::uint64_t key = mhd::stress::name_key(scene.name + "/" + name);
       ++objects_run;
-      if (opt.moving) {
-        if (!stress_moving(src, opt, scene, object, reproducers)) any_failure = true;
-        continue;
-      }
-      if (opt.replay) {
-        const auto r = mhd::stress::replay_stroke(scene, oracle, object, key, settings, *opt.replay, stdout);
-        const bool failed = !r.failures.empty() && r.failures.back().stroke == *opt.replay;
-        const auto& v = failed ? r.failures.back().verdict : mhd::stress::TickVerdict{};
-        fmt::print("{} / {}: stroke {}: {}\n", src.file, name, *opt.replay,
-                   !failed                ? "clean"
-                   : v.popped_through()   ? "POP-THROUGH"
-                                          : "FOLLOW FAILURE");
-        if (!r.clean()) any_failure = true;
-        continue;
-      }
-      const auto r = mhd::stress::stress_object(scene, oracle, object, key, settings);
-      fmt::print(
-          "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {:.3f} | {} / {} | {:.6f} | {:.1f} | "
-          "{:.2g} / {:.2g} / {:.2g} / {:.0f} | {:.1f} |\n",
-          src.file, name, r.triangles, r.closed ? "yes" : "no", r.strokes, r.ticks, r.contact_ticks, r.inside_ticks,
-          r.crossing_ticks, r.follow_failure_ticks, 1e3 * r.max_free_gap_m, r.inside_engine_ticks, r.engine_checks,
-          1e3 * r.worst_penetration_m, 1e3 * r.max_hip_depth_m, r.step_median_us, r.step_p99_us, r.step_p999_us,
-          r.step_max_us, r.seconds);
-      std::fflush(stdout);
-      fmt::print(stderr, "  {} / {}: strokes by kind:", src.file, name);
-      for (int k = 0; k < mhd::stress::kStrokeKindCount; ++k) {
-        fmt::print(stderr, " {} {} ({} failing)", to_string(static_cast<mhd::stress::StrokeKind>(k)),
-                   r.strokes_by_kind[static_cast<std::size_t>(k)], r.failing_strokes_by_kind[k]);
-      }
-      fmt::print(stderr,
-                 "; {} proxy resets; features: {} ridges/rims, {} creases, {} corners; up to {} planes; {} start "
-                 "redraws; follow failures: {} ticks ({} stuck), longest {} ticks, force {:.3f} N at the largest "
-                 "free-space gap; {} ticks whose way brushed a surface closer than the proxy's skin (not failures)\n",
-                 r.resets, r.ridges, r.creases, r.corners, r.max_plane_count, r.start_redraws, r.follow_failure_ticks,
-                 r.stuck_ticks, r.longest_follow_failure_ticks, r.force_at_max_free_gap_N, r.brushed_ticks);
-      if (!r.clean()) {
-        any_failure = true;
-        for (const auto& f : r.failures) {
-          reproducers.push_back(fmt::format(
-              "{} / {}: stroke {} ({}) tick {}: {}{}{}{} depth {:.3e} m, proxy {:.3f} mm from the HIP{}\n"
-              "  reproduce: {}",
-              src.file, name, f.stroke, to_string(f.kind), f.tick, f.verdict.crossed ? "crossed " : "",
-              f.verdict.inside ? "inside " : "", f.verdict.inside_engine ? "engine-inside " : "",
-              f.verdict.follow_failed ? fmt::format("follow-{} ", to_string(f.verdict.follow_kind)) : std::string(),
-              f.verdict.penetration_m, 1e3 * f.verdict.follow_gap_m,
-              f.verdict.hip_in_free_view ? " (in free view)" : "", reproducer(src, opt, name, f.stroke)));
+      // The strokes are drawn where the engine and the exact oracle both find free space;
+      // an object where they cannot be (an inside-out closed mesh, a room seen from within,
+      // is free inside by the engine's windings and solid inside by the oracle's parity)
+      // ends its run with the reason, not the program.
+      try {
+        if (opt.moving) {
+          if (!stress_moving(src, opt, scene, object, reproducers)) any_failure = true;
+          continue;
         }
-        if (r.failing_strokes > r.failures.size()) {
-          reproducers.push_back(fmt::format("{} / {}: ... and {} more failing strokes", src.file, name,
-                                            r.failing_strokes - r.failures.size()));
+        if (opt.replay) {
+          const auto r = mhd::stress::replay_stroke(scene, oracle, object, key, settings, *opt.replay, stdout);
+          const bool failed = !r.failures.empty() && r.failures.back().stroke == *opt.replay;
+          const auto& v = failed ? r.failures.back().verdict : mhd::stress::TickVerdict{};
+          fmt::print("{} / {}: stroke {}: {}\n", src.file, name, *opt.replay,
+                     !failed                ? "clean"
+                     : v.popped_through()   ? "POP-THROUGH"
+                                            : "FOLLOW FAILURE");
+          if (!r.clean()) any_failure = true;
+          continue;
         }
+        const auto r = mhd::stress::stress_object(scene, oracle, object, key, settings);
+        fmt::print(
+            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {:.3f} | {} / {} | {:.6f} | {:.1f} | "
+            "{:.2g} / {:.2g} / {:.2g} / {:.0f} | {:.1f} |\n",
+            src.file, name, r.triangles, r.closed ? "yes" : "no", r.strokes, r.ticks, r.contact_ticks, r.inside_ticks,
+            r.crossing_ticks, r.follow_failure_ticks, 1e3 * r.max_free_gap_m, r.inside_engine_ticks, r.engine_checks,
+            1e3 * r.worst_penetration_m, 1e3 * r.max_hip_depth_m, r.step_median_us, r.step_p99_us, r.step_p999_us,
+            r.step_max_us, r.seconds);
+        std::fflush(stdout);
+        fmt::print(stderr, "  {} / {}: strokes by kind:", src.file, name);
+        for (int k = 0; k < mhd::stress::kStrokeKindCount; ++k) {
+          fmt::print(stderr, " {} {} ({} failing)", to_string(static_cast<mhd::stress::StrokeKind>(k)),
+                     r.strokes_by_kind[static_cast<std::size_t>(k)], r.failing_strokes_by_kind[k]);
+        }
+        fmt::print(stderr,
+                   "; {} proxy resets; features: {} ridges/rims, {} creases, {} corners; up to {} planes; {} start "
+                   "redraws; follow failures: {} ticks ({} stuck), longest {} ticks, force {:.3f} N at the largest "
+                   "free-space gap; {} ticks whose way brushed a surface closer than the proxy's skin (not failures)\n",
+                   r.resets, r.ridges, r.creases, r.corners, r.max_plane_count, r.start_redraws, r.follow_failure_ticks,
+                   r.stuck_ticks, r.longest_follow_failure_ticks, r.force_at_max_free_gap_N, r.brushed_ticks);
+        if (!r.clean()) {
+          any_failure = true;
+          for (const auto& f : r.failures) {
+            reproducers.push_back(fmt::format(
+                "{} / {}: stroke {} ({}) tick {}: {}{}{}{} depth {:.3e} m, proxy {:.3f} mm from the HIP{}\n"
+                "  reproduce: {}",
+                src.file, name, f.stroke, to_string(f.kind), f.tick, f.verdict.crossed ? "crossed " : "",
+                f.verdict.inside ? "inside " : "", f.verdict.inside_engine ? "engine-inside " : "",
+                f.verdict.follow_failed ? fmt::format("follow-{} ", to_string(f.verdict.follow_kind)) : std::string(),
+                f.verdict.penetration_m, 1e3 * f.verdict.follow_gap_m,
+                f.verdict.hip_in_free_view ? " (in free view)" : "", reproducer(src, opt, name, f.stroke)));
+          }
+          if (r.failing_strokes > r.failures.size()) {
+            reproducers.push_back(fmt::format("{} / {}: ... and {} more failing strokes", src.file, name,
+                                              r.failing_strokes - r.failures.size()));
+          }
+        }
+      } catch (const std::exception& e) {
+        fmt::print(stderr, "mhd-popthrough-stress: error: {} / {}: {}\n", src.file, name, e.what());
+        input_error = true;
+        ++objects_failed_to_run;
       }
     }
   }
   if (!opt.replay) {
     fmt::print("\n{} objects, {:.1f} s in all. ", objects_run,
                std::chrono::duration<double>(Clock::now() - t_start).count());
+    if (objects_failed_to_run > 0) fmt::print("{} of them not stressed (errors above). ", objects_failed_to_run);
     fmt::print("{}\n", any_failure ? "FAILURES FOUND (crossed, inside: a pop-through; engine-inside alone: the engine's "
                                      "containment test called a proxy inside that the exact test found outside; "
                                      "follow-stuck / follow-free-space force: the proxy did not go to a HIP it "
