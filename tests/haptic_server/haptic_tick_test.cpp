@@ -14,6 +14,7 @@
 #include <fstream>
 #include <limits>
 #include <string>
+#include <utility>
 
 namespace {
 
@@ -234,6 +235,83 @@ TEST(HapticTick, AHandStartingInsideAnObjectGetsNoForceUntilItLeaves) {
   }
   ASSERT_TRUE(out.in_contact);
   EXPECT_GT(out.force_W_N.y(), 0.0);
+}
+
+/// The thesis rig and a 1 m square sheet `gap_m` above the HIP at kQ (normal along y),
+/// its two triangles each in the file twice, wound both ways (a two-sided face), the
+/// upward-facing pair first where `up_first`.
+Fixture make_two_sided_sheet_fixture(double gap_m, bool up_first) {
+  Fixture f;
+  const auto rig_read = read_scene_file(std::string(MHD_SOURCE_DIR) + "/scenes/rigs/pomhi.xml");
+  f.rig = Rig::from_scene(*rig_read).value();
+  const Eigen::Vector3d hip = f.rig->p_W_hip(f.rig->X_W_robot_from_base({}), kQ);
+  const auto dir = std::filesystem::path(::testing::TempDir()) / "haptic_tick_test";
+  std::filesystem::create_directories(dir);
+  const std::string stem = fmt::format("sheet_{}_{}_{}", ::getpid(), gap_m, up_first);
+  {
+    std::ofstream obj(dir / (stem + ".obj"));
+    const double y = hip.y() + gap_m;
+    for (const auto& [dx, dz] : {std::pair{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}}) {
+      obj << fmt::format("v {} {} {}\n", hip.x() + dx, y, hip.z() + dz);
+    }
+    // 1 2 3 seen from +y is clockwise (x right, z towards the viewer): it faces down.
+    const std::string down = "f 1 2 3\nf 1 3 4\n";
+    const std::string up = "f 1 3 2\nf 1 4 3\n";
+    obj << (up_first ? up + down : down + up);
+  }
+  const auto file = dir / (stem + ".xml");
+  std::ofstream(file) << fmt::format(R"(<?xml version="1.0"?>
+<scene version="1" unit="m">
+  <include file="{}/scenes/rigs/pomhi.xml"/>
+  <object name="sheet">
+    <material stiffness_N_per_m="500" damping_Ns_per_m="0" static_friction="0" dynamic_friction="0"/>
+    <mesh file="{}"/>
+  </object>
+</scene>
+)", MHD_SOURCE_DIR, (dir / (stem + ".obj")).string());
+  auto read = read_scene_file(file);
+  if (!read.ok()) {
+    ADD_FAILURE() << "cannot read " << file;
+    std::abort();
+  }
+  f.description = *read;
+  CompileOptions options;
+  options.use_cache = false;
+  auto compiled = compile_scene(*f.description, options);
+  if (!compiled.ok()) {
+    ADD_FAILURE() << "cannot compile " << file;
+    std::abort();
+  }
+  f.scene = std::move(*compiled.value());
+  return f;
+}
+
+TEST(HapticTick, AHandUnderATwoSidedSheetStartsAndIsHeldUnderIt) {
+  for (const bool up_first : {false, true}) {
+    Fixture f = make_two_sided_sheet_fixture(0.01, up_first);
+    HapticTick tick(*f.scene, *f.rig, no_fade_in());
+    const Pose sensor = f.rig->X_is900_base_sensor_from_base({});
+    Eigen::Vector3d q = kQ;
+    double t = 0.0;
+    HapticTickOutput out;
+    for (int i = 0; i < 5; ++i) {
+      (void)tick.add_base_sensor_sample(t, sensor);
+      out = tick.tick(t += 0.001, 0.001, tool(q));
+      EXPECT_FALSE(out.hip_inside_object) << "up_first " << up_first;  // a sheet encloses nothing
+    }
+    // Raise the arm until the HIP is 5 mm through the sheet 1 cm above it: the proxy
+    // stays under the sheet and the device is pushed back down.
+    const double sheet_y = out.p_W_hip.y() + 0.01;
+    for (int i = 0; i < 1000 && out.p_W_hip.y() < sheet_y + 0.005; ++i) {
+      q.y() += 0.0005;
+      (void)tick.add_base_sensor_sample(t, sensor);
+      out = tick.tick(t += 0.001, 0.001, tool(q));
+    }
+    ASSERT_GE(out.p_W_hip.y(), sheet_y + 0.005);
+    EXPECT_TRUE(out.in_contact) << "up_first " << up_first;
+    EXPECT_LT(out.force_W_N.y(), -1.0) << "up_first " << up_first;
+    EXPECT_GT(out.force_D_N.norm(), 1.0) << "up_first " << up_first;
+  }
 }
 
 TEST(HapticTick, CarriesTheProxyWorkBudgetFlagOfEveryTick) {
