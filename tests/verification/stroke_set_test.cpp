@@ -160,10 +160,14 @@ TEST(AnchorStrokes, RejectStartsTooCloseToOtherSurface) {
 }
 
 TEST(AnchorStrokes, ThrowsWhenNoStartIsFree) {
-  // A closed box facing inwards: every start along the face normal is inside it.
-  TriangleMesh inverted = make_test_box({-0.1, -0.1, -0.1}, {0.1, 0.1, 0.1});
+  // A closed box and, in the same place, its twin wound inside out (a room, solid beyond
+  // its walls): a start out along the box's face normal is in the room's solid, and one
+  // in along the room's face normal is in the box.
+  const TriangleMesh box = make_test_box({-0.1, -0.1, -0.1}, {0.1, 0.1, 0.1});
+  TriangleMesh inverted = box;
   for (TriangleIndices& t : inverted.triangles) std::swap(t[1], t[2]);
-  const SurfaceCrossingOracle oracle(inverted);
+  const PlacedMesh both[] = {{&box, Pose::Identity()}, {&inverted, Pose::Identity()}};
+  const SurfaceCrossingOracle oracle(both);
   AnchorStrokeParams params;
   params.max_attempts_per_stroke = 50;
   EXPECT_THROW((void)make_anchor_strokes(oracle, 1, 1, params), std::runtime_error);

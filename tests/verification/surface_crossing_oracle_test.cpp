@@ -8,6 +8,7 @@ using namespace mhd::test;  // hand-made meshes
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <utility>
 
 namespace mhd::verify {
 namespace {
@@ -248,6 +249,34 @@ TEST(SurfaceCrossingOracle, InsideClosedMeshByParity) {
   EXPECT_TRUE(nested.point_inside_closed_mesh({0, 0, 0}));
   EXPECT_TRUE(nested.point_inside_closed_mesh({0.7, 0, 0}));
   EXPECT_FALSE(nested.point_inside_closed_mesh({1.7, 0, 0}));
+}
+
+TriangleMesh turned_inside_out(TriangleMesh mesh) {
+  for (TriangleIndices& t : mesh.triangles) std::swap(t[1], t[2]);
+  return mesh;
+}
+
+TEST(SurfaceCrossingOracle, AClosedMeshWoundInsideOutIsARoomWithSolidBeyondItsWalls) {
+  // The walls face in, as the engine reads them (the side a face's normal points to is
+  // free): the room's air is outside the solid, and all beyond the walls is inside it.
+  const TriangleMesh walls = turned_inside_out(make_test_box({-1, -1, -1}, {1, 1, 1}));
+  const SurfaceCrossingOracle room(walls);
+  EXPECT_TRUE(room.is_closed(0));
+  EXPECT_EQ(room.side_of_closed_surfaces({0, 0, 0}), SurfaceSide::Outside);
+  EXPECT_EQ(room.side_of_closed_surfaces({1 - 1e-12, 0.5, -0.5}), SurfaceSide::Outside);
+  EXPECT_EQ(room.side_of_closed_surfaces({1 + 1e-12, 0.5, -0.5}), SurfaceSide::Inside);
+  EXPECT_EQ(room.side_of_closed_surfaces({0.0, 0.0, 50.0}), SurfaceSide::Inside);
+  EXPECT_EQ(room.side_of_closed_surfaces({1.0, 0.0, 0.0}), SurfaceSide::OnSurface);
+  // A table in the room, in the same mesh (wound outwards): solid again.
+  TriangleMesh furnished = walls;
+  const TriangleMesh table = make_test_box({-0.5, -0.5, -0.5}, {0.5, 0.5, 0.5});
+  const auto offset = static_cast<std::uint32_t>(furnished.vertices_m.size());
+  for (const Vector3d& v : table.vertices_m) furnished.vertices_m.push_back(v);
+  for (const TriangleIndices& t : table.triangles) furnished.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  const SurfaceCrossingOracle with_table(furnished);
+  EXPECT_TRUE(with_table.point_inside_closed_mesh({0, 0, 0}));
+  EXPECT_FALSE(with_table.point_inside_closed_mesh({0.7, 0, 0}));
+  EXPECT_TRUE(with_table.point_inside_closed_mesh({1.7, 0, 0}));
 }
 
 TEST(SurfaceCrossingOracle, OpenMeshesHaveNoInside) {

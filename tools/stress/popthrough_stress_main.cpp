@@ -277,9 +277,8 @@ int run(const Options& opt) {
       const std::uint64_t key = mhd::stress::name_key(scene.name + "/" + name);
       ++objects_run;
       // The strokes are drawn where the engine and the exact oracle both find free space;
-      // an object where they cannot be (an inside-out closed mesh, a room seen from within,
-      // is free inside by the engine's windings and solid inside by the oracle's parity)
-      // ends its run with the reason, not the program.
+      // an object where the generator finds none in its draws ends its run with the
+      // reason, not the program.
       try {
         if (opt.moving) {
           if (!stress_moving(src, opt, scene, object, reproducers)) any_failure = true;

@@ -64,6 +64,16 @@ bool triangle_indices_valid(const TriangleIndices& t, std::size_t vertex_count) 
   return t[0] < vertex_count && t[1] < vertex_count && t[2] < vertex_count;
 }
 
+// The volume a closed mesh's windings enclose, negative where it is wound inside out.
+double signed_volume_m3(const TriangleMesh& mesh) {
+  double six_volume = 0.0;
+  for (const TriangleIndices& t : mesh.triangles) {
+    if (!triangle_indices_valid(t, mesh.vertices_m.size())) continue;
+    six_volume += mesh.vertices_m[t[0]].dot(mesh.vertices_m[t[1]].cross(mesh.vertices_m[t[2]]));
+  }
+  return six_volume / 6.0;
+}
+
 // Even edge incidence after exact welding (a mod-2 cycle: ray parity is well defined).
 // Sorted arrays, not hash maps: at tens of millions of triangles a map's nodes would take
 // more memory than the oracle itself, and a freed array goes back to the system.
@@ -115,6 +125,9 @@ struct SurfaceCrossingOracle::Impl {
   std::vector<std::array<Eigen::Vector3d, 3>> triangles_W;
   std::vector<TriangleRef> refs;
   std::vector<bool> closed;  // per object
+  // Per object: closed and wound inside out (a negative volume), so a room seen from
+  // within: its inside by parity is the room's air, and the solid lies beyond its walls.
+  std::vector<bool> room;
   std::vector<TouchableFaces> touchable;  // per object
   bool one_sided = false;  // some object is touchable from one side only
 
@@ -176,7 +189,9 @@ struct SurfaceCrossingOracle::Impl {
     for (std::size_t i = 0; i < meshes.size(); ++i) {
       const TriangleMesh& mesh = *meshes[i].mesh;
       const Pose& X_WO = meshes[i].X_WO;
-      closed.push_back((i < is_exact.size() && is_exact[i]) || mesh_is_closed(mesh));
+      const bool primitive = i < is_exact.size() && is_exact[i];
+      closed.push_back(primitive || mesh_is_closed(mesh));
+      room.push_back(!primitive && closed.back() && signed_volume_m3(mesh) < 0.0);
       const std::size_t n = mesh.vertices_m.size();
       for (std::size_t j = 0; j < mesh.triangles.size(); ++j) {
         const TriangleIndices& t = mesh.triangles[j];
@@ -460,8 +475,10 @@ SurfaceSide SurfaceCrossingOracle::side_of_closed_surfaces(const Eigen::Vector3d
       parity[object] ^= 1U;
     }
     if (degenerate) continue;
-    return std::any_of(parity.begin(), parity.end(), [](unsigned char x) { return x != 0; }) ? SurfaceSide::Inside
-                                                                                           : SurfaceSide::Outside;
+    for (std::size_t object = 0; object < parity.size(); ++object) {
+      if (m.closed[object] && (parity[object] != 0) != m.room[object]) return SurfaceSide::Inside;
+    }
+    return SurfaceSide::Outside;
   }
   throw std::runtime_error("SurfaceCrossingOracle: no non-degenerate parity ray found");
 }

@@ -84,6 +84,8 @@ class SurfaceCrossingOracle {
 
   /// Where p lies with respect to the closed objects (see is_closed), by exact ray
   /// parity: Inside if inside any closed object, OnSurface if on one's surface.
+  /// A closed mesh wound inside out (its volume negative) is a room seen from within, as
+  /// the engine reads it: its solid lies beyond its walls, where parity is even.
   /// Open objects are ignored.
   [[nodiscard]] SurfaceSide side_of_closed_surfaces(const Eigen::Vector3d& p_W) const;
   /// side_of_closed_surfaces(p) != Outside.
