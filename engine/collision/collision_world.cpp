@@ -102,8 +102,65 @@ int CollisionWorld::add_object(std::shared_ptr<const MeshBvh> shape, const Pose&
   const double fine_piece_m = kFirstPiecePerSpacing * shape->vertex_spacing_m();
   if (fine_piece_m < fine_first_piece_m_) fine_first_piece_m_ = std::max(fine_piece_m, kMinFirstPiece_m);
   objects_.push_back(Object{std::move(shape), std::nullopt, X_WO, X_WO.inverse(Eigen::Isometry), nullptr});
+  boxes_W_.push_back(box_W(objects_.back()));
+  if (objects_.size() > 2 * indexed_) index_objects();
   geometry_id_ = next_geometry_id();
   return static_cast<int>(objects_.size()) - 1;
+}
+
+void CollisionWorld::index_objects() {
+  if (indexed_ == objects_.size()) return;
+  object_tree_.rebuild(boxes_W_);
+  indexed_ = objects_.size();
+}
+
+Eigen::AlignedBox3d CollisionWorld::box_W(const Object& o) {
+  Eigen::AlignedBox3d box_O = o.shape->bounds();
+  if (o.exact) {
+    const ExactShape& e = *o.exact;
+    Eigen::Vector3d half = e.half_extents_m;
+    switch (e.kind) {
+      case ExactKind::Sphere: half.setConstant(e.radius_m); break;
+      case ExactKind::Capsule: half = Eigen::Vector3d(e.radius_m, e.radius_m, e.half_height_m + e.radius_m); break;
+      case ExactKind::Cylinder: half = Eigen::Vector3d(e.radius_m, e.radius_m, e.half_height_m); break;
+      case ExactKind::Box: break;
+      case ExactKind::HalfSpace: {
+        constexpr double kInf = std::numeric_limits<double>::infinity();
+        return {Eigen::Vector3d::Constant(-kInf), Eigen::Vector3d::Constant(kInf)};
+      }
+    }
+    box_O = Eigen::AlignedBox3d(-half, half);
+  }
+  Eigen::AlignedBox3d box;
+  for (int corner = 0; corner < 8; ++corner) {
+    box.extend(o.X_WO * box_O.corner(static_cast<Eigen::AlignedBox3d::CornerType>(corner)));
+  }
+  // Grown by far more than the turn's rounding: a box only ever holds more.
+  const double grow_m = 1e-12 * std::max(box.min().cwiseAbs().maxCoeff(), box.max().cwiseAbs().maxCoeff()) + 1e-15;
+  return {box.min().array() - grow_m, box.max().array() + grow_m};
+}
+
+template <class F>
+void CollisionWorld::for_each_object_near(int only_object, const Eigen::Vector3d& a_W, const Eigen::Vector3d& b_W,
+                                          double reach_m, F&& f) const {
+  if (only_object >= 0) {
+    (void)f(only_object);
+    return;
+  }
+  // A few objects are visited one by one: their own box tests cost less than a walk.
+  if (objects_.size() <= kObjectsVisitedInTurn) {
+    for (std::size_t i = 0; i < objects_.size(); ++i) {
+      if (!f(static_cast<int>(i))) return;
+    }
+    return;
+  }
+  const Eigen::Vector3d reach = Eigen::Vector3d::Constant(reach_m);
+  const Eigen::AlignedBox3d box(a_W.cwiseMin(b_W) - reach, a_W.cwiseMax(b_W) + reach);
+  bool go_on = true;
+  object_tree_.for_each_overlapping(box, [&](int object) { return go_on = f(object); });
+  for (std::size_t i = indexed_; go_on && i < objects_.size(); ++i) {
+    if (ObjectTree::overlaps(boxes_W_[i], box)) go_on = f(static_cast<int>(i));
+  }
 }
 
 void CollisionWorld::set_exact_shape(int object, const ExactShape& shape) {
@@ -118,7 +175,10 @@ void CollisionWorld::set_exact_shape(int object, const ExactShape& shape) {
     case ExactKind::HalfSpace: break;
   }
   if (!ok) throw std::invalid_argument("CollisionWorld::set_exact_shape: sizes must be positive and finite");
+  if (!o.exact) ++exact_count_;
   o.exact = shape;
+  boxes_W_[static_cast<std::size_t>(object)] = box_W(o);
+  object_tree_.update(object, boxes_W_[static_cast<std::size_t>(object)]);
   // Candidate lists gathered before hold this object's triangles, which are no longer swept.
   geometry_id_ = next_geometry_id();
 }
@@ -149,27 +209,33 @@ std::optional<SweepHit> CollisionWorld::sweep_exact(int only_object, const Eigen
                                                     const Eigen::Vector3d& b_W, double skin_m,
                                                     std::span<const TriangleRef> ignore, SweepWork* work) const {
   std::optional<SweepHit> best;
-  for (std::size_t oi = 0; oi < objects_.size(); ++oi) {
-    const Object& o = objects_[oi];
-    const int object = static_cast<int>(oi);
-    if (!o.exact || (only_object >= 0 && object != only_object)) continue;
-    if (is_ignored(ignore, object, kExactSurface)) continue;
+  if (exact_count_ == 0) return best;
+  // A hit keeps the point skin_m off the shape: none lies further from the segment.
+  for_each_object_near(only_object, a_W, b_W, skin_m + kInflatePerSkin * skin_m, [&](int object) {
+    const Object& o = objects_[static_cast<std::size_t>(object)];
+    if (!o.exact || is_ignored(ignore, object, kExactSurface)) return true;
     if (work != nullptr) {
       if (work->triangle_tests >= work->max_triangle_tests) {
         work->exhausted = true;
-        return std::nullopt;
+        return false;
       }
       ++work->triangle_tests;  // a primitive costs about what a triangle does
     }
     const auto hit = sweep_point_exact(*o.exact, o.X_OW * a_W, o.X_OW * b_W, skin_m);
-    if (!hit || (best && !(hit->t_stop < best->t_stop))) continue;  // ties: the lower index
+    // Ties go to the lower index, whatever order the objects are visited in.
+    if (!hit || (best && (hit->t_stop > best->t_stop ||
+                          (hit->t_stop == best->t_stop && object > best->where.object)))) {
+      return true;
+    }
     SweepHit h;
     h.where = TriangleRef{object, kExactSurface};
     h.t_stop = hit->t_stop;
     h.normal_W = o.X_WO.linear() * hit->contact.normal_O;
     h.plane_offset_m = h.normal_W.dot(o.X_WO * hit->contact.point_O);
     best = h;
-  }
+    return true;
+  });
+  if (work != nullptr && work->exhausted) return std::nullopt;
   return best;
 }
 
@@ -177,6 +243,8 @@ void CollisionWorld::set_pose(int object, const Pose& X_WO) {
   auto& o = objects_.at(static_cast<std::size_t>(object));
   o.X_WO = X_WO;
   o.X_OW = X_WO.inverse(Eigen::Isometry);
+  boxes_W_[static_cast<std::size_t>(object)] = box_W(o);
+  object_tree_.update(object, boxes_W_[static_cast<std::size_t>(object)]);
   // geometry_id_ is kept: candidate lists hold boxes and triangles in each object's own
   // frame, which a move does not change, so a moving object keeps its list tick to tick.
 }
@@ -223,20 +291,19 @@ std::optional<SweepHit> CollisionWorld::sweep_among(int only_object, const Eigen
   double best_t_stop = std::numeric_limits<double>::infinity();
   double best_t_plane = std::numeric_limits<double>::infinity();
 
-  for (std::size_t oi = 0; oi < objects_.size(); ++oi) {
-    if (only_object >= 0 && static_cast<int>(oi) != only_object) continue;
+  const Eigen::Vector3d margin = Eigen::Vector3d::Constant(margin_m);
+  for_each_object_near(only_object, piece_a_W, piece_b_W, margin_m, [&](int object) {
+    const auto oi = static_cast<std::size_t>(object);
     const Object& o = objects_[oi];
-    if (o.exact) continue;  // swept above
-    if (work != nullptr && work->exhausted) break;
+    if (o.exact) return true;  // swept above
+    if (work != nullptr && work->exhausted) return false;
     const Eigen::Vector3d a_O = o.X_OW * piece_a_W;
     const Eigen::Vector3d b_O = o.X_OW * piece_b_W;
-    const Eigen::Vector3d margin = Eigen::Vector3d::Constant(margin_m);
     const Eigen::AlignedBox3d box_O(a_O.cwiseMin(b_O) - margin, a_O.cwiseMax(b_O) + margin);
-    if (!box_O.intersects(o.shape->bounds())) continue;
+    if (!box_O.intersects(o.shape->bounds())) return true;
 
     const MeshBvh& shape = *o.shape;
     const TriangleMesh& mesh = shape.mesh();
-    const int object = static_cast<int>(oi);
     // Tests one triangle; false once the budget is spent, which stops the walk: the answer
     // is thrown away then, and a dense spot would otherwise cost the whole walk.
     auto test = [&](std::uint32_t ti, bool near_end) -> bool {
@@ -292,7 +359,8 @@ std::optional<SweepHit> CollisionWorld::sweep_among(int only_object, const Eigen
         return test(ti, MeshBvh::overlaps(q_end, leaf));
       });
     }
-  }
+    return true;
+  });
   return best;
   };
   // A long sweep (a deep HIP, the containment ray) would query one box covering much of a

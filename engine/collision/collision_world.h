@@ -4,6 +4,7 @@
 // All queries are conservative: they may report a contact a hair early, never miss one.
 
 #include "collision/mesh_bvh.h"
+#include "collision/object_tree.h"
 #include "collision/sweep_candidates.h"
 #include "geometry/exact_shape.h"
 #include "geometry/pose.h"
@@ -109,6 +110,12 @@ class CollisionWorld {
   /// Moves an object. Never rebuilds its BVH.
   void set_pose(int object, const Pose& X_WO);
 
+  /// Puts every object in the tree over the objects' boxes, by which a sweep visits only
+  /// the objects near it. add_object() rebuilds that tree only when the objects added
+  /// since would outnumber those in it (so that n adds cost O(n log n)), and the others
+  /// are visited one by one meanwhile: a caller that adds many objects calls this after.
+  void index_objects();
+
   [[nodiscard]] int object_count() const { return static_cast<int>(objects_.size()); }
   /// Names this world's shapes: unique to the process, new with every add_object(), kept
   /// by copies (which share the shapes) and by set_pose() (which moves no triangle of a
@@ -204,7 +211,23 @@ class CollisionWorld {
     std::shared_ptr<const ShadingNormals> shading;
     TouchableFaces touchable = TouchableFaces::Both;
   };
+  // A box in the world holding all of the object that a sweep may meet: its triangles,
+  // or its exact shape (unbounded for a half-space), a little grown for rounding.
+  [[nodiscard]] static Eigen::AlignedBox3d box_W(const Object& o);
+  // Calls f(object index) for every object whose box_W comes within reach_m of the
+  // segment's box (all, or only_object alone when it is not negative; every object of a
+  // world of a few); f returns false to stop.
+  template <class F>
+  void for_each_object_near(int only_object, const Eigen::Vector3d& a_W, const Eigen::Vector3d& b_W, double reach_m,
+                            F&& f) const;
+
   std::vector<Object> objects_;
+  std::vector<Eigen::AlignedBox3d> boxes_W_;  // box_W of each object
+  ObjectTree object_tree_;                     // over boxes_W_ of objects [0, indexed_)
+  std::size_t indexed_ = 0;
+  std::size_t exact_count_ = 0;  // objects with an exact shape
+  // Up to this many objects, a sweep visits each in turn rather than walk the tree.
+  static constexpr std::size_t kObjectsVisitedInTurn = 8;
   std::uint64_t geometry_id_ = 0;
   // The first piece of a long sweep with SweepWork::fine_pieces: a millimetre, or less where
   // a mesh is finer (add_object).

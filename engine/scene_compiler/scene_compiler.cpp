@@ -143,6 +143,7 @@ class Compiler {
       scene->dynamics.push_back(objects[i].dynamics);
       scene->triangle_count += shapes[i]->mesh().triangle_count();
     }
+    scene->world.index_objects();
     scene->sharing = compile_sharing(description_);
     const auto& stats = cache_.stats();
     spdlog::debug("compiled scene '{}': {} objects, {} triangles, {} distinct shapes (mesh cache: {} hits, {} misses, "

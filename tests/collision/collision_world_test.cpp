@@ -1,5 +1,7 @@
 #include "collision/collision_world.h"
 
+#include "geometry/primitive_mesh.h"
+
 #include <gtest/gtest.h>
 
 #include <numbers>
@@ -261,6 +263,75 @@ TEST(CollisionWorld, FirstMetAnswersAsItsTrianglesSweptOneByOne) {
   EXPECT_GT(hits, 500);
   EXPECT_GT(exact_hits, 0);
   EXPECT_GT(grazes, 50);
+}
+
+// What a sweep of the whole world must answer: the earliest of its sweeps of each object
+// alone (which visit no tree of objects). Random shapes and segments make ties unlikely.
+std::optional<SweepHit> earliest_object_by_object(const CollisionWorld& world, const Eigen::Vector3d& a,
+                                                  const Eigen::Vector3d& b, double skin_m) {
+  std::optional<SweepHit> first;
+  for (int j = 0; j < world.object_count(); ++j) {
+    const auto hit = world.sweep_object(j, a, b, skin_m);
+    if (hit && (!first || hit->t_stop < first->t_stop)) first = hit;
+  }
+  return first;
+}
+
+Pose random_pose(std::mt19937_64& rng, double spread_m) {
+  std::uniform_real_distribution<double> at(-spread_m, spread_m);
+  std::normal_distribution<double> gauss;
+  const Eigen::Quaterniond turn(gauss(rng), gauss(rng), gauss(rng), gauss(rng));
+  Pose X = Pose::Identity();
+  X.linear() = turn.normalized().toRotationMatrix();
+  X.translation() = Eigen::Vector3d(at(rng), at(rng), at(rng));
+  return X;
+}
+
+TEST(CollisionWorld, ASweepAmongManyObjectsMeetsWhatEachObjectSweptAloneMeets) {
+  std::mt19937_64 rng(5122026);
+  std::uniform_real_distribution<double> size(0.05, 0.4);
+  // With every object in the tree of objects, and with the later half added after it.
+  for (const bool indexed : {true, false}) {
+    SCOPED_TRACE(indexed ? "indexed" : "added after the index");
+    CollisionWorld world;
+    for (int i = 0; i < 300; ++i) {
+      const auto box = std::make_shared<TriangleMesh>(make_box_mesh(Eigen::Vector3d(size(rng), size(rng), size(rng))));
+      const int id = world.add_object(std::make_shared<MeshBvh>(box), random_pose(rng, 1.5));
+      if (i % 10 == 3) world.set_exact_shape(id, ExactShape{ExactKind::Sphere, 0.1, 0.0, Eigen::Vector3d::Zero()});
+      if (i % 10 == 7) {
+        world.set_exact_shape(id, ExactShape{ExactKind::Capsule, 0.03, 0.1, Eigen::Vector3d::Zero()});
+      }
+      if (i == 150 && indexed) world.index_objects();
+    }
+    // The floor: a half-space (z <= 0 in its frame), unbounded, 3 m down.
+    const int floor = world.add_object(std::make_shared<MeshBvh>(std::make_shared<TriangleMesh>(
+                                           make_box_mesh(Eigen::Vector3d(1, 1, 1)))),
+                                       pose_from_xyz_rpy(Eigen::Vector3d(0, 0, -3), Eigen::Vector3d::Zero()));
+    world.set_exact_shape(floor, ExactShape{ExactKind::HalfSpace, 0.0, 0.0, Eigen::Vector3d::Zero()});
+    if (indexed) world.index_objects();
+    std::uniform_real_distribution<double> at(-2.0, 2.0);
+    std::uniform_real_distribution<double> length(0.0, 1.0);
+    int hits = 0;
+    for (int round = 0; round < 2; ++round) {
+      for (int k = 0; k < 2000; ++k) {
+        const Eigen::Vector3d a(at(rng), at(rng), at(rng));
+        const Eigen::Vector3d b = a + (k % 4 == 0 ? 3.0 : 0.6) * length(rng) * Eigen::Vector3d::Random();
+        const auto hit = world.sweep(a, b, 1e-6);
+        const auto expected = earliest_object_by_object(world, a, b, 1e-6);
+        ASSERT_EQ(hit.has_value(), expected.has_value()) << "round " << round << " segment " << k;
+        if (!hit) continue;
+        ++hits;
+        EXPECT_EQ(hit->where, expected->where) << "round " << round << " segment " << k;
+        EXPECT_EQ(hit->t_stop, expected->t_stop) << "round " << round << " segment " << k;
+      }
+      // Everything moves (the tree is refitted, not rebuilt), and the floor rises.
+      for (int i = 0; i < world.object_count(); ++i) {
+        world.set_pose(i, i == floor ? pose_from_xyz_rpy(Eigen::Vector3d(0, 0, -2), Eigen::Vector3d(0.1, 0, 0))
+                                     : random_pose(rng, 1.5));
+      }
+    }
+    EXPECT_GT(hits, 400);  // the sweeps met objects, not only empty space
+  }
 }
 
 TEST(CollisionWorld, ATriangleFarFromTheRestOfItsMeshIsSweptLikeTheRest) {
