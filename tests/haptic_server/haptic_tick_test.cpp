@@ -31,16 +31,47 @@ struct Fixture {
   std::optional<Rig> rig;
 };
 
+/// The thesis rig, without a scene yet.
+Fixture rig_fixture() {
+  Fixture f;
+  const auto rig_read = read_scene_file(std::string(MHD_SOURCE_DIR) + "/scenes/rigs/pomhi.xml");
+  f.rig = Rig::from_scene(*rig_read).value();
+  return f;
+}
+
+/// Where the tests write their scene files.
+std::filesystem::path scene_dir() {
+  const auto dir = std::filesystem::path(::testing::TempDir()) / "haptic_tick_test";
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+/// Reads and compiles the scene `file` into f; every test needs its scene, so a failure
+/// ends the run.
+void compile_into(Fixture& f, const std::filesystem::path& file) {
+  auto read = read_scene_file(file);
+  if (!read.ok()) {
+    ADD_FAILURE() << "cannot read " << file;
+    std::abort();
+  }
+  f.description = *read;
+  CompileOptions options;
+  options.use_cache = false;
+  auto compiled = compile_scene(*f.description, options);
+  if (!compiled.ok()) {
+    ADD_FAILURE() << "cannot compile " << file;
+    std::abort();
+  }
+  f.scene = std::move(*compiled.value());
+}
+
 /// The thesis rig and a 1 m box whose top face lies `gap_m` below the HIP at kQ with the
 /// base at the origin (stiffness 500 N/m, no friction).
 /// `motion`, where given, is a <motion> element for the box.
 Fixture make_fixture(double gap_m, const std::string& motion = "") {
-  Fixture f;
-  const auto rig_read = read_scene_file(std::string(MHD_SOURCE_DIR) + "/scenes/rigs/pomhi.xml");
-  f.rig = Rig::from_scene(*rig_read).value();
+  Fixture f = rig_fixture();
   const Eigen::Vector3d hip = f.rig->p_W_hip(f.rig->X_W_robot_from_base({}), kQ);
-  const auto dir = std::filesystem::path(::testing::TempDir()) / "haptic_tick_test";
-  std::filesystem::create_directories(dir);
+  const std::filesystem::path dir = scene_dir();
   // ctest runs each case as its own process, perhaps at once: a file per process and gap.
   const auto file = dir / fmt::format("box_{}_{}_{}.xml", ::getpid(), gap_m, motion.size());
   std::ofstream(file) << fmt::format(R"(<?xml version="1.0"?>
@@ -54,20 +85,7 @@ Fixture make_fixture(double gap_m, const std::string& motion = "") {
   </object>
 </scene>
 )", MHD_SOURCE_DIR, hip.x(), hip.y() - gap_m - 0.5, hip.z(), motion);
-  auto read = read_scene_file(file);
-  if (!read.ok()) {
-    ADD_FAILURE() << "cannot read " << file;
-    std::abort();  // every test needs the scene
-  }
-  f.description = *read;
-  CompileOptions options;
-  options.use_cache = false;
-  auto compiled = compile_scene(*f.description, options);
-  if (!compiled.ok()) {
-    ADD_FAILURE() << "cannot compile " << file;
-    std::abort();
-  }
-  f.scene = std::move(*compiled.value());
+  compile_into(f, file);
   return f;
 }
 
@@ -241,12 +259,9 @@ TEST(HapticTick, AHandStartingInsideAnObjectGetsNoForceUntilItLeaves) {
 /// its two triangles each in the file twice, wound both ways (a two-sided face), the
 /// upward-facing pair first where `up_first`.
 Fixture make_two_sided_sheet_fixture(double gap_m, bool up_first) {
-  Fixture f;
-  const auto rig_read = read_scene_file(std::string(MHD_SOURCE_DIR) + "/scenes/rigs/pomhi.xml");
-  f.rig = Rig::from_scene(*rig_read).value();
+  Fixture f = rig_fixture();
   const Eigen::Vector3d hip = f.rig->p_W_hip(f.rig->X_W_robot_from_base({}), kQ);
-  const auto dir = std::filesystem::path(::testing::TempDir()) / "haptic_tick_test";
-  std::filesystem::create_directories(dir);
+  const std::filesystem::path dir = scene_dir();
   const std::string stem = fmt::format("sheet_{}_{}_{}", ::getpid(), gap_m, up_first);
   {
     std::ofstream obj(dir / (stem + ".obj"));
@@ -269,20 +284,7 @@ Fixture make_two_sided_sheet_fixture(double gap_m, bool up_first) {
   </object>
 </scene>
 )", MHD_SOURCE_DIR, (dir / (stem + ".obj")).string());
-  auto read = read_scene_file(file);
-  if (!read.ok()) {
-    ADD_FAILURE() << "cannot read " << file;
-    std::abort();
-  }
-  f.description = *read;
-  CompileOptions options;
-  options.use_cache = false;
-  auto compiled = compile_scene(*f.description, options);
-  if (!compiled.ok()) {
-    ADD_FAILURE() << "cannot compile " << file;
-    std::abort();
-  }
-  f.scene = std::move(*compiled.value());
+  compile_into(f, file);
   return f;
 }
 
