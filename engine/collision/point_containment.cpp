@@ -33,7 +33,8 @@ bool point_inside_surface(const CollisionWorld& world, const Eigen::Vector3d& p_
   // such a pair, summing to 0, is passed like an exact shape: a sheet wound both ways
   // encloses nothing, and two touching solids are one.
   constexpr double kCoincident_m = 1e-8;
-  constexpr std::size_t kMaxCoincident = 16;
+  // Shapes and faces one ray may pass; past them it is not trusted (as below).
+  constexpr std::size_t kMaxPassed = 64;
   for (int i = 0; i < world.object_count(); ++i) {
     const ExactShape* shape = world.exact_shape(i);
     if (shape != nullptr && exact_signed_distance(*shape, world.pose(i).inverse(Eigen::Isometry) * p_W) < 0.0) {
@@ -51,7 +52,7 @@ bool point_inside_surface(const CollisionWorld& world, const Eigen::Vector3d& p_
     return cosine > 0.0 ? 1 : -1;
   };
   for (const Eigen::Vector3d& d : kDirections) {
-    std::array<TriangleRef, kMaxExactPassed + kMaxCoincident> passed{};
+    std::array<TriangleRef, kMaxPassed> passed{};
     std::size_t n_passed = 0;
     std::size_t n_exact = 0;
     const auto sweep_past = [&](const Eigen::Vector3d& to) {
@@ -63,7 +64,7 @@ bool point_inside_surface(const CollisionWorld& world, const Eigen::Vector3d& p_
     while (trusted && !inside) {
       auto hit = sweep_past(far);
       if (hit && hit->where.triangle == kExactSurface) {
-        if (n_exact == kMaxExactPassed) return true;  // the conservative side, as below
+        if (n_exact == kMaxExactPassed || n_passed == kMaxPassed) return true;  // the conservative side, as below
         ++n_exact;
         passed[n_passed++] = hit->where;
         continue;
@@ -72,15 +73,13 @@ bool point_inside_surface(const CollisionWorld& world, const Eigen::Vector3d& p_
       // The first face met and every face met where it is.
       const Eigen::Vector3d reach = p_W + (hit->t_stop * kRayLength_m + kCoincident_m) * d;
       int sum = 0;
-      std::size_t n_coincident = 0;
       while (hit) {
         const int through = leaves_through(*hit, d);
-        if (through == 0 || n_coincident == kMaxCoincident) {
+        if (through == 0 || n_passed == kMaxPassed) {
           trusted = false;
           break;
         }
         sum += through;
-        ++n_coincident;
         passed[n_passed++] = hit->where;
         hit = sweep_past(reach);
       }

@@ -19,20 +19,26 @@ CollisionWorld box_world() {
   return world;
 }
 
-// One mesh: a sheet in z = 0 over [-0.1, 0.1]^2 of n x n squares, each wound both ways
-// (the two windings share their corners), as files of two-sided faces have it.
-CollisionWorld two_sided_sheet_world(int n) {
+// One mesh: `layers` sheets over [-half, half]^2, in z = 0, spacing, 2 spacing ..., of
+// n x n squares, each wound both ways (the two windings share their corners), as files
+// of two-sided faces have it.
+CollisionWorld two_sided_sheet_world(int n, double half_m = 0.1, int layers = 1, double spacing_m = 0.0) {
   auto mesh = std::make_shared<TriangleMesh>();
-  for (int i = 0; i <= n; ++i) {
-    for (int j = 0; j <= n; ++j) mesh->vertices_m.emplace_back(-0.1 + 0.2 * i / n, -0.1 + 0.2 * j / n, 0.0);
-  }
-  const auto at = [n](int i, int j) { return static_cast<std::uint32_t>(i * (n + 1) + j); };
-  for (int i = 0; i < n; ++i) {
-    for (int j = 0; j < n; ++j) {
-      const std::uint32_t a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
-      for (const TriangleIndices& t : {TriangleIndices{a, b, c}, TriangleIndices{a, c, d}}) {
-        mesh->triangles.push_back(t);
-        mesh->triangles.push_back(TriangleIndices{t[0], t[2], t[1]});
+  for (int layer = 0; layer < layers; ++layer) {
+    const auto first = static_cast<std::uint32_t>(mesh->vertices_m.size());
+    for (int i = 0; i <= n; ++i) {
+      for (int j = 0; j <= n; ++j) {
+        mesh->vertices_m.emplace_back(half_m * (2.0 * i / n - 1.0), half_m * (2.0 * j / n - 1.0), layer * spacing_m);
+      }
+    }
+    const auto at = [n, first](int i, int j) { return first + static_cast<std::uint32_t>(i * (n + 1) + j); };
+    for (int i = 0; i < n; ++i) {
+      for (int j = 0; j < n; ++j) {
+        const std::uint32_t a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
+        for (const TriangleIndices& t : {TriangleIndices{a, b, c}, TriangleIndices{a, c, d}}) {
+          mesh->triangles.push_back(t);
+          mesh->triangles.push_back(TriangleIndices{t[0], t[2], t[1]});
+        }
       }
     }
   }
@@ -73,6 +79,21 @@ TEST(PointContainment, ASheetWoundBothWaysEnclosesNothing) {
     }
   }
   EXPECT_EQ(asked, 486);
+}
+
+TEST(PointContainment, AStackOfTwoSidedSheetsEnclosesNothingUpToWhatARayMayPass) {
+  // 20 sheets 1 mm apart, 2 m wide: every ray from below or between them passes up to 40
+  // faces met two by two.
+  const CollisionWorld twenty = two_sided_sheet_world(4, 1.0, 20, 0.001);
+  for (const double z_m : {-0.0005, 0.0055, 0.0105, 0.0185, 0.0195, 0.02}) {
+    EXPECT_FALSE(point_inside_surface(twenty, Eigen::Vector3d(0.013, -0.021, z_m))) << z_m;
+  }
+  // In the middle of 80 of them, every ray meets more faces than one may pass: none is
+  // trusted, and the answer is the side on which the proxy waits. Below the stack, the
+  // rays that go down leave it at once.
+  const CollisionWorld eighty = two_sided_sheet_world(4, 1.0, 80, 0.001);
+  EXPECT_TRUE(point_inside_surface(eighty, Eigen::Vector3d(0.013, -0.021, 0.0395)));
+  EXPECT_FALSE(point_inside_surface(eighty, Eigen::Vector3d(0.013, -0.021, -0.0005)));
 }
 
 TEST(PointContainment, TwoClosedBoxesTouchingAlongAFaceAreInsideAndOutsideAsOneSolid) {
