@@ -292,7 +292,9 @@ std::optional<SweepHit> CollisionWorld::sweep_among(int only_object, const Eigen
   double best_t_plane = std::numeric_limits<double>::infinity();
 
   const Eigen::Vector3d margin = Eigen::Vector3d::Constant(margin_m);
-  for_each_object_near(only_object, piece_a_W, piece_b_W, margin_m, [&](int object) {
+  // Inlined where it is called, as the loop body it was: on the 100 M sphere a call per
+  // object and piece cost its contact ticks 6 % (1.72-1.75 against 1.62-1.64 us).
+  for_each_object_near(only_object, piece_a_W, piece_b_W, margin_m, [&](int object) __attribute__((always_inline)) {
     const auto oi = static_cast<std::size_t>(object);
     const Object& o = objects_[oi];
     if (o.exact) return true;  // swept above
